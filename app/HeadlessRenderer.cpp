@@ -1,0 +1,88 @@
+#include "HeadlessRenderer.h"
+
+#include "RenderError.h"
+#include "SettingsError.h"
+
+#include <QGuiApplication>
+#include <QOpenGLVersionFunctionsFactory>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kMaxTargetSide = 16384;
+
+} // namespace
+
+HeadlessRenderer::HeadlessRenderer()
+{
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    m_surface.setFormat(format);
+    m_surface.create();
+    m_context.setFormat(format);
+    m_context.setShareContext(QOpenGLContext::globalShareContext());
+    if (!m_context.create() || !m_context.makeCurrent(&m_surface))
+        throw RenderError(QStringLiteral("cannot create an OpenGL 3.3 core context on platform '%1'")
+                              .arg(QGuiApplication::platformName()));
+    m_gl = QOpenGLVersionFunctionsFactory::get<GlFunctions>(&m_context);
+    if (!m_gl || !m_gl->initializeOpenGLFunctions())
+        throw RenderError(QStringLiteral("the OpenGL context does not provide the 3.3 core functions (got %1.%2)")
+                              .arg(m_context.format().majorVersion())
+                              .arg(m_context.format().minorVersion()));
+    m_renderer = std::make_unique<Renderer>(m_gl);
+}
+
+HeadlessRenderer::~HeadlessRenderer()
+{
+    m_context.makeCurrent(&m_surface);
+    m_renderer.reset();
+    m_framebuffer.reset();
+    m_context.doneCurrent();
+}
+
+void HeadlessRenderer::makeCurrent()
+{
+    m_context.makeCurrent(&m_surface);
+}
+
+RenderTarget HeadlessRenderer::targetOfSize(QSize size)
+{
+    if (size.width() < 1 || size.height() < 1 || size.width() > kMaxTargetSide || size.height() > kMaxTargetSide)
+        throw SettingsError(QStringLiteral("size"), QStringLiteral("%1x%2 is out of range; width and height must be in [1, %3]")
+                                                        .arg(size.width())
+                                                        .arg(size.height())
+                                                        .arg(kMaxTargetSide));
+    makeCurrent();
+    if (!m_framebuffer || m_framebuffer->size() != size) {
+        m_framebuffer.reset();
+        m_framebuffer = std::make_unique<QOpenGLFramebufferObject>(size, QOpenGLFramebufferObject::Depth, GL_TEXTURE_2D, GL_RGBA8);
+        if (!m_framebuffer->isValid()) {
+            m_framebuffer.reset();
+            throw SettingsError(QStringLiteral("size"), QStringLiteral("the driver cannot make a %1x%2 framebuffer; choose a smaller size")
+                                                            .arg(size.width())
+                                                            .arg(size.height()));
+        }
+    }
+    return {m_framebuffer->handle(), size};
+}
+
+void HeadlessRenderer::renderFrame(const Settings& settings, QSize size, TimingMode timing)
+{
+    m_renderer->render(settings, targetOfSize(size), timing);
+}
+
+QImage HeadlessRenderer::renderScene(const Settings& settings, QSize size, TimingMode timing)
+{
+    renderFrame(settings, size, timing);
+    return m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+QImage HeadlessRenderer::renderDepthMap(QSize size)
+{
+    m_renderer->renderDepthMap(targetOfSize(size));
+    return m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+} // namespace shadowlab

@@ -1,0 +1,50 @@
+#include "CliSupport.h"
+#include "Commands.h"
+
+namespace shadowlab::cli {
+
+namespace {
+
+struct Command {
+    const char* name;
+    const char* summary;
+    int (*run)(const QStringList&);
+};
+
+const Command kCommands[] = {
+    {"render", "Render the scene (and optionally the shadow map) headless to PNG", runRender},
+    {"bench", "Time the shadow and lit passes over many frames", runBench},
+    {"settings", "List every setting with its default and range", runSettings},
+};
+
+} // namespace
+
+bool isCommand(const QString& name)
+{
+    for (const Command& c : kCommands) {
+        if (name == QLatin1String(c.name))
+            return true;
+    }
+    return false;
+}
+
+int runCommand(const QStringList& arguments)
+{
+    for (const Command& c : kCommands) {
+        if (arguments.value(0) == QLatin1String(c.name))
+            return c.run(arguments.mid(1));
+    }
+    printUsage();
+    return kExitBadInput;
+}
+
+void printUsage()
+{
+    err() << "usage: shadowlab [command] [options]\n\n"
+          << "With no command, opens the explorer window.\n\nCommands:\n";
+    for (const Command& c : kCommands)
+        err() << "  " << QString::fromLatin1(c.name).leftJustified(10) << c.summary << '\n';
+    err() << "\nRun `shadowlab <command> --help` for a command's options." << Qt::endl;
+}
+
+} // namespace shadowlab::cli

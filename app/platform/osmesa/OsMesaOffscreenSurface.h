@@ -1,0 +1,29 @@
+#pragma once
+
+#include <qpa/qplatformoffscreensurface.h>
+
+#include <QtCore/QSize>
+
+#include <cstdint>
+#include <vector>
+
+namespace shadowlab {
+
+// OSMesa cannot make a context current without a colour buffer, so each offscreen
+// surface carries a small private one. Real rendering goes into FBOs.
+class OsMesaOffscreenSurface : public QPlatformOffscreenSurface
+{
+public:
+    explicit OsMesaOffscreenSurface(QOffscreenSurface *surface);
+    ~OsMesaOffscreenSurface() override;
+
+    bool isValid() const override;
+
+    void *pixels();
+    QSize size() const;
+
+private:
+    std::vector<std::uint32_t> m_pixels;
+};
+
+} // namespace shadowlab

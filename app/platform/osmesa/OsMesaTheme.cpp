@@ -1,0 +1,15 @@
+#include "OsMesaTheme.h"
+
+#include <QtCore/QStringList>
+#include <QtCore/QVariant>
+
+namespace shadowlab {
+
+QVariant OsMesaTheme::themeHint(ThemeHint hint) const
+{
+    if (hint == StyleNames)
+        return QStringList{ QStringLiteral("Fusion") };
+    return QPlatformTheme::themeHint(hint);
+}
+
+} // namespace shadowlab

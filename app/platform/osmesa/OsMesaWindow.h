@@ -1,0 +1,56 @@
+#pragma once
+
+#include <qpa/qplatformwindow.h>
+
+#include <QtGui/QImage>
+
+#include <cstdint>
+#include <vector>
+
+namespace shadowlab {
+
+// A window that exists only in memory. It owns two images:
+//  - the GL render buffer OSMesa draws into when a context is current on the window
+//    (RGBA bytes, bottom row first, sized to the window; reallocated lazily when the
+//    window size changed, at the next makeCurrent), and
+//  - the presented image, top row first, updated by swapBuffers() and by raster
+//    backing-store flushes: what a screen grab shows.
+class OsMesaWindow : public QPlatformWindow
+{
+public:
+    explicit OsMesaWindow(QWindow *window);
+    ~OsMesaWindow() override;
+
+    void setGeometry(const QRect &rect) override;
+    void setVisible(bool visible) override;
+    void setWindowState(Qt::WindowStates state) override;
+    void requestActivateWindow() override;
+    WId winId() const override;
+
+    struct RenderBuffer
+    {
+        void *pixels = nullptr;
+        QSize size;
+    };
+    // The buffer a GL context should draw into, resized to the window first if needed.
+    RenderBuffer renderBuffer();
+    // The buffer as it is, for checking what a context is bound to.
+    const void *renderPixels() const;
+    // Copies the finished GL frame (render buffer) into the presented image.
+    void presentRenderBuffer();
+    // Copies the given area of a raster backing store into the presented image.
+    void presentImage(const QImage &source, const QRegion &region, const QPoint &offset);
+    QImage presentedImage() const;
+
+private:
+    void reportExposure();
+
+    std::vector<std::uint32_t> m_renderPixels; // one RGBA quadruple per pixel
+    QSize m_renderSize;
+    QImage m_presented;
+    QRect m_normalGeometry;
+    WId m_winId;
+    bool m_visible = false;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,55 @@
+#include "DepthViewPass.h"
+
+namespace shadowlab {
+
+DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthview.frag"), defines),
+      depth(program.uniform("uDepth")),
+      nearPlane(program.uniform("uNear")),
+      farPlane(program.uniform("uFar")),
+      uvOffset(program.uniform("uUvOffset")),
+      uvScale(program.uniform("uUvScale"))
+{
+}
+
+DepthViewPass::DepthViewPass(GlFunctions* gl)
+    : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_sampler(makeSampler(gl)), m_raw(gl, {})
+{
+    // A sampler of our own: the texture's parameters belong to the renderer, and the compare
+    // mode of its lit-pass sampler must not leak into this raw read.
+    const GLuint s = m_sampler.id();
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+}
+
+void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible)
+{
+    if (light.perspective && !m_linear)
+        m_linear = std::make_unique<Program>(m_gl, QStringList{QStringLiteral("LINEARIZE")});
+    Program& p = light.perspective ? *m_linear : m_raw;
+
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    m_gl->glViewport(0, 0, target.size.width(), target.size.height());
+    m_gl->glDisable(GL_DEPTH_TEST);
+    m_gl->glDisable(GL_CULL_FACE);
+
+    p.program.bind();
+    p.program.set(p.depth, 0);
+    p.program.set(p.nearPlane, float(light.nearPlane));
+    p.program.set(p.farPlane, float(light.farPlane));
+    p.program.set(p.uvOffset, glm::vec2(float(visible.x()), float(visible.y())));
+    p.program.set(p.uvScale, glm::vec2(float(visible.width()), float(visible.height())));
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, depthTexture);
+    m_gl->glBindSampler(0, m_sampler.id());
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindSampler(0, 0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+} // namespace shadowlab

@@ -1,0 +1,23 @@
+#pragma once
+
+namespace shadowlab {
+
+// What one frame cost and did. GPU times come from GL_TIME_ELAPSED (on a software renderer
+// they are CPU time too). With TimingMode::Finish they are this frame's; with Async, the newest
+// finished measurement of each pass, which may be a frame or two old.
+struct FrameStats {
+    double shadowPassMs = 0.0;          // with Finish: 0 when the pass was reused or shadows are off
+    double litPassMs = 0.0;
+    double frameWallMs = 0.0;           // render() to after glFinish; only with TimingMode::Finish
+    bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
+    int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
+    int litDraws = 0;
+    double texelWorldSize = 0.0;        // world units covered by one shadow-map texel
+};
+
+enum class TimingMode {
+    Async,  // interactive: never stall, report the newest finished GPU times
+    Finish, // measurement: glFinish after the frame and wait for this frame's times
+};
+
+} // namespace shadowlab

@@ -1,0 +1,53 @@
+#include "GpuScene.h"
+
+#include "ProceduralTexture.h"
+
+#include <cstddef>
+
+namespace shadowlab {
+
+GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(scene))
+{
+    for (const SceneObject& object : m_scene.objects)
+        m_objectBounds.push_back(m_scene.worldBounds(object));
+    for (const Mesh& mesh : m_scene.meshes) {
+        GpuMesh g{makeVertexArray(gl), makeBuffer(gl), makeBuffer(gl), GLsizei(mesh.indices.size())};
+        gl->glBindVertexArray(g.vertexArray.id());
+        gl->glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(Vertex)), mesh.vertices.data(), GL_STATIC_DRAW);
+        gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.id());
+        gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+                         GL_STATIC_DRAW);
+        gl->glEnableVertexAttribArray(0);
+        gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+        gl->glEnableVertexAttribArray(1);
+        gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+        gl->glEnableVertexAttribArray(2);
+        gl->glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+        m_meshes.push_back(std::move(g));
+    }
+    gl->glBindVertexArray(0);
+
+    for (TextureKind kind : {TextureKind::Checker, TextureKind::Wood}) {
+        const QImage image = makeProceduralTexture(kind);
+        GlTexture texture = makeTexture(gl);
+        gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
+        gl->glGenerateMipmap(GL_TEXTURE_2D);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        m_textures[std::size_t(kind)] = std::move(texture);
+    }
+    gl->glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void GpuScene::draw(const SceneObject& object) const
+{
+    const GpuMesh& mesh = m_meshes.at(std::size_t(object.mesh));
+    m_gl->glBindVertexArray(mesh.vertexArray.id());
+    m_gl->glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+} // namespace shadowlab

@@ -1,0 +1,147 @@
+#include "LitPass.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr GLuint kDiffuseUnit = 0;
+constexpr GLuint kShadowUnit = 1;
+
+} // namespace
+
+LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("lit.vert"), QStringLiteral("lit.frag"), defines),
+      model(program.uniform("uModel")),
+      normalMatrix(program.uniform("uNormalMatrix")),
+      modelViewProjection(program.uniform("uModelViewProjection")),
+      shadowModel(program.uniform("uShadowModel")),
+      diffuse(program.uniform("uDiffuse")),
+      shadowMap(program.uniform("uShadowMap")),
+      shadowTexel(program.uniform("uShadowTexel")),
+      lightPosition(program.uniform("uLightPosition")),
+      lightDirection(program.uniform("uLightDirection")),
+      cameraPosition(program.uniform("uCameraPosition")),
+      biasSlope(program.uniform("uBiasSlope")),
+      biasMin(program.uniform("uBiasMin"))
+{
+}
+
+LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
+
+QStringList LitPass::variantDefines(const Settings& settings)
+{
+    QStringList defines;
+    switch (settings.filter.mode) {
+    case FilterMode::Hard:
+        defines << QStringLiteral("FILTER_HARD");
+        break;
+    case FilterMode::Pcf:
+        defines << QStringLiteral("FILTER_PCF") << QStringLiteral("PCF_KERNEL %1").arg(settings.filter.kernel);
+        break;
+    case FilterMode::PcfDither4:
+        defines << QStringLiteral("FILTER_PCF_DITHER4");
+        break;
+    case FilterMode::Pcf64:
+        defines << QStringLiteral("FILTER_PCF64");
+        break;
+    case FilterMode::HwBilinear:
+        defines << QStringLiteral("FILTER_HW_BILINEAR");
+        break;
+    }
+    if (settings.shadow.enabled)
+        defines << QStringLiteral("SHADOWS");
+    if (settings.light.projection == LightProjection::Perspective)
+        defines << QStringLiteral("LIGHT_PERSPECTIVE");
+    if (settings.shading.model == ShadingModel::Phong)
+        defines << QStringLiteral("SHADING_PHONG");
+    return defines;
+}
+
+LitPass::Program& LitPass::programFor(const Settings& settings)
+{
+    const QStringList defines = variantDefines(settings);
+    const QString key = defines.join(QLatin1Char(';'));
+    auto it = m_programs.find(key);
+    if (it == m_programs.end())
+        it = m_programs.emplace(key, std::make_unique<Program>(m_gl, defines)).first;
+    return *it->second;
+}
+
+int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+                    const ShadowMap* map, const RenderTarget& target)
+{
+    Program& p = programFor(settings);
+
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    m_gl->glViewport(0, 0, target.size.width(), target.size.height());
+    m_gl->glEnable(GL_DEPTH_TEST);
+    m_gl->glDepthFunc(GL_LESS);
+    m_gl->glDepthMask(GL_TRUE);
+    m_gl->glEnable(GL_CULL_FACE);
+    m_gl->glCullFace(GL_BACK);
+    m_gl->glClearColor(0.11f, 0.12f, 0.15f, 1.0f);
+    m_gl->glClearDepth(1.0);
+    m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    p.program.bind();
+    p.program.set(p.diffuse, int(kDiffuseUnit));
+    p.program.set(p.shadowMap, int(kShadowUnit));
+    p.program.set(p.lightPosition, glm::vec3(light.position));
+    p.program.set(p.lightDirection, glm::vec3(light.direction));
+    p.program.set(p.cameraPosition, glm::vec3(camera.position));
+    p.program.set(p.biasSlope, float(settings.bias.slope));
+    p.program.set(p.biasMin, float(settings.bias.min));
+
+    const bool shadows = settings.shadow.enabled && map != nullptr;
+    if (shadows) {
+        p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
+        m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
+        m_gl->glBindSampler(kShadowUnit, map->compareSampler(settings.filter.mode == FilterMode::HwBilinear));
+    }
+    m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
+
+    // Nearest first, so the depth test rejects hidden pixels before they are shaded: on a
+    // software rasteriser every shaded pixel costs, and the ground plane is behind everything.
+    const auto& objects = scene.scene().objects;
+    m_drawOrder.clear();
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const Bounds& bounds = scene.objectBounds(i);
+        if (isOutsideFrustum(camera.viewProjection, bounds, false))
+            continue;
+        const glm::dvec3 nearest = glm::clamp(camera.position, bounds.min, bounds.max);
+        m_drawOrder.emplace_back(glm::length(nearest - camera.position), i);
+    }
+    std::sort(m_drawOrder.begin(), m_drawOrder.end());
+
+    int draws = 0;
+    for (const auto& [distance, i] : m_drawOrder) {
+        const SceneObject& object = objects[i];
+        p.program.set(p.model, glm::mat4(object.model));
+        p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
+        p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
+        p.program.set(p.shadowModel, glm::mat4(light.shadowMatrix * object.model));
+        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object.texture));
+        scene.draw(object);
+        ++draws;
+    }
+
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    if (shadows) {
+        m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+        m_gl->glBindSampler(kShadowUnit, 0);
+        m_gl->glActiveTexture(GL_TEXTURE0);
+    }
+    m_gl->glDisable(GL_CULL_FACE);
+    return draws;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "GpuScene.h"
+#include "LightMath.h"
+#include "RenderTarget.h"
+#include "ShaderProgram.h"
+#include "ShadowMap.h"
+
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace shadowlab {
+
+// Lit pass: shades every object with Blinn-Phong or Phong and the selected shadow filter.
+// Only the shader variant in use is compiled (on first use, then kept for switching back).
+class LitPass {
+public:
+    explicit LitPass(GlFunctions* gl);
+
+    // Draws into `target`, which must have a depth buffer. `map` may be null when shadows are off.
+    // Returns the number of draw calls.
+    int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+               const ShadowMap* map, const RenderTarget& target);
+
+    // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
+    static QStringList variantDefines(const Settings& settings);
+    int compiledVariantCount() const { return int(m_programs.size()); }
+
+private:
+    struct Program {
+        explicit Program(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint model, normalMatrix, modelViewProjection, shadowModel;
+        GLint diffuse, shadowMap, shadowTexel;
+        GLint lightPosition, lightDirection, cameraPosition, biasSlope, biasMin;
+    };
+
+    Program& programFor(const Settings& settings);
+
+    GlFunctions* m_gl;
+    std::map<QString, std::unique_ptr<Program>> m_programs;
+    std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
+};
+
+} // namespace shadowlab

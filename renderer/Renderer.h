@@ -1,0 +1,82 @@
+#pragma once
+
+#include "DepthPass.h"
+#include "DepthViewPass.h"
+#include "FrameStats.h"
+#include "GpuScene.h"
+#include "GpuTimer.h"
+#include "LightMath.h"
+#include "LitPass.h"
+#include "RenderTarget.h"
+#include "Settings.h"
+#include "ShadowMap.h"
+
+#include <QRectF>
+
+#include <memory>
+#include <optional>
+
+namespace shadowlab {
+
+// The whole frame: shadow pass (only when its inputs changed), lit pass, and on request the
+// depth-map view. Knows no widgets and creates no context: it is handed the current context's
+// functions and a target. All GL resources belong to that context (textures are shareable);
+// destroy the Renderer with the context current.
+class Renderer {
+public:
+    explicit Renderer(GlFunctions* gl);
+    ~Renderer();
+
+    // Validates `settings` first: throws SettingsError (naming the key) or RenderError and then
+    // leaves the last good state alone. A target of zero area draws nothing.
+    void render(const Settings& settings, const RenderTarget& target, TimingMode timing = TimingMode::Async);
+
+    // Draws the current shadow map (from the last render()) into `target`.
+    void renderDepthMap(const RenderTarget& target, const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
+
+    const FrameStats& lastFrame() const { return m_stats; }
+    const LightFrame& lightFrame() const { return m_light; }
+    const CameraFrame& cameraFrame() const { return m_camera; }
+    const ShadowMap& shadowMap() const { return m_shadowMap; }
+    const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
+    // How many times the shadow pass has actually run since construction.
+    int shadowPassCount() const { return m_shadowPassCount; }
+    int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
+    // Forces the next render() to redraw the shadow map.
+    void invalidateShadowMap() { m_shadowKey.reset(); }
+
+    QString rendererString() const;
+    int maxTextureSize() const;
+
+private:
+    // Everything the shadow map depends on; the pass is skipped while this stays equal.
+    struct ShadowKey {
+        QString scene;
+        LightSettings light;
+        int mapSize = 0;
+        DepthFormat format = DepthFormat::Depth24;
+        bool cullFront = false;
+        double polygonFactor = 0.0;
+        double polygonUnits = 0.0;
+
+        bool operator==(const ShadowKey&) const = default;
+    };
+
+    GlFunctions* m_gl;
+    ShadowMap m_shadowMap;
+    DepthPass m_depthPass;
+    LitPass m_litPass;
+    std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
+    std::unique_ptr<GpuScene> m_scene;
+    GpuTimer m_shadowTimer;
+    GpuTimer m_litTimer;
+    std::optional<ShadowKey> m_shadowKey;
+    LightFrame m_light;
+    CameraFrame m_camera;
+    FrameStats m_stats;
+    int m_shadowPassCount = 0;
+    double m_lastShadowMs = 0.0;    // newest finished measurements, for TimingMode::Async
+    double m_lastLitMs = 0.0;
+};
+
+} // namespace shadowlab

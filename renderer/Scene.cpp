@@ -1,0 +1,31 @@
+#include "Scene.h"
+
+namespace shadowlab {
+
+Bounds Scene::worldBounds(const SceneObject& object) const
+{
+    Bounds local;
+    for (const Vertex& v : meshes.at(std::size_t(object.mesh)).vertices)
+        local.extend(glm::dvec3(v.position));
+    return local.transformed(object.model);
+}
+
+Bounds Scene::casterBounds() const
+{
+    Bounds b;
+    for (const SceneObject& o : objects) {
+        if (o.castsShadow)
+            b.extend(worldBounds(o));
+    }
+    return b;
+}
+
+Bounds Scene::bounds() const
+{
+    Bounds b;
+    for (const SceneObject& o : objects)
+        b.extend(worldBounds(o));
+    return b;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,124 @@
+#include "SceneLibrary.h"
+
+#include "SettingsError.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace shadowlab {
+
+namespace {
+
+glm::dmat4 placement(glm::dvec3 position, double scale, double angleDegrees = 0.0, glm::dvec3 axis = {0, 1, 0})
+{
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), position);
+    if (angleDegrees != 0.0)
+        m = glm::rotate(m, glm::radians(angleDegrees), glm::normalize(axis));
+    return glm::scale(m, glm::dvec3(scale));
+}
+
+void addGround(Scene& scene, double y)
+{
+    scene.meshes.push_back(meshes::plane(25.0f, 25.0f));
+    scene.objects.push_back({QStringLiteral("ground"), int(scene.meshes.size() - 1),
+                             glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, y, 0.0)), TextureKind::Checker, true});
+}
+
+Scene seedScene()
+{
+    // The classic tutorial scene: three wooden cubes over a large plane.
+    Scene s;
+    s.name = QStringLiteral("seed");
+    addGround(s, -0.5);
+    s.meshes.push_back(meshes::cube());
+    const int cube = int(s.meshes.size() - 1);
+    s.objects.push_back({QStringLiteral("high cube"), cube, placement({0.0, 1.5, 0.0}, 0.5), TextureKind::Wood, true});
+    s.objects.push_back({QStringLiteral("resting cube"), cube, placement({2.0, 0.0, 1.0}, 0.5), TextureKind::Wood, true});
+    s.objects.push_back({QStringLiteral("tilted cube"), cube, placement({-1.0, 0.0, 2.0}, 0.25, 60.0, {1.0, 0.0, 1.0}),
+                         TextureKind::Wood, true});
+    return s;
+}
+
+Scene torusScene()
+{
+    Scene s;
+    s.name = QStringLiteral("torus");
+    addGround(s, -0.5);
+    s.meshes.push_back(meshes::torus(1.0f, 0.35f, 64, 24));
+    s.objects.push_back({QStringLiteral("torus"), int(s.meshes.size() - 1), placement({-0.6, 0.75, 0.0}, 1.0, 70.0, {1.0, 0.0, 0.2}),
+                         TextureKind::Wood, true});
+    s.meshes.push_back(meshes::pyramid());
+    s.objects.push_back({QStringLiteral("pyramid"), int(s.meshes.size() - 1), placement({1.8, 0.1, 0.6}, 0.6, 20.0),
+                         TextureKind::Wood, true});
+    return s;
+}
+
+Scene cubesScene()
+{
+    Scene s;
+    s.name = QStringLiteral("cubes");
+    addGround(s, -0.5);
+    s.meshes.push_back(meshes::cube());
+    const int cube = int(s.meshes.size() - 1);
+    // Fixed placements (x, y, z, half-size, angle) so the preset is the same on every run.
+    const double table[10][5] = {{-3.0, 0.5, -2.0, 0.6, 15.0}, {-1.2, 1.8, -1.0, 0.4, 40.0}, {0.6, 0.2, -2.6, 0.5, 70.0},
+                                 {2.4, 1.2, -1.6, 0.45, 110.0}, {3.4, 0.0, 0.4, 0.5, 25.0},  {1.2, 2.6, 0.6, 0.35, 55.0},
+                                 {-0.4, 0.3, 1.2, 0.55, 80.0},  {-2.6, 1.4, 1.6, 0.4, 135.0}, {0.8, 0.9, 2.8, 0.3, 160.0},
+                                 {-3.6, 0.1, 3.2, 0.45, 5.0}};
+    for (int i = 0; i < 10; ++i) {
+        const auto& t = table[i];
+        s.objects.push_back({QStringLiteral("cube %1").arg(i + 1), cube,
+                             placement({t[0], t[1], t[2]}, t[3], t[4], {0.3 * (i % 3), 1.0, 0.2 * (i % 2)}), TextureKind::Wood, true});
+    }
+    return s;
+}
+
+} // namespace
+
+QStringList sceneNames()
+{
+    return {QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes")};
+}
+
+Scene buildScene(const QString& name)
+{
+    if (name == u"seed")
+        return seedScene();
+    if (name == u"torus")
+        return torusScene();
+    if (name == u"cubes")
+        return cubesScene();
+    throw SettingsError(QStringLiteral("scene"),
+                        QStringLiteral("'%1' is not a scene; choose one of %2").arg(name, sceneNames().join(QStringLiteral(" | "))));
+}
+
+Settings presetSettings(const QString& name)
+{
+    Settings s;
+    s.scene = name;
+    if (name == u"seed")
+        return s; // the global defaults are the seed scene's
+    if (name == u"torus") {
+        s.light.position = {-6.0, 1.6, 2.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 5.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 14.0;
+        s.camera.position = {0.5, 2.5, 6.5};
+        s.camera.target = {0.0, 0.3, 0.0};
+        return s;
+    }
+    if (name == u"cubes") {
+        s.light.position = {4.0, 9.0, 3.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 8.0;
+        s.light.nearPlane = 2.0;
+        s.light.farPlane = 18.0;
+        s.camera.position = {0.0, 6.0, 11.0};
+        s.camera.target = {0.0, 0.5, 0.0};
+        return s;
+    }
+    buildScene(name); // throws the message that names the choices
+    return s;
+}
+
+} // namespace shadowlab

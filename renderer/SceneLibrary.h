@@ -1,0 +1,19 @@
+#pragma once
+
+#include "Scene.h"
+#include "Settings.h"
+
+#include <QStringList>
+
+namespace shadowlab {
+
+// The built-in scene presets: "seed", "torus", "cubes".
+QStringList sceneNames();
+
+// Builds a preset's geometry; throws SettingsError for an unknown name.
+Scene buildScene(const QString& name);
+
+// Default settings for a preset: the global defaults with the preset's light and camera.
+Settings presetSettings(const QString& name);
+
+} // namespace shadowlab

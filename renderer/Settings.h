@@ -1,0 +1,103 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <QString>
+
+#include <vector>
+
+namespace shadowlab {
+
+enum class LightProjection { Ortho, Perspective };
+enum class DepthFormat { Depth24, Depth32F };
+enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear };
+enum class ShadingModel { Phong, BlinnPhong };
+
+// Every field carries its range in a comment; SettingsKeys.cpp holds the same ranges for
+// parsing and validate() enforces them, so GUI, CLI and JSON agree on what is allowed.
+struct LightSettings {
+    glm::dvec3 position{-2.0, 4.0, -1.0};   // world units, finite, |x| <= 1e7, != target
+    glm::dvec3 target{0.0, 0.0, 0.0};       // world units, finite, |x| <= 1e7
+    LightProjection projection = LightProjection::Ortho;
+    double extent = 10.0;                   // ortho half-size in world units, (0, 1e6]
+    double fov = 90.0;                      // perspective full angle in degrees, (0, 180)
+    double nearPlane = 1.0;                 // ortho: any finite < far; perspective: > 0
+    double farPlane = 7.5;                  // > near, <= 1e7
+
+    bool operator==(const LightSettings&) const = default;
+};
+
+struct MapSettings {
+    int size = 2048;                        // texels per side, [16, 16384] and <= GL_MAX_TEXTURE_SIZE
+    DepthFormat format = DepthFormat::Depth24;
+
+    bool operator==(const MapSettings&) const = default;
+};
+
+// bias = max(slope * (1 - N.L), min), in depth-buffer units ([0, 1] window depth).
+struct BiasSettings {
+    double slope = 0.02;                    // [0, 0.5]
+    double min = 0.001;                     // [0, 0.5]
+    bool cullFront = false;                 // draw back faces only into the shadow map
+    double polygonFactor = 0.0;             // glPolygonOffset factor, [-16, 16]
+    double polygonUnits = 0.0;              // glPolygonOffset units, [-10000, 10000]
+
+    bool operator==(const BiasSettings&) const = default;
+};
+
+struct FilterSettings {
+    FilterMode mode = FilterMode::Pcf;
+    int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf
+
+    bool operator==(const FilterSettings&) const = default;
+};
+
+struct ShadowSettings {
+    bool enabled = true;
+
+    bool operator==(const ShadowSettings&) const = default;
+};
+
+struct ShadingSettings {
+    ShadingModel model = ShadingModel::BlinnPhong;
+
+    bool operator==(const ShadingSettings&) const = default;
+};
+
+struct CameraSettings {
+    glm::dvec3 position{0.0, 0.0, 3.0};     // world units, finite, != target
+    glm::dvec3 target{0.0, 0.0, 0.0};
+    double fov = 45.0;                      // vertical full angle in degrees, [1, 170]
+
+    bool operator==(const CameraSettings&) const = default;
+};
+
+struct Settings {
+    QString scene = QStringLiteral("seed"); // one of sceneNames()
+    LightSettings light;
+    MapSettings map;
+    BiasSettings bias;
+    FilterSettings filter;
+    ShadowSettings shadow;
+    ShadingSettings shading;
+    CameraSettings camera;
+
+    bool operator==(const Settings&) const = default;
+};
+
+struct SettingsIssue {
+    enum class Severity { Error, Warning };
+    Severity severity = Severity::Error;
+    QString key;        // dotted key, e.g. "light.near"
+    QString message;    // what is wrong and how to fix it
+};
+
+// Every problem with a whole set of settings (errors first); empty when all is well.
+// Per-field ranges are checked here too, so a struct filled in by code is held to the same
+// rules as one parsed from text.
+std::vector<SettingsIssue> validate(const Settings& settings);
+
+// The first error of validate(), as an exception; warnings do not throw.
+void ensureValid(const Settings& settings);
+
+} // namespace shadowlab

@@ -1,0 +1,456 @@
+#include "SettingsKeys.h"
+
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonParseError>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr double kMaxCoordinate = 1e7;
+
+struct Range {
+    double lo;
+    double hi;
+    bool loOpen = false;
+    bool hiOpen = false;
+
+    bool contains(double v) const
+    {
+        return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
+    }
+    QString text() const
+    {
+        return QStringLiteral("%1%2, %3%4")
+            .arg(loOpen ? QLatin1Char('(') : QLatin1Char('['))
+            .arg(lo)
+            .arg(hi)
+            .arg(hiOpen ? QLatin1Char(')') : QLatin1Char(']'));
+    }
+};
+
+QString formatNumber(double v)
+{
+    return QString::number(v, 'g', 15);
+}
+
+QString formatVec3(const glm::dvec3& v)
+{
+    return QStringLiteral("%1,%2,%3").arg(formatNumber(v.x), formatNumber(v.y), formatNumber(v.z));
+}
+
+std::optional<QString> checkNumber(double v, const Range& range)
+{
+    if (!std::isfinite(v))
+        return QStringLiteral("must be a finite number in %1, not %2").arg(range.text(), formatNumber(v));
+    if (!range.contains(v))
+        return QStringLiteral("%1 is out of range; allowed: %2").arg(formatNumber(v), range.text());
+    return std::nullopt;
+}
+
+std::optional<QString> checkVec3(const glm::dvec3& v)
+{
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(v[i]) || std::abs(v[i]) > kMaxCoordinate)
+            return QStringLiteral("each coordinate must be finite with |x| <= %1, got %2")
+                .arg(formatNumber(kMaxCoordinate), formatVec3(v));
+    }
+    return std::nullopt;
+}
+
+double parseNumber(const QString& key, const QString& text, const Range& range)
+{
+    bool ok = false;
+    const double v = text.trimmed().toDouble(&ok);
+    if (!ok)
+        throw SettingsError(key, QStringLiteral("'%1' is not a number; allowed: %2").arg(text, range.text()));
+    if (auto problem = checkNumber(v, range))
+        throw SettingsError(key, *problem);
+    return v;
+}
+
+struct Entry {
+    SettingKey info;
+    std::function<QString(const Settings&)> get;
+    std::function<void(Settings&, const QString&)> set;
+    std::function<std::optional<QString>(const Settings&)> check;
+};
+
+// Field accessors are generic lambdas `[](auto& s) -> auto& { return s.x.y; }` so that one
+// accessor serves reading, writing and checking.
+template <typename Field>
+Entry numberKey(const char* key, Range range, Field field, const char* help)
+{
+    const QString k = QString::fromLatin1(key);
+    return {SettingKey{k, QStringLiteral("number"), range.text(), QString::fromUtf8(help), {}, range.lo, range.hi},
+            [field](const Settings& s) { return formatNumber(field(s)); },
+            [field, range, k](Settings& s, const QString& v) { field(s) = parseNumber(k, v, range); },
+            [field, range](const Settings& s) { return checkNumber(field(s), range); }};
+}
+
+template <typename Field>
+Entry integerKey(const char* key, int lo, int hi, bool oddOnly, Field field, const char* help)
+{
+    const QString k = QString::fromLatin1(key);
+    const QString rangeText = QStringLiteral("[%1, %2]%3").arg(lo).arg(hi).arg(oddOnly ? QStringLiteral(", odd") : QString());
+    auto check = [lo, hi, oddOnly, rangeText](int v) -> std::optional<QString> {
+        if (v < lo || v > hi || (oddOnly && v % 2 == 0))
+            return QStringLiteral("%1 is out of range; allowed: %2").arg(v).arg(rangeText);
+        return std::nullopt;
+    };
+    return {SettingKey{k, QStringLiteral("integer"), rangeText, QString::fromUtf8(help), {}, double(lo), double(hi)},
+            [field](const Settings& s) { return QString::number(field(s)); },
+            [field, check, k, rangeText](Settings& s, const QString& v) {
+                bool ok = false;
+                const int value = v.trimmed().toInt(&ok);
+                if (!ok)
+                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(v, rangeText));
+                if (auto problem = check(value))
+                    throw SettingsError(k, *problem);
+                field(s) = value;
+            },
+            [field, check](const Settings& s) { return check(field(s)); }};
+}
+
+template <typename Field>
+Entry boolKey(const char* key, Field field, const char* help)
+{
+    const QString k = QString::fromLatin1(key);
+    return {SettingKey{k, QStringLiteral("bool"), QStringLiteral("true | false"), QString::fromUtf8(help), {}, 0, 1},
+            [field](const Settings& s) { return field(s) ? QStringLiteral("true") : QStringLiteral("false"); },
+            [field, k](Settings& s, const QString& v) {
+                const QString t = v.trimmed().toLower();
+                if (t == u"true" || t == u"1" || t == u"on" || t == u"yes")
+                    field(s) = true;
+                else if (t == u"false" || t == u"0" || t == u"off" || t == u"no")
+                    field(s) = false;
+                else
+                    throw SettingsError(k, QStringLiteral("'%1' is not a boolean; allowed: true | false").arg(v));
+            },
+            [](const Settings&) { return std::optional<QString>(); }};
+}
+
+template <typename Field>
+Entry vec3Key(const char* key, Field field, const char* help)
+{
+    const QString k = QString::fromLatin1(key);
+    return {SettingKey{k, QStringLiteral("vec3"), QStringLiteral("x,y,z, each finite with |x| <= 1e7"), QString::fromUtf8(help), {},
+                       -kMaxCoordinate, kMaxCoordinate},
+            [field](const Settings& s) { return formatVec3(field(s)); },
+            [field, k](Settings& s, const QString& v) {
+                const QStringList parts = v.split(QLatin1Char(','));
+                if (parts.size() != 3)
+                    throw SettingsError(k, QStringLiteral("'%1' is not a vector; write three numbers x,y,z").arg(v));
+                glm::dvec3 result;
+                for (int i = 0; i < 3; ++i) {
+                    bool ok = false;
+                    result[i] = parts[i].trimmed().toDouble(&ok);
+                    if (!ok)
+                        throw SettingsError(k, QStringLiteral("'%1' is not a vector; write three numbers x,y,z").arg(v));
+                }
+                if (auto problem = checkVec3(result))
+                    throw SettingsError(k, *problem);
+                field(s) = result;
+            },
+            [field](const Settings& s) { return checkVec3(field(s)); }};
+}
+
+// An enum spelled by a fixed list of names, in the enum's order.
+template <typename Enum, typename Field>
+Entry choiceKey(const char* key, QStringList names, Field field, const char* help)
+{
+    const QString k = QString::fromLatin1(key);
+    const QString rangeText = names.join(QStringLiteral(" | "));
+    return {SettingKey{k, QStringLiteral("choice"), rangeText, QString::fromUtf8(help), names, 0, double(names.size() - 1)},
+            [field, names](const Settings& s) { return names.value(int(field(s))); },
+            [field, names, k, rangeText](Settings& s, const QString& v) {
+                const int index = names.indexOf(v.trimmed().toLower());
+                if (index < 0)
+                    throw SettingsError(k, QStringLiteral("'%1' is not allowed; choose one of %2").arg(v, rangeText));
+                field(s) = Enum(index);
+            },
+            [](const Settings&) { return std::optional<QString>(); }};
+}
+
+const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("perspective")};
+const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
+const QStringList kFilterNames{QStringLiteral("hard"), QStringLiteral("pcf"), QStringLiteral("pcf-dither4"),
+                               QStringLiteral("pcf64"), QStringLiteral("hw-bilinear")};
+const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
+
+Entry sceneKey()
+{
+    const QStringList names = sceneNames();
+    const QString rangeText = names.join(QStringLiteral(" | "));
+    return {SettingKey{QStringLiteral("scene"), QStringLiteral("choice"), rangeText,
+                       QStringLiteral("Built-in scene preset; choosing one also resets light and camera to the preset's"),
+                       names, 0, double(names.size() - 1)},
+            [](const Settings& s) { return s.scene; },
+            [names, rangeText](Settings& s, const QString& v) {
+                const QString name = v.trimmed().toLower();
+                if (!names.contains(name))
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1' is not a scene; choose one of %2").arg(v, rangeText));
+                s.scene = name;
+            },
+            [names, rangeText](const Settings& s) -> std::optional<QString> {
+                if (!names.contains(s.scene))
+                    return QStringLiteral("'%1' is not a scene; choose one of %2").arg(s.scene, rangeText);
+                return std::nullopt;
+            }};
+}
+
+std::vector<Entry> makeEntries()
+{
+    std::vector<Entry> e;
+    e.push_back(sceneKey());
+    e.push_back(vec3Key("light.position", [](auto& s) -> auto& { return s.light.position; },
+                        "Where the light is; with an ortho light only its direction to the target matters"));
+    e.push_back(vec3Key("light.target", [](auto& s) -> auto& { return s.light.target; },
+                        "The point the light looks at; the centre of the shadow map"));
+    e.push_back(choiceKey<LightProjection>("light.projection", kProjectionNames, [](auto& s) -> auto& { return s.light.projection; },
+                                           "Ortho for a directional light (sun), perspective for a spot or point light"));
+    e.push_back(numberKey("light.extent", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.light.extent; },
+                          "Ortho half-size in world units: larger covers more of the scene with coarser texels (blockier, more acne)"));
+    e.push_back(numberKey("light.fov", Range{0.0, 180.0, true, true}, [](auto& s) -> auto& { return s.light.fov; },
+                          "Perspective light's full angle in degrees: wider covers more with coarser texels"));
+    e.push_back(numberKey("light.near", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.nearPlane; },
+                          "Light near plane in world units (> 0 for perspective): pushing it out buys depth precision, casters before it are clamped"));
+    e.push_back(numberKey("light.far", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.farPlane; },
+                          "Light far plane in world units: beyond it everything is lit; a tight far plane buys depth precision"));
+    e.push_back(integerKey("map.size", 16, 16384, false, [](auto& s) -> auto& { return s.map.size; },
+                           "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
+    e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
+                                       "Depth texture format: 32-bit float keeps precision with far-away near/far ratios"));
+    e.push_back(numberKey("bias.slope", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.bias.slope; },
+                          "Slope-scaled depth bias, times (1 - N.L): too little shows acne on lit slopes, too much detaches shadows (peter panning)"));
+    e.push_back(numberKey("bias.min", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.bias.min; },
+                          "Minimum depth bias, in depth units: removes acne on surfaces facing the light, too much makes shadows leak at contacts"));
+    e.push_back(boolKey("bias.cull_front", [](auto& s) -> auto& { return s.bias.cullFront; },
+                        "Render back faces into the shadow map: removes acne on closed lit faces, can leak light where thin casters touch"));
+    e.push_back(numberKey("bias.polygon_factor", Range{-16.0, 16.0}, [](auto& s) -> auto& { return s.bias.polygonFactor; },
+                          "glPolygonOffset factor in the shadow pass: hardware slope bias, against acne at the cost of peter panning"));
+    e.push_back(numberKey("bias.polygon_units", Range{-10000.0, 10000.0}, [](auto& s) -> auto& { return s.bias.polygonUnits; },
+                          "glPolygonOffset units in the shadow pass: constant hardware bias in depth-buffer steps"));
+    e.push_back(choiceKey<FilterMode>("filter.mode", kFilterNames, [](auto& s) -> auto& { return s.filter.mode; },
+                                      "Shadow filter: hard (1 tap), pcf (N x N taps), pcf-dither4 (4 dithered taps), pcf64 (8 x 8 taps), hw-bilinear (hardware compare, bilinear)"));
+    e.push_back(integerKey("filter.kernel", 1, 9, true, [](auto& s) -> auto& { return s.filter.kernel; },
+                           "PCF kernel width in texels (pcf mode): wider softens edges and hides aliasing at N^2 taps per pixel"));
+    e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
+                        "Shadows on or off: off skips the shadow pass entirely"));
+    e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
+                                        "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"));
+    e.push_back(vec3Key("camera.position", [](auto& s) -> auto& { return s.camera.position; }, "Where the viewer is"));
+    e.push_back(vec3Key("camera.target", [](auto& s) -> auto& { return s.camera.target; }, "The point the viewer looks at"));
+    e.push_back(numberKey("camera.fov", Range{1.0, 170.0}, [](auto& s) -> auto& { return s.camera.fov; },
+                          "Camera vertical field of view in degrees"));
+    return e;
+}
+
+const std::vector<Entry>& entries()
+{
+    static const std::vector<Entry> table = makeEntries();
+    return table;
+}
+
+const Entry& entryFor(const QString& key)
+{
+    for (const Entry& e : entries()) {
+        if (e.info.key == key)
+            return e;
+    }
+    throw SettingsError(key, QStringLiteral("unknown setting; run `shadowlab settings` for the list of keys"));
+}
+
+void flattenJson(const QJsonObject& object, const QString& prefix, std::vector<std::pair<QString, QJsonValue>>& out)
+{
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const QString key = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
+        if (it.value().isObject())
+            flattenJson(it.value().toObject(), key, out);
+        else
+            out.emplace_back(key, it.value());
+    }
+}
+
+QString jsonValueText(const QString& key, const QJsonValue& value)
+{
+    switch (value.type()) {
+    case QJsonValue::Bool:
+        return value.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    case QJsonValue::Double:
+        return formatNumber(value.toDouble());
+    case QJsonValue::String:
+        return value.toString();
+    case QJsonValue::Array: {
+        QStringList parts;
+        for (const QJsonValue& v : value.toArray()) {
+            if (!v.isDouble())
+                throw SettingsError(key, QStringLiteral("arrays must hold numbers, e.g. [1, 2, 3]"));
+            parts << formatNumber(v.toDouble());
+        }
+        return parts.join(QLatin1Char(','));
+    }
+    default:
+        throw SettingsError(key, QStringLiteral("null or undefined is not a value; give a number, string, boolean or [x, y, z]"));
+    }
+}
+
+} // namespace
+
+const std::vector<SettingKey>& settingKeys()
+{
+    static const std::vector<SettingKey> keys = [] {
+        std::vector<SettingKey> k;
+        for (const Entry& e : entries())
+            k.push_back(e.info);
+        return k;
+    }();
+    return keys;
+}
+
+const SettingKey* findSettingKey(const QString& key)
+{
+    for (const SettingKey& k : settingKeys()) {
+        if (k.key == key)
+            return &k;
+    }
+    return nullptr;
+}
+
+QString settingValue(const Settings& settings, const QString& key)
+{
+    return entryFor(key).get(settings);
+}
+
+void applySetting(Settings& settings, const QString& key, const QString& value)
+{
+    entryFor(key.trimmed()).set(settings, value);
+}
+
+void applyAssignment(Settings& settings, const QString& assignment)
+{
+    const qsizetype eq = assignment.indexOf(QLatin1Char('='));
+    if (eq <= 0)
+        throw SettingsError(QString(), QStringLiteral("'%1' is not key=value, e.g. --set bias.slope=0.01").arg(assignment));
+    applySetting(settings, assignment.left(eq), assignment.mid(eq + 1));
+}
+
+QJsonObject settingsToJson(const Settings& settings)
+{
+    QJsonObject object;
+    for (const Entry& e : entries()) {
+        const QString text = e.get(settings);
+        if (e.info.type == u"number" || e.info.type == u"integer")
+            object.insert(e.info.key, text.toDouble());
+        else if (e.info.type == u"bool")
+            object.insert(e.info.key, text == u"true");
+        else if (e.info.type == u"vec3") {
+            QJsonArray array;
+            for (const QString& part : text.split(QLatin1Char(',')))
+                array.append(part.toDouble());
+            object.insert(e.info.key, array);
+        } else
+            object.insert(e.info.key, text);
+    }
+    return object;
+}
+
+Settings settingsFromJson(const QJsonObject& object, const Settings& base)
+{
+    std::vector<std::pair<QString, QJsonValue>> flat;
+    flattenJson(object, QString(), flat);
+    Settings result = base;
+    for (const auto& [key, value] : flat)
+        applySetting(result, key, jsonValueText(key, value));
+    return result;
+}
+
+Settings loadSettingsFile(const QString& path, const Settings& base)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw SettingsError(QString(), QStringLiteral("cannot read settings file '%1': %2").arg(path, file.errorString()));
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    if (error.error != QJsonParseError::NoError)
+        throw SettingsError(QString(), QStringLiteral("settings file '%1' is not valid JSON at offset %2: %3")
+                                           .arg(path)
+                                           .arg(error.offset)
+                                           .arg(error.errorString()));
+    if (!doc.isObject())
+        throw SettingsError(QString(), QStringLiteral("settings file '%1' must hold a JSON object of key: value pairs").arg(path));
+    try {
+        return settingsFromJson(doc.object(), base);
+    } catch (const SettingsError& e) {
+        throw SettingsError(e.key(), QStringLiteral("in '%1': %2").arg(path, QString::fromStdString(e.what())));
+    }
+}
+
+void saveSettingsFile(const QString& path, const Settings& settings)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        throw SettingsError(QString(), QStringLiteral("cannot write settings file '%1': %2").arg(path, file.errorString()));
+    const QByteArray bytes = QJsonDocument(settingsToJson(settings)).toJson(QJsonDocument::Indented);
+    if (file.write(bytes) != bytes.size())
+        throw SettingsError(QString(), QStringLiteral("cannot write settings file '%1': %2").arg(path, file.errorString()));
+}
+
+QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }
+QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
+QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
+QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
+
+std::vector<SettingsIssue> validate(const Settings& s)
+{
+    std::vector<SettingsIssue> errors;
+    std::vector<SettingsIssue> warnings;
+    auto error = [&](const char* key, const QString& message) {
+        errors.push_back({SettingsIssue::Severity::Error, QString::fromLatin1(key), message});
+    };
+
+    for (const Entry& e : entries()) {
+        if (auto problem = e.check(s))
+            errors.push_back({SettingsIssue::Severity::Error, e.info.key, *problem});
+    }
+    if (!errors.empty())
+        return errors; // cross-field rules mean little while a field itself is broken
+
+    const double lightDistance = glm::length(s.light.position - s.light.target);
+    if (!(lightDistance > 1e-9 * std::max(1.0, glm::length(s.light.target))))
+        error("light.position", QStringLiteral("the light is at its target; move light.position away from light.target"));
+    if (glm::length(s.camera.position - s.camera.target) <= 1e-9 * std::max(1.0, glm::length(s.camera.target)))
+        error("camera.position", QStringLiteral("the camera is at its target; move camera.position away from camera.target"));
+    if (s.light.projection == LightProjection::Perspective && s.light.nearPlane <= 0.0)
+        error("light.near", QStringLiteral("a perspective light needs near > 0 (got %1); try 0.1").arg(formatNumber(s.light.nearPlane)));
+    if (s.light.nearPlane >= s.light.farPlane)
+        error("light.far", QStringLiteral("far (%1) must be greater than near (%2)")
+                               .arg(formatNumber(s.light.farPlane), formatNumber(s.light.nearPlane)));
+
+    if (errors.empty() && s.light.projection == LightProjection::Perspective && s.map.format == DepthFormat::Depth24
+        && s.light.farPlane / s.light.nearPlane > 1e5)
+        warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.near"),
+                            QStringLiteral("far/near = %1 leaves a 24-bit depth map almost no precision far away; raise light.near or use map.format=depth32f")
+                                .arg(formatNumber(s.light.farPlane / s.light.nearPlane))});
+    errors.insert(errors.end(), warnings.begin(), warnings.end());
+    return errors;
+}
+
+void ensureValid(const Settings& settings)
+{
+    for (const SettingsIssue& issue : validate(settings)) {
+        if (issue.severity == SettingsIssue::Severity::Error)
+            throw SettingsError(issue.key, issue.message);
+    }
+}
+
+} // namespace shadowlab

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "Settings.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace shadowlab {
+
+// The dotted keys shared by `--set key=value`, JSON files and the GUI.
+struct SettingKey {
+    QString key;            // "bias.slope"
+    QString type;           // "number", "integer", "bool", "vec3", "choice"
+    QString range;          // "[0, 0.5]", "ortho | perspective", ...
+    QString help;           // one line: what it does and what it trades against
+    QStringList choices;    // for "choice"
+    double minimum = 0.0;   // for numbers and integers: the slider range
+    double maximum = 0.0;
+};
+
+const std::vector<SettingKey>& settingKeys();
+const SettingKey* findSettingKey(const QString& key);
+
+// The value of `key` in `settings`, formatted as it would be typed on the command line.
+QString settingValue(const Settings& settings, const QString& key);
+
+// Parses `value` for `key` and stores it in `settings`. Throws SettingsError naming the key
+// and the allowed range when the key is unknown or the value does not parse or is out of
+// range; `settings` is left unchanged then. Cross-field rules (near < far, ...) are
+// validate()'s job.
+void applySetting(Settings& settings, const QString& key, const QString& value);
+
+// Applies "key=value"; throws SettingsError when there is no '='.
+void applyAssignment(Settings& settings, const QString& assignment);
+
+// Flat object of dotted keys to values, in key order.
+QJsonObject settingsToJson(const Settings& settings);
+
+// Applies a JSON object (flat dotted keys, or nested objects that spell the same keys) on
+// top of `base`. Throws SettingsError for unknown keys, wrong types or values out of range.
+Settings settingsFromJson(const QJsonObject& object, const Settings& base);
+
+// Reads a JSON settings file; the message names the file when it is missing or malformed.
+Settings loadSettingsFile(const QString& path, const Settings& base);
+void saveSettingsFile(const QString& path, const Settings& settings);
+
+QString toString(LightProjection value);
+QString toString(DepthFormat value);
+QString toString(FilterMode value);
+QString toString(ShadingModel value);
+
+} // namespace shadowlab

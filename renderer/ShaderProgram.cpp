@@ -1,0 +1,76 @@
+#include "ShaderProgram.h"
+
+#include "RenderError.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <QFile>
+#include <QRegularExpression>
+
+namespace shadowlab {
+
+namespace {
+
+QByteArray readResource(const QString& file, const QString& includedFrom)
+{
+    QFile f(QStringLiteral(":/shaders/") + file);
+    if (!f.open(QIODevice::ReadOnly)) {
+        throw RenderError(includedFrom.isEmpty()
+                              ? QStringLiteral("shader file '%1' is missing from the resources").arg(file)
+                              : QStringLiteral("shader file '%1' (included from '%2') is missing").arg(file, includedFrom));
+    }
+    return f.readAll();
+}
+
+QByteArray expandIncludes(const QString& file, const QString& includedFrom, int depth)
+{
+    if (depth > 8)
+        throw RenderError(QStringLiteral("shader includes nest too deep at '%1' (a cycle?)").arg(file));
+    static const QRegularExpression include(QStringLiteral(R"re(^\s*#include\s+"([^"]+)"\s*$)re"));
+    QByteArray out;
+    const QList<QByteArray> lines = readResource(file, includedFrom).split('\n');
+    for (const QByteArray& line : lines) {
+        const QRegularExpressionMatch m = include.match(QString::fromUtf8(line));
+        if (m.hasMatch())
+            out += expandIncludes(m.captured(1), file, depth + 1);
+        else
+            out += line + '\n';
+    }
+    return out;
+}
+
+} // namespace
+
+QByteArray loadShaderSource(const QString& file, const QStringList& defines)
+{
+    QByteArray source = "#version 330 core\n";
+    for (const QString& define : defines)
+        source += "#define " + define.toUtf8() + '\n';
+    return source + expandIncludes(file, QString(), 0);
+}
+
+ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines)
+    : m_gl(gl), m_program(std::make_unique<QOpenGLShaderProgram>())
+{
+    const QString variant = defines.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(defines.join(QStringLiteral(", ")));
+    if (!m_program->addShaderFromSourceCode(QOpenGLShader::Vertex, loadShaderSource(vertexFile, defines)))
+        throw RenderError(QStringLiteral("%1%2 does not compile:\n%3").arg(vertexFile, variant, m_program->log()));
+    if (!m_program->addShaderFromSourceCode(QOpenGLShader::Fragment, loadShaderSource(fragmentFile, defines)))
+        throw RenderError(QStringLiteral("%1%2 does not compile:\n%3").arg(fragmentFile, variant, m_program->log()));
+    if (!m_program->link())
+        throw RenderError(QStringLiteral("%1 + %2%3 do not link:\n%4").arg(vertexFile, fragmentFile, variant, m_program->log()));
+}
+
+GLint ShaderProgram::uniform(const char* name) const
+{
+    return m_program->uniformLocation(name);
+}
+
+void ShaderProgram::set(GLint location, float value) { m_gl->glUniform1f(location, value); }
+void ShaderProgram::set(GLint location, int value) { m_gl->glUniform1i(location, value); }
+void ShaderProgram::set(GLint location, const glm::vec2& value) { m_gl->glUniform2fv(location, 1, glm::value_ptr(value)); }
+void ShaderProgram::set(GLint location, const glm::vec3& value) { m_gl->glUniform3fv(location, 1, glm::value_ptr(value)); }
+void ShaderProgram::set(GLint location, const glm::mat3& value) { m_gl->glUniformMatrix3fv(location, 1, GL_FALSE, glm::value_ptr(value)); }
+void ShaderProgram::set(GLint location, const glm::mat4& value) { m_gl->glUniformMatrix4fv(location, 1, GL_FALSE, glm::value_ptr(value)); }
+
+} // namespace shadowlab

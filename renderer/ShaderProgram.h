@@ -1,0 +1,43 @@
+#pragma once
+
+#include "GlObject.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <QOpenGLShaderProgram>
+#include <QStringList>
+
+#include <memory>
+
+namespace shadowlab {
+
+// Reads a shader from the :/shaders resource, expanding `#include "file"` lines, and puts
+// `#version 330 core` and one `#define` per entry of `defines` in front ("NAME" or "NAME VALUE").
+// Throws RenderError naming the file when it or an include is missing.
+QByteArray loadShaderSource(const QString& file, const QStringList& defines);
+
+// A linked program built from a vertex and a fragment file with injected defines. Compile and
+// link failures throw RenderError with the file names and the driver's log.
+class ShaderProgram {
+public:
+    ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines);
+
+    void bind() { m_program->bind(); }
+    GLint uniform(const char* name) const;
+
+    void set(GLint location, float value);
+    void set(GLint location, int value);
+    void set(GLint location, const glm::vec2& value);
+    void set(GLint location, const glm::vec3& value);
+    void set(GLint location, const glm::mat3& value);
+    void set(GLint location, const glm::mat4& value);
+
+private:
+    GlFunctions* m_gl;
+    std::unique_ptr<QOpenGLShaderProgram> m_program;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,83 @@
+#include "ShadowMap.h"
+
+#include "RenderError.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+
+namespace shadowlab {
+
+namespace {
+
+void configureSampler(GlFunctions* gl, GLuint sampler, GLint filter, bool compare)
+{
+    const GLfloat border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    gl->glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+}
+
+} // namespace
+
+ShadowMap::ShadowMap(GlFunctions* gl)
+    : m_gl(gl), m_compareNearest(makeSampler(gl)), m_compareLinear(makeSampler(gl)), m_raw(makeSampler(gl))
+{
+    configureSampler(gl, m_compareNearest.id(), GL_NEAREST, true);
+    configureSampler(gl, m_compareLinear.id(), GL_LINEAR, true);
+    configureSampler(gl, m_raw.id(), GL_NEAREST, false);
+}
+
+void ShadowMap::ensure(int size, DepthFormat format)
+{
+    if (m_texture && size == m_size && format == m_format)
+        return;
+    GLint maxSize = 0;
+    m_gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (size < 16 || size > maxSize)
+        throw SettingsError(QStringLiteral("map.size"),
+                            QStringLiteral("%1 is out of range; this driver allows [16, %2]").arg(size).arg(maxSize));
+
+    while (m_gl->glGetError() != GL_NO_ERROR) {
+    }
+    GlTexture texture = makeTexture(m_gl);
+    m_gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+    const bool float32 = format == DepthFormat::Depth32F;
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, float32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, size, size, 0,
+                       GL_DEPTH_COMPONENT, float32 ? GL_FLOAT : GL_UNSIGNED_INT, nullptr);
+    // Texture parameters matter only to users that bind no sampler object (another context's view).
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    if (const GLenum error = m_gl->glGetError(); error != GL_NO_ERROR) {
+        throw RenderError(QStringLiteral("the driver cannot allocate a %1 x %1 %2 shadow map (GL error 0x%3); choose a smaller map.size")
+                              .arg(size)
+                              .arg(toString(format))
+                              .arg(error, 0, 16));
+    }
+
+    GlFramebuffer framebuffer = makeFramebuffer(m_gl);
+    GLint previous = 0;
+    m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture.id(), 0);
+    m_gl->glDrawBuffer(GL_NONE);
+    m_gl->glReadBuffer(GL_NONE);
+    const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        throw RenderError(QStringLiteral("the %1 x %1 %2 shadow-map framebuffer is incomplete (status 0x%3)")
+                              .arg(size)
+                              .arg(toString(format))
+                              .arg(status, 0, 16));
+    }
+    m_texture = std::move(texture);
+    m_framebuffer = std::move(framebuffer);
+    m_size = size;
+    m_format = format;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "GlObject.h"
+#include "Settings.h"
+
+namespace shadowlab {
+
+// The light's depth texture and the framebuffer that renders into it. Border-clamped with a
+// border depth of 1.0, so lookups outside the map compare as lit. Two sampler objects read
+// the same texture: a comparison sampler for the lit pass (nearest or linear) and a raw one
+// for the depth-map view.
+class ShadowMap {
+public:
+    explicit ShadowMap(GlFunctions* gl);
+
+    // (Re)allocates when size or format differ. Throws SettingsError when the size exceeds the
+    // driver's GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate it or the
+    // framebuffer is incomplete; the previous map is kept then.
+    void ensure(int size, DepthFormat format);
+
+    int size() const { return m_size; }
+    DepthFormat format() const { return m_format; }
+    GLuint texture() const { return m_texture.id(); }
+    GLuint framebuffer() const { return m_framebuffer.id(); }
+    GLuint compareSampler(bool linear) const { return linear ? m_compareLinear.id() : m_compareNearest.id(); }
+    GLuint rawSampler() const { return m_raw.id(); }
+
+private:
+    GlFunctions* m_gl;
+    GlTexture m_texture;
+    GlFramebuffer m_framebuffer;
+    GlSampler m_compareNearest;
+    GlSampler m_compareLinear;
+    GlSampler m_raw;
+    int m_size = 0;
+    DepthFormat m_format = DepthFormat::Depth24;
+};
+
+} // namespace shadowlab

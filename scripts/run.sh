@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Set up, build and start ShadowLab on the built-in default scene.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/scripts/setup.sh"
+binary="$root/build/${SHADOWLAB_PRESET:-release}/app/shadowlab"
+if [ -z "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+    # No display: render the default scene and its shadow map headless instead of a window.
+    exec "$binary" render --scene seed --out "$root/shadowlab-seed.png" --depth-out "$root/shadowlab-seed-depth.png" "$@"
+fi
+exec "$binary" "$@"

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs what ShadowLab needs from Debian/Ubuntu packages (only what is missing), then
+# configures and builds it. Sourced by run.sh and test.sh; safe to run again.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+preset="${SHADOWLAB_PRESET:-release}"
+
+packages=(
+    cmake ninja-build g++ pkg-config
+    qt6-base-dev qt6-base-private-dev libqt6opengl6-dev
+    libglm-dev libosmesa6-dev libgl-dev libegl-dev libgl1-mesa-dri
+    fonts-dejavu-core
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "==> installing: ${missing[*]}"
+    sudo_cmd=()
+    [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+    "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+    "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+echo "==> configuring and building (preset $preset)"
+cmake --preset "$preset" -S "$root" >/dev/null
+cmake --build --preset "$preset" -j "$(nproc)"

@@ -1,0 +1,63 @@
+// Lit pass: Blinn-Phong or Phong with a diffuse texture; the light term is scaled by the
+// shadow visibility from the filter in shadow_filters.glsl. Ambient stays in shadow.
+#include "shadow_filters.glsl"
+
+in vec3 vWorldPosition;
+in vec3 vNormal;
+in vec2 vUv;
+in vec4 vShadowCoord;
+
+uniform sampler2D uDiffuse;
+uniform vec3 uLightPosition;
+uniform vec3 uLightDirection;   // unit, from the light toward its target
+uniform vec3 uCameraPosition;
+uniform float uBiasSlope;       // depth units per unit of (1 - N.L)
+uniform float uBiasMin;         // depth units
+
+out vec4 fragColor;
+
+vec3 directionToLight(vec3 position)
+{
+#ifdef LIGHT_PERSPECTIVE
+    return normalize(uLightPosition - position);
+#else
+    return -uLightDirection;
+#endif
+}
+
+float shadowVisibility(vec3 normal, vec3 toLight)
+{
+#ifdef SHADOWS
+    if (vShadowCoord.w <= 0.0)
+        return 1.0;             // behind a perspective light: outside its volume
+    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
+    if (coord.z > 1.0)
+        return 1.0;             // beyond the far plane is lit
+    float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+    return filterShadow(coord.xy, coord.z - bias);
+#else
+    return 1.0;
+#endif
+}
+
+void main()
+{
+    vec3 albedo = texture(uDiffuse, vUv).rgb;
+    vec3 normal = normalize(vNormal);
+    vec3 toLight = directionToLight(vWorldPosition);
+    vec3 toEye = normalize(uCameraPosition - vWorldPosition);
+
+    float diffuse = max(dot(normal, toLight), 0.0);
+#ifdef SHADING_PHONG
+    float specular = pow(max(dot(toEye, reflect(-toLight, normal)), 0.0), 8.0);
+#else
+    float specular = pow(max(dot(normal, normalize(toLight + toEye)), 0.0), 32.0);
+#endif
+    if (diffuse <= 0.0)
+        specular = 0.0;
+
+    float visibility = shadowVisibility(normal, toLight);
+    vec3 ambient = 0.3 * albedo;
+    vec3 direct = diffuse * albedo + specular * vec3(0.3);
+    fragColor = vec4(ambient + visibility * direct, 1.0);
+}

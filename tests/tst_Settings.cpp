@@ -1,0 +1,212 @@
+// Settings without GL: every key parses, prints and round-trips; every bad value is refused
+// with a message that names the key and the allowed range, and leaves the settings unchanged.
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace shadowlab;
+
+class TestSettings : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void defaultsAreValidForEveryPreset()
+    {
+        for (const QString& scene : sceneNames()) {
+            const Settings s = presetSettings(scene);
+            QCOMPARE(s.scene, scene);
+            QVERIFY2(validate(s).empty(), qPrintable(scene));
+        }
+    }
+
+    void everyKeyRoundTrips()
+    {
+        const Settings defaults;
+        for (const SettingKey& k : settingKeys()) {
+            Settings s;
+            applySetting(s, k.key, settingValue(defaults, k.key));
+            QVERIFY2(s == defaults, qPrintable(k.key));
+            QVERIFY2(!k.help.isEmpty() && !k.range.isEmpty(), qPrintable(k.key));
+        }
+    }
+
+    void requiredKeysExist()
+    {
+        const QStringList required{"light.position", "light.target", "light.projection", "light.extent", "light.fov",
+                                   "light.near", "light.far", "map.size", "map.format", "bias.slope", "bias.min",
+                                   "bias.cull_front", "bias.polygon_factor", "bias.polygon_units", "filter.mode",
+                                   "filter.kernel", "shadow.enabled", "shading.model", "camera.position",
+                                   "camera.target", "camera.fov", "scene"};
+        for (const QString& key : required)
+            QVERIFY2(findSettingKey(key) != nullptr, qPrintable(key));
+    }
+
+    void goodValuesApply()
+    {
+        Settings s;
+        applyAssignment(s, "light.position=1, 2.5 ,-3");
+        QVERIFY(s.light.position == glm::dvec3(1.0, 2.5, -3.0));
+        applyAssignment(s, "filter.mode=pcf-dither4");
+        QVERIFY(s.filter.mode == FilterMode::PcfDither4);
+        applyAssignment(s, "map.format=depth32f");
+        QVERIFY(s.map.format == DepthFormat::Depth32F);
+        applyAssignment(s, "bias.cull_front=on");
+        QVERIFY(s.bias.cullFront);
+        applyAssignment(s, "light.projection=perspective");
+        QVERIFY(s.light.projection == LightProjection::Perspective);
+    }
+
+    void badValuesAreRefused_data()
+    {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("value");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("NaN") << "bias.slope" << "nan" << "finite";
+        QTest::newRow("infinity") << "light.extent" << "inf" << "finite";
+        QTest::newRow("not a number") << "light.far" << "far" << "not a number";
+        QTest::newRow("negative bias") << "bias.min" << "-0.1" << "[0, 0.5]";
+        QTest::newRow("fov 180") << "light.fov" << "180" << "(0, 180)";
+        QTest::newRow("fov 0") << "light.fov" << "0" << "(0, 180)";
+        QTest::newRow("even kernel") << "filter.kernel" << "4" << "odd";
+        QTest::newRow("kernel 11") << "filter.kernel" << "11" << "[1, 9]";
+        QTest::newRow("map too small") << "map.size" << "8" << "[16, 16384]";
+        QTest::newRow("map huge") << "map.size" << "100000" << "[16, 16384]";
+        QTest::newRow("unknown filter") << "filter.mode" << "vsm" << "hard | pcf";
+        QTest::newRow("unknown scene") << "scene" << "sponza" << "seed";
+        QTest::newRow("vector of two") << "light.position" << "1,2" << "x,y,z";
+        QTest::newRow("vector with NaN") << "camera.position" << "1,nan,2" << "finite";
+        QTest::newRow("not a bool") << "shadow.enabled" << "maybe" << "true | false";
+        QTest::newRow("unknown key") << "bias.sloppy" << "1" << "shadowlab settings";
+    }
+
+    void badValuesAreRefused()
+    {
+        QFETCH(QString, key);
+        QFETCH(QString, value);
+        QFETCH(QString, mentions);
+        Settings s;
+        const Settings before = s;
+        try {
+            applySetting(s, key, value);
+            QFAIL("expected a SettingsError");
+        } catch (const SettingsError& e) {
+            QCOMPARE(e.key(), key);
+            const QString message = QString::fromStdString(e.what());
+            QVERIFY2(message.startsWith(key), qPrintable(message));
+            QVERIFY2(message.contains(mentions), qPrintable(message));
+        }
+        QVERIFY(s == before);
+    }
+
+    void crossFieldRulesNameTheKey_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::addColumn<QString>("key");
+        QTest::newRow("near = far") << QStringList{"light.near=5", "light.far=5"} << "light.far";
+        QTest::newRow("near > far") << QStringList{"light.near=9", "light.far=5"} << "light.far";
+        QTest::newRow("perspective near 0") << QStringList{"light.projection=perspective", "light.near=0"} << "light.near";
+        QTest::newRow("light at target") << QStringList{"light.position=1,2,3", "light.target=1,2,3"} << "light.position";
+        QTest::newRow("camera at target") << QStringList{"camera.position=0,1,0", "camera.target=0,1,0"} << "camera.position";
+    }
+
+    void crossFieldRulesNameTheKey()
+    {
+        QFETCH(QStringList, assignments);
+        QFETCH(QString, key);
+        Settings s;
+        for (const QString& a : assignments)
+            applyAssignment(s, a);
+        const auto issues = validate(s);
+        QVERIFY(!issues.empty());
+        QVERIFY(issues.front().severity == SettingsIssue::Severity::Error);
+        QCOMPARE(issues.front().key, key);
+        QVERIFY_THROWS_EXCEPTION(SettingsError, ensureValid(s));
+    }
+
+    void riskyButValidValuesWarn()
+    {
+        Settings s;
+        applyAssignment(s, "light.projection=perspective");
+        applyAssignment(s, "light.near=0.001");
+        applyAssignment(s, "light.far=100000");
+        const auto issues = validate(s);
+        QCOMPARE(issues.size(), std::size_t(1));
+        QVERIFY(issues.front().severity == SettingsIssue::Severity::Warning);
+        ensureValid(s); // warnings do not throw
+        applyAssignment(s, "map.format=depth32f");
+        QVERIFY(validate(s).empty());
+    }
+
+    void structFieldsOutOfRangeAreCaught()
+    {
+        Settings s;
+        s.bias.slope = std::nan("");
+        s.filter.kernel = 2;
+        const auto issues = validate(s);
+        QCOMPARE(issues.size(), std::size_t(2));
+        QCOMPARE(issues[0].key, QString("bias.slope"));
+        QCOMPARE(issues[1].key, QString("filter.kernel"));
+    }
+
+    void jsonRoundTripsAndAcceptsNestedObjects()
+    {
+        Settings s = presetSettings("torus");
+        applyAssignment(s, "filter.mode=pcf64");
+        applyAssignment(s, "bias.slope=0.125");
+        QVERIFY(settingsFromJson(settingsToJson(s), Settings{}) == s);
+
+        const QJsonObject nested = QJsonDocument::fromJson(R"({"light": {"position": [1, 2, 3], "far": 20},
+                                                              "filter": {"mode": "hard"}})").object();
+        const Settings n = settingsFromJson(nested, Settings{});
+        QVERIFY(n.light.position == glm::dvec3(1.0, 2.0, 3.0));
+        QCOMPARE(n.light.farPlane, 20.0);
+        QVERIFY(n.filter.mode == FilterMode::Hard);
+    }
+
+    void settingsFilesReportTheirProblems()
+    {
+        QTemporaryDir dir;
+        const QString good = dir.filePath("good.json");
+        Settings s;
+        applyAssignment(s, "map.size=512");
+        saveSettingsFile(good, s);
+        QCOMPARE(loadSettingsFile(good, Settings{}).map.size, 512);
+
+        const QString malformed = dir.filePath("malformed.json");
+        QFile f(malformed);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"map.size\": 512,");
+        f.close();
+        try {
+            loadSettingsFile(malformed, Settings{});
+            QFAIL("expected a SettingsError");
+        } catch (const SettingsError& e) {
+            QVERIFY(QString(e.what()).contains("malformed.json"));
+            QVERIFY(QString(e.what()).contains("not valid JSON"));
+        }
+        try {
+            loadSettingsFile(dir.filePath("missing.json"), Settings{});
+            QFAIL("expected a SettingsError");
+        } catch (const SettingsError& e) {
+            QVERIFY(QString(e.what()).contains("missing.json"));
+        }
+        QFile bad(dir.filePath("bad.json"));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write(R"({"filter.kernel": 6})");
+        bad.close();
+        try {
+            loadSettingsFile(bad.fileName(), Settings{});
+            QFAIL("expected a SettingsError");
+        } catch (const SettingsError& e) {
+            QCOMPARE(e.key(), QString("filter.kernel"));
+            QVERIFY(QString(e.what()).contains("bad.json"));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSettings)
+#include "tst_Settings.moc"

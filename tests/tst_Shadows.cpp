@@ -1,0 +1,400 @@
+// The renderer on the headless platform, checked the way a person checks a shadow: points the
+// cubes occlude (worked out by casting rays at the cubes) are dark, the rest of the plane is
+// lit, acne appears without bias and not with the defaults, filters soften the edge.
+#include "Application.h"
+#include "HeadlessRenderer.h"
+#include "RenderProbe.h"
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+
+#include <QtTest>
+
+using namespace shadowlab;
+
+namespace {
+
+const QSize kSize(320, 180);
+
+struct PlaneSample {
+    QPoint pixel;
+    bool expectLit;     // by ray casting, with the volume and far-plane rules applied
+    bool occluded;      // a cube is between the point and the light
+    bool outsideVolume; // outside the light's map or beyond its far plane
+};
+
+bool occludedFrom(const Scene& scene, const LightFrame& light, const glm::dvec3& p)
+{
+    const glm::dvec3 towardLight = light.perspective ? light.position - p : -light.direction;
+    for (std::size_t i = 1; i < scene.objects.size(); ++i) { // objects[0] is the ground
+        if (probe::rayHitsCube(scene.objects[i].model, p, towardLight))
+            return true;
+    }
+    return false;
+}
+
+bool hiddenFromCamera(const Scene& scene, const CameraFrame& camera, const glm::dvec3& p)
+{
+    for (std::size_t i = 1; i < scene.objects.size(); ++i) {
+        if (probe::rayHitsCube(scene.objects[i].model, p, camera.position - p))
+            return true;
+    }
+    return false;
+}
+
+// Points of the seed plane on a grid, classified by ray casting; points within `margin` of a
+// shadow boundary (where a neighbour classifies differently) are left out.
+std::vector<PlaneSample> planeSamples(const Scene& scene, const LightFrame& light, const CameraFrame& camera)
+{
+    std::vector<PlaneSample> samples;
+    const double margin = 0.08;
+    auto classify = [&](const glm::dvec3& p, bool& occluded, bool& outside) {
+        const glm::dvec4 s = light.shadowMatrix * glm::dvec4(p, 1.0);
+        const glm::dvec3 c = glm::dvec3(s) / s.w;
+        outside = s.w <= 0.0 || c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z > 1.0;
+        occluded = occludedFrom(scene, light, p);
+        return outside || !occluded;
+    };
+    for (double x = -5.0; x <= 5.0; x += 0.125) {
+        for (double z = -4.0; z <= 2.6; z += 0.125) {
+            const glm::dvec3 p(x, -0.5, z);
+            bool occluded = false, outside = false;
+            const bool lit = classify(p, occluded, outside);
+            bool stable = true;
+            for (const glm::dvec3 d : {glm::dvec3(margin, 0, 0), glm::dvec3(-margin, 0, 0), glm::dvec3(0, 0, margin), glm::dvec3(0, 0, -margin)}) {
+                bool o2 = false, out2 = false;
+                stable = stable && classify(p + d, o2, out2) == lit;
+            }
+            const auto pixel = probe::project(camera, p, kSize);
+            if (!stable || !pixel || hiddenFromCamera(scene, camera, p))
+                continue;
+            samples.push_back({*pixel, lit, occluded, outside});
+        }
+    }
+    return samples;
+}
+
+struct Agreement {
+    int litExpected = 0;
+    int shadowExpected = 0;
+    int litWrong = 0;       // expected lit, rendered dark: acne or a leak of darkness
+    int shadowWrong = 0;    // expected dark, rendered lit: peter panning or light leak
+    int occludedButOutside = 0;
+    int occludedButOutsideWrong = 0;
+};
+
+Agreement compare(const std::vector<PlaneSample>& samples, const QImage& shadowed, const QImage& unshadowed)
+{
+    Agreement a;
+    for (const PlaneSample& s : samples) {
+        const double ratio = probe::visibilityRatio(shadowed, unshadowed, s.pixel);
+        if (s.expectLit) {
+            ++a.litExpected;
+            a.litWrong += ratio < 0.85;
+            if (s.occluded && s.outsideVolume) {
+                ++a.occludedButOutside;
+                a.occludedButOutsideWrong += ratio < 0.85;
+            }
+        } else {
+            ++a.shadowExpected;
+            a.shadowWrong += ratio > 0.6;
+        }
+    }
+    return a;
+}
+
+Settings seedWith(const QStringList& assignments)
+{
+    Settings s = presetSettings("seed");
+    for (const QString& a : assignments)
+        applyAssignment(s, a);
+    return s;
+}
+
+Settings withoutShadows(Settings s)
+{
+    s.shadow.enabled = false;
+    return s;
+}
+
+// Share of pixels whose brightness with shadows is strictly between shadow and light.
+double penumbraShare(const QImage& shadowed, const QImage& unshadowed)
+{
+    int counted = 0, between = 0;
+    for (int y = 0; y < shadowed.height(); ++y) {
+        for (int x = 0; x < shadowed.width(); ++x) {
+            if (probe::luminance(unshadowed, {x, y}) < 40.0)
+                continue;
+            ++counted;
+            const double r = probe::visibilityRatio(shadowed, unshadowed, {x, y});
+            between += r > 0.45 && r < 0.85;
+        }
+    }
+    return counted ? double(between) / counted : 0.0;
+}
+
+int maxChannelDifference(const QImage& a, const QImage& b)
+{
+    int worst = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            worst = std::max({worst, std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)), std::abs(qBlue(p) - qBlue(q))});
+        }
+    }
+    return worst;
+}
+
+} // namespace
+
+class TestShadows : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private:
+    std::unique_ptr<HeadlessRenderer> m_headless;
+
+    Agreement renderAndCompare(const Settings& settings, std::vector<PlaneSample>* samplesOut = nullptr)
+    {
+        const QImage unshadowed = m_headless->renderScene(withoutShadows(settings), kSize);
+        const QImage shadowed = m_headless->renderScene(settings, kSize);
+        const Renderer& r = m_headless->renderer();
+        const std::vector<PlaneSample> samples = planeSamples(*r.scene(), r.lightFrame(), r.cameraFrame());
+        if (samplesOut)
+            *samplesOut = samples;
+        return compare(samples, shadowed, unshadowed);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_headless = std::make_unique<HeadlessRenderer>();
+        qInfo("renderer: %s", qPrintable(m_headless->renderer().rendererString()));
+    }
+    void cleanupTestCase() { m_headless.reset(); }
+
+    void shadowsFallWhereTheCubesOcclude_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("ortho, defaults") << QStringList{};
+        QTest::newRow("perspective") << QStringList{"light.projection=perspective", "light.fov=90"};
+        QTest::newRow("ortho, depth32f") << QStringList{"map.format=depth32f"};
+        QTest::newRow("ortho, 1024 map, hard") << QStringList{"map.size=1024", "filter.mode=hard"};
+        QTest::newRow("phong") << QStringList{"shading.model=phong"};
+    }
+
+    void shadowsFallWhereTheCubesOcclude()
+    {
+        QFETCH(QStringList, assignments);
+        const Agreement a = renderAndCompare(seedWith(assignments));
+        QVERIFY2(a.shadowExpected >= 20, qPrintable(QString("only %1 shadowed samples in view").arg(a.shadowExpected)));
+        QVERIFY2(a.litExpected >= 200, qPrintable(QString("only %1 lit samples in view").arg(a.litExpected)));
+        QVERIFY2(a.shadowWrong <= a.shadowExpected / 50,
+                 qPrintable(QString("%1 of %2 occluded points render lit").arg(a.shadowWrong).arg(a.shadowExpected)));
+        QVERIFY2(a.litWrong <= a.litExpected / 100,
+                 qPrintable(QString("%1 of %2 unoccluded points render dark").arg(a.litWrong).arg(a.litExpected)));
+    }
+
+    void everyFilterShadowsTheOccludedPlane_data()
+    {
+        QTest::addColumn<QString>("mode");
+        for (const QString& m : findSettingKey("filter.mode")->choices)
+            QTest::newRow(qPrintable(m)) << m;
+    }
+
+    void everyFilterShadowsTheOccludedPlane()
+    {
+        QFETCH(QString, mode);
+        const Agreement a = renderAndCompare(seedWith({"filter.mode=" + mode}));
+        QVERIFY(a.shadowExpected >= 20);
+        QVERIFY2(a.shadowWrong <= a.shadowExpected / 50, qPrintable(QString("%1 of %2").arg(a.shadowWrong).arg(a.shadowExpected)));
+        QVERIFY2(a.litWrong <= a.litExpected / 100, qPrintable(QString("%1 of %2").arg(a.litWrong).arg(a.litExpected)));
+    }
+
+    void noBiasShowsAcneAndTheDefaultsDoNot()
+    {
+        const Agreement acne = renderAndCompare(seedWith({"bias.slope=0", "bias.min=0", "filter.mode=hard"}));
+        const double acneShare = double(acne.litWrong) / acne.litExpected;
+        qInfo("falsely dark lit-plane samples: %.1f%% with no bias", 100.0 * acneShare);
+        QVERIFY2(acneShare > 0.05, qPrintable(QString("only %1% acne without bias").arg(100.0 * acneShare)));
+
+        const Agreement clean = renderAndCompare(presetSettings("seed"));
+        const double cleanShare = double(clean.litWrong) / clean.litExpected;
+        qInfo("falsely dark lit-plane samples: %.2f%% with the defaults", 100.0 * cleanShare);
+        QVERIFY(cleanShare < 0.01);
+    }
+
+    void beyondTheFarPlaneIsLit()
+    {
+        // Far plane between the high cube (3.3 from the light) and the plane under it (5.6):
+        // the cube is in the map, but its shadow would land beyond the far plane.
+        const Agreement a = renderAndCompare(seedWith({"light.far=4.5"}));
+        QVERIFY2(a.occludedButOutside >= 10, qPrintable(QString("%1 samples").arg(a.occludedButOutside)));
+        QCOMPARE(a.occludedButOutsideWrong, 0);
+    }
+
+    void outsideTheLightVolumeIsLit()
+    {
+        const Agreement a = renderAndCompare(seedWith({"light.extent=0.5"}));
+        QVERIFY2(a.occludedButOutside >= 10, qPrintable(QString("%1 samples").arg(a.occludedButOutside)));
+        QCOMPARE(a.occludedButOutsideWrong, 0);
+    }
+
+    void pcfSoftensTheEdge()
+    {
+        // A bias large enough for a 7x7 kernel on a coarse map, so only the edge is in between
+        // (with a small bias a wide kernel darkens the whole lit plane: acne, not softness).
+        const QStringList common{"map.size=512", "bias.slope=0.1", "bias.min=0.01"};
+        const Settings hard = seedWith(common + QStringList{"filter.mode=hard"});
+        const QImage unshadowed = m_headless->renderScene(withoutShadows(hard), kSize);
+        const double hardShare = penumbraShare(m_headless->renderScene(hard, kSize), unshadowed);
+        const double pcfShare = penumbraShare(m_headless->renderScene(seedWith(common + QStringList{"filter.kernel=7"}), kSize), unshadowed);
+        const double bilinearShare =
+            penumbraShare(m_headless->renderScene(seedWith(common + QStringList{"filter.mode=hw-bilinear"}), kSize), unshadowed);
+        qInfo("pixels between shadow and light: hard %.3f%%, pcf 7x7 %.3f%%, hw-bilinear %.3f%%", 100 * hardShare, 100 * pcfShare,
+              100 * bilinearShare);
+        QVERIFY(pcfShare > 3.0 * hardShare + 0.001);
+        QVERIFY(pcfShare < 0.2); // in between only along the edges
+        QVERIFY(bilinearShare > hardShare);
+    }
+
+    void pcfKernelOneEqualsHard()
+    {
+        const QImage hard = m_headless->renderScene(seedWith({"filter.mode=hard"}), kSize);
+        const QImage pcf1 = m_headless->renderScene(seedWith({"filter.mode=pcf", "filter.kernel=1"}), kSize);
+        QCOMPARE(maxChannelDifference(hard, pcf1), 0);
+    }
+
+    void shadowsOffRemovesTheDarkRegion()
+    {
+        std::vector<PlaneSample> samples;
+        renderAndCompare(presetSettings("seed"), &samples);
+        const QImage off = m_headless->renderScene(withoutShadows(presetSettings("seed")), kSize);
+        const QImage on = m_headless->renderScene(presetSettings("seed"), kSize);
+        int darkOn = 0, darkOff = 0;
+        for (const PlaneSample& s : samples) {
+            if (s.expectLit)
+                continue;
+            darkOn += probe::visibilityRatio(on, off, s.pixel) < 0.6;
+            darkOff += probe::visibilityRatio(off, off, s.pixel) < 0.6;
+        }
+        QVERIFY(darkOn >= 20);
+        QCOMPARE(darkOff, 0);
+        QCOMPARE(m_headless->renderer().lastFrame().shadowDraws, 0);
+    }
+
+    void phongAndBlinnPhongDiffer()
+    {
+        const QImage blinn = m_headless->renderScene(seedWith({"shading.model=blinn-phong"}), kSize);
+        const QImage phong = m_headless->renderScene(seedWith({"shading.model=phong"}), kSize);
+        QVERIFY(maxChannelDifference(blinn, phong) > 5);
+    }
+
+    void shadowPassIsSkippedWhenOnlyTheCameraChanges()
+    {
+        Renderer& r = m_headless->renderer();
+        Settings s = presetSettings("seed");
+        m_headless->renderFrame(s, kSize);
+        const int before = r.shadowPassCount();
+
+        s.camera.position = {1.0, 2.0, 5.0};
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(!r.lastFrame().shadowPassRendered);
+        s.bias.slope = 0.03; // lit-pass bias: the map stays valid
+        s.filter.kernel = 5;
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(!r.lastFrame().shadowPassRendered);
+        QCOMPARE(r.shadowPassCount(), before);
+
+        s.light.position.x += 0.25;
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(r.lastFrame().shadowPassRendered);
+        QCOMPARE(r.lastFrame().shadowDraws, 4);
+        s.bias.cullFront = true;
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(r.lastFrame().shadowPassRendered);
+        s.map.size = 512;
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(r.lastFrame().shadowPassRendered);
+        QCOMPARE(r.shadowPassCount(), before + 3);
+    }
+
+    void onlyTheVariantInUseIsCompiled()
+    {
+        HeadlessRenderer fresh;
+        fresh.renderFrame(presetSettings("seed"), kSize);
+        QCOMPARE(fresh.renderer().compiledLitVariants(), 1);
+        fresh.renderFrame(seedWith({"filter.mode=pcf64"}), kSize);
+        fresh.renderFrame(presetSettings("seed"), kSize);
+        QCOMPARE(fresh.renderer().compiledLitVariants(), 2);
+    }
+
+    void badSettingsKeepTheLastGoodState()
+    {
+        Renderer& r = m_headless->renderer();
+        const QImage good = m_headless->renderScene(presetSettings("seed"), kSize);
+        const int passes = r.shadowPassCount();
+        Settings bad = presetSettings("seed");
+        bad.light.nearPlane = 10.0; // >= far
+        QVERIFY_THROWS_EXCEPTION(SettingsError, m_headless->renderFrame(bad, kSize));
+        bad = presetSettings("seed");
+        bad.map.size = r.maxTextureSize() * 2;
+        try {
+            m_headless->renderFrame(bad, kSize);
+            QFAIL("expected a SettingsError for a map beyond GL_MAX_TEXTURE_SIZE");
+        } catch (const SettingsError& e) {
+            QCOMPARE(e.key(), QString("map.size"));
+        }
+        QCOMPARE(r.shadowPassCount(), passes);
+        QCOMPARE(maxChannelDifference(m_headless->renderScene(presetSettings("seed"), kSize), good), 0);
+        QCOMPARE(r.shadowPassCount(), passes); // the cached map survived the failed attempts
+    }
+
+    void emptyTargetDrawsNothing()
+    {
+        Renderer& r = m_headless->renderer();
+        m_headless->makeCurrent();
+        r.render(presetSettings("seed"), RenderTarget{0, QSize(0, 0)});
+        r.render(presetSettings("seed"), RenderTarget{0, QSize(0, 100)});
+        QCOMPARE(m_headless->renderScene(presetSettings("seed"), QSize(1, 1)).size(), QSize(1, 1));
+    }
+
+    void depthMapShowsTheCastersAndLinearisesPerspective()
+    {
+        m_headless->renderFrame(presetSettings("seed"), kSize);
+        const QImage ortho = m_headless->renderDepthMap(QSize(256, 256));
+        m_headless->renderFrame(seedWith({"light.projection=perspective"}), kSize);
+        const QImage perspective = m_headless->renderDepthMap(QSize(256, 256));
+        // The high cube, nearer the light than the plane, is darker than the plane around it.
+        const double centre = probe::luminance(ortho, {128, 128});
+        QVERIFY(centre < probe::luminance(ortho, {128, 250}) || centre < probe::luminance(ortho, {128, 5}));
+        // Linearised perspective depth spans a visible range instead of sitting near white.
+        double lo = 255, hi = 0;
+        for (int y = 0; y < 256; y += 8)
+            for (int x = 0; x < 256; x += 8) {
+                lo = std::min(lo, probe::luminance(perspective, {x, y}));
+                hi = std::max(hi, probe::luminance(perspective, {x, y}));
+            }
+        QVERIFY2(hi - lo > 100, qPrintable(QString("perspective depth spans only %1..%2").arg(lo).arg(hi)));
+        QVERIFY(maxChannelDifference(ortho, perspective) > 30);
+    }
+
+    void everyPresetRenders()
+    {
+        for (const QString& name : sceneNames()) {
+            const QImage on = m_headless->renderScene(presetSettings(name), kSize);
+            const QImage off = m_headless->renderScene(withoutShadows(presetSettings(name)), kSize);
+            int darker = 0;
+            for (int y = 0; y < kSize.height(); y += 2)
+                for (int x = 0; x < kSize.width(); x += 2)
+                    darker += probe::visibilityRatio(on, off, {x, y}) < 0.6;
+            QVERIFY2(darker > 50, qPrintable(QString("%1: only %2 shadowed pixels").arg(name).arg(darker)));
+        }
+    }
+};
+
+#include "HeadlessTestMain.h"
+SHADOWLAB_TEST_MAIN(TestShadows)
+#include "tst_Shadows.moc"
