@@ -33,6 +33,8 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
     if (coord.z > 1.0)
         return 1.0;             // beyond the far plane is lit
+    if (dot(normal, toLight) <= 0.0)
+        return 0.0;             // facing away: unlit anyway, so skip the lookups
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
     return filterShadow(coord.xy, coord.z - bias);
 #else

@@ -5,6 +5,7 @@
 #include "SettingsKeys.h"
 
 #include <QJsonArray>
+#include <memory>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -12,45 +13,53 @@ namespace shadowlab::cli {
 
 namespace {
 
-struct PhaseResult {
+struct Phase {
     QString name;
     QString description;
-    SampleStats shadow;     // GPU ms, frames whose shadow pass ran
-    SampleStats lit;        // GPU ms
-    SampleStats wall;       // ms, render() to after glFinish
-    int frames = 0;
+    Settings settings;
+    bool moving = false;    // re-render the shadow map every frame, as with a moving light
+    std::unique_ptr<HeadlessRenderer> headless;
+    std::vector<double> shadow, lit, wall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
 };
 
-// `moving` re-renders the shadow map every frame, as a renderer without the cache (or with a
-// moving light) must; `steady` is a still light and camera, where the cached map is reused.
-PhaseResult runPhase(HeadlessRenderer& headless, const Settings& settings, QSize size, int warmup, int frames, bool moving)
+// The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
+// 1024 map, bias max(0.05 (1 - N.L), 0.005), and a shadow pass every frame.
+Settings tutorialSettings(Settings s)
 {
-    PhaseResult r;
-    r.name = moving ? QStringLiteral("moving-light") : QStringLiteral("steady");
-    r.description = moving ? QStringLiteral("shadow pass every frame") : QStringLiteral("shadow map cached, lit pass only");
-    std::vector<double> shadow, lit, wall;
+    s.map.size = 1024;
+    s.map.format = DepthFormat::Depth24;
+    s.filter.mode = FilterMode::Pcf;
+    s.filter.kernel = 3;
+    s.shadow.enabled = true;
+    s.bias = BiasSettings{};
+    s.bias.slope = 0.05;
+    s.bias.min = 0.005;
+    return s;
+}
+
+// Frames of all phases are interleaved (one of each in turn, each phase on its own context),
+// so a slow spell of a shared machine hits every phase alike and their ratio stays fair.
+void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int frames)
+{
     for (int i = 0; i < warmup + frames; ++i) {
-        if (moving)
-            headless.renderer().invalidateShadowMap();
-        headless.renderFrame(settings, size, TimingMode::Finish);
-        if (i < warmup)
-            continue;
-        const FrameStats& f = headless.renderer().lastFrame();
-        if (f.shadowPassRendered) {
-            shadow.push_back(f.shadowPassMs);
-            ++r.shadowPassesRun;
-            r.shadowDraws = f.shadowDraws;
+        for (Phase& p : phases) {
+            if (p.moving)
+                p.headless->renderer().invalidateShadowMap();
+            p.headless->renderFrame(p.settings, size, TimingMode::Finish);
+            if (i < warmup)
+                continue;
+            const FrameStats& f = p.headless->renderer().lastFrame();
+            if (f.shadowPassRendered) {
+                p.shadow.push_back(f.shadowPassMs);
+                ++p.shadowPassesRun;
+                p.shadowDraws = f.shadowDraws;
+            }
+            p.lit.push_back(f.litPassMs);
+            p.wall.push_back(f.frameWallMs);
         }
-        lit.push_back(f.litPassMs);
-        wall.push_back(f.frameWallMs);
     }
-    r.frames = frames;
-    r.shadow = summarize(shadow);
-    r.lit = summarize(lit);
-    r.wall = summarize(wall);
-    return r;
 }
 
 QString formatStats(const SampleStats& s)
@@ -83,6 +92,8 @@ int runBench(const QStringList& arguments)
                           QStringLiteral("10")});
         parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-light or both (default both)."), QStringLiteral("name"),
                           QStringLiteral("both")});
+        parser.addOption({QStringLiteral("baseline"),
+                          QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
         if (!parser.parse(QStringList{QStringLiteral("shadowlab bench")} + arguments))
             throw UsageError(parser.errorText());
@@ -98,14 +109,25 @@ int runBench(const QStringList& arguments)
         if (phase != u"both" && phase != u"steady" && phase != u"moving-light")
             throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-light or both").arg(phase));
 
-        HeadlessRenderer headless;
-        std::vector<PhaseResult> results;
+        std::vector<Phase> phases;
+        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
+            Phase p;
+            p.name = QString::fromLatin1(name);
+            p.description = QString::fromLatin1(description);
+            p.settings = s;
+            p.moving = moving;
+            p.headless = std::make_unique<HeadlessRenderer>();
+            phases.push_back(std::move(p));
+        };
         if (phase != u"moving-light")
-            results.push_back(runPhase(headless, settings, size, warmup, frames, false));
+            addPhase("steady", "light and camera still: cached shadow map, lit pass only", settings, false);
         if (phase != u"steady")
-            results.push_back(runPhase(headless, settings, size, warmup, frames, true));
-
-        const QString rendererString = headless.renderer().rendererString();
+            addPhase("moving-light", "shadow pass every frame", settings, true);
+        if (parser.isSet(QStringLiteral("baseline")))
+            addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
+                     tutorialSettings(settings), true);
+        runInterleaved(phases, size, warmup, frames);
+        const QString rendererString = phases.front().headless->renderer().rendererString();
         const QString filter = settings.filter.mode == FilterMode::Pcf
                                    ? QStringLiteral("pcf %1x%1").arg(settings.filter.kernel)
                                    : toString(settings.filter.mode);
@@ -118,31 +140,38 @@ int runBench(const QStringList& arguments)
                                     .arg(settings.bias.slope)
                                     .arg(settings.bias.min);
         if (parser.isSet(QStringLiteral("json"))) {
-            QJsonArray phases;
-            for (const PhaseResult& r : results) {
-                phases.append(QJsonObject{{QStringLiteral("phase"), r.name},
-                                          {QStringLiteral("frames"), r.frames},
-                                          {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
-                                          {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
-                                          {QStringLiteral("shadow_draws"), r.shadowDraws},
-                                          {QStringLiteral("shadow_pass_gpu"), statsJson(r.shadow)},
-                                          {QStringLiteral("lit_pass_gpu"), statsJson(r.lit)},
-                                          {QStringLiteral("frame_wall"), statsJson(r.wall)}});
+            QJsonArray phaseArray;
+            for (const Phase& r : phases) {
+                phaseArray.append(QJsonObject{{QStringLiteral("phase"), r.name},
+                                              {QStringLiteral("description"), r.description},
+                                              {QStringLiteral("frames"), frames},
+                                              {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
+                                              {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
+                                              {QStringLiteral("shadow_draws"), r.shadowDraws},
+                                              {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
+                                              {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
+                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))}});
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                                {QStringLiteral("configuration"), summary},
                                                {QStringLiteral("settings"), settingsToJson(settings)},
-                                               {QStringLiteral("phases"), phases}})
+                                               {QStringLiteral("phases"), phaseArray}})
                          .toJson(QJsonDocument::Indented);
             return kExitOk;
         }
         out() << "renderer: " << rendererString << '\n' << "configuration: " << summary << '\n';
-        for (const PhaseResult& r : results) {
-            out() << '\n' << r.name << " (" << r.description << "), " << r.frames << " frames after " << warmup << " warm-up\n";
-            out() << "  shadow pass (GPU): " << formatStats(r.shadow) << "   run in " << r.shadowPassesRun << "/" << r.frames
+        for (const Phase& r : phases) {
+            out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << warmup << " warm-up\n";
+            out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QString()) << '\n';
-            out() << "  lit pass (GPU):    " << formatStats(r.lit) << '\n';
-            out() << "  frame (wall):      " << formatStats(r.wall) << '\n';
+            out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
+            out() << "  frame (wall):      " << formatStats(summarize(r.wall)) << '\n';
+        }
+        if (phases.size() > 1) {
+            const double reference = summarize(phases.back().wall).median;
+            out() << "\nframe wall time relative to " << phases.back().name << ":\n";
+            for (const Phase& r : phases)
+                out() << "  " << r.name.leftJustified(18) << QString::number(summarize(r.wall).median / reference, 'f', 2) << '\n';
         }
         out().flush();
         return kExitOk;

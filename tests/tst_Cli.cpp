@@ -1,0 +1,160 @@
+// The command line as a user meets it: the real binary, its files, its exit codes and messages.
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Run shadowlab(const QStringList& arguments)
+{
+    QProcess process;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("QT_QPA_PLATFORM", "osmesa");
+    process.setProcessEnvironment(env);
+    process.start(QStringLiteral(SHADOWLAB_BINARY), arguments);
+    if (!process.waitForFinished(300000))
+        return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1, QString::fromUtf8(process.readAllStandardOutput()),
+            QString::fromUtf8(process.readAllStandardError())};
+}
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+
+private Q_SLOTS:
+    void renderWritesTheSceneAndTheDepthMap()
+    {
+        const QString scene = m_dir.filePath("scene.png");
+        const QString depth = m_dir.filePath("depth.png");
+        const Run r = shadowlab({"render", "--scene", "torus", "--size", "320x200", "--out", scene, "--depth-out", depth,
+                                 "--set", "map.size=512"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains("scene.png"));
+        const QImage image(scene);
+        QCOMPARE(image.size(), QSize(320, 200));
+        QCOMPARE(QImage(depth).size(), QSize(512, 512));
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 10)
+            for (int x = 0; x < image.width(); x += 10)
+                colours.insert(image.pixel(x, y));
+        QVERIFY(colours.size() > 20); // a scene, not a cleared buffer
+    }
+
+    void settingsFileAndSetCombine()
+    {
+        const QString file = m_dir.filePath("s.json");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"filter": {"mode": "hard"}, "map.size": 256})");
+        f.close();
+        const Run r = shadowlab({"render", "--settings", file, "--set", "map.size=128", "--size", "64x64", "--out",
+                                 m_dir.filePath("combined.png"), "--depth-out", m_dir.filePath("combined-depth.png")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QImage(m_dir.filePath("combined-depth.png")).size(), QSize(128, 128)); // --set wins over the file
+    }
+
+    void badInputExitsWithTwoAndNamesTheProblem_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("mentions");
+        const QString out = m_dir.filePath("never.png");
+        QTest::newRow("nan") << QStringList{"render", "--out", out, "--set", "bias.slope=nan"} << "bias.slope";
+        QTest::newRow("inf") << QStringList{"render", "--out", out, "--set", "light.far=inf"} << "light.far";
+        QTest::newRow("near >= far") << QStringList{"render", "--out", out, "--set", "light.near=9"} << "light.far";
+        QTest::newRow("light at target") << QStringList{"render", "--out", out, "--set", "light.position=0,0,0"} << "light.position";
+        QTest::newRow("size 0x0") << QStringList{"render", "--out", out, "--size", "0x0"} << "--size";
+        QTest::newRow("size garbage") << QStringList{"render", "--out", out, "--size", "big"} << "WIDTHxHEIGHT";
+        QTest::newRow("map beyond range") << QStringList{"render", "--out", out, "--set", "map.size=100000"} << "map.size";
+        QTest::newRow("even kernel") << QStringList{"render", "--out", out, "--set", "filter.kernel=2"} << "filter.kernel";
+        QTest::newRow("unknown key") << QStringList{"render", "--out", out, "--set", "bias.sloppy=1"} << "bias.sloppy";
+        QTest::newRow("no equals") << QStringList{"render", "--out", out, "--set", "bias.slope"} << "key=value";
+        QTest::newRow("unknown scene") << QStringList{"render", "--out", out, "--scene", "sponza"} << "seed";
+        QTest::newRow("missing file") << QStringList{"render", "--out", out, "--settings", "/nonexistent/s.json"} << "s.json";
+        QTest::newRow("no output") << QStringList{"render"} << "--out";
+        QTest::newRow("unknown option") << QStringList{"render", "--frobnicate"} << "frobnicate";
+        QTest::newRow("bench frames 0") << QStringList{"bench", "--frames", "0"} << "--frames";
+        QTest::newRow("unknown command") << QStringList{"paint"} << "usage";
+    }
+
+    void badInputExitsWithTwoAndNamesTheProblem()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, mentions);
+        const Run r = shadowlab(arguments);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never.png")));
+    }
+
+    void malformedSettingsFileIsNamed()
+    {
+        const QString file = m_dir.filePath("broken.json");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{ \"bias.slope\": 0.1, ");
+        f.close();
+        const Run r = shadowlab({"render", "--out", m_dir.filePath("x.png"), "--settings", file});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("broken.json") && r.err.contains("not valid JSON"), qPrintable(r.err));
+    }
+
+    void riskyValuesWarnButRender()
+    {
+        const Run r = shadowlab({"render", "--size", "64x64", "--out", m_dir.filePath("risky.png"), "--set", "light.projection=perspective",
+                                 "--set", "light.near=0.00001", "--set", "light.far=100"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.err.contains("warning: light.near"), qPrintable(r.err));
+    }
+
+    void settingsListsEveryKeyAsJson()
+    {
+        const Run r = shadowlab({"settings", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray keys = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        QVERIFY(keys.size() >= 22);
+        bool sawSlope = false;
+        for (const QJsonValue& k : keys) {
+            const QJsonObject o = k.toObject();
+            QVERIFY(!o.value("default").toString().isEmpty());
+            QVERIFY(!o.value("range").toString().isEmpty());
+            if (o.value("key").toString() == "bias.slope")
+                sawSlope = true;
+        }
+        QVERIFY(sawSlope);
+        const Run table = shadowlab({"settings"});
+        QCOMPARE(table.exitCode, 0);
+        QVERIFY(table.out.contains("filter.mode") && table.out.contains("hard | pcf | pcf-dither4 | pcf64 | hw-bilinear"));
+    }
+
+    void benchReportsCachedAndUncachedPhases()
+    {
+        const Run r = shadowlab({"bench", "--size", "160x90", "--frames", "5", "--warmup", "1", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QVERIFY(o.value("renderer").toString().size() > 3);
+        const QJsonArray phases = o.value("phases").toArray();
+        QCOMPARE(phases.size(), 2);
+        QCOMPARE(phases[0].toObject().value("shadow_passes_run").toInt(), 0);
+        QVERIFY(phases[0].toObject().value("shadow_pass_cached").toBool());
+        QCOMPARE(phases[1].toObject().value("shadow_passes_run").toInt(), 5);
+        QVERIFY(phases[1].toObject().value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_Cli.moc"
