@@ -6,6 +6,7 @@
 #include <QtGui/QOpenGLContext>
 #include <QtGui/QOpenGLFunctions>
 #include <QtGui/QScreen>
+#include <QtGui/QWindow>
 #include <QtOpenGL/QOpenGLFramebufferObject>
 #include <QtOpenGL/QOpenGLFunctions_3_3_Core>
 #include <QtOpenGL/QOpenGLVersionFunctionsFactory>
@@ -13,6 +14,7 @@
 #include <QtWidgets/QMainWindow>
 
 #include <array>
+#include <cstring>
 #include <memory>
 #include <optional>
 
@@ -156,6 +158,7 @@ private slots:
     void framebufferObjectReadsBackClearColour_data();
     void framebufferObjectReadsBackClearColour();
     void sharedContextsSeeTheSameTexture();
+    void windowShowsSwappedFrameUpright();
 
     void openGLWidgetShowsItsFrame_data();
     void openGLWidgetShowsItsFrame();
@@ -239,6 +242,8 @@ void tst_OsMesaPlatform::coreContextProvidesFunctions33()
     const QSurfaceFormat format = gl.context.format();
     QCOMPARE(format.profile(), QSurfaceFormat::CoreProfile);
     QCOMPARE(format.version(), qMakePair(int(major), int(minor)));
+    QCOMPARE(format.redBufferSize(), 8);
+    QCOMPARE(format.alphaBufferSize(), 8);
     QCOMPARE(format.depthBufferSize(), 24);
     QCOMPARE(format.stencilBufferSize(), 8);
     QCOMPARE(gl.context.defaultFramebufferObject(), GLuint(0));
@@ -250,23 +255,25 @@ void tst_OsMesaPlatform::contextReportsCreatedFormat_data()
 {
     QTest::addColumn<QSurfaceFormat>("requested");
     QTest::addColumn<QSurfaceFormat::OpenGLContextProfile>("expectedProfile");
-    QTest::addColumn<int>("minimumMinorOf3"); // the lowest acceptable 3.x minor, or 4.x
+    QTest::addColumn<int>("minimumMajor");
+    QTest::addColumn<int>("minimumMinor");
 
     using P = QSurfaceFormat;
     // A default format asks for 2.0 without a profile; the renderer needs 3.3 core.
-    QTest::newRow("default") << QSurfaceFormat() << P::CoreProfile << 3;
-    QTest::newRow("3.2, no profile") << formatFor(3, 2, P::NoProfile) << P::CoreProfile << 3;
-    QTest::newRow("3.3 core") << formatFor(3, 3, P::CoreProfile) << P::CoreProfile << 3;
-    QTest::newRow("4.1 core") << formatFor(4, 1, P::CoreProfile) << P::CoreProfile << 11;
+    QTest::newRow("default") << QSurfaceFormat() << P::CoreProfile << 3 << 3;
+    QTest::newRow("3.2, no profile") << formatFor(3, 2, P::NoProfile) << P::CoreProfile << 3 << 3;
+    QTest::newRow("3.3 core") << formatFor(3, 3, P::CoreProfile) << P::CoreProfile << 3 << 3;
+    QTest::newRow("4.1 core") << formatFor(4, 1, P::CoreProfile) << P::CoreProfile << 4 << 1;
     QTest::newRow("explicit compatibility") << formatFor(3, 0, P::CompatibilityProfile) << P::CompatibilityProfile
-                                            << 0;
+                                            << 3 << 0;
 }
 
 void tst_OsMesaPlatform::contextReportsCreatedFormat()
 {
     QFETCH(QSurfaceFormat, requested);
     QFETCH(QSurfaceFormat::OpenGLContextProfile, expectedProfile);
-    QFETCH(int, minimumMinorOf3);
+    QFETCH(int, minimumMajor);
+    QFETCH(int, minimumMinor);
 
     OffscreenGL gl;
     QVERIFY(gl.create(requested));
@@ -278,9 +285,8 @@ void tst_OsMesaPlatform::contextReportsCreatedFormat()
     f->glGetIntegerv(GL_MINOR_VERSION, &minor);
     f->glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profileMask);
 
-    // Versions 4.x are written as minor 10 + x so one column covers both majors.
-    const int flatMinor = major == 3 ? minor : 10 + minor;
-    QVERIFY2(major >= 3 && flatMinor >= minimumMinorOf3, qPrintable(QStringLiteral("%1.%2").arg(major).arg(minor)));
+    QVERIFY2(qMakePair(int(major), int(minor)) >= qMakePair(minimumMajor, minimumMinor),
+             qPrintable(QStringLiteral("%1.%2").arg(major).arg(minor)));
     QCOMPARE(gl.context.format().version(), qMakePair(int(major), int(minor)));
     QCOMPARE(gl.context.format().profile(), expectedProfile);
     const GLint expectedBit = expectedProfile == QSurfaceFormat::CoreProfile ? GL_CONTEXT_CORE_PROFILE_BIT
@@ -335,7 +341,7 @@ void tst_OsMesaPlatform::sharedContextsSeeTheSameTexture()
         std::array<quint32, 16> t;
         const uchar rgba[4] = { uchar(colour.red()), uchar(colour.green()), uchar(colour.blue()), 255 };
         quint32 texel;
-        memcpy(&texel, rgba, sizeof texel);
+        std::memcpy(&texel, rgba, sizeof texel);
         t.fill(texel);
         return t;
     }();
@@ -366,6 +372,61 @@ void tst_OsMesaPlatform::sharedContextsSeeTheSameTexture()
 
     QVERIFY(creator.context.makeCurrent(&creator.surface));
     cf->glDeleteTextures(1, &texture);
+}
+
+void tst_OsMesaPlatform::windowShowsSwappedFrameUpright()
+{
+    const QColor top(255, 0, 0);
+    const QColor bottom(0, 0, 255);
+    auto window = std::make_unique<QWindow>();
+    window->setSurfaceType(QSurface::OpenGLSurface);
+    window->resize(60, 40);
+    window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+    QOpenGLContext context;
+    context.setFormat(window->requestedFormat());
+    QVERIFY(context.create());
+
+    // Top half and bottom half in different colours, so a frame shown upside down
+    // (OSMesa's rows run bottom-up) cannot pass.
+    const auto drawAndCheck = [&](QSize size) -> QString {
+        if (!context.makeCurrent(window.get()))
+            return QStringLiteral("makeCurrent failed");
+        QOpenGLFunctions *f = context.functions();
+        f->glViewport(0, 0, size.width(), size.height());
+        f->glClearColor(bottom.redF(), bottom.greenF(), bottom.blueF(), 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT);
+        f->glEnable(GL_SCISSOR_TEST);
+        f->glScissor(0, size.height() / 2, size.width(), size.height() / 2); // GL's y axis points up
+        f->glClearColor(top.redF(), top.greenF(), top.blueF(), 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT);
+        f->glDisable(GL_SCISSOR_TEST);
+        context.swapBuffers(window.get());
+
+        const QImage shown = window->screen()->grabWindow(window->winId()).toImage();
+        if (shown.size() != size)
+            return QStringLiteral("presented %1x%2").arg(shown.width()).arg(shown.height());
+        const int half = size.height() / 2;
+        QString mismatch = areaMismatch(shown, QRect(0, 0, size.width(), half), top);
+        if (mismatch.isEmpty())
+            mismatch = areaMismatch(shown, QRect(0, half, size.width(), size.height() - half), bottom);
+        return mismatch;
+    };
+    QString mismatch = drawAndCheck(QSize(60, 40));
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+
+    // The window's GL buffer is reallocated while the context is current on it...
+    window->resize(90, 70);
+    QTRY_COMPARE(window->size(), QSize(90, 70));
+    mismatch = drawAndCheck(QSize(90, 70));
+    QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
+
+    // ...and the window goes away while the context is still current on it.
+    window.reset();
+    QOffscreenSurface surface;
+    surface.create();
+    QVERIFY(context.makeCurrent(&surface));
+    QCOMPARE(context.functions()->glGetError(), GLenum(GL_NO_ERROR));
 }
 
 void tst_OsMesaPlatform::openGLWidgetShowsItsFrame_data()

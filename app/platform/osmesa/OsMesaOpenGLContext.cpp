@@ -26,6 +26,7 @@ Function glFunction(const char *name)
 using GetStringFn = const GLubyte *(*)(GLenum);
 using GetIntegervFn = void (*)(GLenum, GLint *);
 using GetFramebufferAttachmentParameterivFn = void (*)(GLenum, GLenum, GLenum, GLint *);
+using GetErrorFn = GLenum (*)();
 using FinishFn = void (*)();
 
 struct ProfileRequest
@@ -248,6 +249,10 @@ void OsMesaOpenGLContext::readBackFormat()
     // The frame becomes visible only on swapBuffers(), which is what double
     // buffering means to callers, even though OSMesa itself has a single buffer.
     m_format.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+
+    // A query the context doesn't support must not leave an error for the caller's
+    // first glGetError() to find. Mesa keeps a single error flag; one read clears it.
+    glFunction<GetErrorFn>("glGetError")();
 
     previous.restore();
 }

@@ -101,6 +101,12 @@ WId OsMesaWindow::winId() const
     return m_winId;
 }
 
+QSurfaceFormat OsMesaWindow::format() const
+{
+    // Any format can be honoured: the pixels live in client memory.
+    return window()->requestedFormat();
+}
+
 OsMesaWindow::RenderBuffer OsMesaWindow::renderBuffer()
 {
     const QSize size = geometry().size();

@@ -26,6 +26,7 @@ public:
     void setWindowState(Qt::WindowStates state) override;
     void requestActivateWindow() override;
     WId winId() const override;
+    QSurfaceFormat format() const override;
 
     struct RenderBuffer
     {
