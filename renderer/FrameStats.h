@@ -9,6 +9,9 @@ struct FrameStats {
     double shadowPassMs = 0.0;          // with Finish: 0 when the pass was reused or shadows are off
     double litPassMs = 0.0;
     double frameWallMs = 0.0;           // render() to after glFinish; only with TimingMode::Finish
+    double shadowPassWallMs = 0.0;      // wall time of each pass between glFinish calls; only with
+    double litPassWallMs = 0.0;         // TimingMode::Finish (a software renderer's timer queries miss
+                                        // its deferred rasterisation, the wall clock does not)
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
     int litDraws = 0;
@@ -17,7 +20,7 @@ struct FrameStats {
 
 enum class TimingMode {
     Async,  // interactive: never stall, report the newest finished GPU times
-    Finish, // measurement: glFinish after the frame and wait for this frame's times
+    Finish, // measurement: glFinish after each pass and wait for this frame's times
 };
 
 } // namespace shadowlab

@@ -3,6 +3,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 
@@ -26,7 +27,6 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowTexel(program.uniform("uShadowTexel")),
       lightPosition(program.uniform("uLightPosition")),
       lightDirection(program.uniform("uLightDirection")),
-      cameraPosition(program.uniform("uCameraPosition")),
       biasSlope(program.uniform("uBiasSlope")),
       biasMin(program.uniform("uBiasMin"))
 {
@@ -34,7 +34,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
-QStringList LitPass::variantDefines(const Settings& settings)
+QStringList LitPass::variantDefines(const Settings& settings, bool measure)
 {
     QStringList defines;
     switch (settings.filter.mode) {
@@ -60,12 +60,14 @@ QStringList LitPass::variantDefines(const Settings& settings)
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
+    if (measure)
+        defines << QStringLiteral("MEASURE");
     return defines;
 }
 
-LitPass::Program& LitPass::programFor(const Settings& settings)
+LitPass::Program& LitPass::programFor(const Settings& settings, bool measure)
 {
-    const QStringList defines = variantDefines(settings);
+    const QStringList defines = variantDefines(settings, measure);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
@@ -74,9 +76,9 @@ LitPass::Program& LitPass::programFor(const Settings& settings)
 }
 
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-                    const ShadowMap* map, const RenderTarget& target)
+                    const ShadowMap* map, const RenderTarget& target, bool measure)
 {
-    Program& p = programFor(settings);
+    Program& p = programFor(settings, measure);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     m_gl->glViewport(0, 0, target.size.width(), target.size.height());
@@ -88,13 +90,20 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     m_gl->glClearColor(0.11f, 0.12f, 0.15f, 1.0f);
     m_gl->glClearDepth(1.0);
     m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (measure) {
+        const GLfloat background[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // mask 0: no surface
+        m_gl->glClearBufferfv(GL_COLOR, 1, background);
+        m_gl->glClearBufferfv(GL_COLOR, 2, background);
+    }
 
     p.program.bind();
     p.program.set(p.diffuse, int(kDiffuseUnit));
     p.program.set(p.shadowMap, int(kShadowUnit));
-    p.program.set(p.lightPosition, glm::vec3(light.position));
+    // Camera-relative: differences of large coordinates are taken in double here, not in float
+    // on the GPU.
+    const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
     p.program.set(p.lightDirection, glm::vec3(light.direction));
-    p.program.set(p.cameraPosition, glm::vec3(camera.position));
     p.program.set(p.biasSlope, float(settings.bias.slope));
     p.program.set(p.biasMin, float(settings.bias.min));
 
@@ -123,7 +132,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     int draws = 0;
     for (const auto& [distance, i] : m_drawOrder) {
         const SceneObject& object = objects[i];
-        p.program.set(p.model, glm::mat4(object.model));
+        p.program.set(p.model, glm::mat4(toCamera * object.model));
         p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
         p.program.set(p.shadowModel, glm::mat4(light.shadowMatrix * object.model));

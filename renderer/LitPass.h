@@ -20,12 +20,14 @@ public:
     explicit LitPass(GlFunctions* gl);
 
     // Draws into `target`, which must have a depth buffer. `map` may be null when shadows are off.
-    // Returns the number of draw calls.
+    // With `measure` the target must also have two RGBA32F attachments, which receive the
+    // camera-relative position and shadow visibility, and the geometric normal and a mask
+    // (1 facing the light, 2 facing away, 0 background). Returns the number of draw calls.
     int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-               const ShadowMap* map, const RenderTarget& target);
+               const ShadowMap* map, const RenderTarget& target, bool measure = false);
 
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
-    static QStringList variantDefines(const Settings& settings);
+    static QStringList variantDefines(const Settings& settings, bool measure = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
 private:
@@ -34,10 +36,10 @@ private:
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel;
         GLint diffuse, shadowMap, shadowTexel;
-        GLint lightPosition, lightDirection, cameraPosition, biasSlope, biasMin;
+        GLint lightPosition, lightDirection, biasSlope, biasMin;
     };
 
-    Program& programFor(const Settings& settings);
+    Program& programFor(const Settings& settings, bool measure);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;

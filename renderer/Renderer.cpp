@@ -1,6 +1,7 @@
 #include "Renderer.h"
 
 #include "SceneLibrary.h"
+#include "SettingsError.h"
 
 #include <QElapsedTimer>
 
@@ -13,34 +14,33 @@ Renderer::Renderer(GlFunctions* gl)
 
 Renderer::~Renderer() = default;
 
-void Renderer::render(const Settings& settings, const RenderTarget& target, TimingMode timing)
+void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats)
 {
     ensureValid(settings);
-    if (target.size.width() <= 0 || target.size.height() <= 0)
-        return;
-
-    QElapsedTimer wall;
-    wall.start();
-
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     const LightFrame light = computeLightFrame(settings.light);
     if (!m_scene || m_scene->scene().name != settings.scene) {
         m_scene = std::make_unique<GpuScene>(m_gl, buildScene(settings.scene));
         m_shadowKey.reset();
     }
-    const double aspect = double(target.size.width()) / double(target.size.height());
+    const double aspect = double(size.width()) / double(size.height());
     const CameraFrame camera = computeCameraFrame(settings.camera, aspect, m_scene->scene().bounds());
 
-    FrameStats stats;
     stats.texelWorldSize = texelWorldSize(settings.light, settings.map.size);
     if (settings.shadow.enabled) {
         m_shadowMap.ensure(settings.map.size, settings.map.format);
         const ShadowKey key{settings.scene,     settings.light,           settings.map.size,       settings.map.format,
                             settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
         if (m_shadowKey != key) {
+            QElapsedTimer wall;
+            wall.start();
             m_shadowTimer.begin();
             stats.shadowDraws = m_depthPass.render(*m_scene, light, settings.bias, m_shadowMap);
             m_shadowTimer.end();
+            if (timing == TimingMode::Finish) {
+                m_gl->glFinish();
+                stats.shadowPassWallMs = double(wall.nsecsElapsed()) * 1e-6;
+            }
             m_shadowKey = key;
             stats.shadowPassRendered = true;
             ++m_shadowPassCount;
@@ -48,26 +48,65 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     }
     m_light = light;
     m_camera = camera;
+}
 
-    m_litTimer.begin();
-    stats.litDraws = m_litPass.render(*m_scene, camera, light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target);
-    m_litTimer.end();
-
+void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
+{
     if (timing == TimingMode::Finish) {
-        m_gl->glFinish();
         if (stats.shadowPassRendered)
             stats.shadowPassMs = m_shadowTimer.result(true).value_or(0.0);
         stats.litPassMs = m_litTimer.result(true).value_or(0.0);
-        stats.frameWallMs = double(wall.nsecsElapsed()) * 1e-6;
-    } else {
-        if (auto ms = m_shadowTimer.result(false))
-            m_lastShadowMs = *ms;
-        if (auto ms = m_litTimer.result(false))
-            m_lastLitMs = *ms;
-        stats.shadowPassMs = m_lastShadowMs;
-        stats.litPassMs = m_lastLitMs;
+        return;
     }
+    if (auto ms = m_shadowTimer.result(false))
+        m_lastShadowMs = *ms;
+    if (auto ms = m_litTimer.result(false))
+        m_lastLitMs = *ms;
+    stats.shadowPassMs = m_lastShadowMs;
+    stats.litPassMs = m_lastLitMs;
+}
+
+void Renderer::render(const Settings& settings, const RenderTarget& target, TimingMode timing)
+{
+    if (target.size.width() <= 0 || target.size.height() <= 0) {
+        ensureValid(settings);
+        return;
+    }
+    QElapsedTimer frame;
+    frame.start();
+    FrameStats stats;
+    prepareFrame(settings, target.size, timing, stats);
+
+    QElapsedTimer lit;
+    lit.start();
+    m_litTimer.begin();
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target);
+    m_litTimer.end();
+    if (timing == TimingMode::Finish) {
+        m_gl->glFinish();
+        stats.litPassWallMs = double(lit.nsecsElapsed()) * 1e-6;
+        stats.frameWallMs = double(frame.nsecsElapsed()) * 1e-6;
+    }
+    finishTiming(timing, stats);
     m_stats = stats;
+}
+
+VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size)
+{
+    if (size.width() <= 0 || size.height() <= 0)
+        throw SettingsError(QStringLiteral("size"), QStringLiteral("a measurement needs at least 1x1 pixels"));
+    FrameStats stats;
+    prepareFrame(settings, size, TimingMode::Finish, stats);
+    if (!m_measureTarget)
+        m_measureTarget = std::make_unique<MeasureTarget>(m_gl);
+    const RenderTarget target = m_measureTarget->ensure(size);
+    m_litTimer.begin();
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
+                                      true);
+    m_litTimer.end();
+    finishTiming(TimingMode::Finish, stats);
+    m_stats = stats;
+    return m_measureTarget->read(m_camera.position);
 }
 
 void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible)

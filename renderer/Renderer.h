@@ -7,6 +7,7 @@
 #include "GpuTimer.h"
 #include "LightMath.h"
 #include "LitPass.h"
+#include "MeasureTarget.h"
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
@@ -31,6 +32,11 @@ public:
     // leaves the last good state alone. A target of zero area draws nothing.
     void render(const Settings& settings, const RenderTarget& target, TimingMode timing = TimingMode::Async);
 
+    // Renders `settings` at `size` with the lit pass's measuring variant and reads back, per
+    // pixel, the world position, geometric normal and the very shadow term that was shaded.
+    // Uses (and fills) the same shadow-map cache as render(). Throws like render().
+    VisibilityBuffer renderVisibility(const Settings& settings, QSize size);
+
     // Draws the current shadow map (from the last render()) into `target`.
     void renderDepthMap(const RenderTarget& target, const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
 
@@ -49,6 +55,11 @@ public:
     int maxTextureSize() const;
 
 private:
+    // Validation, scene, light and camera, and the shadow pass when its inputs changed; fills
+    // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
+    void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
+    void finishTiming(TimingMode timing, FrameStats& stats);
+
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {
         QString scene;
@@ -68,6 +79,7 @@ private:
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<GpuScene> m_scene;
+    std::unique_ptr<MeasureTarget> m_measureTarget;   // built on first measurement
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowKey> m_shadowKey;

@@ -1,20 +1,25 @@
 // Lit pass: Blinn-Phong or Phong with a diffuse texture; the light term is scaled by the
 // shadow visibility from the filter in shadow_filters.glsl. Ambient stays in shadow.
+// With MEASURE the same shadow term also goes to two float targets for the accuracy
+// measurement, so what is measured is exactly what is shaded.
 #include "shadow_filters.glsl"
 
-in vec3 vWorldPosition;
+in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
 in vec4 vShadowCoord;
 
 uniform sampler2D uDiffuse;
-uniform vec3 uLightPosition;
+uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
-uniform vec3 uCameraPosition;
 uniform float uBiasSlope;       // depth units per unit of (1 - N.L)
 uniform float uBiasMin;         // depth units
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+#ifdef MEASURE
+layout(location = 1) out vec4 measuredPosition;    // camera-relative position, visibility
+layout(location = 2) out vec4 measuredNormal;      // geometric normal, 1 facing the light / 2 away
+#endif
 
 vec3 directionToLight(vec3 position)
 {
@@ -46,8 +51,8 @@ void main()
 {
     vec3 albedo = texture(uDiffuse, vUv).rgb;
     vec3 normal = normalize(vNormal);
-    vec3 toLight = directionToLight(vWorldPosition);
-    vec3 toEye = normalize(uCameraPosition - vWorldPosition);
+    vec3 toLight = directionToLight(vPosition);
+    vec3 toEye = normalize(-vPosition);
 
     float diffuse = max(dot(normal, toLight), 0.0);
 #ifdef SHADING_PHONG
@@ -62,4 +67,11 @@ void main()
     vec3 ambient = 0.3 * albedo;
     vec3 direct = diffuse * albedo + specular * vec3(0.3);
     fragColor = vec4(ambient + visibility * direct, 1.0);
+#ifdef MEASURE
+    vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));
+    if (dot(geometric, normal) < 0.0)
+        geometric = -geometric;
+    measuredPosition = vec4(vPosition, visibility);
+    measuredNormal = vec4(geometric, dot(normal, toLight) > 0.0 ? 1.0 : 2.0);
+#endif
 }

@@ -19,7 +19,7 @@ struct Phase {
     Settings settings;
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
     std::unique_ptr<HeadlessRenderer> headless;
-    std::vector<double> shadow, lit, wall;
+    std::vector<double> shadow, lit, shadowWall, litWall, wall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
 };
@@ -53,10 +53,12 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
             const FrameStats& f = p.headless->renderer().lastFrame();
             if (f.shadowPassRendered) {
                 p.shadow.push_back(f.shadowPassMs);
+                p.shadowWall.push_back(f.shadowPassWallMs);
                 ++p.shadowPassesRun;
                 p.shadowDraws = f.shadowDraws;
             }
             p.lit.push_back(f.litPassMs);
+            p.litWall.push_back(f.litPassWallMs);
             p.wall.push_back(f.frameWallMs);
         }
     }
@@ -150,6 +152,8 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("shadow_draws"), r.shadowDraws},
                                               {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
+                                              {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
+                                              {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
                                               {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))}});
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
@@ -165,6 +169,8 @@ int runBench(const QStringList& arguments)
             out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QString()) << '\n';
             out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
+            out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';
+            out() << "  lit pass (wall):   " << formatStats(summarize(r.litWall)) << '\n';
             out() << "  frame (wall):      " << formatStats(summarize(r.wall)) << '\n';
         }
         if (phases.size() > 1) {

@@ -1,0 +1,93 @@
+#include "MeasureTarget.h"
+
+#include "RenderError.h"
+
+#include <algorithm>
+
+namespace shadowlab {
+
+namespace {
+
+GlTexture makeAttachment(GlFunctions* gl, GLenum internalFormat, GLenum format, GLenum type, QSize size)
+{
+    GlTexture texture = makeTexture(gl);
+    gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+    gl->glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), size.width(), size.height(), 0, format, type, nullptr);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->glBindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
+template <typename T>
+void flipRows(std::vector<T>& pixels, int width, int height)
+{
+    for (int y = 0; y < height / 2; ++y)
+        std::swap_ranges(pixels.begin() + std::ptrdiff_t(y) * width, pixels.begin() + std::ptrdiff_t(y + 1) * width,
+                         pixels.begin() + std::ptrdiff_t(height - 1 - y) * width);
+}
+
+} // namespace
+
+MeasureTarget::MeasureTarget(GlFunctions* gl) : m_gl(gl) {}
+
+RenderTarget MeasureTarget::ensure(QSize size)
+{
+    if (m_framebuffer && size == m_size)
+        return {m_framebuffer.id(), m_size};
+    GlFramebuffer framebuffer = makeFramebuffer(m_gl);
+    GlTexture color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size);
+    GlTexture position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
+    GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
+    GlTexture depth = makeAttachment(m_gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, size);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, position.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    m_gl->glDrawBuffers(3, buffers);
+    const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw RenderError(QStringLiteral("the %1x%2 measurement framebuffer is incomplete (status 0x%3)")
+                              .arg(size.width())
+                              .arg(size.height())
+                              .arg(status, 0, 16));
+    m_framebuffer = std::move(framebuffer);
+    m_color = std::move(color);
+    m_position = std::move(position);
+    m_normal = std::move(normal);
+    m_depth = std::move(depth);
+    m_size = size;
+    return {m_framebuffer.id(), m_size};
+}
+
+VisibilityBuffer MeasureTarget::read(const glm::dvec3& cameraPosition) const
+{
+    VisibilityBuffer b;
+    b.size = m_size;
+    b.cameraPosition = cameraPosition;
+    const int w = m_size.width(), h = m_size.height();
+    b.positionVisibility.resize(std::size_t(w) * std::size_t(h));
+    b.normalMask.resize(b.positionVisibility.size());
+    b.image = QImage(m_size, QImage::Format_RGBA8888);
+
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer.id());
+    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, b.image.bits());
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT1);
+    m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, b.positionVisibility.data());
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT2);
+    m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, b.normalMask.data());
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+
+    // GL rows run bottom to top; images and everything else here run top to bottom.
+    b.image = b.image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
+    flipRows(b.positionVisibility, w, h);
+    flipRows(b.normalMask, w, h);
+    return b;
+}
+
+} // namespace shadowlab
