@@ -74,6 +74,14 @@ struct CameraSettings {
     bool operator==(const CameraSettings&) const = default;
 };
 
+// The ray-traced reference the accuracy measurement compares against; nothing here changes
+// what the renderer draws.
+struct ReferenceSettings {
+    double lightRadius = 0.25;              // disk light radius for the area reference, world units, [0, 100]
+
+    bool operator==(const ReferenceSettings&) const = default;
+};
+
 struct Settings {
     QString scene = QStringLiteral("seed"); // one of sceneNames()
     LightSettings light;
@@ -83,6 +91,7 @@ struct Settings {
     ShadowSettings shadow;
     ShadingSettings shading;
     CameraSettings camera;
+    ReferenceSettings reference;
 
     bool operator==(const Settings&) const = default;
 };

@@ -226,6 +226,8 @@ std::vector<Entry> makeEntries()
                           "Light near plane in world units (> 0 for perspective): pushing it out buys depth precision, casters before it are clamped"));
     e.push_back(numberKey("light.far", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.farPlane; },
                           "Light far plane in world units: beyond it everything is lit; a tight far plane buys depth precision"));
+    e.push_back(numberKey("light.radius", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.reference.lightRadius; },
+                          "Radius of the disk light the area reference traces (world units): the soft shadow filtered modes are measured against"));
     e.push_back(integerKey("map.size", 16, 16384, false, [](auto& s) -> auto& { return s.map.size; },
                            "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
     e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
