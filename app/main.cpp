@@ -1,4 +1,5 @@
 #include "Application.h"
+#include "MainWindow.h"
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
 
@@ -14,6 +15,11 @@ int main(int argc, char* argv[])
         arguments << QString::fromLocal8Bit(argv[i]);
 
     if (!arguments.isEmpty() && shadowlab::cli::isCommand(arguments.first())) {
+        // Only commands that build widgets pay for QApplication (styles, fonts, input methods).
+        if (shadowlab::cli::needsWidgets(arguments.first())) {
+            QApplication app(argc, argv);
+            return shadowlab::cli::runCommand(QApplication::arguments().mid(1));
+        }
         QGuiApplication app(argc, argv);
         return shadowlab::cli::runCommand(QGuiApplication::arguments().mid(1));
     }
@@ -22,8 +28,21 @@ int main(int argc, char* argv[])
         shadowlab::cli::printUsage();
         return shadowlab::cli::kExitOk;
     }
+    if (!arguments.isEmpty()) {
+        QGuiApplication app(argc, argv);
+        shadowlab::cli::err() << "shadowlab: unknown command '" << arguments.first() << "'\n\n";
+        shadowlab::cli::printUsage();
+        return shadowlab::cli::kExitBadInput;
+    }
+
     QApplication app(argc, argv);
-    shadowlab::cli::printUsage();
-    shadowlab::cli::err() << "The explorer window is not built yet; use a command." << Qt::endl;
-    return shadowlab::cli::kExitBadInput;
+    if (QGuiApplication::platformName() == u"osmesa") {
+        // A window nobody can see would run forever: say what to do instead.
+        shadowlab::cli::err() << "shadowlab: there is no display, so the explorer cannot open.\n"
+                              << "Render it offscreen instead: shadowlab screenshot --out window.png" << Qt::endl;
+        return shadowlab::cli::kExitBadInput;
+    }
+    shadowlab::MainWindow window;
+    window.show();
+    return app.exec();
 }

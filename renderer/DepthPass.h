@@ -9,18 +9,26 @@ namespace shadowlab {
 
 // Shadow pass: renders the casters' depth from the light into the shadow map. Casters
 // entirely outside the light's volume are not drawn. Options from BiasSettings: front-face
-// culling (only back faces reach the map) and glPolygonOffset.
+// culling (only back faces reach the map) and glPolygonOffset. With a reversed-depth light
+// frame it renders through glClipControl(zero-to-one), clearing to 0 and keeping the greater depth.
 class DepthPass {
 public:
+    // Needs `gl`'s context current: looks up glClipControl (GL 4.5 or ARB_clip_control).
     explicit DepthPass(GlFunctions* gl);
 
-    // Returns the number of draw calls issued.
+    // Whether render() accepts frames with LightFrame::reversedDepth.
+    bool supportsReversedDepth() const { return m_clipControl != nullptr; }
+
+    // Clears the map to the far depth: every lookup compares lit.
+    void clear(const ShadowMap& map, bool reversedDepth);
+    // Clears, then draws the casters. Returns the number of draw calls issued.
     int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map);
 
 private:
     GlFunctions* m_gl;
     ShaderProgram m_program;
     GLint m_mvpLocation;
+    void (QOPENGLF_APIENTRYP m_clipControl)(GLenum origin, GLenum depth) = nullptr;
 };
 
 } // namespace shadowlab

@@ -13,7 +13,7 @@ DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 }
 
 DepthViewPass::DepthViewPass(GlFunctions* gl)
-    : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_sampler(makeSampler(gl)), m_raw(gl, {})
+    : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_sampler(makeSampler(gl))
 {
     // A sampler of our own: the texture's parameters belong to the renderer, and the compare
     // mode of its lit-pass sampler must not leak into this raw read.
@@ -27,9 +27,16 @@ DepthViewPass::DepthViewPass(GlFunctions* gl)
 
 void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible)
 {
-    if (light.perspective && !m_linear)
-        m_linear = std::make_unique<Program>(m_gl, QStringList{QStringLiteral("LINEARIZE")});
-    Program& p = light.perspective ? *m_linear : m_raw;
+    std::unique_ptr<Program>& variant = m_programs[{light.perspective, light.reversedDepth}];
+    if (!variant) {
+        QStringList defines;
+        if (light.perspective)
+            defines << QStringLiteral("LINEARIZE");
+        if (light.reversedDepth)
+            defines << QStringLiteral("REVERSED_Z");
+        variant = std::make_unique<Program>(m_gl, defines);
+    }
+    Program& p = *variant;
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     m_gl->glViewport(0, 0, target.size.width(), target.size.height());

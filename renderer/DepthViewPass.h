@@ -6,12 +6,14 @@
 
 #include <QRectF>
 
+#include <map>
 #include <memory>
+#include <utility>
 
 namespace shadowlab {
 
 // Draws a shadow map as a grey image: raw depth for an ortho light, linearised between near
-// and far for a perspective one. Usable from any context that shares the map's texture, so
+// and far for a perspective one; a reversed-depth map is flipped back first, so it looks the same. Usable from any context that shares the map's texture, so
 // the depth-map widget samples the renderer's map directly.
 class DepthViewPass {
 public:
@@ -32,8 +34,8 @@ private:
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
     GlSampler m_sampler;
-    Program m_raw;
-    std::unique_ptr<Program> m_linear;  // compiled when a perspective light is first shown
+    // Variants by (perspective, reversed depth), compiled when first shown.
+    std::map<std::pair<bool, bool>, std::unique_ptr<Program>> m_programs;
 };
 
 } // namespace shadowlab

@@ -15,7 +15,10 @@ struct FrameStats {
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
     int litDraws = 0;
-    double texelWorldSize = 0.0;        // world units covered by one shadow-map texel
+    double texelWorldSize = 0.0;        // world units covered by one shadow-map texel, as rendered (after light.fit)
+    double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
+    bool lightFitted = false;           // light.fit = scene shrank the volume this frame
+    bool reversedDepth = false;         // the map was rendered with reversed depth (depth32f and clip control)
 };
 
 enum class TimingMode {

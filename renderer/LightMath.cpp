@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +20,7 @@ glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target)
     return glm::lookAt(eye, target, up);
 }
 
-LightFrame computeLightFrame(const LightSettings& light)
+LightFrame computeLightFrame(const LightSettings& light, bool reversedDepth)
 {
     const double distance = glm::length(light.position - light.target);
     if (!(distance > 0.0) || !std::isfinite(distance))
@@ -30,6 +31,7 @@ LightFrame computeLightFrame(const LightSettings& light)
     LightFrame f;
     f.position = light.position;
     f.direction = (light.target - light.position) / distance;
+    f.targetDistance = distance;
     f.perspective = light.projection == LightProjection::Perspective;
     f.nearPlane = light.nearPlane;
     f.farPlane = light.farPlane;
@@ -49,7 +51,23 @@ LightFrame computeLightFrame(const LightSettings& light)
     // Clip space [-1, 1] to texture space [0, 1].
     const glm::dmat4 toTexture = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5)) * glm::scale(glm::dmat4(1.0), glm::dvec3(0.5));
     f.shadowMatrix = toTexture * f.viewProjection;
-    if (!isFinite(f.shadowMatrix))
+    // Reversed depth: z' = w - z maps conventional window depth d to 1 - d after the divide;
+    // with clip control zero-to-one the rasteriser stores it without the 0.5 z + 0.5 step, so
+    // float depth keeps its fine steps near 0, which is now the far end where they are needed.
+    f.reversedDepth = reversedDepth;
+    f.depthViewProjection = f.viewProjection;
+    f.depthShadowMatrix = f.shadowMatrix;
+    if (reversedDepth) {
+        glm::dmat4 zeroToOne(1.0);   // clip z in [-w, w] -> [0, w]
+        zeroToOne[2][2] = 0.5;
+        zeroToOne[3][2] = 0.5;
+        glm::dmat4 flip(1.0);        // z -> w - z
+        flip[2][2] = -1.0;
+        flip[3][2] = 1.0;
+        f.depthViewProjection = flip * zeroToOne * f.viewProjection;
+        f.depthShadowMatrix = flip * f.shadowMatrix;
+    }
+    if (!isFinite(f.shadowMatrix) || !isFinite(f.depthShadowMatrix))
         throw SettingsError(QStringLiteral("light"), QStringLiteral("the light's matrices are not finite; bring near, far and the positions into a sane range"));
     return f;
 }
@@ -107,6 +125,17 @@ bool isOutsideFrustum(const glm::dmat4& viewProjection, const Bounds& box, bool 
             return true;
     }
     return false;
+}
+
+std::array<glm::dvec3, 8> frustumCorners(const glm::dmat4& viewProjection)
+{
+    const glm::dmat4 inverse = glm::inverse(viewProjection);
+    std::array<glm::dvec3, 8> corners;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 p = inverse * glm::dvec4((i & 1) ? 1.0 : -1.0, (i & 2) ? 1.0 : -1.0, (i & 4) ? 1.0 : -1.0, 1.0);
+        corners[std::size_t(i)] = glm::dvec3(p) / p.w;
+    }
+    return corners;
 }
 
 bool isFinite(const glm::dmat4& m)

@@ -22,6 +22,8 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       normalMatrix(program.uniform("uNormalMatrix")),
       modelViewProjection(program.uniform("uModelViewProjection")),
       shadowModel(program.uniform("uShadowModel")),
+      shadowWorld(program.uniform("uShadowWorld")),
+      normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
       shadowMap(program.uniform("uShadowMap")),
       shadowTexel(program.uniform("uShadowTexel")),
@@ -34,7 +36,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
-QStringList LitPass::variantDefines(const Settings& settings, bool measure)
+QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth)
 {
     QStringList defines;
     switch (settings.filter.mode) {
@@ -58,6 +60,8 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
+    if (settings.shadow.enabled && reversedDepth)
+        defines << QStringLiteral("REVERSED_Z");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
     if (measure)
@@ -65,9 +69,9 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure)
     return defines;
 }
 
-LitPass::Program& LitPass::programFor(const Settings& settings, bool measure)
+LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth)
 {
-    const QStringList defines = variantDefines(settings, measure);
+    const QStringList defines = variantDefines(settings, measure, reversedDepth);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
@@ -78,7 +82,7 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure)
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
                     const ShadowMap* map, const RenderTarget& target, bool measure)
 {
-    Program& p = programFor(settings, measure);
+    Program& p = programFor(settings, measure, light.reversedDepth);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     m_gl->glViewport(0, 0, target.size.width(), target.size.height());
@@ -110,6 +114,10 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     const bool shadows = settings.shadow.enabled && map != nullptr;
     if (shadows) {
         p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
+        // World size of a texel (at unit distance for a perspective light): 2 / (P[0][0] size)
+        // for both projections, with the fitted volume the map was rendered with.
+        p.program.set(p.normalOffset, float(settings.bias.normal * 2.0 / (light.projection[0][0] * map->size())));
+        p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
         m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
         m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
         m_gl->glBindSampler(kShadowUnit, map->compareSampler(settings.filter.mode == FilterMode::HwBilinear));
@@ -135,7 +143,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         p.program.set(p.model, glm::mat4(toCamera * object.model));
         p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
-        p.program.set(p.shadowModel, glm::mat4(light.shadowMatrix * object.model));
+        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object.texture));
         scene.draw(object);
         ++draws;

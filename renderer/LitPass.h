@@ -27,19 +27,19 @@ public:
                const ShadowMap* map, const RenderTarget& target, bool measure = false);
 
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
-    static QStringList variantDefines(const Settings& settings, bool measure = false);
+    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
 private:
     struct Program {
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
-        GLint model, normalMatrix, modelViewProjection, shadowModel;
+        GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
         GLint diffuse, shadowMap, shadowTexel;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
     };
 
-    Program& programFor(const Settings& settings, bool measure);
+    Program& programFor(const Settings& settings, bool measure, bool reversedDepth);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;

@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "LightFitting.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 
@@ -14,24 +15,56 @@ Renderer::Renderer(GlFunctions* gl)
 
 Renderer::~Renderer() = default;
 
+void Renderer::setScene(std::optional<Scene> scene)
+{
+    m_customScene = std::move(scene);
+    m_sceneChanged = true;
+}
+
 void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats)
 {
     ensureValid(settings);
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
-    const LightFrame light = computeLightFrame(settings.light);
-    if (!m_scene || m_scene->scene().name != settings.scene) {
-        m_scene = std::make_unique<GpuScene>(m_gl, buildScene(settings.scene));
-        m_shadowKey.reset();
+    computeLightFrame(settings.light);
+    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F;
+    const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
+    if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
+        qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
+        m_warnedNoReversedDepth = true;
     }
+    if (settings.shadow.enabled)
+        m_shadowMap.ensure(settings.map.size, settings.map.format, reversed);
+    if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
+        m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
+        m_sceneChanged = false;
+        ++m_sceneGeneration;
+    }
+    const Scene& scene = m_scene->scene();
     const double aspect = double(size.width()) / double(size.height());
-    const CameraFrame camera = computeCameraFrame(settings.camera, aspect, m_scene->scene().bounds());
+    const CameraFrame camera = computeCameraFrame(settings.camera, aspect, scene.bounds());
 
-    stats.texelWorldSize = texelWorldSize(settings.light, settings.map.size);
+    // Every object receives; casters are the objects that cast.
+    std::vector<Bounds> casters, receivers;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        receivers.push_back(m_scene->objectBounds(i));
+        if (scene.objects[i].castsShadow)
+            casters.push_back(m_scene->objectBounds(i));
+    }
+    const FittedLight fit = fitLight(settings.light, casters, receivers, camera.viewProjection, settings.map.size);
+    const LightFrame light = computeLightFrame(fit.light, reversed);
+    stats.texelWorldSizeBeforeFit = fit.texelBefore;
+    stats.texelWorldSize = fit.texelAfter;
+    stats.lightFitted = fit.fitted;
+    stats.reversedDepth = reversed;
+
     if (settings.shadow.enabled) {
-        m_shadowMap.ensure(settings.map.size, settings.map.format);
-        const ShadowKey key{settings.scene,     settings.light,           settings.map.size,       settings.map.format,
+        const ShadowKey key{m_sceneGeneration, fit.light, reversed, settings.map.size, settings.map.format,
                             settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
-        if (m_shadowKey != key) {
+        if (m_shadowKey != key && !fit.anythingToShadow) {
+            // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
+            m_depthPass.clear(m_shadowMap, reversed);
+            m_shadowKey = key;
+        } else if (m_shadowKey != key) {
             QElapsedTimer wall;
             wall.start();
             m_shadowTimer.begin();
@@ -46,6 +79,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
             ++m_shadowPassCount;
         }
     }
+    m_fittedLight = fit.light;
     m_light = light;
     m_camera = camera;
 }

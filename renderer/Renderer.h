@@ -45,6 +45,14 @@ public:
     const CameraFrame& cameraFrame() const { return m_camera; }
     const ShadowMap& shadowMap() const { return m_shadowMap; }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
+    // Renders `scene` instead of the preset that settings.scene names, until reset with nullopt
+    // (for the audit's degenerate scenes; the `scene` key offers only the presets). Uploaded on
+    // the next render().
+    void setScene(std::optional<Scene> scene);
+    // The light volume of the last frame after light.fit (the passes' volume).
+    const LightSettings& fittedLight() const { return m_fittedLight; }
+    // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
+    bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run since construction.
     int shadowPassCount() const { return m_shadowPassCount; }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
@@ -62,8 +70,9 @@ private:
 
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {
-        QString scene;
-        LightSettings light;
+        int sceneGeneration = 0;
+        LightSettings light;        // after fitting
+        bool reversedDepth = false;
         int mapSize = 0;
         DepthFormat format = DepthFormat::Depth24;
         bool cullFront = false;
@@ -83,6 +92,11 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowKey> m_shadowKey;
+    std::optional<Scene> m_customScene;
+    bool m_sceneChanged = true;     // rebuild m_scene on the next frame
+    int m_sceneGeneration = 0;
+    bool m_warnedNoReversedDepth = false;
+    LightSettings m_fittedLight;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;

@@ -72,11 +72,27 @@ Scene cubesScene()
     return s;
 }
 
+Scene occluderScene()
+{
+    // The simplest shadow there is: a thin square board above a plane, turned 30 degrees so its
+    // edges cross the shadow map's texel grid. Under a light straight above, its shadow is
+    // exactly the board's square (half-size 1) on the plane.
+    Scene s;
+    s.name = QStringLiteral("occluder");
+    addGround(s, 0.0);
+    s.meshes.push_back(meshes::cube());
+    glm::dmat4 board = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0));
+    board = glm::rotate(board, glm::radians(30.0), glm::dvec3(0.0, 1.0, 0.0));
+    board = glm::scale(board, glm::dvec3(1.0, 0.02, 1.0));
+    s.objects.push_back({QStringLiteral("board"), int(s.meshes.size() - 1), board, TextureKind::Wood, true});
+    return s;
+}
+
 } // namespace
 
 QStringList sceneNames()
 {
-    return {QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes")};
+    return {QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder")};
 }
 
 Scene buildScene(const QString& name)
@@ -87,6 +103,8 @@ Scene buildScene(const QString& name)
         return torusScene();
     if (name == u"cubes")
         return cubesScene();
+    if (name == u"occluder")
+        return occluderScene();
     throw SettingsError(QStringLiteral("scene"),
                         QStringLiteral("'%1' is not a scene; choose one of %2").arg(name, sceneNames().join(QStringLiteral(" | "))));
 }
@@ -115,6 +133,16 @@ Settings presetSettings(const QString& name)
         s.light.farPlane = 18.0;
         s.camera.position = {0.0, 6.0, 11.0};
         s.camera.target = {0.0, 0.5, 0.0};
+        return s;
+    }
+    if (name == u"occluder") {
+        s.light.position = {0.0, 6.0, 0.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 4.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 10.0;
+        s.camera.position = {0.0, 5.0, 4.5};
+        s.camera.target = {0.0, 0.0, 0.0};
         return s;
     }
     buildScene(name); // throws the message that names the choices

@@ -9,6 +9,7 @@
 namespace shadowlab {
 
 enum class LightProjection { Ortho, Perspective };
+enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear };
 enum class ShadingModel { Phong, BlinnPhong };
@@ -23,6 +24,10 @@ struct LightSettings {
     double fov = 90.0;                      // perspective full angle in degrees, (0, 180)
     double nearPlane = 1.0;                 // ortho: any finite < far; perspective: > 0
     double farPlane = 7.5;                  // > near, <= 1e7
+    // Scene: the volume above shrunk to what casts onto what the camera sees (LightFitting.h);
+    // Manual: exactly the volume above.
+    LightFit fit = LightFit::Scene;
+    bool stabilize = true;                  // snap the fitted volume so camera moves neither shimmer nor redraw the map
 
     bool operator==(const LightSettings&) const = default;
 };
@@ -34,10 +39,13 @@ struct MapSettings {
     bool operator==(const MapSettings&) const = default;
 };
 
-// bias = max(slope * (1 - N.L), min), in depth-buffer units ([0, 1] window depth).
+// Depth bias = max(slope * (1 - N.L), min), in depth-buffer units ([0, 1] window depth);
+// (1 - N.L) <= 1 keeps it bounded at grazing angles, unlike the slope * tan(theta) form.
+// Normal offset moves the shadow lookup along the surface normal, in shadow-map texels.
 struct BiasSettings {
     double slope = 0.02;                    // [0, 0.5]
     double min = 0.001;                     // [0, 0.5]
+    double normal = 0.0;                    // texels, [0, 8]
     bool cullFront = false;                 // draw back faces only into the shadow map
     double polygonFactor = 0.0;             // glPolygonOffset factor, [-16, 16]
     double polygonUnits = 0.0;              // glPolygonOffset units, [-10000, 10000]

@@ -182,6 +182,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
 }
 
 const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("perspective")};
+const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
 const QStringList kFilterNames{QStringLiteral("hard"), QStringLiteral("pcf"), QStringLiteral("pcf-dither4"),
                                QStringLiteral("pcf64"), QStringLiteral("hw-bilinear")};
@@ -228,6 +229,10 @@ std::vector<Entry> makeEntries()
                           "Light far plane in world units: beyond it everything is lit; a tight far plane buys depth precision"));
     e.push_back(numberKey("light.radius", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.reference.lightRadius; },
                           "Radius of the disk light the area reference traces (world units): the soft shadow filtered modes are measured against"));
+    e.push_back(choiceKey<LightFit>("light.fit", kFitNames, [](auto& s) -> auto& { return s.light.fit; },
+                                    "scene: shrink the light volume (extent or fov, near, far) to what casts onto what the camera sees, for smaller texels and finer depth; manual: use it as set"));
+    e.push_back(boolKey("light.stabilize", [](auto& s) -> auto& { return s.light.stabilize; },
+                        "Snap the fitted volume to whole texels and coarse size steps: no shimmer and no shadow-pass redraw on small camera moves, at slightly larger texels"));
     e.push_back(integerKey("map.size", 16, 16384, false, [](auto& s) -> auto& { return s.map.size; },
                            "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
     e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
@@ -236,6 +241,8 @@ std::vector<Entry> makeEntries()
                           "Slope-scaled depth bias, times (1 - N.L): too little shows acne on lit slopes, too much detaches shadows (peter panning)"));
     e.push_back(numberKey("bias.min", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.bias.min; },
                           "Minimum depth bias, in depth units: removes acne on surfaces facing the light, too much makes shadows leak at contacts"));
+    e.push_back(numberKey("bias.normal", Range{0.0, 8.0}, [](auto& s) -> auto& { return s.bias.normal; },
+                          "Normal-offset bias in shadow-map texels: looks the shadow up from a point moved off the surface, against acne at grazing angles without detaching contact shadows as much as depth bias"));
     e.push_back(boolKey("bias.cull_front", [](auto& s) -> auto& { return s.bias.cullFront; },
                         "Render back faces into the shadow map: removes acne on closed lit faces, can leak light where thin casters touch"));
     e.push_back(numberKey("bias.polygon_factor", Range{-16.0, 16.0}, [](auto& s) -> auto& { return s.bias.polygonFactor; },
@@ -408,6 +415,7 @@ void saveSettingsFile(const QString& path, const Settings& settings)
 }
 
 QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }
+QString toString(LightFit value) { return kFitNames.value(int(value)); }
 QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
 QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }

@@ -48,6 +48,7 @@ Settings loadSettingsFile(const QString& path, const Settings& base);
 void saveSettingsFile(const QString& path, const Settings& settings);
 
 QString toString(LightProjection value);
+QString toString(LightFit value);
 QString toString(DepthFormat value);
 QString toString(FilterMode value);
 QString toString(ShadingModel value);

@@ -8,16 +8,17 @@ namespace shadowlab {
 
 namespace {
 
-void configureSampler(GlFunctions* gl, GLuint sampler, GLint filter, bool compare)
+void configureSampler(GlFunctions* gl, GLuint sampler, GLint filter, bool compare, bool reversedDepth)
 {
-    const GLfloat border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    const GLfloat far = reversedDepth ? 0.0f : 1.0f;
+    const GLfloat border[4] = {far, far, far, far};
     gl->glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
     gl->glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
     gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
     gl->glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
     gl->glSamplerParameterfv(sampler, GL_TEXTURE_BORDER_COLOR, border);
     gl->glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, compare ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
-    gl->glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    gl->glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, reversedDepth ? GL_GEQUAL : GL_LEQUAL);
 }
 
 } // namespace
@@ -25,15 +26,25 @@ void configureSampler(GlFunctions* gl, GLuint sampler, GLint filter, bool compar
 ShadowMap::ShadowMap(GlFunctions* gl)
     : m_gl(gl), m_compareNearest(makeSampler(gl)), m_compareLinear(makeSampler(gl)), m_raw(makeSampler(gl))
 {
-    configureSampler(gl, m_compareNearest.id(), GL_NEAREST, true);
-    configureSampler(gl, m_compareLinear.id(), GL_LINEAR, true);
-    configureSampler(gl, m_raw.id(), GL_NEAREST, false);
+    configureSampler(gl, m_compareNearest.id(), GL_NEAREST, true, false);
+    configureSampler(gl, m_compareLinear.id(), GL_LINEAR, true, false);
+    configureSampler(gl, m_raw.id(), GL_NEAREST, false, false);
 }
 
-void ShadowMap::ensure(int size, DepthFormat format)
+void ShadowMap::ensure(int size, DepthFormat format, bool reversedDepth)
 {
-    if (m_texture && size == m_size && format == m_format)
-        return;
+    if (!m_texture || size != m_size || format != m_format)
+        allocate(size, format);
+    if (reversedDepth != m_reversedDepth) {
+        configureSampler(m_gl, m_compareNearest.id(), GL_NEAREST, true, reversedDepth);
+        configureSampler(m_gl, m_compareLinear.id(), GL_LINEAR, true, reversedDepth);
+        configureSampler(m_gl, m_raw.id(), GL_NEAREST, false, reversedDepth);
+        m_reversedDepth = reversedDepth;
+    }
+}
+
+void ShadowMap::allocate(int size, DepthFormat format)
+{
     GLint maxSize = 0;
     m_gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (size < 16 || size > maxSize)

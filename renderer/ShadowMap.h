@@ -6,7 +6,8 @@
 namespace shadowlab {
 
 // The light's depth texture and the framebuffer that renders into it. Border-clamped with a
-// border depth of 1.0, so lookups outside the map compare as lit. Two sampler objects read
+// border depth at the far end (1.0, or 0.0 with reversed depth, which also compares GEQUAL),
+// so lookups outside the map compare as lit. Two sampler objects read
 // the same texture: a comparison sampler for the lit pass (nearest or linear) and a raw one
 // for the depth-map view.
 class ShadowMap {
@@ -16,16 +17,19 @@ public:
     // (Re)allocates when size or format differ. Throws SettingsError when the size exceeds the
     // driver's GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate it or the
     // framebuffer is incomplete; the previous map is kept then.
-    void ensure(int size, DepthFormat format);
+    void ensure(int size, DepthFormat format, bool reversedDepth = false);
 
     int size() const { return m_size; }
     DepthFormat format() const { return m_format; }
+    bool reversedDepth() const { return m_reversedDepth; }
     GLuint texture() const { return m_texture.id(); }
     GLuint framebuffer() const { return m_framebuffer.id(); }
     GLuint compareSampler(bool linear) const { return linear ? m_compareLinear.id() : m_compareNearest.id(); }
     GLuint rawSampler() const { return m_raw.id(); }
 
 private:
+    void allocate(int size, DepthFormat format);
+
     GlFunctions* m_gl;
     GlTexture m_texture;
     GlFramebuffer m_framebuffer;
@@ -34,6 +38,7 @@ private:
     GlSampler m_raw;
     int m_size = 0;
     DepthFormat m_format = DepthFormat::Depth24;
+    bool m_reversedDepth = false;
 };
 
 } // namespace shadowlab

@@ -8,8 +8,8 @@ preset="${SHADOWLAB_PRESET:-release}"
 
 packages=(
     cmake ninja-build g++ pkg-config
-    qt6-base-dev qt6-base-private-dev libqt6opengl6-dev
-    libglm-dev libosmesa6-dev libgl-dev libegl-dev libgl1-mesa-dri
+    qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
+    libglm-dev libosmesa6-dev libgl-dev libegl-dev libgl1-mesa-dri libembree-dev
     fonts-dejavu-core
 )
 

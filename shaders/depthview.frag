@@ -15,10 +15,14 @@ void main()
         return;
     }
     float depth = texture(uDepth, vUv).r;
+#ifdef REVERSED_Z
+    depth = 1.0 - depth;        // reversed maps store 1 - the conventional depth
+#endif
 #ifdef LINEARIZE
     float ndc = depth * 2.0 - 1.0;
     float distance = 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
-    depth = (distance - uNear) / (uFar - uNear);
+    // A huge far/near ratio puts everything near black on a linear scale: go logarithmic.
+    depth = uFar > 1000.0 * uNear ? log(distance / uNear) / log(uFar / uNear) : (distance - uNear) / (uFar - uNear);
 #endif
     fragColor = vec4(vec3(depth), 1.0);
 }

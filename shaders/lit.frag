@@ -36,12 +36,22 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     if (vShadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
     vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
+#ifdef REVERSED_Z
+    if (coord.z < 0.0)
+        return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
+#else
     if (coord.z > 1.0)
         return 1.0;             // beyond the far plane is lit
+#endif
     if (dot(normal, toLight) <= 0.0)
         return 0.0;             // facing away: unlit anyway, so skip the lookups
+    // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+#ifdef REVERSED_Z
+    return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
+#else
     return filterShadow(coord.xy, coord.z - bias);
+#endif
 #else
     return 1.0;
 #endif

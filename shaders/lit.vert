@@ -9,6 +9,8 @@ uniform mat4 uModel;            // object -> world, translated so the camera is 
 uniform mat3 uNormalMatrix;
 uniform mat4 uModelViewProjection;
 uniform mat4 uShadowModel;      // object -> shadow texture space (xy and depth in [0, 1])
+uniform mat4 uShadowWorld;      // world -> shadow texture space; used on directions only
+uniform float uNormalOffset;    // world units to move along the normal (per unit of w for a perspective light)
 
 out vec3 vPosition;             // camera-relative world position
 out vec3 vNormal;
@@ -21,6 +23,17 @@ void main()
     vPosition = vec3(uModel * position);
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
-    vShadowCoord = uShadowModel * position;
+    // Normal offset: look the shadow up from a point moved off the surface by a few texels,
+    // so the lookup clears the surface's own depth where a depth bias would need to be huge.
+    // Homogeneous coordinates make the offset a separate term (w = 0), which keeps the exact
+    // object-space path for the position itself. A perspective texel grows with distance (w).
+    vec4 shadowCoord = uShadowModel * position;
+    float offset = uNormalOffset;
+#ifdef LIGHT_PERSPECTIVE
+    offset *= shadowCoord.w;
+#endif
+    float normalLength = length(vNormal);   // 0 only on a degenerate mesh: no offset, no NaN
+    vec3 unitNormal = normalLength > 0.0 ? vNormal / normalLength : vec3(0.0);
+    vShadowCoord = shadowCoord + uShadowWorld * vec4(unitNormal * offset, 0.0);
     gl_Position = uModelViewProjection * position;
 }

@@ -141,6 +141,60 @@ private Q_SLOTS:
         QVERIFY(table.out.contains("filter.mode") && table.out.contains("hard | pcf | pcf-dither4 | pcf64 | hw-bilinear"));
     }
 
+    void reportWritesEveryConfiguredRow()
+    {
+        const QString sweep = m_dir.filePath("sweep.json");
+        QFile f(sweep);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
+                    {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
+                    {"label": "no bias", "set": {"bias.slope": 0, "bias.min": 0}}])");
+        f.close();
+        const QString dir = m_dir.filePath("report");
+        const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "2", "--warmup", "0",
+                                 "--area-samples", "2", "--out", dir});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+        QFile csv(dir + "/report.csv");
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
+        QCOMPARE(lines.size(), 4); // header + one row per configuration
+        QVERIFY(lines[1].startsWith("hard 512,") && lines[2].startsWith("pcf 5,") && lines[3].startsWith("no bias,"));
+
+        QFile json(dir + "/report.json");
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QJsonObject report = QJsonDocument::fromJson(json.readAll()).object();
+        const QJsonArray rows = report.value("rows").toArray();
+        QCOMPARE(rows.size(), 3);
+        QCOMPARE(report.value("reference_computations").toInt(), 1);
+        QVERIFY(report.value("rays_per_second").toDouble() > 0.0);
+        // Without bias the shadow is mostly acne: far more false shadow than with the defaults.
+        const double acne = rows[2].toObject().value("hard_reference").toObject().value("false_shadow").toDouble();
+        const double clean = rows[0].toObject().value("hard_reference").toObject().value("false_shadow").toDouble();
+        QVERIFY2(acne > 10 * clean && acne > 0.05, qPrintable(QString("%1 vs %2").arg(acne).arg(clean)));
+
+        QFile html(dir + "/report.html");
+        QVERIFY(html.open(QIODevice::ReadOnly));
+        const QString page = QString::fromUtf8(html.readAll());
+        for (const char* label : {"hard 512", "pcf 5", "no bias"})
+            QVERIFY(page.contains(label));
+        QVERIFY(page.contains("<svg") && page.contains("data:image/png;base64,"));
+        QVERIFY(!page.contains("http://") || page.contains("xmlns=\"http://www.w3.org/2000/svg\"")); // self-contained
+    }
+
+    void reportRejectsABadSweep()
+    {
+        const QString sweep = m_dir.filePath("bad-sweep.json");
+        QFile f(sweep);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"([{"label": "broken", "set": {"filter.kernel": 4}}])");
+        f.close();
+        const Run r = shadowlab({"report", "--sweep", sweep, "--out", m_dir.filePath("never")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("broken") && r.err.contains("filter.kernel"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never")));
+    }
+
     void benchReportsCachedAndUncachedPhases()
     {
         const Run r = shadowlab({"bench", "--size", "160x90", "--frames", "5", "--warmup", "1", "--json"});

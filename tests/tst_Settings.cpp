@@ -40,7 +40,7 @@ private Q_SLOTS:
                                    "light.near", "light.far", "map.size", "map.format", "bias.slope", "bias.min",
                                    "bias.cull_front", "bias.polygon_factor", "bias.polygon_units", "filter.mode",
                                    "filter.kernel", "shadow.enabled", "shading.model", "camera.position",
-                                   "camera.target", "camera.fov", "scene"};
+                                   "camera.target", "camera.fov", "scene", "light.fit", "light.stabilize", "bias.normal"};
         for (const QString& key : required)
             QVERIFY2(findSettingKey(key) != nullptr, qPrintable(key));
     }
@@ -77,6 +77,8 @@ private Q_SLOTS:
         QTest::newRow("map huge") << "map.size" << "100000" << "[16, 16384]";
         QTest::newRow("unknown filter") << "filter.mode" << "vsm" << "hard | pcf";
         QTest::newRow("unknown scene") << "scene" << "sponza" << "seed";
+        QTest::newRow("unknown fit") << "light.fit" << "auto" << "manual | scene";
+        QTest::newRow("normal offset 9") << "bias.normal" << "9" << "[0, 8]";
         QTest::newRow("vector of two") << "light.position" << "1,2" << "x,y,z";
         QTest::newRow("vector with NaN") << "camera.position" << "1,nan,2" << "finite";
         QTest::newRow("not a bool") << "shadow.enabled" << "maybe" << "true | false";

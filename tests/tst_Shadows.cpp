@@ -236,7 +236,8 @@ private Q_SLOTS:
             return std::pair(a.litWrong + a.shadowWrong, a.litExpected + a.shadowExpected);
         };
         const auto [tutorialWrong, total] =
-            misclassified(seedWith({"filter.mode=pcf", "filter.kernel=3", "map.size=1024", "bias.slope=0.05", "bias.min=0.005"}));
+            misclassified(seedWith({"filter.mode=pcf", "filter.kernel=3", "map.size=1024", "bias.slope=0.05", "bias.min=0.005",
+                                    "light.fit=manual"})); // a tutorial renders the classic +-10 volume
         const auto [defaultWrong, total2] = misclassified(presetSettings("seed"));
         qInfo("misclassified plane samples: tutorial configuration %d, defaults %d (of %d)", tutorialWrong, defaultWrong, total);
         QCOMPARE(total, total2);
@@ -311,8 +312,9 @@ private Q_SLOTS:
 
     void shadowPassIsSkippedWhenOnlyTheCameraChanges()
     {
+        // With the volume as set; a fitted volume follows the camera (next test).
         Renderer& r = m_headless->renderer();
-        Settings s = presetSettings("seed");
+        Settings s = seedWith({"light.fit=manual"});
         m_headless->renderFrame(s, kSize);
         const int before = r.shadowPassCount();
 
@@ -336,6 +338,47 @@ private Q_SLOTS:
         m_headless->renderFrame(s, kSize);
         QVERIFY(r.lastFrame().shadowPassRendered);
         QCOMPARE(r.shadowPassCount(), before + 3);
+    }
+
+    void fittedShadowPassIsSkippedOnSmallCameraMoves()
+    {
+        Renderer& r = m_headless->renderer();
+        Settings s = presetSettings("seed");
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(r.lastFrame().lightFitted);
+        QCOMPARE_LT(r.lastFrame().texelWorldSize, r.lastFrame().texelWorldSizeBeforeFit);
+        const int before = r.shadowPassCount();
+        for (int i = 1; i <= 10; ++i) {
+            s.camera.position.x += 0.002;
+            m_headless->renderFrame(s, kSize);
+        }
+        QVERIFY2(r.shadowPassCount() - before <= 2, qPrintable(QString("%1 passes for 10 small camera moves").arg(r.shadowPassCount() - before)));
+        s.light.stabilize = false; // unsnapped, every move refits
+        m_headless->renderFrame(s, kSize);
+        const int unsnapped = r.shadowPassCount();
+        s.camera.position.x += 0.002;
+        m_headless->renderFrame(s, kSize);
+        QCOMPARE(r.shadowPassCount(), unsnapped + 1);
+    }
+
+    void reversedDepthAndNormalOffsetShadowTheOccludedPlane_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("depth32f reversed, ortho") << QStringList{"map.format=depth32f"};
+        QTest::newRow("depth32f reversed, perspective") << QStringList{"map.format=depth32f", "light.projection=perspective"};
+        QTest::newRow("normal offset 1.5, no depth bias") << QStringList{"bias.normal=1.5", "bias.slope=0", "bias.min=0.0002"};
+        QTest::newRow("fit manual") << QStringList{"light.fit=manual"};
+    }
+
+    void reversedDepthAndNormalOffsetShadowTheOccludedPlane()
+    {
+        QFETCH(QStringList, assignments);
+        const Agreement a = renderAndCompare(seedWith(assignments));
+        QVERIFY(a.shadowExpected >= 20);
+        QVERIFY2(a.shadowWrong <= a.shadowExpected / 50, qPrintable(QString("%1 of %2 occluded points render lit").arg(a.shadowWrong).arg(a.shadowExpected)));
+        QVERIFY2(a.litWrong <= a.litExpected / 100, qPrintable(QString("%1 of %2 unoccluded points render dark").arg(a.litWrong).arg(a.litExpected)));
+        if (assignments.contains("map.format=depth32f"))
+            QCOMPARE(m_headless->renderer().lastFrame().reversedDepth, m_headless->renderer().supportsReversedDepth());
     }
 
     void onlyTheVariantInUseIsCompiled()

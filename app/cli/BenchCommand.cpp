@@ -22,10 +22,11 @@ struct Phase {
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
+    FrameStats last;
 };
 
 // The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
-// 1024 map, bias max(0.05 (1 - N.L), 0.005), and a shadow pass every frame.
+// 1024 map, bias max(0.05 (1 - N.L), 0.005), the hand-set light volume, and a shadow pass every frame.
 Settings tutorialSettings(Settings s)
 {
     s.map.size = 1024;
@@ -36,6 +37,7 @@ Settings tutorialSettings(Settings s)
     s.bias = BiasSettings{};
     s.bias.slope = 0.05;
     s.bias.min = 0.005;
+    s.light.fit = LightFit::Manual;     // the classic hand-set volume
     return s;
 }
 
@@ -51,6 +53,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
             if (i < warmup)
                 continue;
             const FrameStats& f = p.headless->renderer().lastFrame();
+            p.last = f;
             if (f.shadowPassRendered) {
                 p.shadow.push_back(f.shadowPassMs);
                 p.shadowWall.push_back(f.shadowPassWallMs);
@@ -150,6 +153,8 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
                                               {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
                                               {QStringLiteral("shadow_draws"), r.shadowDraws},
+                                              {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
+                                              {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
                                               {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
                                               {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
@@ -167,7 +172,8 @@ int runBench(const QStringList& arguments)
         for (const Phase& r : phases) {
             out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << warmup << " warm-up\n";
             out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
-                  << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QString()) << '\n';
+                  << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QStringLiteral(", %1 draws").arg(r.shadowDraws)) << '\n';
+            out() << "  " << formatTexelLine(r.last) << '\n';
             out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
             out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';
             out() << "  lit pass (wall):   " << formatStats(summarize(r.litWall)) << '\n';

@@ -78,6 +78,15 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     return settings;
 }
 
+QString formatTexelLine(const FrameStats& stats)
+{
+    return QStringLiteral("shadow texel: %1 world units as set, %2 as rendered%3%4")
+        .arg(stats.texelWorldSizeBeforeFit, 0, 'g', 4)
+        .arg(stats.texelWorldSize, 0, 'g', 4)
+        .arg(stats.lightFitted ? QStringLiteral(" (fitted to the scene)") : QString(),
+             stats.reversedDepth ? QStringLiteral(", reversed depth") : QString());
+}
+
 QSize parseSize(const QString& text, const QString& option)
 {
     const QStringList parts = text.toLower().split(QLatin1Char('x'));

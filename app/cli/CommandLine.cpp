@@ -9,12 +9,16 @@ struct Command {
     const char* name;
     const char* summary;
     int (*run)(const QStringList&);
+    bool widgets = false;
 };
 
 const Command kCommands[] = {
     {"render", "Render the scene (and optionally the shadow map) headless to PNG", runRender},
     {"bench", "Time the shadow and lit passes over many frames", runBench},
+    {"report", "Error against run time over a sweep, against a ray-traced reference", runReport},
     {"settings", "List every setting with its default and range", runSettings},
+    {"audit", "Run the extreme and degenerate cases and print pass/fail for each", runAudit},
+    {"screenshot", "Save the explorer window, rendered offscreen, as PNG", runScreenshot, true},
 };
 
 } // namespace
@@ -24,6 +28,15 @@ bool isCommand(const QString& name)
     for (const Command& c : kCommands) {
         if (name == QLatin1String(c.name))
             return true;
+    }
+    return false;
+}
+
+bool needsWidgets(const QString& name)
+{
+    for (const Command& c : kCommands) {
+        if (name == QLatin1String(c.name))
+            return c.widgets;
     }
     return false;
 }
@@ -43,7 +56,7 @@ void printUsage()
     err() << "usage: shadowlab [command] [options]\n\n"
           << "With no command, opens the explorer window.\n\nCommands:\n";
     for (const Command& c : kCommands)
-        err() << "  " << QString::fromLatin1(c.name).leftJustified(10) << c.summary << '\n';
+        err() << "  " << QString::fromLatin1(c.name).leftJustified(12) << c.summary << '\n';
     err() << "\nRun `shadowlab <command> --help` for a command's options." << Qt::endl;
 }
 

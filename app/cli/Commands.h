@@ -7,10 +7,15 @@ namespace shadowlab::cli {
 // Each takes the arguments after the subcommand's name and returns the process exit code.
 int runRender(const QStringList& arguments);
 int runBench(const QStringList& arguments);
+int runReport(const QStringList& arguments);
 int runSettings(const QStringList& arguments);
+int runAudit(const QStringList& arguments);
+int runScreenshot(const QStringList& arguments);  // needs a QApplication
 
 // True when `name` is a subcommand; runCommand dispatches to it (`args[0]` is the name).
 bool isCommand(const QString& name);
+// True when the subcommand builds widgets and so needs a QApplication, not a QGuiApplication.
+bool needsWidgets(const QString& name);
 int runCommand(const QStringList& arguments);
 void printUsage();
 

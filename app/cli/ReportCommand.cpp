@@ -1,0 +1,154 @@
+#include "AccuracyMeter.h"
+#include "CliSupport.h"
+#include "Commands.h"
+#include "HeadlessRenderer.h"
+#include "ReportSweep.h"
+#include "ReportWriter.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+
+#include <unistd.h>
+
+namespace shadowlab::cli {
+
+namespace {
+
+// A one-line progress bar with the time left, redrawn in place; only on a terminal.
+class ProgressBar {
+public:
+    ProgressBar() : m_enabled(isatty(STDERR_FILENO) == 1) { m_timer.start(); }
+
+    void show(double fraction, const QString& what)
+    {
+        if (!m_enabled)
+            return;
+        const int width = 30;
+        const int filled = int(fraction * width + 0.5);
+        const double elapsed = double(m_timer.elapsed()) / 1000.0;
+        const QString left = fraction > 0.02 ? QStringLiteral("%1 s left").arg(int(elapsed / fraction - elapsed + 0.5)) : QStringLiteral("…");
+        err() << "\r[" << QString(filled, QLatin1Char('#')) << QString(width - filled, QLatin1Char('.')) << "] "
+              << QString::number(int(fraction * 100)).rightJustified(3) << "%  " << left.leftJustified(12) << what.left(40).leftJustified(40)
+              << Qt::flush;
+    }
+    void done()
+    {
+        if (m_enabled)
+            err() << '\r' << QString(100, QLatin1Char(' ')) << '\r' << Qt::flush;
+    }
+
+private:
+    bool m_enabled;
+    QElapsedTimer m_timer;
+};
+
+} // namespace
+
+int runReport(const QStringList& arguments)
+{
+    return guarded(QStringLiteral("report"), [&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(QStringLiteral("Error against run time over a sweep of configurations, "
+                                                        "measured against a ray-traced reference of the same pixels."));
+        parser.addHelpOption();
+        addSettingsOptions(parser);
+        parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
+        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, or a JSON file (default: default)."),
+                          QStringLiteral("name|file.json"), QStringLiteral("default")});
+        parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
+        parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration (default 30)."), QStringLiteral("n"),
+                          QStringLiteral("30")});
+        parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
+        parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
+                          QStringLiteral("n"), QStringLiteral("16")});
+        if (!parser.parse(QStringList{QStringLiteral("shadowlab report")} + arguments))
+            throw UsageError(parser.errorText());
+        if (parser.isSet(QStringLiteral("help"))) {
+            out() << parser.helpText();
+            return kExitOk;
+        }
+        if (!parser.isSet(QStringLiteral("out")))
+            throw UsageError(QStringLiteral("say where to write the report: --out DIR"));
+        const Settings base = settingsFromOptions(parser);
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
+        const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
+        const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
+        const std::vector<SweepEntry> sweep = loadSweep(parser.value(QStringLiteral("sweep")));
+        std::vector<Settings> configurations;
+        for (const SweepEntry& entry : sweep)
+            configurations.push_back(applySweepEntry(base, entry)); // every entry is checked before any work starts
+
+        QElapsedTimer total;
+        total.start();
+        HeadlessRenderer headless;
+        AccuracyMeter meter(ReferenceOptions{true, base.reference.lightRadius, samples});
+        ProgressBar progress;
+        std::vector<ReportRow> rows;
+        double raysPerSecond = 0.0, noiseFloor = 0.0;
+        // First the accuracy of every configuration (the reference is traced once and reused)...
+        const double accuracyShare = 0.5;
+        for (std::size_t c = 0; c < sweep.size(); ++c) {
+            const double start = accuracyShare * double(c) / sweep.size(), step = accuracyShare / sweep.size();
+            ReportRow row{sweep[c].label, sweep[c].assignments, {}, {}, {}, {}, false};
+            row.accuracy = meter.measure(headless.renderer(), configurations[c], size,
+                                         [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
+            if (row.accuracy.raysPerSecond > 0.0)
+                raysPerSecond = row.accuracy.raysPerSecond;
+            noiseFloor = std::max(noiseFloor, row.accuracy.areaNoiseFloor);
+            rows.push_back(std::move(row));
+        }
+        // ...then their time, one frame of each in turn, so a slow spell of a shared machine
+        // lands on every configuration alike. The shadow pass runs every frame.
+        std::vector<std::vector<double>> shadow(sweep.size()), lit(sweep.size()), frame(sweep.size());
+        for (int i = 0; i < warmup + frames; ++i) {
+            for (std::size_t c = 0; c < sweep.size(); ++c) {
+                headless.renderer().invalidateShadowMap();
+                headless.renderFrame(configurations[c], size, TimingMode::Finish);
+                if (i < warmup)
+                    continue;
+                const FrameStats& f = headless.renderer().lastFrame();
+                shadow[c].push_back(f.shadowPassWallMs);
+                lit[c].push_back(f.litPassWallMs);
+                frame[c].push_back(f.frameWallMs);
+            }
+            progress.show(accuracyShare + (1.0 - accuracyShare) * (i + 1) / (warmup + frames), QStringLiteral("timing"));
+        }
+        for (std::size_t c = 0; c < sweep.size(); ++c) {
+            rows[c].shadowPass = summarize(shadow[c]);
+            rows[c].litPass = summarize(lit[c]);
+            rows[c].frame = summarize(frame[c]);
+        }
+        progress.done();
+        markParetoFront(rows);
+
+        ReportFacts facts;
+        facts.scene = base.scene;
+        facts.size = size;
+        facts.frames = frames;
+        facts.warmup = warmup;
+        facts.renderer = headless.renderer().rendererString();
+        facts.machine = machineFacts();
+        facts.areaSamplesPerPixel = samples * samples;
+        facts.lightRadius = base.reference.lightRadius;
+        facts.areaNoiseFloor = noiseFloor;
+        facts.raysPerSecond = raysPerSecond;
+        facts.referenceComputations = meter.referenceComputations();
+        facts.seconds = double(total.elapsed()) / 1000.0;
+        const QString directory = parser.value(QStringLiteral("out"));
+        writeReport(directory, rows, facts);
+
+        out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
+              << QString::number(raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
+        out() << "Pareto front (frame ms, misclassified % against the hard reference):\n";
+        for (const ReportRow& r : rows) {
+            if (r.paretoFront)
+                out() << "  " << r.label.leftJustified(36) << QString::number(r.frame.median, 'f', 2).rightJustified(8) << " ms "
+                      << QString::number(100 * r.accuracy.hard.misclassified, 'f', 3).rightJustified(8) << " %\n";
+        }
+        out() << "wrote " << QDir(directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
+        return kExitOk;
+    });
+}
+
+} // namespace shadowlab::cli

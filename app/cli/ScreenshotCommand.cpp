@@ -1,0 +1,103 @@
+#include "CliSupport.h"
+#include "Commands.h"
+#include "DepthMapView.h"
+#include "MainWindow.h"
+#include "RenderError.h"
+#include "SceneView.h"
+#include "SettingsKeys.h"
+
+#include <QApplication>
+#include <QDeadlineTimer>
+#include <QFileInfo>
+
+namespace shadowlab::cli {
+
+namespace {
+
+constexpr int kTimeoutMs = 60000;
+constexpr int kSettledMs = 200;     // no new frame for this long: the window is done drawing
+
+int totalFrames(const MainWindow& window)
+{
+    return window.sceneView(MainWindow::Side::A)->frameCount() + window.sceneView(MainWindow::Side::B)->frameCount()
+        + window.depthMapView()->frameCount();
+}
+
+// Runs the event loop until every visible view has drawn and then nothing has drawn for a while.
+void waitUntilRendered(const MainWindow& window)
+{
+    const QDeadlineTimer deadline(kTimeoutMs);
+    auto drawn = [&window] {
+        return window.sceneView(MainWindow::Side::A)->frameCount() > 0
+            && (!window.compareMode() || window.sceneView(MainWindow::Side::B)->frameCount() > 0)
+            && window.depthMapView()->frameCount() > 0;
+    };
+    int frames = -1;
+    QDeadlineTimer settled(kSettledMs);
+    while (!deadline.hasExpired()) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        if (totalFrames(window) != frames) {
+            frames = totalFrames(window);
+            settled.setRemainingTime(kSettledMs);
+        } else if (drawn() && settled.hasExpired()) {
+            return;
+        }
+    }
+    throw RenderError(QStringLiteral("the window did not finish drawing within %1 s").arg(kTimeoutMs / 1000));
+}
+
+} // namespace
+
+int runScreenshot(const QStringList& arguments)
+{
+    return guarded(QStringLiteral("screenshot"), [&] {
+        QCommandLineParser parser;
+        parser.setApplicationDescription(QStringLiteral("Build the explorer window offscreen, let it render, and save the whole window as PNG."));
+        parser.addHelpOption();
+        addSettingsOptions(parser);
+        parser.addOption({QStringLiteral("compare"), QStringLiteral("Compare mode: sides A and B side by side.")});
+        parser.addOption({QStringLiteral("set-b"), QStringLiteral("With --compare: a setting of side B on top of A's (repeatable)."),
+                          QStringLiteral("key=value")});
+        parser.addOption({QStringLiteral("size"), QStringLiteral("Window size (default 1200x750)."), QStringLiteral("WxH"),
+                          QStringLiteral("1200x750")});
+        parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the window."), QStringLiteral("file.png")});
+        if (!parser.parse(QStringList{QStringLiteral("shadowlab screenshot")} + arguments))
+            throw UsageError(parser.errorText());
+        if (parser.isSet(QStringLiteral("help"))) {
+            out() << parser.helpText();
+            return kExitOk;
+        }
+        if (!parser.positionalArguments().isEmpty())
+            throw UsageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+        if (!parser.isSet(QStringLiteral("out")))
+            throw UsageError(QStringLiteral("say where to write: --out window.png"));
+        if (parser.isSet(QStringLiteral("set-b")) && !parser.isSet(QStringLiteral("compare")))
+            throw UsageError(QStringLiteral("--set-b describes side B; add --compare"));
+        if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
+            throw RenderError(QStringLiteral("the screenshot command needs a QApplication"));
+
+        const Settings a = settingsFromOptions(parser);
+        Settings b = a;
+        for (const QString& assignment : parser.values(QStringLiteral("set-b")))
+            applyAssignment(b, assignment);
+        ensureValid(b);
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+
+        MainWindow window(MainWindow::Persistence::None);
+        window.setCompareMode(parser.isSet(QStringLiteral("compare")));
+        window.setSettings(MainWindow::Side::A, a);
+        window.setSettings(MainWindow::Side::B, b);
+        window.resize(size);
+        window.show();
+        waitUntilRendered(window);
+
+        const QString path = parser.value(QStringLiteral("out"));
+        const QImage image = window.grab().toImage();
+        if (image.isNull() || !image.save(path, "PNG"))
+            throw RenderError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
+        out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << image.width() << "x" << image.height() << ")" << Qt::endl;
+        return kExitOk;
+    });
+}
+
+} // namespace shadowlab::cli

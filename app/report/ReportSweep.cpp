@@ -1,0 +1,140 @@
+#include "ReportSweep.h"
+
+#include "CliSupport.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace shadowlab {
+
+namespace {
+
+std::vector<SweepEntry> filterSweep()
+{
+    std::vector<SweepEntry> s;
+    for (const char* mode : {"hard", "pcf-dither4", "pcf64", "hw-bilinear"})
+        s.push_back({QString::fromLatin1(mode), {QStringLiteral("filter.mode=%1").arg(QLatin1String(mode))}});
+    for (int k : {1, 3, 5, 7})
+        s.push_back({QStringLiteral("pcf %1x%1").arg(k), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=%1").arg(k)}});
+    return s;
+}
+
+std::vector<SweepEntry> resolutionSweep()
+{
+    std::vector<SweepEntry> s;
+    for (int size : {256, 512, 1024, 2048, 4096})
+        s.push_back({QStringLiteral("map %1").arg(size), {QStringLiteral("map.size=%1").arg(size)}});
+    for (int size : {512, 4096})
+        s.push_back({QStringLiteral("map %1 hard").arg(size), {QStringLiteral("map.size=%1").arg(size), QStringLiteral("filter.mode=hard")}});
+    return s;
+}
+
+std::vector<SweepEntry> biasSweep()
+{
+    std::vector<SweepEntry> s;
+    for (const char* slope : {"0", "0.005", "0.02", "0.05"}) {
+        for (const char* min : {"0", "0.0005", "0.001", "0.005"})
+            s.push_back({QStringLiteral("bias %1/%2").arg(QLatin1String(slope), QLatin1String(min)),
+                         {QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)), QStringLiteral("bias.min=%1").arg(QLatin1String(min))}});
+    }
+    s.push_back({QStringLiteral("cull front, no bias"), {QStringLiteral("bias.cull_front=true"), QStringLiteral("bias.slope=0"),
+                                                          QStringLiteral("bias.min=0")}});
+    s.push_back({QStringLiteral("cull front"), {QStringLiteral("bias.cull_front=true")}});
+    s.push_back({QStringLiteral("polygon offset 2/4"), {QStringLiteral("bias.polygon_factor=2"), QStringLiteral("bias.polygon_units=4"),
+                                                         QStringLiteral("bias.slope=0"), QStringLiteral("bias.min=0")}});
+    return s;
+}
+
+std::vector<SweepEntry> defaultSweep()
+{
+    std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
+                              {QStringLiteral("tutorial (pcf 3, 1024, 0.05/0.005)"),
+                               {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
+                                QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005")}},
+                              {QStringLiteral("perspective light"), {QStringLiteral("light.projection=perspective")}},
+                              {QStringLiteral("depth32f"), {QStringLiteral("map.format=depth32f")}}};
+    for (auto part : {filterSweep(), resolutionSweep(), biasSweep()})
+        s.insert(s.end(), part.begin(), part.end());
+    return s;
+}
+
+QString valueText(const QJsonValue& v)
+{
+    if (v.isBool())
+        return v.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    if (v.isDouble())
+        return QString::number(v.toDouble(), 'g', 15);
+    if (v.isArray()) {
+        QStringList parts;
+        for (const QJsonValue& x : v.toArray())
+            parts << QString::number(x.toDouble(), 'g', 15);
+        return parts.join(QLatin1Char(','));
+    }
+    return v.toString();
+}
+
+std::vector<SweepEntry> sweepFromFile(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw cli::UsageError(QStringLiteral("--sweep: cannot read '%1': %2; give a file or one of %3")
+                                  .arg(path, file.errorString(), builtInSweeps().join(QStringLiteral(", "))));
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    if (error.error != QJsonParseError::NoError)
+        throw cli::UsageError(QStringLiteral("--sweep: '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
+    const QJsonArray array = doc.isArray() ? doc.array() : doc.object().value(QStringLiteral("configurations")).toArray();
+    if (array.isEmpty())
+        throw cli::UsageError(QStringLiteral("--sweep: '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
+    std::vector<SweepEntry> sweep;
+    for (const QJsonValue& v : array) {
+        const QJsonObject o = v.toObject();
+        SweepEntry entry{o.value(QStringLiteral("label")).toString(), {}};
+        const QJsonObject set = o.value(QStringLiteral("set")).toObject();
+        for (auto it = set.begin(); it != set.end(); ++it)
+            entry.assignments << it.key() + QLatin1Char('=') + valueText(it.value());
+        if (entry.label.isEmpty())
+            entry.label = entry.assignments.isEmpty() ? QStringLiteral("base") : entry.assignments.join(QStringLiteral(", "));
+        sweep.push_back(entry);
+    }
+    return sweep;
+}
+
+} // namespace
+
+QStringList builtInSweeps()
+{
+    return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias")};
+}
+
+std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
+{
+    if (nameOrFile == u"default")
+        return defaultSweep();
+    if (nameOrFile == u"filters")
+        return filterSweep();
+    if (nameOrFile == u"resolution")
+        return resolutionSweep();
+    if (nameOrFile == u"bias")
+        return biasSweep();
+    return sweepFromFile(nameOrFile);
+}
+
+Settings applySweepEntry(const Settings& base, const SweepEntry& entry)
+{
+    Settings s = base;
+    try {
+        for (const QString& a : entry.assignments)
+            applyAssignment(s, a);
+        ensureValid(s);
+    } catch (const SettingsError& e) {
+        throw SettingsError(e.key(), QStringLiteral("in sweep entry '%1': %2").arg(entry.label, QString::fromUtf8(e.what())));
+    }
+    return s;
+}
+
+} // namespace shadowlab

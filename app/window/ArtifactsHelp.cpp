@@ -1,0 +1,85 @@
+#include "ArtifactsHelp.h"
+
+#include "SettingsKeys.h"
+
+#include <QDialogButtonBox>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace shadowlab {
+
+namespace {
+
+const char* const kArtifacts = R"html(
+<h2>Shadow artifacts and the settings that trade them</h2>
+<p>A shadow map stores, per texel, the depth of the nearest caster seen from the light. A
+pixel is in shadow when it is farther from the light than that depth. Every artifact below
+comes from comparing two depths that were sampled at different places and precisions.</p>
+
+<h3>Shadow acne</h3>
+<p>Stripes or moiré of false shadow on lit surfaces. A texel covers an area of the surface;
+across that area the surface's true depth rises above the stored one, so the surface shadows
+itself. It is worst on slopes seen at a grazing angle from the light.
+<b>Fixes:</b> <i>Bias → Slope</i> and <i>Minimum</i> (push the comparison away from the light),
+<i>Cull front faces</i> (store back faces, which are farther), <i>Offset factor/units</i>
+(the same in hardware), a larger <i>Shadow map → Size</i> or a smaller light <i>Extent</i>
+(smaller texels).</p>
+
+<h3>Peter panning</h3>
+<p>Shadows detached from the objects that cast them, as if they floated. Too much bias moves
+the comparison past the contact point. <b>Trade:</b> lower the bias until acne just
+disappears; cull front faces instead of a large constant bias where casters are closed.</p>
+
+<h3>Light leaks</h3>
+<p>Light where two surfaces meet or through thin casters: with front faces culled, a thin
+caster has no back face close enough; with a large minimum bias, contacts leak.
+<b>Trade:</b> smaller minimum bias, thicker casters, or no front-face culling.</p>
+
+<h3>Aliasing (blocky edges)</h3>
+<p>Stair-stepped shadow edges: one texel covers many screen pixels. <b>Fixes:</b> more texels
+(<i>Size</i>), a tighter light volume (<i>Extent</i>, <i>Field of view</i>, <i>Near/Far</i>),
+or filtering: <i>PCF</i> averages N×N comparisons (cost N² taps per pixel),
+<i>pcf-dither4</i> gets a similar look from 4 dithered taps, <i>hw-bilinear</i> lets the
+hardware blend 4 comparisons in one tap.</p>
+
+<h3>Depth precision</h3>
+<p>For a perspective light, depth resolution falls off with distance as far/near grows; a
+24-bit map runs out far from the light and acne comes back there. <b>Fixes:</b> push
+<i>Near</i> out, pull <i>Far</i> in, or use the <i>depth32f</i> format.</p>
+
+<h3>Reading the depth map</h3>
+<p>The pane beside the scene is the light's view: dark is near the light, white is far (or
+empty). A perspective light's depth is shown linearised between near and far. Hover a texel to
+read its coordinates and depth in the status bar; the status bar also shows how much world one
+texel covers, the number that decides how blocky the shadow is.</p>
+)html";
+
+} // namespace
+
+ArtifactsHelp::ArtifactsHelp(QWidget* parent) : QDialog(parent)
+{
+    setWindowTitle(tr("Shadow Artifacts — ShadowLab"));
+    auto* browser = new QTextBrowser;
+    browser->setHtml(html());
+    browser->setOpenExternalLinks(false);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(browser);
+    layout->addWidget(buttons);
+    resize(720, 640);
+}
+
+QString ArtifactsHelp::html()
+{
+    QString table = QStringLiteral("<h3>Every setting</h3><table cellpadding='3'>"
+                                   "<tr><th align='left'>Key</th><th align='left'>Range</th><th align='left'>What it trades</th></tr>");
+    for (const SettingKey& key : settingKeys())
+        table += QStringLiteral("<tr><td><tt>%1</tt></td><td>%2</td><td>%3</td></tr>")
+                     .arg(key.key, key.range.toHtmlEscaped(), key.help.toHtmlEscaped());
+    table += QStringLiteral("</table><p>The same keys work as <tt>shadowlab render --set key=value</tt> and in "
+                            "exported JSON files. <i>wu</i> is a world unit.</p>");
+    return QString::fromUtf8(kArtifacts) + table;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,236 @@
+#include "DepthMapView.h"
+
+#include "DepthViewPass.h"
+#include "RenderError.h"
+#include "Renderer.h"
+#include "SceneView.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLVersionFunctionsFactory>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr double kZoomPerStep = 1.25;
+constexpr double kMinZoom = 0.25;
+constexpr double kMaxZoom = 256.0;
+
+} // namespace
+
+DepthMapView::DepthMapView(QWidget* parent) : QOpenGLWidget(parent)
+{
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+}
+
+DepthMapView::~DepthMapView()
+{
+    cleanup();
+}
+
+void DepthMapView::setSource(SceneView* source)
+{
+    if (source == m_source)
+        return;
+    disconnect(m_sourceConnection);
+    m_source = source;
+    if (source)
+        m_sourceConnection = connect(source, &SceneView::frameRendered, this, &DepthMapView::onSourceFrame);
+    m_seenShadowPasses = -1;
+    update();
+}
+
+void DepthMapView::onSourceFrame()
+{
+    // Only a new shadow pass changes the map: a camera move redraws the scene, not this view.
+    const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
+    const int passes = renderer ? renderer->shadowPassCount() : -1;
+    const bool enabled = m_source && m_source->renderedSettings() && m_source->renderedSettings()->shadow.enabled;
+    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled)
+        return;
+    m_seenShadowPasses = passes;
+    m_seenShadowsEnabled = enabled;
+    update();
+}
+
+bool DepthMapView::hasMap() const
+{
+    return m_source && m_source->renderer() && m_source->renderer()->shadowMap().texture() && m_source->renderedSettings()
+        && m_source->renderedSettings()->shadow.enabled;
+}
+
+void DepthMapView::initializeGL()
+{
+    m_gl = QOpenGLVersionFunctionsFactory::get<GlFunctions>(context());
+    if (!m_gl || !m_gl->initializeOpenGLFunctions()) {
+        m_gl = nullptr;
+        return;
+    }
+    try {
+        m_pass = std::make_unique<DepthViewPass>(m_gl);
+    } catch (const RenderError& e) {
+        qWarning("depth-map view: %s", e.what());
+        return;
+    }
+    m_readFramebuffer = makeFramebuffer(m_gl);
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &DepthMapView::cleanup, Qt::UniqueConnection);
+}
+
+void DepthMapView::cleanup()
+{
+    if (!m_pass && !m_readFramebuffer)
+        return;
+    makeCurrent();
+    m_pass.reset();
+    m_readFramebuffer.reset();
+    doneCurrent();
+}
+
+void DepthMapView::paintGL()
+{
+    if (!m_gl)
+        return;
+    m_gl->glClearColor(0.08f, 0.09f, 0.13f, 1.0f);
+    m_gl->glClear(GL_COLOR_BUFFER_BIT);
+    if (m_pass && hasMap()) {
+        const Renderer& renderer = *m_source->renderer();
+        m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(),
+                       {defaultFramebufferObject(), size() * devicePixelRatio()}, visibleRect());
+    }
+    ++m_frameCount;
+    emit frameRendered();
+}
+
+QRectF DepthMapView::visibleRect() const
+{
+    const double side = std::max(1, std::min(width(), height()));
+    const double perPixel = 1.0 / (side * m_zoom);
+    const QSizeF extent(width() * perPixel, height() * perPixel);
+    return {m_center - QPointF(extent.width(), extent.height()) * 0.5, extent};
+}
+
+QPointF DepthMapView::mapPoint(QPointF p) const
+{
+    const QRectF visible = visibleRect();
+    return {visible.x() + p.x() / std::max(1, width()) * visible.width(),
+            visible.y() + (1.0 - p.y() / std::max(1, height())) * visible.height()};
+}
+
+void DepthMapView::resetZoom()
+{
+    m_zoom = 1.0;
+    m_center = {0.5, 0.5};
+    update();
+}
+
+std::optional<float> DepthMapView::readDepth(int x, int y)
+{
+    if (!m_readFramebuffer || !hasMap())
+        return std::nullopt;
+    // Framebuffers are per context, textures shared: attach the map to one of ours and read
+    // one texel, instead of copying the whole map back.
+    makeCurrent();
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_readFramebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                 m_source->renderer()->shadowMap().texture(), 0);
+    m_gl->glReadBuffer(GL_NONE);
+    std::optional<float> depth;
+    if (m_gl->glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+        float value = 0.0f;
+        m_gl->glReadPixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &value);
+        depth = value;
+    }
+    m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
+    doneCurrent();
+    return depth;
+}
+
+void DepthMapView::reportTexel(QPointF widgetPosition)
+{
+    if (!hasMap()) {
+        emit texelHovered(QString());
+        return;
+    }
+    const Renderer& renderer = *m_source->renderer();
+    const int size = renderer.shadowMap().size();
+    const QPointF uv = mapPoint(widgetPosition);
+    const int x = int(std::floor(uv.x() * size));
+    const int y = int(std::floor(uv.y() * size));
+    if (x < 0 || y < 0 || x >= size || y >= size) {
+        emit texelHovered(QString());
+        return;
+    }
+    const std::optional<float> depth = readDepth(x, y);
+    if (!depth) {
+        emit texelHovered(QStringLiteral("texel %1, %2").arg(x).arg(y));
+        return;
+    }
+    // Distance from the light along its axis: depth is linear for an ortho light, and the
+    // perspective depth curve inverted for a perspective one.
+    const LightFrame& light = renderer.lightFrame();
+    const double n = light.nearPlane, f = light.farPlane, d = *depth;
+    const double distance = light.perspective ? 2.0 * n * f / (f + n - (d * 2.0 - 1.0) * (f - n)) : n + d * (f - n);
+    const QString where = d >= 1.0 ? QStringLiteral("empty (far plane)")
+                                   : QStringLiteral("%1 from the light").arg(distance, 0, 'f', 3);
+    emit texelHovered(QStringLiteral("texel %1, %2 · depth %3 · %4").arg(x).arg(y).arg(d, 0, 'f', 5).arg(where));
+}
+
+void DepthMapView::mousePressEvent(QMouseEvent* event)
+{
+    m_lastMouse = event->position();
+    setFocus(Qt::MouseFocusReason);
+}
+
+void DepthMapView::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPointF position = event->position();
+    if (event->buttons() != Qt::NoButton) {
+        const QPointF delta = position - m_lastMouse;
+        const double perPixel = visibleRect().width() / std::max(1, width());
+        m_center += QPointF(-delta.x() * perPixel, delta.y() * perPixel);
+        update();
+    }
+    m_lastMouse = position;
+    reportTexel(position);
+}
+
+void DepthMapView::mouseDoubleClickEvent(QMouseEvent*)
+{
+    resetZoom();
+}
+
+void DepthMapView::wheelEvent(QWheelEvent* event)
+{
+    // Zoom about the cursor: the map point under it stays under it.
+    const QPointF position = event->position();
+    const QPointF before = mapPoint(position);
+    m_zoom = std::clamp(m_zoom * std::pow(kZoomPerStep, event->angleDelta().y() / 120.0), kMinZoom, kMaxZoom);
+    m_center += before - mapPoint(position);
+    update();
+    reportTexel(position);
+}
+
+void DepthMapView::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Home || event->key() == Qt::Key_0) {
+        resetZoom();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+void DepthMapView::leaveEvent(QEvent* event)
+{
+    emit texelHovered(QString());
+    QOpenGLWidget::leaveEvent(event);
+}
+
+} // namespace shadowlab

@@ -1,0 +1,78 @@
+#pragma once
+
+#include "GlObject.h"
+
+#include <QOpenGLWidget>
+#include <QPointF>
+#include <QPointer>
+#include <QRectF>
+
+#include <memory>
+#include <optional>
+
+namespace shadowlab {
+
+class DepthViewPass;
+class SceneView;
+
+// The light's shadow map in its own QOpenGLWidget. Its context shares textures with the scene
+// views' (Qt::AA_ShareOpenGLContexts), so it samples the source view's map directly, with its
+// own DepthViewPass. The map is fitted to the pane; wheel zooms around the cursor, drag pans,
+// double-click or Home fits again. Hovering reports the texel under the cursor.
+class DepthMapView : public QOpenGLWidget {
+    Q_OBJECT
+
+public:
+    explicit DepthMapView(QWidget* parent = nullptr);
+    ~DepthMapView() override;
+
+    // The scene view whose shadow map is shown; redrawn whenever that map is re-rendered.
+    void setSource(SceneView* source);
+    SceneView* source() const { return m_source; }
+
+    void resetZoom();
+    double zoom() const { return m_zoom; }
+    // The part of the map shown, in map coordinates ([0, 1]^2 is the whole map, y up).
+    QRectF visibleRect() const;
+    int frameCount() const { return m_frameCount; }
+
+    QSize minimumSizeHint() const override { return {0, 0}; }
+    QSize sizeHint() const override { return {400, 400}; }
+
+signals:
+    void frameRendered();
+    // "texel 1021, 388 · depth 0.73104 · 5.46 from the light", or empty when off the map.
+    void texelHovered(const QString& text);
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    void cleanup();
+    void onSourceFrame();
+    bool hasMap() const;
+    QPointF mapPoint(QPointF widgetPosition) const;
+    void reportTexel(QPointF widgetPosition);
+    std::optional<float> readDepth(int x, int y);
+
+    QPointer<SceneView> m_source;
+    QMetaObject::Connection m_sourceConnection;
+    GlFunctions* m_gl = nullptr;
+    std::unique_ptr<DepthViewPass> m_pass;
+    GlFramebuffer m_readFramebuffer;     // the shared map attached, for reading one texel
+    int m_seenShadowPasses = -1;
+    bool m_seenShadowsEnabled = false;
+    double m_zoom = 1.0;                 // 1: the whole map fits the pane
+    QPointF m_center{0.5, 0.5};          // map coordinates at the pane's centre
+    QPointF m_lastMouse;
+    int m_frameCount = 0;
+};
+
+} // namespace shadowlab

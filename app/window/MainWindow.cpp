@@ -1,0 +1,539 @@
+#include "MainWindow.h"
+
+#include "ArtifactsHelp.h"
+#include "DepthMapView.h"
+#include "PropertiesDock.h"
+#include "Renderer.h"
+#include "SceneLibrary.h"
+#include "SceneView.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+#include "SettingsSummary.h"
+#include "ViewPane.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kAnimationIntervalMs = 33;
+const char* const kSideNames[] = {"A", "B"};
+
+std::size_t index(MainWindow::Side side)
+{
+    return std::size_t(side);
+}
+
+QString settingsAsText(const Settings& settings)
+{
+    return QString::fromUtf8(QJsonDocument(settingsToJson(settings)).toJson(QJsonDocument::Compact));
+}
+
+// Stored settings on top of their scene's preset; nullopt when they no longer parse or validate
+// (a key renamed between versions), so a bad file never stops the window from opening.
+std::optional<Settings> settingsFromText(const QString& text)
+{
+    const QJsonObject object = QJsonDocument::fromJson(text.toUtf8()).object();
+    if (object.isEmpty())
+        return std::nullopt;
+    try {
+        Settings settings = settingsFromJson(object, presetSettings(object.value(QStringLiteral("scene")).toString(QStringLiteral("seed"))));
+        ensureValid(settings);
+        return settings;
+    } catch (const SettingsError&) {
+        return std::nullopt;
+    }
+}
+
+} // namespace
+
+MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(parent), m_persistence(persistence)
+{
+    setWindowTitle(tr("ShadowLab"));
+    m_settings[0] = presetSettings(QStringLiteral("seed"));
+    m_settings[1] = m_settings[0];
+
+    for (std::size_t i = 0; i < 2; ++i) {
+        m_views[i] = new SceneView;
+        m_views[i]->setObjectName(QStringLiteral("sceneView%1").arg(QLatin1String(kSideNames[i])));
+        m_scenePanes[i] = new ViewPane(m_views[i]);
+        const Side side = Side(i);
+        connect(m_views[i], &SceneView::cameraEdited, this, &MainWindow::setCamera);
+        connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
+        connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
+            if (side == m_selected)
+                updateStatus();
+        });
+        connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {
+            if (side == m_selected)
+                m_dock->showError(key, message);
+            statusBar()->showMessage(tr("%1: %2 — showing the last settings that worked").arg(QLatin1String(kSideNames[index(side)]), message), 8000);
+        });
+    }
+    m_depthView = new DepthMapView;
+    m_depthView->setObjectName(QStringLiteral("depthMapView"));
+    m_depthPane = new ViewPane(m_depthView);
+
+    m_sceneSplitter = new QSplitter(Qt::Horizontal);
+    m_sceneSplitter->setChildrenCollapsible(false);
+    m_sceneSplitter->addWidget(m_scenePanes[0]);
+    m_sceneSplitter->addWidget(m_scenePanes[1]);
+    m_mainSplitter = new QSplitter(Qt::Horizontal);
+    m_mainSplitter->setObjectName(QStringLiteral("mainSplitter"));
+    m_mainSplitter->addWidget(m_sceneSplitter);
+    m_mainSplitter->addWidget(m_depthPane);
+    m_mainSplitter->setStretchFactor(0, 3);
+    m_mainSplitter->setStretchFactor(1, 2);
+    m_scenePanes[1]->setVisible(false);
+    setCentralWidget(m_mainSplitter);
+
+    m_dock = new PropertiesDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_dock);
+    connect(m_dock, &PropertiesDock::settingsEdited, this, &MainWindow::applyEdit);
+    connect(m_dock, &PropertiesDock::warningsChanged, this, [this](const QString& text) {
+        if (!text.isEmpty())
+            statusBar()->showMessage(tr("Warning: %1").arg(text), 10000);
+    });
+    connect(m_dock, &PropertiesDock::animationChanged, this, &MainWindow::setLightAnimation);
+    connect(m_depthView, &DepthMapView::texelHovered, this, [this](const QString& text) { m_texelLabel->setText(text); });
+
+    m_animationTimer.setInterval(kAnimationIntervalMs);
+    connect(&m_animationTimer, &QTimer::timeout, this, &MainWindow::animateLight);
+
+    createActions();
+    createToolBar();
+    createMenus();
+    createStatusBar();
+    resize(1200, 750);
+    m_mainSplitter->setSizes({520, 330});
+
+    m_screenshotFolder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    if (m_persistence == Persistence::Restore)
+        restoreState();
+    pushSettings();
+    selectSide(m_selected);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions()
+{
+    m_compareAction = new QAction(tr("&Compare A | B"), this);
+    m_compareAction->setObjectName(QStringLiteral("compareAction"));
+    m_compareAction->setCheckable(true);
+    m_compareAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    m_compareAction->setToolTip(tr("Split the scene into sides A and B with their own settings and one camera (Ctrl+D)"));
+    connect(m_compareAction, &QAction::toggled, this, &MainWindow::setCompareMode);
+
+    m_copyAction = new QAction(tr("Copy A → B"), this);
+    m_copyAction->setObjectName(QStringLiteral("copyAction"));
+    m_copyAction->setToolTip(tr("Give side B the settings of side A"));
+    connect(m_copyAction, &QAction::triggered, this, &MainWindow::copyAToB);
+
+    m_swapAction = new QAction(tr("Swap A ↔ B"), this);
+    m_swapAction->setObjectName(QStringLiteral("swapAction"));
+    m_swapAction->setToolTip(tr("Exchange the settings of the two sides"));
+    connect(m_swapAction, &QAction::triggered, this, &MainWindow::swapSides);
+
+    m_volumeAction = new QAction(tr("Light &Volume"), this);
+    m_volumeAction->setObjectName(QStringLiteral("lightVolumeAction"));
+    m_volumeAction->setCheckable(true);
+    m_volumeAction->setChecked(true);
+    m_volumeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    m_volumeAction->setToolTip(tr("Draw the light's volume (what the shadow map covers) as a wireframe (Ctrl+L)"));
+    connect(m_volumeAction, &QAction::toggled, this, [this](bool on) {
+        for (SceneView* view : m_views)
+            view->setShowLightVolume(on);
+    });
+
+    m_animateAction = new QAction(tr("&Animate Light"), this);
+    m_animateAction->setObjectName(QStringLiteral("animateAction"));
+    m_animateAction->setCheckable(true);
+    m_animateAction->setToolTip(tr("Circle the light around its target (speed in the Light group)"));
+    connect(m_animateAction, &QAction::toggled, this, [this](bool on) { setLightAnimation(on, m_animationSpeed); });
+
+    m_screenshotAction = new QAction(tr("Save &Screenshot…"), this);
+    m_screenshotAction->setObjectName(QStringLiteral("screenshotAction"));
+    m_screenshotAction->setShortcut(QKeySequence::Save);
+    m_screenshotAction->setToolTip(tr("Save the scene view, the depth-map view or the whole window as PNG (Ctrl+S)"));
+    connect(m_screenshotAction, &QAction::triggered, this, &MainWindow::saveScreenshotInteractively);
+
+    m_copyAction->setEnabled(false);
+    m_swapAction->setEnabled(false);
+}
+
+void MainWindow::createMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_screenshotAction);
+    file->addSeparator();
+    file->addAction(tr("&Export Settings…"), this, &MainWindow::exportSettingsInteractively)->setObjectName(QStringLiteral("exportAction"));
+    file->addAction(tr("&Import Settings…"), this, &MainWindow::importSettingsInteractively)->setObjectName(QStringLiteral("importAction"));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_compareAction);
+    view->addAction(m_copyAction);
+    view->addAction(m_swapAction);
+    view->addSeparator();
+    view->addAction(m_volumeAction);
+    view->addAction(m_animateAction);
+    QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] { setCamera(presetSettings(m_settings[0].scene).camera); });
+    resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
+    view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
+    view->addSeparator();
+    view->addAction(m_dock->toggleViewAction());
+    view->addAction(m_toolBar->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* artifacts = help->addAction(tr("Shadow &Artifacts"), this, &MainWindow::showArtifactsHelp);
+    artifacts->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("&About ShadowLab"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::createToolBar()
+{
+    QToolBar* bar = m_toolBar = addToolBar(tr("Toolbar"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    bar->setMovable(false);
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->addAction(m_compareAction);
+    bar->addAction(m_copyAction);
+    bar->addAction(m_swapAction);
+    bar->addSeparator();
+    bar->addAction(m_volumeAction);
+    bar->addAction(m_animateAction);
+    bar->addSeparator();
+    bar->addAction(m_screenshotAction);
+}
+
+void MainWindow::createStatusBar()
+{
+    m_texelLabel = new QLabel;
+    m_texelLabel->setObjectName(QStringLiteral("texelLabel"));
+    m_timingLabel = new QLabel;
+    m_timingLabel->setObjectName(QStringLiteral("timingLabel"));
+    m_timingLabel->setToolTip(tr("GPU time of the shadow and lit passes (newest finished measurement) and the CPU time of the whole frame"));
+    m_mapLabel = new QLabel;
+    m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
+    m_mapLabel->setToolTip(tr("Shadow-map size, and how much world one texel covers: the size of the blocks in a hard shadow"));
+    m_passLabel = new QLabel;
+    m_passLabel->setObjectName(QStringLiteral("passLabel"));
+    m_passLabel->setToolTip(tr("The shadow pass only runs when the light, the casters or the map change"));
+    statusBar()->addPermanentWidget(m_texelLabel);
+    statusBar()->addPermanentWidget(m_timingLabel);
+    statusBar()->addPermanentWidget(m_mapLabel);
+    statusBar()->addPermanentWidget(m_passLabel);
+}
+
+QAction* MainWindow::action(const QString& objectName) const
+{
+    return findChild<QAction*>(objectName);
+}
+
+void MainWindow::setSettings(Side side, const Settings& settings)
+{
+    ensureValid(settings);
+    m_settings[index(side)] = settings;
+    m_settings[1 - index(side)].camera = settings.camera;
+    pushSettings();
+    m_dock->setSettings(m_settings[index(m_selected)]);
+}
+
+void MainWindow::applyEdit(const Settings& settings)
+{
+    m_settings[index(m_selected)] = settings;
+    m_settings[1 - index(m_selected)].camera = settings.camera;
+    pushSettings();
+}
+
+void MainWindow::setCamera(const CameraSettings& camera)
+{
+    for (Settings& s : m_settings)
+        s.camera = camera;
+    m_dock->updateFrom(m_settings[index(m_selected)], {});
+    pushSettings();
+}
+
+void MainWindow::pushSettings()
+{
+    for (std::size_t i = 0; i < 2; ++i)
+        m_views[i]->setSettings(m_settings[i]);
+    updateCaptions();
+}
+
+void MainWindow::updateCaptions()
+{
+    for (std::size_t i = 0; i < 2; ++i) {
+        m_scenePanes[i]->setHighlighted(m_compare && index(m_selected) == i);
+        m_scenePanes[i]->setCaption(m_compare ? tr("Side %1").arg(QLatin1String(kSideNames[i])) : tr("Scene"),
+                                    settingsSummary(m_settings[i]));
+    }
+    const Settings& shown = m_settings[index(m_selected)];
+    const QString light = tr("%1 light, %2").arg(toString(shown.light.projection), toString(shown.map.format));
+    m_depthPane->setCaption(m_compare ? tr("Shadow map of %1").arg(QLatin1String(kSideNames[index(m_selected)])) : tr("Shadow map"),
+                            shown.shadow.enabled ? light : tr("shadows are off"));
+}
+
+void MainWindow::updateStatus()
+{
+    const SceneView* view = m_views[index(m_selected)];
+    const Renderer* renderer = view->renderer();
+    if (!renderer || !view->renderedSettings())
+        return;
+    const FrameStats& stats = renderer->lastFrame();
+    const Settings& shown = *view->renderedSettings();
+    m_timingLabel->setText(tr("shadow %1 ms · lit %2 ms · frame %3 ms")
+                               .arg(stats.shadowPassMs, 0, 'f', 2)
+                               .arg(stats.litPassMs, 0, 'f', 2)
+                               .arg(view->lastFrameMs(), 0, 'f', 1));
+    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · texel %2 wu").arg(squareSize(shown.map.size)).arg(stats.texelWorldSize, 0, 'g', 3)
+                                             : tr("no shadow map"));
+    m_passLabel->setText(!shown.shadow.enabled      ? tr("shadows off")
+                         : stats.shadowPassRendered ? tr("shadow pass rendered")
+                                                    : tr("shadow map reused"));
+}
+
+void MainWindow::setCompareMode(bool on)
+{
+    if (on == m_compare)
+        return;
+    m_compare = on;
+    {
+        const QSignalBlocker block(m_compareAction);
+        m_compareAction->setChecked(on);
+    }
+    m_copyAction->setEnabled(on);
+    m_swapAction->setEnabled(on);
+    m_scenePanes[1]->setVisible(on);
+    // Two scene views need the room more than the depth map does.
+    const int total = m_mainSplitter->width();
+    m_mainSplitter->setSizes(on ? QList<int>{total * 3 / 4, total / 4} : QList<int>{total * 3 / 5, total * 2 / 5});
+    if (on) {
+        const int half = std::max(1, m_sceneSplitter->width() / 2);
+        m_sceneSplitter->setSizes({half, half});
+    }
+    selectSide(on ? m_selected : Side::A);
+}
+
+void MainWindow::selectSide(Side side)
+{
+    if (!m_compare)
+        side = Side::A;
+    m_selected = side;
+    m_dock->setSettings(m_settings[index(side)]);
+    m_dock->setSideName(m_compare ? QLatin1String(kSideNames[index(side)]) : QString());
+    m_depthView->setSource(m_views[index(side)]);
+    updateCaptions();
+    updateStatus();
+}
+
+void MainWindow::copyAToB()
+{
+    m_settings[1] = m_settings[0];
+    pushSettings();
+    m_dock->setSettings(m_settings[index(m_selected)]);
+}
+
+void MainWindow::swapSides()
+{
+    std::swap(m_settings[0], m_settings[1]);
+    pushSettings();
+    m_dock->setSettings(m_settings[index(m_selected)]);
+}
+
+void MainWindow::setLightAnimation(bool animate, double degreesPerSecond)
+{
+    m_animationSpeed = degreesPerSecond;
+    m_dock->setAnimation(animate, degreesPerSecond);
+    {
+        const QSignalBlocker block(m_animateAction);
+        m_animateAction->setChecked(animate);
+    }
+    if (animate && !m_animationTimer.isActive()) {
+        m_animationClock.start();
+        m_animationTimer.start();
+    } else if (!animate) {
+        m_animationTimer.stop();
+    }
+}
+
+void MainWindow::animateLight()
+{
+    // Turn by elapsed time, not by tick, so the speed holds when frames are slow.
+    const double seconds = double(m_animationClock.restart()) * 1e-3;
+    const double angle = glm::radians(m_animationSpeed * seconds);
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (Settings& settings : m_settings) {
+        const glm::dvec3 offset = settings.light.position - settings.light.target;
+        settings.light.position = settings.light.target + glm::dvec3(c * offset.x + s * offset.z, offset.y, -s * offset.x + c * offset.z);
+    }
+    m_dock->updateFrom(m_settings[index(m_selected)], {QStringLiteral("light.position")});
+    pushSettings();
+}
+
+QString MainWindow::saveScreenshot(ScreenshotDialog::Target target, const QString& path)
+{
+    QImage image;
+    switch (target) {
+    case ScreenshotDialog::Target::SceneView:
+        image = m_views[index(m_selected)]->grabFramebuffer();
+        break;
+    case ScreenshotDialog::Target::DepthMapView:
+        image = m_depthView->grabFramebuffer();
+        break;
+    case ScreenshotDialog::Target::Window:
+        image = grab().toImage();
+        break;
+    }
+    if (image.isNull())
+        return tr("There is nothing to capture: the view has no size.");
+    if (!image.convertToFormat(QImage::Format_RGB32).save(path, "PNG"))
+        return tr("Cannot write '%1'; check that its folder exists and is writable.").arg(QDir::toNativeSeparators(path));
+    statusBar()->showMessage(tr("Saved %1 (%2×%3)").arg(QDir::toNativeSeparators(path)).arg(image.width()).arg(image.height()), 8000);
+    return QString();
+}
+
+void MainWindow::saveScreenshotInteractively()
+{
+    const QString name = screenshotFileName(m_settings[index(m_selected)], QDateTime::currentDateTime());
+    ScreenshotDialog dialog(QDir(m_screenshotFolder).filePath(name), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_screenshotFolder = QFileInfo(dialog.path()).absolutePath();
+    const QString error = saveScreenshot(dialog.target(), dialog.path());
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Save Screenshot"), error);
+}
+
+QString MainWindow::exportSettings(const QString& path) const
+{
+    try {
+        saveSettingsFile(path, m_settings[index(m_selected)]);
+    } catch (const SettingsError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return QString();
+}
+
+QString MainWindow::importSettings(const QString& path)
+{
+    try {
+        // Keys the file leaves out keep their current values, as with --settings on the CLI.
+        const Settings settings = loadSettingsFile(path, m_settings[index(m_selected)]);
+        setSettings(m_selected, settings);
+    } catch (const SettingsError& e) {
+        return QString::fromStdString(e.what());
+    }
+    statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(path)), 8000);
+    return QString();
+}
+
+void MainWindow::exportSettingsInteractively()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Settings"),
+                                                      QDir(m_screenshotFolder).filePath(QStringLiteral("shadowlab-settings.json")),
+                                                      tr("ShadowLab settings (*.json)"));
+    if (path.isEmpty())
+        return;
+    const QString error = exportSettings(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export Settings"), error);
+    else
+        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 8000);
+}
+
+void MainWindow::importSettingsInteractively()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Settings"), m_screenshotFolder, tr("ShadowLab settings (*.json)"));
+    if (path.isEmpty())
+        return;
+    const QString error = importSettings(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Import Settings"), error);
+}
+
+void MainWindow::showArtifactsHelp()
+{
+    auto* help = findChild<ArtifactsHelp*>();
+    if (!help)
+        help = new ArtifactsHelp(this);
+    help->show();
+    help->raise();
+}
+
+void MainWindow::showAbout()
+{
+    const SceneView* view = m_views[0];
+    const QString renderer = view->renderer() ? view->renderer()->rendererString() : tr("no OpenGL context yet");
+    QMessageBox::about(this, tr("About ShadowLab"),
+                       tr("<h3>ShadowLab %1</h3><p>An explorer for shadow mapping: every parameter of the technique "
+                          "on a slider, beside the light's depth map, with the cost of each pass.</p>"
+                          "<p>Renderer: %2</p><p>Built with Qt %3.</p>")
+                           .arg(QCoreApplication::applicationVersion(), renderer.toHtmlEscaped(), QString::fromLatin1(qVersion())));
+}
+
+void MainWindow::restoreState()
+{
+    QSettings store;
+    if (const QByteArray geometry = store.value(QStringLiteral("window/geometry")).toByteArray(); !geometry.isEmpty())
+        restoreGeometry(geometry);
+    if (const QByteArray state = store.value(QStringLiteral("window/state")).toByteArray(); !state.isEmpty())
+        QMainWindow::restoreState(state);
+    if (const QByteArray splitter = store.value(QStringLiteral("window/splitter")).toByteArray(); !splitter.isEmpty())
+        m_mainSplitter->restoreState(splitter);
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (auto settings = settingsFromText(store.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString()))
+            m_settings[i] = *settings;
+    }
+    m_settings[1].camera = m_settings[0].camera;
+    m_volumeAction->setChecked(store.value(QStringLiteral("view/lightVolume"), true).toBool());
+    m_screenshotFolder = store.value(QStringLiteral("view/screenshotFolder"), m_screenshotFolder).toString();
+    setCompareMode(store.value(QStringLiteral("view/compare"), false).toBool());
+    m_selected = store.value(QStringLiteral("view/selected")).toString() == u"B" ? Side::B : Side::A;
+}
+
+void MainWindow::saveState() const
+{
+    QSettings store;
+    store.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    store.setValue(QStringLiteral("window/state"), QMainWindow::saveState());
+    store.setValue(QStringLiteral("window/splitter"), m_mainSplitter->saveState());
+    for (std::size_t i = 0; i < 2; ++i)
+        store.setValue(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i])), settingsAsText(m_settings[i]));
+    store.setValue(QStringLiteral("view/lightVolume"), m_volumeAction->isChecked());
+    store.setValue(QStringLiteral("view/screenshotFolder"), m_screenshotFolder);
+    store.setValue(QStringLiteral("view/compare"), m_compare);
+    store.setValue(QStringLiteral("view/selected"), QLatin1String(kSideNames[index(m_selected)]));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (m_persistence == Persistence::Restore)
+        saveState();
+    QMainWindow::closeEvent(event);
+}
+
+} // namespace shadowlab

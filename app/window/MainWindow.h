@@ -1,0 +1,123 @@
+#pragma once
+
+#include "ScreenshotDialog.h"
+#include "Settings.h"
+
+#include <QElapsedTimer>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <array>
+
+class QAction;
+class QLabel;
+class QSplitter;
+class QToolBar;
+
+namespace shadowlab {
+
+class DepthMapView;
+class PropertiesDock;
+class SceneView;
+class ViewPane;
+
+// The explorer: the lit scene beside the light's depth map, the properties dock, and compare
+// mode, where the scene area splits into sides A and B with their own settings and one shared
+// camera. The window owns the settings of both sides (always valid ones); views only draw them
+// and the dock only proposes edits.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    enum class Persistence {
+        Restore,    // read and write geometry, layout and last settings with QSettings
+        None,       // a fresh window on the default scene (screenshots, scripted use)
+    };
+    enum class Side { A = 0, B = 1 };
+
+    explicit MainWindow(Persistence persistence = Persistence::Restore, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    const Settings& settings(Side side) const { return m_settings[std::size_t(side)]; }
+    // Throws SettingsError when `settings` are not valid; the camera is shared, so setting it
+    // on one side sets it on both.
+    void setSettings(Side side, const Settings& settings);
+
+    bool compareMode() const { return m_compare; }
+    void setCompareMode(bool on);
+    Side selectedSide() const { return m_selected; }
+    void selectSide(Side side);
+    void copyAToB();
+    void swapSides();
+    void setLightAnimation(bool animate, double degreesPerSecond);
+
+    // Writes a PNG of `target`; returns an empty string or what went wrong. The action's
+    // dialog ends here.
+    QString saveScreenshot(ScreenshotDialog::Target target, const QString& path);
+    // Exports or imports the selected side as JSON with the command line's keys; returns an
+    // empty string or what went wrong.
+    QString exportSettings(const QString& path) const;
+    QString importSettings(const QString& path);
+
+    SceneView* sceneView(Side side) const { return m_views[std::size_t(side)]; }
+    DepthMapView* depthMapView() const { return m_depthView; }
+    PropertiesDock* propertiesDock() const { return m_dock; }
+    QAction* action(const QString& objectName) const;
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createActions();
+    void createMenus();
+    void createToolBar();
+    void createStatusBar();
+    void restoreState();
+    void saveState() const;
+
+    void applyEdit(const Settings& settings);
+    void setCamera(const CameraSettings& camera);
+    void pushSettings();
+    void updateCaptions();
+    void updateStatus();
+    void animateLight();
+
+    void saveScreenshotInteractively();
+    void exportSettingsInteractively();
+    void importSettingsInteractively();
+    void showArtifactsHelp();
+    void showAbout();
+
+    Persistence m_persistence;
+    std::array<Settings, 2> m_settings;
+    Side m_selected = Side::A;
+    bool m_compare = false;
+
+    std::array<SceneView*, 2> m_views{};
+    std::array<ViewPane*, 2> m_scenePanes{};
+    DepthMapView* m_depthView = nullptr;
+    ViewPane* m_depthPane = nullptr;
+    QSplitter* m_mainSplitter = nullptr;
+    QSplitter* m_sceneSplitter = nullptr;
+    PropertiesDock* m_dock = nullptr;
+
+    QLabel* m_texelLabel = nullptr;
+    QLabel* m_timingLabel = nullptr;
+    QLabel* m_mapLabel = nullptr;
+    QLabel* m_passLabel = nullptr;
+
+    QTimer m_animationTimer;
+    QElapsedTimer m_animationClock;
+    double m_animationSpeed = 30.0;     // degrees per second
+
+    QAction* m_compareAction = nullptr;
+    QAction* m_copyAction = nullptr;
+    QAction* m_swapAction = nullptr;
+    QAction* m_volumeAction = nullptr;
+    QAction* m_animateAction = nullptr;
+    QAction* m_screenshotAction = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    QString m_screenshotFolder;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,482 @@
+#include "PropertiesDock.h"
+
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+#include "SliderSpinBox.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+// How a number is presented. Ranges and help come from settingKeys(); this is only the part
+// of each range worth a slider, the unit and the precision shown.
+struct Presentation {
+    const char* key;
+    const char* label;
+    const char* unit;
+    int decimals;
+    double sliderLow;
+    double sliderHigh;
+    SliderSpinBox::Scale scale = SliderSpinBox::Scale::Linear;
+};
+
+const Presentation kPresentations[] = {
+    {"light.position", "Position", " wu", 2, -10.0, 10.0},
+    {"light.target", "Target", " wu", 2, -5.0, 5.0},
+    {"light.extent", "Extent", " wu", 2, 0.5, 30.0},
+    {"light.fov", "Field of view", "°", 1, 10.0, 170.0},
+    {"light.near", "Near", " wu", 2, -10.0, 20.0},
+    {"light.far", "Far", " wu", 2, 0.5, 60.0},
+    {"map.size", "Size", " px", 0, 64.0, 8192.0, SliderSpinBox::Scale::Logarithmic},
+    {"bias.slope", "Slope", "", 4, 0.0, 0.1},
+    {"bias.min", "Minimum", "", 4, 0.0, 0.02},
+    {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
+    {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
+    {"filter.kernel", "PCF kernel", " texels", 0, 1.0, 9.0},
+};
+
+const Presentation& presentation(const QString& key)
+{
+    for (const Presentation& p : kPresentations) {
+        if (key == QLatin1String(p.key))
+            return p;
+    }
+    throw SettingsError(key, QStringLiteral("has no field in the properties dock"));
+}
+
+const SettingKey& keyInfo(const QString& key)
+{
+    const SettingKey* info = findSettingKey(key);
+    if (!info)
+        throw SettingsError(key, QStringLiteral("unknown setting"));
+    return *info;
+}
+
+QString tooltipFor(const SettingKey& info)
+{
+    return QStringLiteral("<p><b>%1</b> — %2</p><p>Allowed: %3</p>").arg(info.key, info.help.toHtmlEscaped(), info.range.toHtmlEscaped());
+}
+
+constexpr double kDefaultSpeed = 30.0;  // degrees per second
+
+} // namespace
+
+PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), parent)
+{
+    setObjectName(QStringLiteral("PropertiesDock"));
+    setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetFloatable);
+
+    auto* content = new QWidget;
+    auto* column = new QVBoxLayout(content);
+    column->setContentsMargins(8, 6, 8, 8);
+    column->setSpacing(8);
+    m_sideLabel = new QLabel;
+    m_sideLabel->setObjectName(QStringLiteral("sideLabel"));
+    m_sideLabel->setVisible(false);
+    column->addWidget(m_sideLabel);
+
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    setWidget(scroll);
+
+    QGridLayout* light = addGroup(tr("Light"));
+    addVector(light, QStringLiteral("light.position"));
+    addVector(light, QStringLiteral("light.target"));
+    addChoice(light, QStringLiteral("light.projection"));
+    addNumber(light, QStringLiteral("light.extent"));
+    addNumber(light, QStringLiteral("light.fov"));
+    addNumber(light, QStringLiteral("light.near"));
+    addNumber(light, QStringLiteral("light.far"));
+    m_animate = new QCheckBox(tr("Animate around the target"));
+    m_animate->setObjectName(QStringLiteral("animateLight"));
+    m_animate->setToolTip(tr("Circles the light around its target: watch acne crawl and shadows swing as the angle changes"));
+    m_speed = new SliderSpinBox(-360.0, 360.0, 0);
+    m_speed->setObjectName(QStringLiteral("animationSpeed"));
+    m_speed->setSuffix(QStringLiteral("°/s"));
+    m_speed->setValue(kDefaultSpeed);
+    m_speed->setToolTip(tr("Degrees per second around the vertical axis through the target; negative turns the other way"));
+    const int animateRow = light->rowCount();
+    light->addWidget(m_animate, animateRow, 0, 1, 2);
+    light->addWidget(new QLabel(tr("Speed")), animateRow + 1, 0);
+    light->addWidget(m_speed, animateRow + 1, 1);
+    connect(m_animate, &QCheckBox::toggled, this, [this](bool on) { emit animationChanged(on, m_speed->value()); });
+    connect(m_speed, &SliderSpinBox::valueEdited, this, [this](double v) { emit animationChanged(m_animate->isChecked(), v); });
+
+    QGridLayout* map = addGroup(tr("Shadow map"));
+    addNumber(map, QStringLiteral("map.size"));
+    addChoice(map, QStringLiteral("map.format"));
+
+    QGridLayout* bias = addGroup(tr("Bias"));
+    addNumber(bias, QStringLiteral("bias.slope"));
+    addNumber(bias, QStringLiteral("bias.min"));
+    addBool(bias, QStringLiteral("bias.cull_front"), tr("Cull front faces in the shadow pass"));
+    addNumber(bias, QStringLiteral("bias.polygon_factor"));
+    addNumber(bias, QStringLiteral("bias.polygon_units"));
+
+    QGridLayout* filter = addGroup(tr("Filtering"));
+    addChoice(filter, QStringLiteral("filter.mode"));
+    addNumber(filter, QStringLiteral("filter.kernel"));
+
+    QGridLayout* shading = addGroup(tr("Shading"));
+    addChoice(shading, QStringLiteral("shading.model"));
+    addBool(shading, QStringLiteral("shadow.enabled"), tr("Shadows"));
+
+    QGridLayout* scene = addGroup(tr("Scene"));
+    addChoice(scene, QStringLiteral("scene"));
+    auto* reset = new QPushButton(tr("Reset to Defaults"));
+    reset->setObjectName(QStringLiteral("resetToDefaults"));
+    reset->setToolTip(tr("Every setting of this side back to the scene preset's; the camera stays"));
+    scene->addWidget(reset, scene->rowCount(), 0, 1, 2, Qt::AlignRight);
+    connect(reset, &QPushButton::clicked, this, &PropertiesDock::resetToDefaults);
+
+    column->addStretch(1);
+    content->setMinimumWidth(320);
+    setSettings(m_pending);
+}
+
+QGridLayout* PropertiesDock::addGroup(const QString& title)
+{
+    auto* box = new QGroupBox(title);
+    auto* grid = new QGridLayout(box);
+    grid->setColumnStretch(1, 1);
+    grid->setHorizontalSpacing(10);
+    grid->setVerticalSpacing(4);
+    auto* column = static_cast<QVBoxLayout*>(static_cast<QScrollArea*>(widget())->widget()->layout());
+    column->addWidget(box);
+    return grid;
+}
+
+void PropertiesDock::addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field)
+{
+    const int row = grid->rowCount();
+    auto* name = new QLabel(rangeText.trimmed().isEmpty() ? label
+                                                : QStringLiteral("%1<br><span style='color:gray; font-size:small'>%2</span>")
+                                                      .arg(label.toHtmlEscaped(), rangeText.trimmed().toHtmlEscaped()));
+    name->setToolTip(editor->toolTip());
+    grid->addWidget(name, row, 0);
+    grid->addWidget(editor, row, 1);
+    field.error = new QLabel;
+    field.error->setObjectName(field.key + QStringLiteral(".error"));
+    field.error->setWordWrap(true);
+    field.error->setStyleSheet(QStringLiteral("color: #d9534f;"));
+    field.error->setVisible(false);
+    grid->addWidget(field.error, row + 1, 0, 1, 2);
+    m_rows[field.key] = {name, editor};
+    m_fields.insert(field.key, std::move(field));
+}
+
+void PropertiesDock::addNumber(QGridLayout* grid, const QString& key)
+{
+    const SettingKey& info = keyInfo(key);
+    const Presentation& look = presentation(key);
+    // Open ends of a range ((0, 180)) become the nearest value the spin box can show.
+    const double step = std::pow(10.0, -look.decimals);
+    const bool loOpen = info.range.startsWith(QLatin1Char('('));
+    const bool hiOpen = info.range.contains(QLatin1Char(')'));
+    auto* editor = new SliderSpinBox(info.minimum + (loOpen ? step : 0.0), info.maximum - (hiOpen ? step : 0.0), look.decimals);
+    editor->setObjectName(key);
+    editor->setSuffix(QString::fromUtf8(look.unit));
+    editor->setSliderSpan(look.sliderLow, look.sliderHigh, look.scale);
+    if (info.range.contains(QStringLiteral("odd")))
+        editor->setSingleStep(2.0);
+    else if (look.decimals > 0)
+        editor->setSingleStep(std::max(step, (look.sliderHigh - look.sliderLow) / 200.0));
+    editor->setToolTip(tooltipFor(info));
+    const bool integer = info.type == u"integer";
+    connect(editor, &SliderSpinBox::valueEdited, this, [this, key, integer](double v) {
+        edit(key, integer ? QString::number(qRound(v)) : QString::number(v, 'g', 12));
+    });
+    Field field{key, nullptr, {editor}, [editor, key](const Settings& s) { editor->setValue(settingValue(s, key).toDouble()); }};
+    // Huge limits ([-1e7, 1e7]) only say "any sensible number": the tooltip still has them.
+    const bool telling = std::max(std::abs(info.minimum), std::abs(info.maximum)) < 1e5;
+    addRow(grid, QString::fromUtf8(look.label), (telling ? info.range : QString()) + QString::fromUtf8(look.unit), editor,
+           std::move(field));
+}
+
+void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
+{
+    const SettingKey& info = keyInfo(key);
+    const Presentation& look = presentation(key);
+    auto* editor = new QWidget;
+    auto* layout = new QVBoxLayout(editor);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    std::vector<QWidget*> parts;
+    std::vector<SliderSpinBox*> boxes;
+    for (int i = 0; i < 3; ++i) {
+        const QString axis = QString(QLatin1Char("xyz"[i]));
+        auto* box = new SliderSpinBox(info.minimum, info.maximum, look.decimals);
+        box->setObjectName(key + QLatin1Char('.') + axis);
+        box->setSuffix(QString::fromUtf8(look.unit));
+        box->setSliderSpan(look.sliderLow, look.sliderHigh);
+        box->setSingleStep(0.1);
+        box->setToolTip(tooltipFor(info));
+        box->spinBox()->setPrefix(axis + QStringLiteral("  "));
+        layout->addWidget(box);
+        parts.push_back(box);
+        boxes.push_back(box);
+        // A component edit is written as the whole vector, through the same parser as --set.
+        connect(box, &SliderSpinBox::valueEdited, this, [this, key, i](double v) {
+            QStringList xyz = settingValue(m_pending, key).split(QLatin1Char(','));
+            xyz[i] = QString::number(v, 'g', 12);
+            edit(key, xyz.join(QLatin1Char(',')));
+        });
+    }
+    editor->setToolTip(tooltipFor(info));
+    Field field{key, nullptr, parts, [boxes, key](const Settings& s) {
+                    const QStringList xyz = settingValue(s, key).split(QLatin1Char(','));
+                    for (int i = 0; i < 3; ++i)
+                        boxes[std::size_t(i)]->setValue(xyz.value(i).toDouble());
+                }};
+    addRow(grid, QString::fromUtf8(look.label), QString(), editor, std::move(field));
+}
+
+void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
+{
+    const SettingKey& info = keyInfo(key);
+    auto* combo = new QComboBox;
+    combo->setObjectName(key);
+    combo->addItems(info.choices);
+    combo->setToolTip(tooltipFor(info));
+    connect(combo, &QComboBox::currentTextChanged, this, [this, key](const QString& text) {
+        if (m_loading)
+            return;
+        if (key == u"scene")
+            editScene(text);
+        else
+            edit(key, text);
+    });
+    Field field{key, nullptr, {combo}, [combo, key](const Settings& s) {
+                    const QSignalBlocker block(combo);
+                    combo->setCurrentText(settingValue(s, key));
+                }};
+    static const QHash<QString, QString> labels{{QStringLiteral("light.projection"), tr("Projection")},
+                                                {QStringLiteral("map.format"), tr("Depth format")},
+                                                {QStringLiteral("filter.mode"), tr("Filter")},
+                                                {QStringLiteral("shading.model"), tr("Specular")},
+                                                {QStringLiteral("scene"), tr("Preset")}};
+    addRow(grid, labels.value(key, key), QString(), combo, std::move(field));
+}
+
+void PropertiesDock::addBool(QGridLayout* grid, const QString& key, const QString& text)
+{
+    const SettingKey& info = keyInfo(key);
+    auto* check = new QCheckBox(text);
+    check->setObjectName(key);
+    check->setToolTip(tooltipFor(info));
+    connect(check, &QCheckBox::toggled, this, [this, key](bool on) {
+        if (!m_loading)
+            edit(key, on ? QStringLiteral("true") : QStringLiteral("false"));
+    });
+    Field field{key, nullptr, {check}, [check, key](const Settings& s) {
+                    const QSignalBlocker block(check);
+                    check->setChecked(settingValue(s, key) == u"true");
+                }};
+    const int row = grid->rowCount();
+    grid->addWidget(check, row, 0, 1, 2);
+    field.error = new QLabel;
+    field.error->setObjectName(key + QStringLiteral(".error"));
+    field.error->setStyleSheet(QStringLiteral("color: #d9534f;"));
+    field.error->setWordWrap(true);
+    field.error->setVisible(false);
+    grid->addWidget(field.error, row + 1, 0, 1, 2);
+    m_rows[key] = {check};
+    m_fields.insert(key, std::move(field));
+}
+
+void PropertiesDock::setSettings(const Settings& settings)
+{
+    m_pending = settings;
+    m_loading = true;
+    for (const Field& field : std::as_const(m_fields))
+        field.load(settings);
+    m_loading = false;
+    clearErrors();
+    updateDependentRows();
+}
+
+void PropertiesDock::setSideName(const QString& name)
+{
+    m_sideLabel->setVisible(!name.isEmpty());
+    m_sideLabel->setText(tr("<b>Editing side %1</b> — click a view to edit the other").arg(name));
+}
+
+void PropertiesDock::edit(const QString& key, const QString& value)
+{
+    if (m_loading)
+        return;
+    Settings candidate = m_pending;
+    try {
+        applySetting(candidate, key, value);
+    } catch (const SettingsError& e) {
+        markError(key, QString::fromStdString(e.what()));
+        return;
+    }
+    accept(candidate, key);
+}
+
+void PropertiesDock::editScene(const QString& name)
+{
+    // As the key's help says: a preset brings its own light and camera.
+    Settings candidate = m_pending;
+    try {
+        const Settings preset = presetSettings(name);
+        candidate.scene = preset.scene;
+        candidate.light = preset.light;
+        candidate.camera = preset.camera;
+    } catch (const SettingsError& e) {
+        markError(QStringLiteral("scene"), QString::fromStdString(e.what()));
+        return;
+    }
+    setSettings(candidate);
+    accept(candidate, QStringLiteral("scene"));
+}
+
+void PropertiesDock::resetToDefaults()
+{
+    Settings defaults = presetSettings(m_pending.scene);
+    defaults.camera = m_pending.camera;
+    setSettings(defaults);
+    accept(defaults, QString());
+}
+
+void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
+{
+    m_pending = candidate;
+    clearErrors();
+    updateDependentRows();
+    QStringList warnings;
+    bool valid = true;
+    for (const SettingsIssue& issue : validate(candidate)) {
+        if (issue.severity == SettingsIssue::Severity::Error) {
+            valid = false;
+            markError(issue.key, issue.message);
+        } else {
+            warnings << issue.key + QStringLiteral(": ") + issue.message;
+        }
+    }
+    if (!valid) {
+        // A cross-field rule names one field (near >= far names far); the one just edited
+        // says so too, so the reason is where the user is looking.
+        if (!editedKey.isEmpty() && errorText(editedKey).isEmpty()) {
+            for (const SettingsIssue& issue : validate(candidate)) {
+                if (issue.severity == SettingsIssue::Severity::Error) {
+                    markError(editedKey, issue.key + QStringLiteral(": ") + issue.message);
+                    break;
+                }
+            }
+        }
+        return;
+    }
+    emit warningsChanged(warnings.join(QStringLiteral("; ")));
+    emit settingsEdited(candidate);
+}
+
+void PropertiesDock::clearErrors()
+{
+    for (const Field& field : std::as_const(m_fields)) {
+        field.error->setVisible(false);
+        field.error->clear();
+        for (QWidget* w : field.markable) {
+            if (auto* box = qobject_cast<SliderSpinBox*>(w))
+                box->setInvalid(false);
+            else
+                w->setStyleSheet(QString());
+        }
+    }
+}
+
+void PropertiesDock::markError(const QString& key, const QString& message)
+{
+    auto it = m_fields.find(key);
+    if (it == m_fields.end())
+        return;
+    // The message without the "key: " prefix SettingsError puts in front: the field is the key.
+    QString text = message;
+    if (text.startsWith(key + QStringLiteral(": ")))
+        text = text.mid(key.size() + 2);
+    it->error->setText(text);
+    it->error->setVisible(true);
+    for (QWidget* w : it->markable) {
+        if (auto* box = qobject_cast<SliderSpinBox*>(w))
+            box->setInvalid(true);
+        else
+            w->setStyleSheet(QStringLiteral("border: 2px solid #d9534f; border-radius: 3px;"));
+    }
+    if (QWidget* row = m_rows.value(key).empty() ? nullptr : m_rows.value(key).back())
+        static_cast<QScrollArea*>(widget())->ensureWidgetVisible(row);
+}
+
+void PropertiesDock::showError(const QString& key, const QString& message)
+{
+    markError(key, message);
+}
+
+QString PropertiesDock::errorText(const QString& key) const
+{
+    const auto it = m_fields.find(key);
+    return it == m_fields.end() ? QString() : it->error->text();
+}
+
+void PropertiesDock::updateDependentRows()
+{
+    // Show only what the current technique uses: extent for an ortho light, field of view for
+    // a perspective one; the kernel width only matters to PCF.
+    const bool ortho = m_pending.light.projection == LightProjection::Ortho;
+    for (QWidget* w : m_rows.value(QStringLiteral("light.extent")))
+        w->setVisible(ortho);
+    for (QWidget* w : m_rows.value(QStringLiteral("light.fov")))
+        w->setVisible(!ortho);
+    for (QWidget* w : m_rows.value(QStringLiteral("filter.kernel")))
+        w->setEnabled(m_pending.filter.mode == FilterMode::Pcf);
+}
+
+void PropertiesDock::setAnimation(bool animate, double degreesPerSecond)
+{
+    const QSignalBlocker block(m_animate);
+    m_animate->setChecked(animate);
+    m_speed->setValue(degreesPerSecond);
+}
+
+void PropertiesDock::updateFrom(const Settings& applied, const QStringList& keys)
+{
+    m_pending.camera = applied.camera;
+    m_loading = true;
+    for (const QString& key : keys) {
+        applySetting(m_pending, key, settingValue(applied, key));
+        if (const auto it = m_fields.find(key); it != m_fields.end())
+            it->load(m_pending);
+    }
+    m_loading = false;
+}
+
+bool PropertiesDock::animateLight() const
+{
+    return m_animate->isChecked();
+}
+
+double PropertiesDock::animationSpeed() const
+{
+    return m_speed->value();
+}
+
+} // namespace shadowlab

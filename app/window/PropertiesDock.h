@@ -1,0 +1,88 @@
+#pragma once
+
+#include "Settings.h"
+
+#include <QDockWidget>
+#include <QHash>
+
+#include <functional>
+#include <vector>
+
+class QCheckBox;
+class QGridLayout;
+class QLabel;
+
+namespace shadowlab {
+
+class SliderSpinBox;
+
+// Every setting of one side (A or B), grouped as a shadow-mapping person thinks of them:
+// Light, Shadow map, Bias, Filtering, Shading, Scene. Built from settingKeys(): the spin boxes
+// take their ranges from it and the tooltips its help, so the dock and the CLI never disagree.
+// Each edit goes through applySetting() and validate(); an edit that makes the settings
+// impossible (near >= far) is kept in its field, marked there with the reason, and not
+// emitted, so the views keep the last valid image.
+class PropertiesDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    explicit PropertiesDock(QWidget* parent = nullptr);
+
+    // Shows `settings` (valid ones) in every field and clears all error marks.
+    void setSettings(const Settings& settings);
+    // The settings as typed, valid or not.
+    const Settings& pendingSettings() const { return m_pending; }
+    // "A" or "B" in compare mode, empty otherwise.
+    void setSideName(const QString& name);
+
+    // Marks the field of `key` (from a failed render, say) with `message`.
+    void showError(const QString& key, const QString& message);
+    // The message shown at the field of `key`, empty when it holds an accepted value.
+    QString errorText(const QString& key) const;
+
+    // Shows the light animation state without emitting animationChanged().
+    void setAnimation(bool animate, double degreesPerSecond);
+    // Takes `keys` (and the camera) from `applied` into the fields without touching the others,
+    // so a moving light or camera does not undo an edit still being corrected.
+    void updateFrom(const Settings& applied, const QStringList& keys);
+    bool animateLight() const;
+    double animationSpeed() const;     // degrees per second around the target
+
+signals:
+    void settingsEdited(const shadowlab::Settings& settings);
+    void warningsChanged(const QString& text);  // empty when there are none
+    void animationChanged(bool animate, double degreesPerSecond);
+
+private:
+    struct Field {
+        QString key;
+        QLabel* error = nullptr;
+        std::vector<QWidget*> markable;              // widgets that turn red when refused
+        std::function<void(const Settings&)> load;   // shows a value without emitting
+    };
+
+    QGridLayout* addGroup(const QString& title);
+    void addNumber(QGridLayout* grid, const QString& key);
+    void addVector(QGridLayout* grid, const QString& key);
+    void addChoice(QGridLayout* grid, const QString& key);
+    void addBool(QGridLayout* grid, const QString& key, const QString& text);
+    void addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field);
+
+    void edit(const QString& key, const QString& value);
+    void editScene(const QString& name);
+    void resetToDefaults();
+    void accept(const Settings& candidate, const QString& editedKey);
+    void clearErrors();
+    void markError(const QString& key, const QString& message);
+    void updateDependentRows();
+
+    Settings m_pending;
+    QHash<QString, Field> m_fields;
+    QHash<QString, std::vector<QWidget*>> m_rows;   // label and editor of a key, to hide/disable
+    QLabel* m_sideLabel = nullptr;
+    QCheckBox* m_animate = nullptr;
+    SliderSpinBox* m_speed = nullptr;
+    bool m_loading = false;
+};
+
+} // namespace shadowlab

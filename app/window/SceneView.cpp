@@ -1,0 +1,155 @@
+#include "SceneView.h"
+
+#include "LightGizmoPass.h"
+#include "OrbitCamera.h"
+#include "RenderError.h"
+#include "Renderer.h"
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+
+#include <QElapsedTimer>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLVersionFunctionsFactory>
+#include <QWheelEvent>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr double kDegreesPerPixel = 0.4;
+
+} // namespace
+
+SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent)
+{
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(0, 0);
+}
+
+SceneView::~SceneView()
+{
+    cleanup();
+}
+
+void SceneView::setSettings(const Settings& settings)
+{
+    if (settings == m_settings)
+        return;
+    m_settings = settings;
+    update();
+}
+
+void SceneView::setShowLightVolume(bool show)
+{
+    if (show == m_showLightVolume)
+        return;
+    m_showLightVolume = show;
+    update();
+}
+
+void SceneView::initializeGL()
+{
+    auto* gl = QOpenGLVersionFunctionsFactory::get<GlFunctions>(context());
+    if (!gl || !gl->initializeOpenGLFunctions()) {
+        emit renderFailed(QString(), QStringLiteral("this OpenGL context does not provide OpenGL 3.3 core"));
+        return;
+    }
+    try {
+        m_renderer = std::make_unique<Renderer>(gl);
+        m_gizmo = std::make_unique<LightGizmoPass>(gl);
+    } catch (const RenderError& e) {
+        m_renderer.reset();
+        emit renderFailed(QString(), QString::fromStdString(e.what()));
+        return;
+    }
+    m_rendered.reset();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &SceneView::cleanup, Qt::UniqueConnection);
+}
+
+void SceneView::cleanup()
+{
+    if (!m_renderer && !m_gizmo)
+        return;
+    makeCurrent();
+    m_gizmo.reset();
+    m_renderer.reset();
+    doneCurrent();
+}
+
+void SceneView::renderFrame(const Settings& settings)
+{
+    const QSize size = this->size() * devicePixelRatio();
+    const RenderTarget target{defaultFramebufferObject(), size};
+    m_renderer->render(settings, target, TimingMode::Async);
+    m_gizmo->render(m_renderer->lightFrame(), m_renderer->cameraFrame(), m_showLightVolume, target);
+}
+
+void SceneView::paintGL()
+{
+    if (!m_renderer)
+        return;
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        renderFrame(m_settings);
+        m_rendered = m_settings;
+    } catch (const std::runtime_error& e) {
+        // SettingsError (names its key) or RenderError: keep showing what worked last.
+        const auto* settingsError = dynamic_cast<const SettingsError*>(&e);
+        emit renderFailed(settingsError ? settingsError->key() : QString(), QString::fromStdString(e.what()));
+        if (m_rendered) {
+            try {
+                renderFrame(*m_rendered);
+            } catch (const std::runtime_error&) {
+                m_rendered.reset();
+            }
+        }
+    }
+    m_lastFrameMs = double(timer.nsecsElapsed()) * 1e-6;
+    ++m_frameCount;
+    emit frameRendered();
+}
+
+void SceneView::mousePressEvent(QMouseEvent* event)
+{
+    m_lastMouse = event->position().toPoint();
+    setFocus(Qt::MouseFocusReason);
+    emit activated();
+}
+
+void SceneView::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint position = event->position().toPoint();
+    const QPoint delta = position - m_lastMouse;
+    m_lastMouse = position;
+    if (delta.isNull())
+        return;
+    OrbitCamera camera(m_settings.camera);
+    if (event->buttons() & Qt::LeftButton)
+        camera.orbit(delta.x() * kDegreesPerPixel, delta.y() * kDegreesPerPixel);
+    else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton))
+        camera.pan(QPointF(delta), size());
+    else
+        return;
+    emit cameraEdited(camera.settings());
+}
+
+void SceneView::wheelEvent(QWheelEvent* event)
+{
+    OrbitCamera camera(m_settings.camera);
+    camera.zoom(event->angleDelta().y() / 120.0);
+    emit cameraEdited(camera.settings());
+}
+
+void SceneView::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_R || event->key() == Qt::Key_Home) {
+        emit cameraEdited(presetSettings(m_settings.scene).camera);
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace shadowlab

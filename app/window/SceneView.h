@@ -1,0 +1,72 @@
+#pragma once
+
+#include "Settings.h"
+
+#include <QOpenGLWidget>
+#include <QPoint>
+
+#include <memory>
+#include <optional>
+
+namespace shadowlab {
+
+class LightGizmoPass;
+class Renderer;
+
+// The lit scene in a QOpenGLWidget: one Renderer on this widget's context, drawn only when
+// the settings change or the widget needs repainting. Mouse input does not move the camera
+// itself: it asks for a new camera (cameraEdited) so the window can share it between views.
+//   left drag: orbit · right or middle drag: pan · wheel: zoom · R or Home: reset the camera
+class SceneView : public QOpenGLWidget {
+    Q_OBJECT
+
+public:
+    explicit SceneView(QWidget* parent = nullptr);
+    ~SceneView() override;
+
+    // `settings` must have passed validate(). If the driver still refuses them (a map larger
+    // than it allows), renderFailed() says why and the last settings that worked are drawn.
+    void setSettings(const Settings& settings);
+    const Settings& settings() const { return m_settings; }
+    void setShowLightVolume(bool show);
+    bool showLightVolume() const { return m_showLightVolume; }
+
+    // Null until the first initializeGL() and after the context goes away.
+    const Renderer* renderer() const { return m_renderer.get(); }
+    // The settings of the image on screen (the last ones that rendered).
+    const std::optional<Settings>& renderedSettings() const { return m_rendered; }
+    int frameCount() const { return m_frameCount; }
+    double lastFrameMs() const { return m_lastFrameMs; }
+
+    QSize minimumSizeHint() const override { return {0, 0}; }
+    QSize sizeHint() const override { return {640, 480}; }
+
+signals:
+    void frameRendered();
+    void renderFailed(const QString& key, const QString& message);
+    void cameraEdited(const shadowlab::CameraSettings& camera);
+    void activated();   // pressed: the window selects this view's side
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    void cleanup();
+    void renderFrame(const Settings& settings);
+
+    Settings m_settings;
+    std::optional<Settings> m_rendered;
+    std::unique_ptr<Renderer> m_renderer;
+    std::unique_ptr<LightGizmoPass> m_gizmo;
+    bool m_showLightVolume = true;
+    QPoint m_lastMouse;
+    int m_frameCount = 0;
+    double m_lastFrameMs = 0.0;
+};
+
+} // namespace shadowlab

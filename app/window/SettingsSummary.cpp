@@ -1,0 +1,50 @@
+#include "SettingsSummary.h"
+
+#include "SettingsKeys.h"
+
+namespace shadowlab {
+
+namespace {
+
+QString filterText(const FilterSettings& filter)
+{
+    if (filter.mode == FilterMode::Pcf)
+        return QStringLiteral("pcf %1×%1").arg(filter.kernel);
+    return toString(filter.mode);
+}
+
+} // namespace
+
+QString squareSize(int side)
+{
+    // Appended, not in the format string: QString::arg() would read "%1²" as a two-digit placeholder.
+    return QString::number(side) + QChar(0x00B2);
+}
+
+QString settingsSummary(const Settings& settings)
+{
+    if (!settings.shadow.enabled)
+        return QStringLiteral("%1 · shadows off").arg(toString(settings.shading.model));
+    QString text = QStringLiteral("%1 · slope %2 · min %3 · %4 %5")
+                       .arg(filterText(settings.filter))
+                       .arg(settings.bias.slope)
+                       .arg(settings.bias.min)
+                       .arg(squareSize(settings.map.size), toString(settings.light.projection));
+    if (settings.bias.cullFront)
+        text += QStringLiteral(" · front faces culled");
+    if (settings.bias.polygonFactor != 0.0 || settings.bias.polygonUnits != 0.0)
+        text += QStringLiteral(" · offset %1, %2").arg(settings.bias.polygonFactor).arg(settings.bias.polygonUnits);
+    return text;
+}
+
+QString screenshotFileName(const Settings& settings, const QDateTime& when)
+{
+    QString filter = toString(settings.filter.mode);
+    if (settings.filter.mode == FilterMode::Pcf)
+        filter += QString::number(settings.filter.kernel);
+    const QString technique = settings.shadow.enabled ? QStringLiteral("%1-%2").arg(filter).arg(settings.map.size)
+                                                      : QStringLiteral("noshadow");
+    return QStringLiteral("shadowlab-%1-%2-%3.png").arg(when.toString(QStringLiteral("yyyy-MM-dd-HHmm")), settings.scene, technique);
+}
+
+} // namespace shadowlab

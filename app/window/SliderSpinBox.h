@@ -1,0 +1,56 @@
+#pragma once
+
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QSlider;
+
+namespace shadowlab {
+
+// A slider paired with a spin box for one number. The spin box holds the exact value and the
+// whole allowed range; the slider spans the part of it worth dragging through (linear, or
+// logarithmic for sizes that double). Only user edits emit valueEdited(); setValue() is silent.
+class SliderSpinBox : public QWidget {
+    Q_OBJECT
+
+public:
+    enum class Scale { Linear, Logarithmic };
+
+    SliderSpinBox(double minimum, double maximum, int decimals, QWidget* parent = nullptr);
+
+    // The part of the range the slider covers; values outside it still fit in the spin box.
+    void setSliderSpan(double low, double high, Scale scale = Scale::Linear);
+    void setSingleStep(double step);
+    void setSuffix(const QString& suffix);
+
+    double value() const;
+    void setValue(double value);
+
+    // Marks the field as holding a value that was refused (red frame) or clears it.
+    void setInvalid(bool invalid);
+    bool isInvalid() const { return m_invalid; }
+
+    QSlider* slider() const { return m_slider; }
+    QDoubleSpinBox* spinBox() const { return m_spinBox; }
+
+signals:
+    void valueEdited(double value);
+
+private:
+    void updateSliderRange();
+    int sliderPosition(double value) const;
+    double sliderValue(int position) const;
+    void onSliderMoved(int position);
+
+    QSlider* m_slider;
+    QDoubleSpinBox* m_spinBox;
+    double m_spanLow;
+    double m_spanHigh;
+    Scale m_scale = Scale::Linear;
+    bool m_integer;
+    int m_steps = 1000;             // slider positions; one per value for short integer spans
+    bool m_invalid = false;
+    bool m_settingValue = false;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,37 @@
+#include "ViewPane.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace shadowlab {
+
+ViewPane::ViewPane(QWidget* view, QWidget* parent) : QFrame(parent), m_view(view), m_caption(new QLabel)
+{
+    m_caption->setTextFormat(Qt::RichText);
+    m_caption->setContentsMargins(8, 3, 8, 3);
+    m_caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(m_caption);
+    layout->addWidget(view, 1);
+    setHighlighted(false);
+    setMinimumSize(0, 0);
+}
+
+void ViewPane::setCaption(const QString& title, const QString& detail)
+{
+    m_caption->setText(QStringLiteral("<b>%1</b>&nbsp;&nbsp;<span style='color:%3'>%2</span>")
+                           .arg(title.toHtmlEscaped(), detail.toHtmlEscaped(),
+                                m_highlighted ? QStringLiteral("#e8eefc") : QStringLiteral("#a0a6b4")));
+    m_caption->setToolTip(detail);
+}
+
+void ViewPane::setHighlighted(bool highlighted)
+{
+    m_highlighted = highlighted;
+    m_caption->setStyleSheet(highlighted ? QStringLiteral("background: #2f6fdb; color: white;")
+                                         : QStringLiteral("background: #2a2d35; color: #e6e8ee;"));
+}
+
+} // namespace shadowlab

@@ -1,0 +1,58 @@
+#pragma once
+
+#include "Renderer.h"
+#include "ShadowMetrics.h"
+#include "ShadowReference.h"
+
+#include <QImage>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace shadowlab {
+
+struct AccuracyResult {
+    ErrorMetrics hard;              // against one shadow ray per pixel
+    ErrorMetrics area;              // against the disk light (pixels == 0 when not traced)
+    QImage frame;                   // the shaded frame that was measured
+    QImage hardErrors;              // false shadow / false light over the greyed frame
+    double areaNoiseFloor = 0.0;
+    double raysPerSecond = 0.0;     // of the reference computation, when it ran for this call
+    bool referenceReused = false;
+};
+
+// Measures a renderer's shadow term against the ray-traced reference for the same pixels.
+// The reference depends only on scene, camera, image size and light placement (not on map
+// size, bias or filter), so it is traced once and reused while those stay the same.
+class AccuracyMeter {
+public:
+    explicit AccuracyMeter(ReferenceOptions options = {});
+
+    // `renderer`'s context must be current. Throws like Renderer::render().
+    AccuracyResult measure(Renderer& renderer, const Settings& settings, QSize size,
+                           const std::function<void(double)>& progress = {});
+
+    int referenceComputations() const { return m_referenceComputations; }
+    const ReferenceOptions& options() const { return m_options; }
+
+private:
+    struct ReferenceKey {
+        QString scene;
+        CameraSettings camera;
+        QSize size;
+        glm::dvec3 lightPosition;
+        glm::dvec3 lightTarget;
+        LightProjection projection;
+        double lightRadius;
+
+        bool operator==(const ReferenceKey&) const = default;
+    };
+
+    ReferenceOptions m_options;
+    std::optional<ReferenceKey> m_key;
+    ReferenceVisibility m_reference;
+    int m_referenceComputations = 0;
+};
+
+} // namespace shadowlab

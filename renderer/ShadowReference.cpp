@@ -1,0 +1,152 @@
+#include "ShadowReference.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <QElapsedTimer>
+#include <QThread>
+#include <QtConcurrent/QtConcurrentMap>
+
+#include <atomic>
+#include <cmath>
+#include <numeric>
+
+namespace shadowlab {
+
+namespace {
+
+// A reproducible hash (PCG output permutation) so the area reference is the same every run.
+std::uint32_t hash(std::uint32_t v)
+{
+    const std::uint32_t state = v * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+double unitFloat(std::uint32_t v)
+{
+    return double(v >> 8) * (1.0 / 16777216.0);
+}
+
+// Shirley-Chiu concentric map from the unit square to the unit disk: keeps strata compact.
+glm::dvec2 concentricDisk(double u, double v)
+{
+    const double a = 2.0 * u - 1.0, b = 2.0 * v - 1.0;
+    if (a == 0.0 && b == 0.0)
+        return {0.0, 0.0};
+    double r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = glm::quarter_pi<double>() * (b / a);
+    } else {
+        r = b;
+        phi = glm::half_pi<double>() - glm::quarter_pi<double>() * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+} // namespace
+
+ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuffer& buffer, const LightFrame& light,
+                                   const ReferenceOptions& options, const std::function<void(double)>& progress,
+                                   const std::atomic<bool>* cancel)
+{
+    QElapsedTimer timer;
+    timer.start();
+    const int width = buffer.size.width(), height = buffer.size.height();
+    const int n = std::max(1, options.samplesPerAxis);
+    ReferenceVisibility result;
+    result.hard.assign(std::size_t(buffer.pixelCount()), 0.0f);
+    if (options.area) {
+        result.area.assign(std::size_t(buffer.pixelCount()), 0.0f);
+        result.samplesPerPixel = n * n;
+    }
+
+    // The disk light's frame: perpendicular to the light direction.
+    const glm::dvec3 w = light.direction;
+    const glm::dvec3 helper = std::abs(w.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(helper, w));
+    const glm::dvec3 v = glm::cross(w, u);
+
+    std::vector<int> rows(static_cast<std::size_t>(height));
+    std::iota(rows.begin(), rows.end(), 0);
+    std::atomic<std::int64_t> rays{0};
+    std::atomic<int> rowsDone{0};
+
+    auto traceRow = [&](int y) {
+        if (cancel && cancel->load())
+            return;
+        std::int64_t rowRays = 0;
+        for (int x = 0; x < width; ++x) {
+            const int i = y * width + x;
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                continue;
+            const glm::dvec3 p = buffer.worldPosition(i);
+            const glm::dvec3 normal = buffer.normal(i);
+            // Off the surface by a distance that scales with the coordinates' magnitude relative
+            // to the tracer's origin, so float rounding cannot put the origin behind the surface.
+            const double scale = std::max(1.0, glm::length(p - tracer.origin()));
+            const glm::dvec3 from = p + normal * (2e-4 * scale);
+
+            if (light.perspective)
+                result.hard[std::size_t(i)] = tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
+            else
+                result.hard[std::size_t(i)] = tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
+            ++rowRays;
+
+            if (!options.area)
+                continue;
+            int unoccluded = 0;
+            for (int s = 0; s < n * n; ++s) {
+                const std::uint32_t h = hash(std::uint32_t(i) * 9781u + std::uint32_t(s) * 6271u);
+                const double su = (double(s % n) + unitFloat(h)) / n;
+                const double sv = (double(s / n) + unitFloat(hash(h))) / n;
+                const glm::dvec2 d = concentricDisk(su, sv) * options.lightRadius;
+                const glm::dvec3 offset = u * d.x + v * d.y;
+                bool blocked;
+                if (light.perspective) {
+                    const glm::dvec3 samplePoint = light.position + offset;
+                    blocked = tracer.occluded(from, samplePoint - from, 1.0);
+                } else {
+                    // A directional light of the angular size the disk has seen from the target.
+                    const glm::dvec3 toDisk = -light.direction * light.targetDistance + offset;
+                    blocked = tracer.occluded(from, toDisk, 1e30);
+                }
+                unoccluded += !blocked;
+            }
+            rowRays += n * n;
+            result.area[std::size_t(i)] = float(unoccluded) / float(n * n);
+        }
+        rays += rowRays;
+        ++rowsDone;
+    };
+
+    QFuture<void> future = QtConcurrent::map(rows, traceRow);
+    while (!future.isFinished()) {
+        if (progress)
+            progress(double(rowsDone.load()) / height);
+        QThread::msleep(50);
+    }
+    future.waitForFinished();
+    result.cancelled = cancel && cancel->load();
+    if (progress && !result.cancelled)
+        progress(1.0);
+
+    if (options.area) {
+        double sum = 0.0;
+        int counted = 0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                continue;
+            const double a = result.area[std::size_t(i)];
+            sum += std::sqrt(a * (1.0 - a) / result.samplesPerPixel);
+            ++counted;
+        }
+        result.areaNoiseFloor = counted ? sum / counted : 0.0;
+    }
+    result.rays = rays.load();
+    result.seconds = double(timer.nsecsElapsed()) * 1e-9;
+    return result;
+}
+
+} // namespace shadowlab

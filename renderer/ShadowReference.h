@@ -1,0 +1,43 @@
+#pragma once
+
+#include "LightMath.h"
+#include "MeasureTarget.h"
+#include "RayTracer.h"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace shadowlab {
+
+// Ray-traced light visibility at exactly the world positions the rasteriser produced.
+struct ReferenceVisibility {
+    std::vector<float> hard;        // one shadow ray per pixel toward the light (point or direction)
+    std::vector<float> area;        // fraction of unoccluded stratified samples of a disk light; empty if not asked
+    int samplesPerPixel = 0;        // of the area reference
+    double areaNoiseFloor = 0.0;    // mean standard error of the area estimate over measured pixels
+    std::int64_t rays = 0;
+    double seconds = 0.0;
+    bool cancelled = false;         // stopped early through `cancel`: the buffers are incomplete
+    double raysPerSecond() const { return seconds > 0.0 ? double(rays) / seconds : 0.0; }
+};
+
+struct ReferenceOptions {
+    bool area = true;
+    double lightRadius = 0.25;      // world units
+    int samplesPerAxis = 16;        // the area reference traces samplesPerAxis^2 rays per pixel
+};
+
+// Visibility of the light for every pixel of `buffer` that faces it (others stay 0). Rays
+// start a small distance off the surface along the geometric normal. Directional (ortho)
+// lights trace parallel rays, and for the area reference a disk of the light's angular size
+// seen from its target; perspective lights trace to the light's position and to a disk there,
+// facing along the light direction. Runs on every core (Qt's global thread pool);
+// `progress` (0..1) is called from the calling thread between rows; setting `*cancel` stops
+// the work early. Needs no GL context, so it can run off the GUI thread.
+ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuffer& buffer, const LightFrame& light,
+                                   const ReferenceOptions& options, const std::function<void(double)>& progress = {},
+                                   const std::atomic<bool>* cancel = nullptr);
+
+} // namespace shadowlab

@@ -1,0 +1,163 @@
+// The accuracy measurement: the ray-traced reference matches geometry worked out by hand, the
+// metrics give the numbers they should, and the false-shadow / false-light split tells acne
+// from peter panning.
+#include "AccuracyMeter.h"
+#include "Application.h"
+#include "HeadlessRenderer.h"
+#include "SceneLibrary.h"
+#include "SettingsKeys.h"
+
+#include <QtTest>
+
+using namespace shadowlab;
+
+namespace {
+
+Settings presetWith(const QString& scene, const QStringList& assignments)
+{
+    Settings s = presetSettings(scene);
+    for (const QString& a : assignments)
+        applyAssignment(s, a);
+    return s;
+}
+
+} // namespace
+
+class TestAccuracy : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private Q_SLOTS:
+    void metricsOnSyntheticBuffers()
+    {
+        const std::vector<float> measured{1.0f, 0.0f, 0.5f, 1.0f, 0.25f};
+        const std::vector<float> reference{1.0f, 1.0f, 0.0f, 0.0f, 1.0f};
+        const std::vector<bool> counts{true, true, true, true, false};
+        const ErrorMetrics m = compareVisibility(measured, reference, counts);
+        QCOMPARE(m.pixels, 4);
+        QCOMPARE(m.falseShadow, 0.25);     // pixel 1: dark where the reference is lit
+        QCOMPARE(m.falseLight, 0.25);      // pixel 3: lit where the reference is dark
+        QCOMPARE(m.misclassified, 0.5);    // pixel 2 differs by exactly 0.5: not misclassified
+        QCOMPARE(m.mae, 0.625);
+        QCOMPARE(m.rmse, 0.75);
+        const ErrorMetrics none = compareVisibility(measured, reference, std::vector<bool>(5, false));
+        QCOMPARE(none.pixels, 0);
+        QCOMPARE(none.mae, 0.0);
+    }
+
+    void errorImageColoursBothKinds()
+    {
+        QImage frame(3, 1, QImage::Format_RGB32);
+        frame.fill(Qt::white);
+        const QImage e = errorImage(frame, {0.0f, 1.0f, 1.0f}, {1.0f, 0.0f, 1.0f}, {true, true, true});
+        QVERIFY(qRed(e.pixel(0, 0)) > 200 && qGreen(e.pixel(0, 0)) < 100);   // false shadow: magenta
+        QVERIFY(qRed(e.pixel(1, 0)) < 100 && qBlue(e.pixel(1, 0)) > 200);    // false light: cyan
+        QCOMPARE(qRed(e.pixel(2, 0)), qGreen(e.pixel(2, 0)));                // right: grey
+    }
+
+    void hardReferenceMatchesTheAnalyticShadow()
+    {
+        // A square board of half-size 1 at y = 1 (turned 30 degrees about y) over the plane
+        // y = 0, light straight above: the true shadow is exactly that square on the plane.
+        HeadlessRenderer headless;
+        const QSize size(320, 240);
+        const Settings settings = presetSettings("occluder");
+        const VisibilityBuffer buffer = headless.renderer().renderVisibility(settings, size);
+        const RayTracer tracer(*headless.renderer().scene(), buffer.cameraPosition);
+        ReferenceOptions options;
+        options.area = false;
+        const ReferenceVisibility reference = traceReference(tracer, buffer, headless.renderer().lightFrame(), options);
+        qInfo("hard reference: %lld rays, %.2f Mrays/s", static_cast<long long>(reference.rays), reference.raysPerSecond() * 1e-6);
+
+        auto analytic = [&](int x, int y) -> int {   // -1: not a plane pixel
+            const int i = y * size.width() + x;
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                return -1;
+            const glm::dvec3 p = buffer.worldPosition(i);
+            if (std::abs(p.y) > 1e-3)
+                return -1;
+            const double angle = 30.0 * 3.14159265358979323846 / 180.0;
+            const double bx = std::cos(angle) * p.x - std::sin(angle) * p.z; // into the board's frame
+            const double bz = std::sin(angle) * p.x + std::cos(angle) * p.z;
+            return std::abs(bx) <= 1.0 && std::abs(bz) <= 1.0 ? 0 : 1;
+        };
+        int plane = 0, shadowed = 0, wrong = 0, wrongAwayFromEdge = 0;
+        for (int y = 1; y < size.height() - 1; ++y) {
+            for (int x = 1; x < size.width() - 1; ++x) {
+                const int truth = analytic(x, y);
+                if (truth < 0)
+                    continue;
+                ++plane;
+                shadowed += truth == 0;
+                if (int(reference.hard[std::size_t(y * size.width() + x)]) == truth)
+                    continue;
+                ++wrong;
+                bool nearEdge = false; // a neighbouring pixel on the other side of the edge
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx)
+                        nearEdge = nearEdge || (analytic(x + dx, y + dy) >= 0 && analytic(x + dx, y + dy) != truth);
+                wrongAwayFromEdge += !nearEdge;
+            }
+        }
+        qInfo("plane pixels %d, in the analytic shadow %d, reference differs at %d (all within one pixel of the edge: %s)", plane,
+              shadowed, wrong, wrongAwayFromEdge == 0 ? "yes" : "no");
+        QVERIFY(shadowed > 2000);
+        QCOMPARE(wrongAwayFromEdge, 0);
+    }
+
+    void shadowMapConvergesToTheReference()
+    {
+        HeadlessRenderer headless;
+        AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
+        double previous = 1.0;
+        for (int mapSize : {64, 256, 1024, 4096}) {
+            const Settings s = presetWith("occluder", {"filter.mode=hard", QString("map.size=%1").arg(mapSize)});
+            const AccuracyResult r = meter.measure(headless.renderer(), s, QSize(320, 240));
+            qInfo("map %4d: misclassified %.3f%% (false shadow %.3f%%, false light %.3f%%)", mapSize, 100 * r.hard.misclassified,
+                  100 * r.hard.falseShadow, 100 * r.hard.falseLight);
+            QVERIFY2(r.hard.misclassified < previous, qPrintable(QString("map %1 did not improve").arg(mapSize)));
+            previous = r.hard.misclassified;
+        }
+        QVERIFY(previous < 0.005);
+        QCOMPARE(meter.referenceComputations(), 1); // one reference for the whole sweep
+    }
+
+    void falseShadowAndFalseLightTellAcneFromPeterPanning()
+    {
+        HeadlessRenderer headless;
+        AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
+        const QSize size(320, 180);
+        const AccuracyResult acne = meter.measure(headless.renderer(), presetWith("seed", {"bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult defaults = meter.measure(headless.renderer(), presetSettings("seed"), size);
+        const AccuracyResult panning = meter.measure(headless.renderer(), presetWith("seed", {"bias.min=0.08", "filter.mode=hard"}), size);
+        qInfo("no bias: false shadow %.2f%%, false light %.2f%%", 100 * acne.hard.falseShadow, 100 * acne.hard.falseLight);
+        qInfo("defaults: false shadow %.2f%%, false light %.2f%%", 100 * defaults.hard.falseShadow, 100 * defaults.hard.falseLight);
+        qInfo("min bias 0.08: false shadow %.2f%%, false light %.2f%%", 100 * panning.hard.falseShadow, 100 * panning.hard.falseLight);
+        QVERIFY(acne.hard.falseShadow > 10.0 * acne.hard.falseLight);
+        QVERIFY(acne.hard.falseShadow > 0.1);
+        QVERIFY(panning.hard.falseLight > 2.0 * defaults.hard.falseLight);
+        QVERIFY(panning.hard.falseLight > panning.hard.falseShadow);
+    }
+
+    void areaReferenceIsSoftAndReused()
+    {
+        HeadlessRenderer headless;
+        AccuracyMeter meter(ReferenceOptions{true, 0.25, 8});
+        const QSize size(160, 120);
+        const AccuracyResult hard = meter.measure(headless.renderer(), presetWith("occluder", {"filter.mode=hard"}), size);
+        const AccuracyResult pcf = meter.measure(headless.renderer(), presetWith("occluder", {"filter.mode=pcf64", "map.size=512"}), size);
+        QVERIFY(!hard.referenceReused);
+        QVERIFY(pcf.referenceReused);
+        QCOMPARE(meter.referenceComputations(), 1);
+        QVERIFY(hard.area.pixels > 1000);
+        QVERIFY(hard.areaNoiseFloor > 0.0 && hard.areaNoiseFloor < 0.1);
+        qInfo("against the area light: hard MAE %.4f, pcf64 on 512 MAE %.4f (noise floor %.4f)", hard.area.mae, pcf.area.mae, hard.areaNoiseFloor);
+        QVERIFY(pcf.area.mae < hard.area.mae); // a soft filter is closer to a soft shadow
+    }
+};
+
+#include "HeadlessTestMain.h"
+SHADOWLAB_TEST_MAIN(TestAccuracy)
+#include "tst_Accuracy.moc"

@@ -1,0 +1,453 @@
+// The explorer window on the headless platform, driven with QTest input the way a person
+// drives it: sliders and fields in the dock, the compare shortcut, clicks on a view. The
+// assertions are what that person would check: the picture changed, the two sides match or
+// differ, the refused value is marked and the picture stayed, nothing draws while idle.
+#include "Application.h"
+#include "DepthMapView.h"
+#include "HeadlessTestMain.h"
+#include "MainWindow.h"
+#include "OrbitCamera.h"
+#include "PropertiesDock.h"
+#include "Renderer.h"
+#include "SceneLibrary.h"
+#include "SceneView.h"
+#include "SettingsKeys.h"
+#include "SettingsSummary.h"
+#include "SliderSpinBox.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QSettings>
+#include <QSlider>
+#include <QSplitter>
+#include <QTemporaryDir>
+
+#include <glm/geometric.hpp>
+
+#include <memory>
+
+using namespace shadowlab;
+
+namespace {
+
+const QSize kWindowSize(1000, 560);
+using Side = MainWindow::Side;
+
+int frames(const MainWindow& w)
+{
+    return w.sceneView(Side::A)->frameCount() + w.sceneView(Side::B)->frameCount() + w.depthMapView()->frameCount();
+}
+
+// Runs the event loop until every visible view has drawn and then no frame came for 250 ms.
+bool settle(const MainWindow& w)
+{
+    QElapsedTimer total, quiet;
+    total.start();
+    quiet.start();
+    int last = frames(w);
+    while (total.elapsed() < 20000) {
+        QTest::qWait(20);
+        if (frames(w) != last) {
+            last = frames(w);
+            quiet.restart();
+        }
+        const bool drawn = w.sceneView(Side::A)->frameCount() > 0 && w.depthMapView()->frameCount() > 0
+            && (!w.compareMode() || w.sceneView(Side::B)->frameCount() > 0);
+        if (drawn && quiet.elapsed() > 250)
+            return true;
+    }
+    return false;
+}
+
+// Pixels whose colour differs by more than `threshold` in any channel.
+int differingPixels(const QImage& a, const QImage& b, int threshold = 8)
+{
+    if (a.size() != b.size())
+        return a.width() * a.height();
+    int count = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            if (qAbs(qRed(p) - qRed(q)) > threshold || qAbs(qGreen(p) - qGreen(q)) > threshold || qAbs(qBlue(p) - qBlue(q)) > threshold)
+                ++count;
+        }
+    }
+    return count;
+}
+
+// Distinct grey levels: a rendered scene or depth map has many, an empty view one.
+int distinctLevels(const QImage& image)
+{
+    QSet<int> levels;
+    for (int y = 0; y < image.height(); y += 3) {
+        for (int x = 0; x < image.width(); x += 3)
+            levels.insert(qGray(image.pixel(x, y)));
+    }
+    return int(levels.size());
+}
+
+} // namespace
+
+class tst_MainWindow : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void opensWithBothViewsRendering();
+    void dockSliderChangesTheScene_data();
+    void dockSliderChangesTheScene();
+    void projectionSwitchChangesTheDepthMap();
+    void compareModeShowsTwoSides();
+    void saveScreenshotWritesPng_data();
+    void saveScreenshotWritesPng();
+    void impossibleValueIsShownAtTheFieldAndTheImageStays();
+    void viewResizedToZeroAndBack();
+    void idleWindowDrawsNoFrames();
+    void settingsPersistAcrossWindows();
+    void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
+    void screenshotNameSaysWhatIsOnScreen();
+
+private:
+    SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
+    QImage scene(Side side = Side::A) const { return m_window->sceneView(side)->grabFramebuffer(); }
+    QImage depthMap() const { return m_window->depthMapView()->grabFramebuffer(); }
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void tst_MainWindow::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    // Never read or write the user's own window state and settings.
+    QCoreApplication::setOrganizationName(QStringLiteral("ShadowLabTest"));
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+}
+
+void tst_MainWindow::init()
+{
+    QSettings().clear();
+    m_window = std::make_unique<MainWindow>();
+    m_window->resize(kWindowSize);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(settle(*m_window));
+}
+
+void tst_MainWindow::cleanup()
+{
+    m_window.reset();
+}
+
+void tst_MainWindow::opensWithBothViewsRendering()
+{
+    const QImage sceneImage = scene();
+    const QImage depthImage = depthMap();
+    QVERIFY(!sceneImage.isNull() && !depthImage.isNull());
+    QVERIFY2(distinctLevels(sceneImage) > 20, "the scene view shows a scene, not a cleared buffer");
+    QVERIFY2(distinctLevels(depthImage) > 20, "the depth-map view shows the shadow map");
+    QVERIFY(m_window->sceneView(Side::A)->renderer()->shadowMap().texture() != 0);
+    QCOMPARE(m_window->depthMapView()->source(), m_window->sceneView(Side::A));
+    QVERIFY(!m_window->findChild<QLabel*>(QStringLiteral("timingLabel"))->text().isEmpty());
+    QVERIFY(m_window->findChild<QLabel*>(QStringLiteral("mapLabel"))->text().contains(QStringLiteral("2048")));
+}
+
+void tst_MainWindow::dockSliderChangesTheScene_data()
+{
+    QTest::addColumn<QString>("setup");     // key=value applied first, so the slider matters
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<int>("key_press");
+    QTest::addColumn<int>("presses");
+    QTest::addColumn<bool>("depthMapChanges");
+
+    QTest::newRow("light x") << QString() << QStringLiteral("light.position.x") << int(Qt::Key_PageUp) << 3 << true;
+    QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
+                                           << false;
+    QTest::newRow("pcf kernel to 9") << QStringLiteral("filter.mode=pcf") << QStringLiteral("filter.kernel") << int(Qt::Key_End) << 1
+                                     << false;
+}
+
+void tst_MainWindow::dockSliderChangesTheScene()
+{
+    QFETCH(QString, setup);
+    QFETCH(QString, key);
+    QFETCH(int, key_press);
+    QFETCH(int, presses);
+    QFETCH(bool, depthMapChanges);
+
+    if (!setup.isEmpty()) {
+        Settings settings = m_window->settings(Side::A);
+        applyAssignment(settings, setup);
+        m_window->setSettings(Side::A, settings);
+        QVERIFY(settle(*m_window));
+    }
+
+    SliderSpinBox* editor = field(key);
+    QVERIFY2(editor, qPrintable(key));
+    const Settings before = m_window->settings(Side::A);
+    const QImage sceneBefore = scene();
+    const QImage depthBefore = depthMap();
+    const int shadowPasses = m_window->sceneView(Side::A)->renderer()->shadowPassCount();
+
+    editor->slider()->setFocus();
+    for (int i = 0; i < presses; ++i)
+        QTest::keyClick(editor->slider(), Qt::Key(key_press));
+    QVERIFY(settle(*m_window));
+
+    QVERIFY2(m_window->settings(Side::A) != before, "the slider edited the settings");
+    const int changed = differingPixels(sceneBefore, scene());
+    QVERIFY2(changed > 100, qPrintable(QStringLiteral("%1 pixels of the scene changed").arg(changed)));
+    const int depthChanged = differingPixels(depthBefore, depthMap());
+    if (depthMapChanges) {
+        QVERIFY2(depthChanged > 100, qPrintable(QStringLiteral("%1 pixels of the depth map changed").arg(depthChanged)));
+        QVERIFY(m_window->sceneView(Side::A)->renderer()->shadowPassCount() > shadowPasses);
+    } else {
+        // Lit-pass settings reuse the shadow map.
+        QCOMPARE(depthChanged, 0);
+        QCOMPARE(m_window->sceneView(Side::A)->renderer()->shadowPassCount(), shadowPasses);
+    }
+}
+
+void tst_MainWindow::projectionSwitchChangesTheDepthMap()
+{
+    auto* projection = m_window->propertiesDock()->findChild<QComboBox*>(QStringLiteral("light.projection"));
+    QVERIFY(projection);
+    const QImage depthBefore = depthMap();
+    QVERIFY(field(QStringLiteral("light.extent"))->isVisibleTo(m_window.get()));
+
+    projection->setFocus();
+    QTest::keyClick(projection, Qt::Key_Down);
+    QVERIFY(settle(*m_window));
+
+    QVERIFY(m_window->settings(Side::A).light.projection == LightProjection::Perspective);
+    const int changed = differingPixels(depthBefore, depthMap());
+    QVERIFY2(changed > 1000, qPrintable(QStringLiteral("%1 pixels of the depth map changed").arg(changed)));
+    // The dock shows what the technique uses: field of view instead of extent.
+    QVERIFY(field(QStringLiteral("light.fov"))->isVisibleTo(m_window.get()));
+    QVERIFY(!field(QStringLiteral("light.extent"))->isVisibleTo(m_window.get()));
+}
+
+void tst_MainWindow::compareModeShowsTwoSides()
+{
+    SceneView* a = m_window->sceneView(Side::A);
+    SceneView* b = m_window->sceneView(Side::B);
+    QVERIFY(!b->isVisible());
+
+    QTest::keyClick(m_window.get(), Qt::Key_D, Qt::ControlModifier);
+    QVERIFY(m_window->compareMode());
+    QVERIFY(settle(*m_window));
+    QVERIFY(a->isVisible() && b->isVisible());
+    // An odd width cannot split evenly; one pixel more for the window makes it even.
+    for (int tries = 0; tries < 3 && a->size() != b->size(); ++tries) {
+        m_window->resize(m_window->width() + 1, m_window->height());
+        QVERIFY(settle(*m_window));
+    }
+    QCOMPARE(a->size(), b->size());
+
+    // Equal settings, same camera, same size: the same pixels.
+    QCOMPARE(m_window->settings(Side::A), m_window->settings(Side::B));
+    QCOMPARE(differingPixels(scene(Side::A), scene(Side::B), 2), 0);
+
+    // Select B by clicking it; the dock and the depth map follow it.
+    QTest::mouseClick(b, Qt::LeftButton, {}, QPoint(b->width() / 2, b->height() / 2));
+    QCOMPARE(m_window->selectedSide(), Side::B);
+    QCOMPARE(m_window->depthMapView()->source(), b);
+    auto* shadows = m_window->propertiesDock()->findChild<QCheckBox*>(QStringLiteral("shadow.enabled"));
+    QTest::mouseClick(shadows, Qt::LeftButton, {}, QPoint(8, shadows->height() / 2));
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::B).shadow.enabled, false);
+    QCOMPARE(m_window->settings(Side::A).shadow.enabled, true);
+    const int differ = differingPixels(scene(Side::A), scene(Side::B));
+    QVERIFY2(differ > 100, qPrintable(QStringLiteral("A and B differ in %1 pixels").arg(differ)));
+
+    // A camera move in one view moves both.
+    QTest::mousePress(a, Qt::LeftButton, {}, QPoint(100, 100));
+    QTest::mouseMove(a, QPoint(140, 110));
+    QTest::mouseRelease(a, Qt::LeftButton, {}, QPoint(140, 110));
+    QVERIFY(m_window->settings(Side::A).camera != presetSettings(QStringLiteral("seed")).camera);
+    QCOMPARE(m_window->settings(Side::A).camera, m_window->settings(Side::B).camera);
+    QCOMPARE(m_window->selectedSide(), Side::A);    // pressing in a view selects its side
+    QVERIFY(shadows->isChecked());
+
+    m_window->action(QStringLiteral("swapAction"))->trigger();
+    QCOMPARE(m_window->settings(Side::A).shadow.enabled, false);
+    QVERIFY(!shadows->isChecked());     // the dock edits A, which now has B's settings
+
+    m_window->action(QStringLiteral("copyAction"))->trigger();
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A), m_window->settings(Side::B));
+    QCOMPARE(differingPixels(scene(Side::A), scene(Side::B), 2), 0);
+}
+
+void tst_MainWindow::saveScreenshotWritesPng_data()
+{
+    QTest::addColumn<int>("target");
+    QTest::newRow("scene view") << int(ScreenshotDialog::Target::SceneView);
+    QTest::newRow("depth-map view") << int(ScreenshotDialog::Target::DepthMapView);
+    QTest::newRow("whole window") << int(ScreenshotDialog::Target::Window);
+}
+
+void tst_MainWindow::saveScreenshotWritesPng()
+{
+    QFETCH(int, target);
+    const auto which = ScreenshotDialog::Target(target);
+    const QString path = m_dir.filePath(QStringLiteral("shot-%1.png").arg(target));
+    QSize expected;
+    switch (which) {
+    case ScreenshotDialog::Target::SceneView: expected = m_window->sceneView(Side::A)->size(); break;
+    case ScreenshotDialog::Target::DepthMapView: expected = m_window->depthMapView()->size(); break;
+    case ScreenshotDialog::Target::Window: expected = m_window->size(); break;
+    }
+
+    // The real action and dialog; only the typing in the dialog is done by code.
+    QString defaultPath;
+    QTimer::singleShot(0, this, [&] {
+        auto* dialog = qobject_cast<ScreenshotDialog*>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        defaultPath = dialog->path();
+        dialog->setTarget(which);
+        dialog->setPath(path);
+        dialog->accept();
+    });
+    m_window->action(QStringLiteral("screenshotAction"))->trigger();
+
+    QVERIFY2(QFileInfo(defaultPath).fileName().startsWith(QStringLiteral("shadowlab-")), qPrintable(defaultPath));
+    QVERIFY2(defaultPath.contains(QStringLiteral("-seed-")) && defaultPath.endsWith(QStringLiteral("-2048.png")), qPrintable(defaultPath));
+    QImage image;
+    QVERIFY2(image.load(path, "PNG"), qPrintable(path));
+    QCOMPARE(image.size(), expected * m_window->devicePixelRatio());
+    QVERIFY(distinctLevels(image) > 20);
+}
+
+void tst_MainWindow::impossibleValueIsShownAtTheFieldAndTheImageStays()
+{
+    PropertiesDock* dock = m_window->propertiesDock();
+    SliderSpinBox* nearField = field(QStringLiteral("light.near"));
+    const QImage before = scene();
+    const QImage depthBefore = depthMap();
+
+    // near 9 >= far 7.5: typed into the spin box and confirmed with Enter.
+    QDoubleSpinBox* spin = nearField->spinBox();
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("9"));
+    QTest::keyClick(spin, Qt::Key_Enter);
+    QVERIFY(settle(*m_window));
+
+    QCOMPARE(spin->value(), 9.0);                                  // the field keeps what was typed
+    QCOMPARE(m_window->settings(Side::A).light.nearPlane, 1.0);    // the window does not take it
+    QVERIFY(nearField->isInvalid());
+    QVERIFY2(dock->errorText(QStringLiteral("light.far")).contains(QStringLiteral("greater than near")),
+             qPrintable(dock->errorText(QStringLiteral("light.far"))));
+    QVERIFY(!dock->errorText(QStringLiteral("light.near")).isEmpty());
+    QCOMPARE(differingPixels(before, scene(), 0), 0);
+    QCOMPARE(differingPixels(depthBefore, depthMap(), 0), 0);
+
+    // Correcting it clears the marks and applies.
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("2"));
+    QTest::keyClick(spin, Qt::Key_Enter);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A).light.nearPlane, 2.0);
+    QVERIFY(!nearField->isInvalid());
+    QVERIFY(dock->errorText(QStringLiteral("light.far")).isEmpty());
+}
+
+void tst_MainWindow::viewResizedToZeroAndBack()
+{
+    auto* splitter = m_window->findChild<QSplitter*>(QStringLiteral("mainSplitter"));
+    const QList<int> sizes = splitter->sizes();
+    splitter->setSizes({0, sizes[0] + sizes[1]});
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->sceneView(Side::A)->width(), 0);
+    splitter->setSizes({sizes[0] + sizes[1], 0});
+    QVERIFY(settle(*m_window));
+
+    m_window->resize(120, 90);
+    QVERIFY(settle(*m_window));
+    m_window->resize(kWindowSize);
+    splitter->setSizes(sizes);
+    QVERIFY(settle(*m_window));
+    QVERIFY(distinctLevels(scene()) > 20);
+    QVERIFY(distinctLevels(depthMap()) > 20);
+}
+
+void tst_MainWindow::idleWindowDrawsNoFrames()
+{
+    const int sceneFrames = m_window->sceneView(Side::A)->frameCount();
+    const int depthFrames = m_window->depthMapView()->frameCount();
+    QTest::qWait(300);
+    QCOMPARE(m_window->sceneView(Side::A)->frameCount(), sceneFrames);
+    QCOMPARE(m_window->depthMapView()->frameCount(), depthFrames);
+
+    // While the light animates it draws; when it stops, it stops drawing.
+    m_window->setLightAnimation(true, 90.0);
+    QTRY_VERIFY(m_window->sceneView(Side::A)->frameCount() >= sceneFrames + 3);
+    QVERIFY(m_window->depthMapView()->frameCount() > depthFrames);
+    m_window->setLightAnimation(false, 90.0);
+    QVERIFY(settle(*m_window));
+    const int stopped = m_window->sceneView(Side::A)->frameCount();
+    QTest::qWait(300);
+    QCOMPARE(m_window->sceneView(Side::A)->frameCount(), stopped);
+}
+
+void tst_MainWindow::settingsPersistAcrossWindows()
+{
+    SliderSpinBox* slope = field(QStringLiteral("bias.slope"));
+    slope->spinBox()->setValue(0.05);
+    QCOMPARE(m_window->settings(Side::A).bias.slope, 0.05);
+    m_window->close();
+    m_window.reset();
+
+    MainWindow again;
+    QCOMPARE(again.settings(Side::A).bias.slope, 0.05);
+    QCOMPARE(again.propertiesDock()->findChild<SliderSpinBox*>(QStringLiteral("bias.slope"))->value(), 0.05);
+
+    MainWindow fresh(MainWindow::Persistence::None);
+    QCOMPARE(fresh.settings(Side::A), presetSettings(QStringLiteral("seed")));
+}
+
+void tst_MainWindow::orbitKeepsTheDistanceAndZoomNeverReachesTheTarget()
+{
+    const CameraSettings start = presetSettings(QStringLiteral("torus")).camera;
+    OrbitCamera camera(start);
+    camera.orbit(45.0, 200.0);  // far past the pole: pitch stops short of it
+    const glm::dvec3 offset = camera.settings().position - camera.settings().target;
+    QVERIFY(qAbs(glm::length(offset) - glm::length(start.position - start.target)) < 1e-9);
+    QVERIFY(offset.y / glm::length(offset) < 1.0 - 1e-6);
+
+    camera.zoom(1000.0);
+    QVERIFY(glm::length(camera.settings().position - camera.settings().target) > 0.0);
+    Settings settings = presetSettings(QStringLiteral("torus"));
+    settings.camera = camera.settings();
+    QVERIFY(validate(settings).empty());
+
+    OrbitCamera panned(start);
+    panned.pan(QPointF(100.0, 0.0), QSize(800, 600));
+    QVERIFY(glm::length((panned.settings().position - start.position) - (panned.settings().target - start.target)) < 1e-9);
+}
+
+void tst_MainWindow::screenshotNameSaysWhatIsOnScreen()
+{
+    Settings settings = presetSettings(QStringLiteral("cubes"));
+    settings.filter.mode = FilterMode::Pcf;
+    settings.filter.kernel = 5;
+    settings.map.size = 1024;
+    const QDateTime when(QDate(2026, 11, 22), QTime(15, 30));
+    QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-pcf5-1024.png"));
+    settings.filter.mode = FilterMode::HwBilinear;
+    QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-hw-bilinear-1024.png"));
+}
+
+SHADOWLAB_TEST_MAIN(tst_MainWindow)
+
+#include "tst_MainWindow.moc"
