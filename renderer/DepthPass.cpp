@@ -27,6 +27,7 @@ void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
 {
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     m_gl->glViewport(0, 0, map.size(), map.size());
+    resetPassState(m_gl);
     m_gl->glDepthMask(GL_TRUE);
     m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);

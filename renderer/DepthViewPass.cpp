@@ -40,6 +40,7 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     m_gl->glViewport(0, 0, target.size.width(), target.size.height());
+    resetPassState(m_gl);
     m_gl->glDisable(GL_DEPTH_TEST);
     m_gl->glDisable(GL_CULL_FACE);
 

@@ -60,6 +60,16 @@ Object makeGlObject(GlFunctions* gl)
     return Object(gl, id);
 }
 
+// State a pass relies on but does not otherwise set, reset at the start of every pass: a widget
+// that also paints with QPainter, or a caller's own drawing, may leave any of it changed.
+inline void resetPassState(GlFunctions* gl)
+{
+    gl->glDisable(GL_BLEND);
+    gl->glDisable(GL_SCISSOR_TEST);
+    gl->glDisable(GL_STENCIL_TEST);
+    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 inline GlBuffer makeBuffer(GlFunctions* gl) { return makeGlObject<GlBuffer, &GlFunctions::glGenBuffers>(gl); }
 inline GlVertexArray makeVertexArray(GlFunctions* gl) { return makeGlObject<GlVertexArray, &GlFunctions::glGenVertexArrays>(gl); }
 inline GlTexture makeTexture(GlFunctions* gl) { return makeGlObject<GlTexture, &GlFunctions::glGenTextures>(gl); }

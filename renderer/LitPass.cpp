@@ -86,6 +86,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     m_gl->glViewport(0, 0, target.size.width(), target.size.height());
+    resetPassState(m_gl);
     m_gl->glEnable(GL_DEPTH_TEST);
     m_gl->glDepthFunc(GL_LESS);
     m_gl->glDepthMask(GL_TRUE);

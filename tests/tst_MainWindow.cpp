@@ -4,6 +4,7 @@
 // differ, the refused value is marked and the picture stayed, nothing draws while idle.
 #include "Application.h"
 #include "DepthMapView.h"
+#include "AccuracyDock.h"
 #include "HeadlessTestMain.h"
 #include "MainWindow.h"
 #include "OrbitCamera.h"
@@ -19,7 +20,9 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QSplitter>
 #include <QTemporaryDir>
@@ -114,6 +117,7 @@ private slots:
     void settingsPersistAcrossWindows();
     void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
     void screenshotNameSaysWhatIsOnScreen();
+    void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
 
 private:
     SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
@@ -446,6 +450,49 @@ void tst_MainWindow::screenshotNameSaysWhatIsOnScreen()
     QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-pcf5-1024.png"));
     settings.filter.mode = FilterMode::HwBilinear;
     QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-hw-bilinear-1024.png"));
+}
+
+void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
+{
+    AccuracyDock* dock = m_window->accuracyDock();
+    QVERIFY(dock);
+    dock->setAreaSamplesPerAxis(2);
+    Settings acne = m_window->settings(Side::A);
+    acne.bias.slope = 0.0;
+    acne.bias.min = 0.0;
+    acne.filter.mode = FilterMode::Hard;
+    m_window->setSettings(Side::A, acne);
+    QVERIFY(settle(*m_window));
+    const QImage before = scene();
+
+    dock->findChild<QCheckBox*>(QStringLiteral("overlayCheck"))->setChecked(true);
+    QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("compareButton")), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!dock->isBusy() && !m_window->sceneView(Side::A)->errorOverlay().isNull(), 60000);
+    QVERIFY(settle(*m_window));
+    // The acne shows as false shadow (magenta) over the greyed scene.
+    const QImage overlaid = scene();
+    int magenta = 0;
+    for (int y = 0; y < overlaid.height(); y += 2)
+        for (int x = 0; x < overlaid.width(); x += 2) {
+            const QRgb c = overlaid.pixel(x, y);
+            magenta += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
+        }
+    QVERIFY2(magenta > 200, qPrintable(QString::number(magenta)));
+    QVERIFY(overlaid != before);
+
+    // Any edit makes the measurement stale: the overlay goes.
+    Settings fixed = acne;
+    fixed.bias.min = 0.001;
+    m_window->setSettings(Side::A, fixed);
+    QVERIFY(m_window->sceneView(Side::A)->errorOverlay().isNull());
+
+    // A sweep point applied from the dock becomes the selected side's settings.
+    QSignalSpy applied(dock, &AccuracyDock::applySettingsRequested);
+    Settings chosen = fixed;
+    chosen.filter.mode = FilterMode::Pcf64;
+    emit dock->applySettingsRequested(chosen);
+    QCOMPARE(applied.count(), 1);
+    QVERIFY(m_window->settings(Side::A).filter.mode == FilterMode::Pcf64);
 }
 
 SHADOWLAB_TEST_MAIN(tst_MainWindow)

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "AccuracyDock.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "PropertiesDock.h"
@@ -81,8 +82,10 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         connect(m_views[i], &SceneView::cameraEdited, this, &MainWindow::setCamera);
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
-            if (side == m_selected)
-                updateStatus();
+            if (side != m_selected)
+                return;
+            updateStatus();
+            m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
         });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {
             if (side == m_selected)
@@ -115,6 +118,22 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
             statusBar()->showMessage(tr("Warning: %1").arg(text), 10000);
     });
     connect(m_dock, &PropertiesDock::animationChanged, this, &MainWindow::setLightAnimation);
+
+    // Accuracy: measures the selected side against the ray-traced reference; its error image
+    // lies over that side's view, and a point of its sweep chart becomes that side's settings.
+    m_accuracyDock = new AccuracyDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_accuracyDock);
+    tabifyDockWidget(m_dock, m_accuracyDock);
+    m_dock->raise();
+    connect(m_accuracyDock, &AccuracyDock::errorOverlayChanged, this,
+            [this](const QImage& image) { m_views[index(m_selected)]->setErrorOverlay(image); });
+    connect(m_accuracyDock, &AccuracyDock::applySettingsRequested, this, [this](const Settings& settings) {
+        try {
+            setSettings(m_selected, settings);
+        } catch (const SettingsError& e) {
+            statusBar()->showMessage(tr("Cannot apply that configuration: %1").arg(QString::fromUtf8(e.what())), 8000);
+        }
+    });
     connect(m_depthView, &DepthMapView::texelHovered, this, [this](const QString& text) { m_texelLabel->setText(text); });
 
     m_animationTimer.setInterval(kAnimationIntervalMs);
@@ -205,6 +224,7 @@ void MainWindow::createMenus()
     view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
     view->addSeparator();
     view->addAction(m_dock->toggleViewAction());
+    view->addAction(m_accuracyDock->toggleViewAction());
     view->addAction(m_toolBar->toggleViewAction());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
@@ -281,6 +301,7 @@ void MainWindow::pushSettings()
 {
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_settings[i]);
+    m_accuracyDock->setSettings(m_settings[index(m_selected)]);
     updateCaptions();
 }
 
@@ -305,12 +326,16 @@ void MainWindow::updateStatus()
         return;
     const FrameStats& stats = renderer->lastFrame();
     const Settings& shown = *view->renderedSettings();
-    m_timingLabel->setText(tr("shadow %1 ms · lit %2 ms · frame %3 ms")
-                               .arg(stats.shadowPassMs, 0, 'f', 2)
-                               .arg(stats.litPassMs, 0, 'f', 2)
-                               .arg(view->lastFrameMs(), 0, 'f', 1));
-    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · texel %2 wu").arg(squareSize(shown.map.size)).arg(stats.texelWorldSize, 0, 'g', 3)
-                                             : tr("no shadow map"));
+    // Wall times with glFinish between passes: on a software renderer the GPU timer misses
+    // the deferred rasterisation, and a tool that shows what each setting costs must not.
+    const QString shadow = !shown.shadow.enabled      ? tr("—")
+                           : stats.shadowPassRendered ? tr("%1 ms").arg(stats.shadowPassWallMs, 0, 'f', 1)
+                                                      : tr("reused");
+    m_timingLabel->setText(tr("shadow %1 · lit %2 ms · frame %3 ms").arg(shadow).arg(stats.litPassWallMs, 0, 'f', 1).arg(stats.frameWallMs, 0, 'f', 1));
+    const QString texel = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize
+                              ? tr("texel %1 → %2 wu (fitted)").arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3).arg(stats.texelWorldSize, 0, 'g', 3)
+                              : tr("texel %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
+    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), texel) : tr("no shadow map"));
     m_passLabel->setText(!shown.shadow.enabled      ? tr("shadows off")
                          : stats.shadowPassRendered ? tr("shadow pass rendered")
                                                     : tr("shadow map reused"));
@@ -342,8 +367,12 @@ void MainWindow::selectSide(Side side)
 {
     if (!m_compare)
         side = Side::A;
+    if (side != m_selected)
+        m_views[index(m_selected)]->setErrorOverlay({}); // the measurement was of the other side
     m_selected = side;
     m_dock->setSettings(m_settings[index(side)]);
+    m_accuracyDock->setSettings(m_settings[index(side)]);
+    m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
     m_dock->setSideName(m_compare ? QLatin1String(kSideNames[index(side)]) : QString());
     m_depthView->setSource(m_views[index(side)]);
     updateCaptions();

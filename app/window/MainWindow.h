@@ -16,6 +16,7 @@ class QToolBar;
 
 namespace shadowlab {
 
+class AccuracyDock;
 class DepthMapView;
 class PropertiesDock;
 class SceneView;
@@ -62,6 +63,7 @@ public:
     SceneView* sceneView(Side side) const { return m_views[std::size_t(side)]; }
     DepthMapView* depthMapView() const { return m_depthView; }
     PropertiesDock* propertiesDock() const { return m_dock; }
+    AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     QAction* action(const QString& objectName) const;
 
 protected:
@@ -100,6 +102,7 @@ private:
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_sceneSplitter = nullptr;
     PropertiesDock* m_dock = nullptr;
+    AccuracyDock* m_accuracyDock = nullptr;
 
     QLabel* m_texelLabel = nullptr;
     QLabel* m_timingLabel = nullptr;

@@ -12,6 +12,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLVersionFunctionsFactory>
+#include <QPainter>
 #include <QWheelEvent>
 
 namespace shadowlab {
@@ -49,6 +50,14 @@ void SceneView::setShowLightVolume(bool show)
     update();
 }
 
+void SceneView::setErrorOverlay(const QImage& image)
+{
+    if (image.isNull() && m_errorOverlay.isNull())
+        return;
+    m_errorOverlay = image;
+    update();
+}
+
 void SceneView::initializeGL()
 {
     auto* gl = QOpenGLVersionFunctionsFactory::get<GlFunctions>(context());
@@ -82,7 +91,9 @@ void SceneView::renderFrame(const Settings& settings)
 {
     const QSize size = this->size() * devicePixelRatio();
     const RenderTarget target{defaultFramebufferObject(), size};
-    m_renderer->render(settings, target, TimingMode::Async);
+    // Finish: per-pass wall times for the status bar; this is a measuring tool, and on a
+    // software renderer the frame is CPU work either way.
+    m_renderer->render(settings, target, TimingMode::Finish);
     m_gizmo->render(m_renderer->lightFrame(), m_renderer->cameraFrame(), m_showLightVolume, target);
 }
 
@@ -106,6 +117,11 @@ void SceneView::paintGL()
                 m_rendered.reset();
             }
         }
+    }
+    if (!m_errorOverlay.isNull()) {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::SmoothPixmapTransform);
+        painter.drawImage(rect(), m_errorOverlay);
     }
     m_lastFrameMs = double(timer.nsecsElapsed()) * 1e-6;
     ++m_frameCount;

@@ -2,6 +2,7 @@
 
 #include "Settings.h"
 
+#include <QImage>
 #include <QOpenGLWidget>
 #include <QPoint>
 
@@ -29,6 +30,10 @@ public:
     void setSettings(const Settings& settings);
     const Settings& settings() const { return m_settings; }
     void setShowLightVolume(bool show);
+    // An image painted over the scene, stretched to the view (the accuracy dock's error image);
+    // a null image removes it.
+    void setErrorOverlay(const QImage& image);
+    const QImage& errorOverlay() const { return m_errorOverlay; }
     bool showLightVolume() const { return m_showLightVolume; }
 
     // Null until the first initializeGL() and after the context goes away.
@@ -64,6 +69,7 @@ private:
     std::unique_ptr<Renderer> m_renderer;
     std::unique_ptr<LightGizmoPass> m_gizmo;
     bool m_showLightVolume = true;
+    QImage m_errorOverlay;
     QPoint m_lastMouse;
     int m_frameCount = 0;
     double m_lastFrameMs = 0.0;

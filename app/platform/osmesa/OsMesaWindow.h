@@ -27,6 +27,8 @@ public:
     void requestActivateWindow() override;
     WId winId() const override;
     QSurfaceFormat format() const override;
+    // No window manager to tell: size hints have nowhere to go (and the default warns).
+    void propagateSizeHints() override {}
 
     struct RenderBuffer
     {
