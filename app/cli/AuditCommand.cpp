@@ -15,14 +15,8 @@ int runAudit(const QStringList& arguments)
         parser.setApplicationDescription(QStringLiteral("Run the catalogue of extreme and degenerate cases; exit code 1 if any fails."));
         parser.addHelpOption();
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab audit")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("audit"), arguments))
             return kExitOk;
-        }
-        if (!parser.positionalArguments().isEmpty())
-            throw UsageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
 
         HeadlessRenderer headless;
         const bool json = parser.isSet(QStringLiteral("json"));

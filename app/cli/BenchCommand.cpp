@@ -100,12 +100,8 @@ int runBench(const QStringList& arguments)
         parser.addOption({QStringLiteral("baseline"),
                           QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab bench")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("bench"), arguments))
             return kExitOk;
-        }
         const Settings settings = settingsFromOptions(parser);
         const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);

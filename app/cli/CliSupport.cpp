@@ -23,6 +23,19 @@ QTextStream& err()
     return stream;
 }
 
+bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments)
+{
+    if (!parser.parse(QStringList{QStringLiteral("shadowlab ") + command} + arguments))
+        throw UsageError(parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out() << parser.helpText();
+        return false;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        throw UsageError(QStringLiteral("unexpected argument '%1'; run `shadowlab %2 --help`").arg(parser.positionalArguments().first(), command));
+    return true;
+}
+
 void addSettingsOptions(QCommandLineParser& parser)
 {
     parser.addOption({QStringLiteral("scene"), QStringLiteral("Scene preset: %1.").arg(sceneNames().join(QStringLiteral(", "))),

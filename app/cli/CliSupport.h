@@ -27,6 +27,10 @@ public:
 QTextStream& out();
 QTextStream& err();
 
+// Parses `arguments` (those after the command's name); throws UsageError for unknown options
+// or stray positional arguments. Returns false when --help was asked for and printed.
+bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments);
+
 // Adds --scene, --set (repeatable) and --settings to `parser`.
 void addSettingsOptions(QCommandLineParser& parser);
 

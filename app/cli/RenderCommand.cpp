@@ -29,14 +29,8 @@ int runRender(const QStringList& arguments)
                           QStringLiteral("1280x720")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the lit scene."), QStringLiteral("file.png")});
         parser.addOption({QStringLiteral("depth-out"), QStringLiteral("PNG of the light's shadow map."), QStringLiteral("file.png")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab render")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("render"), arguments))
             return kExitOk;
-        }
-        if (!parser.positionalArguments().isEmpty())
-            throw UsageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
         if (!parser.isSet(QStringLiteral("out")) && !parser.isSet(QStringLiteral("depth-out")))
             throw UsageError(QStringLiteral("say where to write: --out scene.png and/or --depth-out depth.png"));
 

@@ -61,12 +61,8 @@ int runReport(const QStringList& arguments)
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
         parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
                           QStringLiteral("n"), QStringLiteral("16")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab report")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("report"), arguments))
             return kExitOk;
-        }
         if (!parser.isSet(QStringLiteral("out")))
             throw UsageError(QStringLiteral("say where to write the report: --out DIR"));
         const Settings base = settingsFromOptions(parser);

@@ -61,14 +61,8 @@ int runScreenshot(const QStringList& arguments)
         parser.addOption({QStringLiteral("size"), QStringLiteral("Window size (default 1200x750)."), QStringLiteral("WxH"),
                           QStringLiteral("1200x750")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the window."), QStringLiteral("file.png")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab screenshot")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("screenshot"), arguments))
             return kExitOk;
-        }
-        if (!parser.positionalArguments().isEmpty())
-            throw UsageError(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
         if (!parser.isSet(QStringLiteral("out")))
             throw UsageError(QStringLiteral("say where to write: --out window.png"));
         if (parser.isSet(QStringLiteral("set-b")) && !parser.isSet(QStringLiteral("compare")))

@@ -18,12 +18,8 @@ int runSettings(const QStringList& arguments)
         parser.addOption({QStringLiteral("scene"), QStringLiteral("Show the defaults of this scene preset."), QStringLiteral("name"),
                           QStringLiteral("seed")});
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
-        if (!parser.parse(QStringList{QStringLiteral("shadowlab settings")} + arguments))
-            throw UsageError(parser.errorText());
-        if (parser.isSet(QStringLiteral("help"))) {
-            out() << parser.helpText();
+        if (!parseArguments(parser, QStringLiteral("settings"), arguments))
             return kExitOk;
-        }
         Settings probe;
         applySetting(probe, QStringLiteral("scene"), parser.value(QStringLiteral("scene")));
         const Settings defaults = presetSettings(probe.scene);
