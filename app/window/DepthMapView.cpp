@@ -33,6 +33,11 @@ DepthMapView::DepthMapView(QWidget* parent) : QOpenGLWidget(parent)
 DepthMapView::~DepthMapView()
 {
     cleanup();
+    // The base class destroys the context (which signals aboutToBeDestroyed) and the source
+    // view may still signal a frame: neither may reach this half-destroyed object.
+    disconnect(m_sourceConnection);
+    if (context())
+        disconnect(context(), nullptr, this, nullptr);
 }
 
 void DepthMapView::setSource(SceneView* source)

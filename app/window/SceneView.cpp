@@ -32,6 +32,10 @@ SceneView::SceneView(QWidget* parent) : QOpenGLWidget(parent)
 SceneView::~SceneView()
 {
     cleanup();
+    // The base class destroys the context, which signals aboutToBeDestroyed: that must not
+    // reach this half-destroyed object.
+    if (context())
+        disconnect(context(), nullptr, this, nullptr);
 }
 
 void SceneView::setSettings(const Settings& settings)
