@@ -1,5 +1,7 @@
 #include "AccuracyMeter.h"
 
+#include <algorithm>
+
 namespace shadowlab {
 
 AccuracyMeter::AccuracyMeter(ReferenceOptions options) : m_options(options) {}
@@ -18,25 +20,30 @@ AccuracyResult AccuracyMeter::measure(Renderer& renderer, const Settings& settin
     AccuracyResult result;
     const ReferenceKey key{settings.scene,           settings.camera,         size, settings.light.position, settings.light.target,
                            settings.light.projection, settings.reference.lightRadius};
-    result.referenceReused = m_key == key;
-    if (!result.referenceReused) {
+    auto cached = std::find_if(m_references.begin(), m_references.end(), [&](const auto& entry) { return entry.first == key; });
+    result.referenceReused = cached != m_references.end();
+    if (result.referenceReused) {
+        std::rotate(m_references.begin(), cached, cached + 1);
+        if (progress)
+            progress(1.0);
+    } else {
         ReferenceOptions options = m_options;
         options.lightRadius = settings.reference.lightRadius;
         const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
-        m_reference = traceReference(tracer, buffer, renderer.lightFrame(), options, progress);
-        m_key = key;
+        m_references.insert(m_references.begin(), {key, traceReference(tracer, buffer, renderer.lightFrame(), options, progress)});
+        if (m_references.size() > kCachedReferences)
+            m_references.pop_back();
         ++m_referenceComputations;
-        result.raysPerSecond = m_reference.raysPerSecond();
-    } else if (progress) {
-        progress(1.0);
+        result.raysPerSecond = m_references.front().second.raysPerSecond();
     }
 
-    result.hard = compareVisibility(measured, m_reference.hard, counts);
-    if (!m_reference.area.empty())
-        result.area = compareVisibility(measured, m_reference.area, counts);
-    result.areaNoiseFloor = m_reference.areaNoiseFloor;
+    const ReferenceVisibility& reference = m_references.front().second;
+    result.hard = compareVisibility(measured, reference.hard, counts);
+    if (!reference.area.empty())
+        result.area = compareVisibility(measured, reference.area, counts);
+    result.areaNoiseFloor = reference.areaNoiseFloor;
     result.frame = buffer.image;
-    result.hardErrors = errorImage(buffer.image, measured, m_reference.hard, counts);
+    result.hardErrors = errorImage(buffer.image, measured, reference.hard, counts);
     return result;
 }
 

@@ -8,7 +8,8 @@
 
 #include <functional>
 #include <memory>
-#include <optional>
+#include <utility>
+#include <vector>
 
 namespace shadowlab {
 
@@ -49,9 +50,12 @@ private:
         bool operator==(const ReferenceKey&) const = default;
     };
 
+    // A few references, newest first: a sweep that alternates between light placements (ortho
+    // and perspective, say) must not trace each again on every switch.
+    static constexpr std::size_t kCachedReferences = 4;
+
     ReferenceOptions m_options;
-    std::optional<ReferenceKey> m_key;
-    ReferenceVisibility m_reference;
+    std::vector<std::pair<ReferenceKey, ReferenceVisibility>> m_references;
     int m_referenceComputations = 0;
 };
 

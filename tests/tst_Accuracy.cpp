@@ -129,9 +129,9 @@ private Q_SLOTS:
         HeadlessRenderer headless;
         AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
         const QSize size(320, 180);
-        const AccuracyResult acne = meter.measure(headless.renderer(), presetWith("seed", {"bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult acne = meter.measure(headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
         const AccuracyResult defaults = meter.measure(headless.renderer(), presetSettings("seed"), size);
-        const AccuracyResult panning = meter.measure(headless.renderer(), presetWith("seed", {"bias.min=0.08", "filter.mode=hard"}), size);
+        const AccuracyResult panning = meter.measure(headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.min=0.08", "filter.mode=hard"}), size);
         qInfo("no bias: false shadow %.2f%%, false light %.2f%%", 100 * acne.hard.falseShadow, 100 * acne.hard.falseLight);
         qInfo("defaults: false shadow %.2f%%, false light %.2f%%", 100 * defaults.hard.falseShadow, 100 * defaults.hard.falseLight);
         qInfo("min bias 0.08: false shadow %.2f%%, false light %.2f%%", 100 * panning.hard.falseShadow, 100 * panning.hard.falseLight);

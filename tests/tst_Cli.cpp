@@ -148,7 +148,7 @@ private Q_SLOTS:
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write(R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
                     {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
-                    {"label": "no bias", "set": {"bias.slope": 0, "bias.min": 0}}])");
+                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])");
         f.close();
         const QString dir = m_dir.filePath("report");
         const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "2", "--warmup", "0",

@@ -174,7 +174,7 @@ void tst_MainWindow::dockSliderChangesTheScene_data()
     QTest::addColumn<bool>("depthMapChanges");
 
     QTest::newRow("light x") << QString() << QStringLiteral("light.position.x") << int(Qt::Key_PageUp) << 3 << true;
-    QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
+    QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.cull_front=false;bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
                                            << false;
     QTest::newRow("pcf kernel to 9") << QStringLiteral("filter.mode=pcf") << QStringLiteral("filter.kernel") << int(Qt::Key_End) << 1
                                      << false;
@@ -190,7 +190,8 @@ void tst_MainWindow::dockSliderChangesTheScene()
 
     if (!setup.isEmpty()) {
         Settings settings = m_window->settings(Side::A);
-        applyAssignment(settings, setup);
+        for (const QString& assignment : setup.split(QLatin1Char(';')))
+            applyAssignment(settings, assignment);
         m_window->setSettings(Side::A, settings);
         QVERIFY(settle(*m_window));
     }
@@ -458,6 +459,7 @@ void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
     QVERIFY(dock);
     dock->setAreaSamplesPerAxis(2);
     Settings acne = m_window->settings(Side::A);
+    acne.bias.cullFront = false;
     acne.bias.slope = 0.0;
     acne.bias.min = 0.0;
     acne.filter.mode = FilterMode::Hard;

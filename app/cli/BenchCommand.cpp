@@ -37,6 +37,7 @@ Settings tutorialSettings(Settings s)
     s.bias = BiasSettings{};
     s.bias.slope = 0.05;
     s.bias.min = 0.005;
+    s.bias.cullFront = false;
     s.light.fit = LightFit::Manual;     // the classic hand-set volume
     return s;
 }

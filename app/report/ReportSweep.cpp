@@ -36,16 +36,19 @@ std::vector<SweepEntry> resolutionSweep()
 std::vector<SweepEntry> biasSweep()
 {
     std::vector<SweepEntry> s;
+    // The classic slope/min grid draws front faces, where bias alone must hold acne off.
     for (const char* slope : {"0", "0.005", "0.02", "0.05"}) {
         for (const char* min : {"0", "0.0005", "0.001", "0.005"})
             s.push_back({QStringLiteral("bias %1/%2").arg(QLatin1String(slope), QLatin1String(min)),
-                         {QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)), QStringLiteral("bias.min=%1").arg(QLatin1String(min))}});
+                         {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
+                          QStringLiteral("bias.min=%1").arg(QLatin1String(min))}});
     }
     s.push_back({QStringLiteral("cull front, no bias"), {QStringLiteral("bias.cull_front=true"), QStringLiteral("bias.slope=0"),
                                                           QStringLiteral("bias.min=0")}});
-    s.push_back({QStringLiteral("cull front"), {QStringLiteral("bias.cull_front=true")}});
-    s.push_back({QStringLiteral("polygon offset 2/4"), {QStringLiteral("bias.polygon_factor=2"), QStringLiteral("bias.polygon_units=4"),
-                                                         QStringLiteral("bias.slope=0"), QStringLiteral("bias.min=0")}});
+    s.push_back({QStringLiteral("no front-face culling"), {QStringLiteral("bias.cull_front=false")}});
+    s.push_back({QStringLiteral("polygon offset 2/4"), {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.polygon_factor=2"),
+                                                         QStringLiteral("bias.polygon_units=4"), QStringLiteral("bias.slope=0"),
+                                                         QStringLiteral("bias.min=0")}});
     return s;
 }
 
@@ -54,7 +57,8 @@ std::vector<SweepEntry> defaultSweep()
     std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
                               {QStringLiteral("tutorial (pcf 3, 1024, 0.05/0.005)"),
                                {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
-                                QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005")}},
+                                QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"), QStringLiteral("bias.cull_front=false"),
+                                QStringLiteral("light.fit=manual")}},
                               {QStringLiteral("perspective light"), {QStringLiteral("light.projection=perspective")}},
                               {QStringLiteral("depth32f"), {QStringLiteral("map.format=depth32f")}}};
     for (auto part : {filterSweep(), resolutionSweep(), biasSweep()})
