@@ -1,9 +1,11 @@
 #include "AuditCatalogue.h"
 
+#include "RayTracer.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowReference.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,50 +28,6 @@ Settings seedWith(const QStringList& assignments)
 
 QString percent(double share) { return QStringLiteral("%1 %").arg(100.0 * share, 0, 'f', 2); }
 
-// The scene's triangles relative to `origin`, in double: the ground truth a pixel's visibility
-// is checked against (one shadow ray, as the hard reference does).
-struct Triangle {
-    glm::dvec3 a, b, c;
-};
-
-std::vector<Triangle> casterTriangles(const Scene& scene, const glm::dvec3& origin)
-{
-    std::vector<Triangle> triangles;
-    for (const SceneObject& object : scene.objects) {
-        if (!object.castsShadow)
-            continue;
-        const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
-        const auto world = [&](std::uint32_t i) { return glm::dvec3(object.model * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - origin; };
-        for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
-            triangles.push_back({world(mesh.indices[i]), world(mesh.indices[i + 1]), world(mesh.indices[i + 2])});
-    }
-    return triangles;
-}
-
-// Möller-Trumbore; zero-area triangles have a zero determinant and are never hit.
-bool hitsAny(const std::vector<Triangle>& triangles, const glm::dvec3& o, const glm::dvec3& d, double tMax)
-{
-    for (const Triangle& t : triangles) {
-        const glm::dvec3 e1 = t.b - t.a, e2 = t.c - t.a;
-        const glm::dvec3 p = glm::cross(d, e2);
-        const double det = glm::dot(e1, p);
-        if (std::abs(det) < 1e-18)
-            continue;
-        const glm::dvec3 s = o - t.a;
-        const double u = glm::dot(s, p) / det;
-        if (u < 0.0 || u > 1.0)
-            continue;
-        const glm::dvec3 q = glm::cross(s, e1);
-        const double v = glm::dot(d, q) / det;
-        if (v < 0.0 || u + v > 1.0)
-            continue;
-        const double distance = glm::dot(e2, q) / det;
-        if (distance > 0.0 && distance < tMax)
-            return true;
-    }
-    return false;
-}
-
 struct Measurement {
     bool finite = true;
     int counted = 0;        // light-facing pixels inside the light volume
@@ -82,7 +40,7 @@ struct Measurement {
 };
 
 // Renders the measuring variant and compares every light-facing pixel in the light's volume
-// with a shadow ray cast against the scene's triangles.
+// with the hard ray-traced reference (one shadow ray per pixel, Embree).
 Measurement measure(HeadlessRenderer& headless, const Settings& settings)
 {
     Renderer& r = headless.renderer();
@@ -91,7 +49,9 @@ Measurement measure(HeadlessRenderer& headless, const Settings& settings)
     const LightFrame& light = r.lightFrame();
     m.finite = isFinite(light.view) && isFinite(light.shadowMatrix) && isFinite(light.depthShadowMatrix);
     const glm::dvec3 origin = m.buffer.cameraPosition;
-    const std::vector<Triangle> triangles = casterTriangles(*r.scene(), origin);
+    ReferenceOptions options;
+    options.area = false;
+    const ReferenceVisibility reference = traceReference(RayTracer(*r.scene(), origin), m.buffer, light, options);
     for (int i = 0; i < m.buffer.pixelCount(); ++i) {
         const float v = m.buffer.visibility(i);
         if (!std::isfinite(v) || v < 0.0f || v > 1.0f) {
@@ -100,15 +60,13 @@ Measurement measure(HeadlessRenderer& headless, const Settings& settings)
         }
         if (m.buffer.mask(i) != VisibilityBuffer::FacingLight)
             continue;
-        const glm::dvec3 relative = glm::dvec3(glm::vec3(m.buffer.positionVisibility[std::size_t(i)]));
-        const glm::dvec4 s = light.shadowMatrix * glm::dvec4(origin + relative, 1.0);
+        const glm::dvec3 world = m.buffer.worldPosition(i);
+        const glm::dvec4 s = light.shadowMatrix * glm::dvec4(world, 1.0);
         const glm::dvec3 c = glm::dvec3(s) / s.w;
         if (s.w <= 0.0 || c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z > 1.0)
             continue;   // outside the volume is lit by design
-        const glm::dvec3 from = relative + m.buffer.normal(i) * (2e-3 * std::max(1.0, glm::length(relative)));
-        const glm::dvec3 toLight = light.perspective ? (light.position - origin) - from : -light.direction;
-        const bool occluded = hitsAny(triangles, from, toLight, light.perspective ? 1.0 : 1e30);
-        const double difference = std::abs(double(v) - (occluded ? 0.0 : 1.0));
+        const glm::dvec3 toLight = light.perspective ? light.position - world : -light.direction;
+        const double difference = std::abs(double(v) - double(reference.hard[std::size_t(i)]));
         const double nDotL = std::max(0.0, glm::dot(m.buffer.normal(i), glm::normalize(toLight)));
         ++m.counted;
         m.wrong += difference > 0.5;
