@@ -18,8 +18,7 @@ AccuracyResult AccuracyMeter::measure(Renderer& renderer, const Settings& settin
     }
 
     AccuracyResult result;
-    const ReferenceKey key{settings.scene,           settings.camera,         size, settings.light.position, settings.light.target,
-                           settings.light.projection, settings.reference.lightRadius};
+    const ReferenceKey key = referenceKeyFor(settings, size, m_options.area ? m_options.samplesPerAxis : 0);
     auto cached = std::find_if(m_references.begin(), m_references.end(), [&](const auto& entry) { return entry.first == key; });
     result.referenceReused = cached != m_references.end();
     if (result.referenceReused) {

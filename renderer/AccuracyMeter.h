@@ -38,18 +38,6 @@ public:
     const ReferenceOptions& options() const { return m_options; }
 
 private:
-    struct ReferenceKey {
-        QString scene;
-        CameraSettings camera;
-        QSize size;
-        glm::dvec3 lightPosition;
-        glm::dvec3 lightTarget;
-        LightProjection projection;
-        double lightRadius;
-
-        bool operator==(const ReferenceKey&) const = default;
-    };
-
     // A few references, newest first: a sweep that alternates between light placements (ortho
     // and perspective, say) must not trace each again on every switch.
     static constexpr std::size_t kCachedReferences = 4;

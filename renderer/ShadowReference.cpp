@@ -47,6 +47,13 @@ glm::dvec2 concentricDisk(double u, double v)
 
 } // namespace
 
+ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPerAxis)
+{
+    return {settings.scene,          settings.camera,        size,
+            settings.light.position, settings.light.target,  settings.light.projection,
+            settings.reference.lightRadius, samplesPerAxis};
+}
+
 ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuffer& buffer, const LightFrame& light,
                                    const ReferenceOptions& options, const std::function<void(double)>& progress,
                                    const std::atomic<bool>* cancel)

@@ -3,6 +3,9 @@
 #include "LightMath.h"
 #include "MeasureTarget.h"
 #include "RayTracer.h"
+#include "Settings.h"
+
+#include <QSize>
 
 #include <atomic>
 #include <cstdint>
@@ -22,6 +25,24 @@ struct ReferenceVisibility {
     bool cancelled = false;         // stopped early through `cancel`: the buffers are incomplete
     double raysPerSecond() const { return seconds > 0.0 ? double(rays) / seconds : 0.0; }
 };
+
+// What a reference depends on: scene, camera, image size and the light's placement and size.
+// Map size, bias and filter do not change it, so every configuration that shares a key can
+// share one trace.
+struct ReferenceKey {
+    QString scene;
+    CameraSettings camera;
+    QSize size;
+    glm::dvec3 lightPosition{0.0};
+    glm::dvec3 lightTarget{0.0};
+    LightProjection projection = LightProjection::Ortho;
+    double lightRadius = 0.0;
+    int samplesPerAxis = 0;
+
+    bool operator==(const ReferenceKey&) const = default;
+};
+
+ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPerAxis);
 
 struct ReferenceOptions {
     bool area = true;

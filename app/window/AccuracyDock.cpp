@@ -416,13 +416,6 @@ HeadlessRenderer& AccuracyDock::headless()
     return *m_headless;
 }
 
-AccuracyDock::ReferenceKey AccuracyDock::referenceKey(const Settings& settings) const
-{
-    return {settings.scene,           settings.camera,         measureSize(),
-            settings.light.position,  settings.light.target,   settings.light.projection,
-            settings.reference.lightRadius, m_areaSamplesPerAxis};
-}
-
 void AccuracyDock::compare()
 {
     startMeasurement(false);
@@ -454,7 +447,7 @@ void AccuracyDock::startMeasurement(bool thenSweep)
         ensureValid(m_settings);
         Renderer& renderer = headless().renderer();
         auto buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(m_settings, size));
-        const ReferenceKey key = referenceKey(m_settings);
+        const ReferenceKey key = referenceKeyFor(m_settings, measureSize(), m_areaSamplesPerAxis);
         if (m_referenceKey == key) {
             m_lastReferenceReused = true;
             measure(m_settings, *buffer);

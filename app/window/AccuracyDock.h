@@ -63,20 +63,6 @@ signals:
     void applySettingsRequested(const shadowlab::Settings& settings);
 
 private:
-    // What the reference depends on; map size, bias and filter do not change it.
-    struct ReferenceKey {
-        QString scene;
-        CameraSettings camera;
-        QSize size;
-        glm::dvec3 lightPosition;
-        glm::dvec3 lightTarget;
-        LightProjection projection;
-        double lightRadius;
-        int samplesPerAxis;
-
-        bool operator==(const ReferenceKey&) const = default;
-    };
-
     struct Measurement {
         Settings settings;
         ErrorMetrics hard;
@@ -131,7 +117,6 @@ private:
     void pointHovered(const QPointF& point, bool state);
 
     HeadlessRenderer& headless();
-    ReferenceKey referenceKey(const Settings& settings) const;
     void showMetrics();
     void updateOverlay();
     void updateCurrentMarker();
