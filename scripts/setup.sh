@@ -26,5 +26,6 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 echo "==> configuring and building (preset $preset)"
-cmake --preset "$preset" -S "$root" >/dev/null
+cd "$root"  # presets are read from the working directory
+cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
