@@ -28,6 +28,12 @@ Run shadowlab(const QStringList& arguments)
             QString::fromUtf8(process.readAllStandardError())};
 }
 
+bool writeFile(const QString& path, const QByteArray& bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
 } // namespace
 
 class TestCli : public QObject {
@@ -58,10 +64,7 @@ private Q_SLOTS:
     void settingsFileAndSetCombine()
     {
         const QString file = m_dir.filePath("s.json");
-        QFile f(file);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"({"filter": {"mode": "hard"}, "map.size": 256})");
-        f.close();
+        QVERIFY(writeFile(file, R"({"filter": {"mode": "hard"}, "map.size": 256})"));
         const Run r = shadowlab({"render", "--settings", file, "--set", "map.size=128", "--size", "64x64", "--out",
                                  m_dir.filePath("combined.png"), "--depth-out", m_dir.filePath("combined-depth.png")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
@@ -104,10 +107,7 @@ private Q_SLOTS:
     void malformedSettingsFileIsNamed()
     {
         const QString file = m_dir.filePath("broken.json");
-        QFile f(file);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("{ \"bias.slope\": 0.1, ");
-        f.close();
+        QVERIFY(writeFile(file, "{ \"bias.slope\": 0.1, "));
         const Run r = shadowlab({"render", "--out", m_dir.filePath("x.png"), "--settings", file});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("broken.json") && r.err.contains("not valid JSON"), qPrintable(r.err));
@@ -144,12 +144,9 @@ private Q_SLOTS:
     void reportWritesEveryConfiguredRow()
     {
         const QString sweep = m_dir.filePath("sweep.json");
-        QFile f(sweep);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
+        QVERIFY(writeFile(sweep, R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
                     {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
-                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])");
-        f.close();
+                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])"));
         const QString dir = m_dir.filePath("report");
         const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "2", "--warmup", "0",
                                  "--area-samples", "2", "--out", dir});
@@ -185,10 +182,7 @@ private Q_SLOTS:
     void reportRejectsABadSweep()
     {
         const QString sweep = m_dir.filePath("bad-sweep.json");
-        QFile f(sweep);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"([{"label": "broken", "set": {"filter.kernel": 4}}])");
-        f.close();
+        QVERIFY(writeFile(sweep, R"([{"label": "broken", "set": {"filter.kernel": 4}}])"));
         const Run r = shadowlab({"report", "--sweep", sweep, "--out", m_dir.filePath("never")});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("broken") && r.err.contains("filter.kernel"), qPrintable(r.err));
