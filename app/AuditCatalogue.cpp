@@ -63,8 +63,10 @@ Measurement measure(HeadlessRenderer& headless, const Settings& settings)
         const glm::dvec3 world = m.buffer.worldPosition(i);
         const glm::dvec4 s = light.shadowMatrix * glm::dvec4(world, 1.0);
         const glm::dvec3 c = glm::dvec3(s) / s.w;
-        if (s.w <= 0.0 || c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z > 1.0)
-            continue;   // outside the volume is lit by design
+        // Outside a manual volume is lit by design; a fitted volume leaves out only what no
+        // caster can shadow, so every pixel counts there.
+        if (settings.light.fit == LightFit::Manual && (s.w <= 0.0 || c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z > 1.0))
+            continue;
         const glm::dvec3 toLight = light.perspective ? light.position - world : -light.direction;
         const double difference = std::abs(double(v) - double(reference.hard[std::size_t(i)]));
         const double nDotL = std::max(0.0, glm::dot(m.buffer.normal(i), glm::normalize(toLight)));
@@ -342,6 +344,7 @@ std::vector<AuditCase> makeCatalogue()
     add("casters outside the light volume", "not drawn in the depth pass", [](HeadlessRenderer& h) {
         const Settings s = [] {
             Settings c = presetSettings(QStringLiteral("cubes"));
+            applyAssignment(c, QStringLiteral("light.fit=manual"));
             applyAssignment(c, QStringLiteral("light.extent=1.5"));
             return c;
         }();

@@ -43,11 +43,11 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
         m_clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     m_gl->glDepthFunc(reversed ? GL_GREATER : GL_LESS);
 
-    // An ortho light is a direction: casters between the light's position and its near plane
-    // still cast, so clamp their depth to 0 instead of clipping them away.
-    const bool clampDepth = !light.perspective;
-    if (clampDepth)
-        m_gl->glEnable(GL_DEPTH_CLAMP);
+    // The fitted near plane is the nearest receiver, not the nearest caster: casters between
+    // the light and the near plane still cast, so clamp their depth to the near plane instead
+    // of clipping them away (a perspective light's side planes still clip what is behind it).
+    const bool clampDepth = true;
+    m_gl->glEnable(GL_DEPTH_CLAMP);
     if (bias.cullFront) {
         m_gl->glEnable(GL_CULL_FACE);
         m_gl->glCullFace(GL_FRONT);
@@ -79,8 +79,7 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
         m_gl->glDisable(GL_POLYGON_OFFSET_FILL);
     m_gl->glDisable(GL_CULL_FACE);
     m_gl->glCullFace(GL_BACK);
-    if (clampDepth)
-        m_gl->glDisable(GL_DEPTH_CLAMP);
+    m_gl->glDisable(GL_DEPTH_CLAMP);
     if (reversed) {
         m_clipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
         m_gl->glDepthFunc(GL_LESS);

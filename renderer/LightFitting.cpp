@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace shadowlab {
@@ -44,19 +45,26 @@ Hull boxHull(const Bounds& b)
              {{0, 0, 1}, -b.min.z}, {{0, 0, -1}, b.max.z}}};
 }
 
-Hull frustumHull(const glm::dmat4& m)
+// The six planes -w <= x, y, z <= w of a view-projection (Gribb-Hartmann), in the order left,
+// right, bottom, top, near, far; always six, so an index names a plane.
+std::array<Plane, 6> frustumPlanes(const glm::dmat4& m)
 {
-    Hull h{hexahedronFaces(frustumCorners(m)), {}};
+    std::array<Plane, 6> planes;
     const auto row = [&m](int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
     for (int axis = 0; axis < 3; ++axis) {
-        for (const double sign : {1.0, -1.0}) {
-            const glm::dvec4 p = row(3) + sign * row(axis);   // Gribb-Hartmann: -w <= x, y, z <= w
+        for (int side = 0; side < 2; ++side) {
+            const glm::dvec4 p = row(3) + (side == 0 ? 1.0 : -1.0) * row(axis);
             const double length = glm::length(glm::dvec3(p));
-            if (length > 0.0)
-                h.planes.push_back({glm::dvec3(p) / length, p.w / length});
+            planes[std::size_t(2 * axis + side)] = length > 0.0 ? Plane{glm::dvec3(p) / length, p.w / length} : Plane{glm::dvec3(p), p.w};
         }
     }
-    return h;
+    return planes;
+}
+
+Hull frustumHull(const glm::dmat4& m)
+{
+    const std::array<Plane, 6> planes = frustumPlanes(m);
+    return {hexahedronFaces(frustumCorners(m)), {planes.begin(), planes.end()}};
 }
 
 Polygon clip(const Polygon& polygon, const Plane& plane)
@@ -96,6 +104,73 @@ Hull intersect(const Hull& a, const Hull& b)
     return result;
 }
 
+std::vector<Polygon> clipFaces(std::vector<Polygon> faces, const std::vector<Plane>& planes)
+{
+    std::vector<Polygon> result;
+    for (Polygon& face : faces) {
+        for (const Plane& plane : planes) {
+            face = clip(face, plane);
+            if (face.empty())
+                break;
+        }
+        if (!face.empty())
+            result.push_back(std::move(face));
+    }
+    return result;
+}
+
+double area(const std::vector<Polygon>& faces)
+{
+    double sum = 0.0;
+    for (const Polygon& face : faces) {
+        glm::dvec3 twice(0.0);
+        for (std::size_t i = 0; i < face.size(); ++i)
+            twice += glm::cross(face[i], face[(i + 1) % face.size()]);
+        sum += 0.5 * glm::length(twice);
+    }
+    return sum;
+}
+
+// Receivers lit without a shadow test: the share of the visible receivers' surface outside
+// `volume` (a view-projection), and a warning naming the plane that cuts the most of it.
+struct Cut {
+    double share = 0.0;
+    std::size_t plane = 0;      // left, right, bottom, top, near, far
+};
+
+Cut measureCut(const std::vector<FitObject>& objects, const std::vector<glm::dmat4>& seen, const glm::dmat4& volume)
+{
+    std::vector<Plane> seenPlanes;
+    for (const glm::dmat4& m : seen) {
+        const std::array<Plane, 6> p = frustumPlanes(m);
+        seenPlanes.insert(seenPlanes.end(), p.begin(), p.end());
+    }
+    const std::array<Plane, 6> volumePlanes = frustumPlanes(volume);
+    double total = 0.0, inside = 0.0;
+    std::array<double, 6> outside{};
+    for (const FitObject& object : objects) {
+        if (!object.receives || object.bounds.isEmpty())
+            continue;
+        const std::vector<Polygon> visible = clipFaces(hexahedronFaces(object.bounds.corners()), seenPlanes);
+        total += area(visible);
+        inside += area(clipFaces(visible, {volumePlanes.begin(), volumePlanes.end()}));
+        for (std::size_t k = 0; k < volumePlanes.size(); ++k)
+            outside[k] += area(clipFaces(visible, {Plane{-volumePlanes[k].n, -volumePlanes[k].d}}));
+    }
+    Cut cut;
+    if (total > 0.0)
+        cut.share = std::clamp(1.0 - inside / total, 0.0, 1.0);
+    cut.plane = std::size_t(std::max_element(outside.begin(), outside.end()) - outside.begin());
+    return cut;
+}
+
+// Below this share a cut is rounding, not something to tell anyone about.
+constexpr double kCutWorthSaying = 1e-3;
+
+// Texels of margin on each side of the fitted map: wide filters near its edge still read
+// texels of the region, not the border.
+constexpr double kMarginTexels = 4.0;
+
 // Steps of 2^(1/4): coarse enough that a moving camera rarely crosses one, fine enough to
 // waste at most 19 % of the texels.
 constexpr double kStepsPerOctave = 4.0;
@@ -118,133 +193,223 @@ std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm
     return points;
 }
 
-FittedLight fitLight(const LightSettings& light, const std::vector<Bounds>& casters, const std::vector<Bounds>& receivers,
-                  const std::optional<glm::dmat4>& camera, int mapSize)
+FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
+                     int mapSize)
 {
     FittedLight result;
-    result.light = light;
-    result.texelBefore = result.texelAfter = texelWorldSize(light, mapSize);
-    result.anythingToShadow = std::any_of(casters.begin(), casters.end(), [](const Bounds& b) { return !b.isEmpty(); });
-    if (!result.anythingToShadow || light.fit == LightFit::Manual)
-        return result;
+    const LightVolume manual = manualVolume(light);
+    const double distance = glm::length(light.position - light.target);
+    result.volume = manual;
+    result.texelBefore = result.texelAfter = texelWorldSize(manual, mapSize, distance);
+    result.anythingToShadow = std::any_of(objects.begin(), objects.end(), [](const FitObject& o) { return o.casts && !o.bounds.isEmpty(); });
 
-    const LightFrame frame = computeLightFrame(light);
-    const bool perspective = frame.perspective;
+    std::vector<glm::dmat4> seen;
+    if (camera)
+        seen.push_back(*camera);
+    const auto percent = [](double share) { return QString::number(share * 100.0, 'g', 2); };
+
+    if (light.fit == LightFit::Manual) {
+        const Cut cut = measureCut(objects, seen, computeLightFrame(light, manual).viewProjection);
+        result.cutShare = cut.share;
+        if (cut.share > kCutWorthSaying && result.anythingToShadow) {
+            const char* side = manual.perspective ? "light.fov" : "light.extent";
+            struct Naming { const char* key; const char* where; const char* fix; };
+            const Naming names[6] = {{side, "outside the sides", "widen it"}, {side, "outside the sides", "widen it"},
+                                     {side, "outside the sides", "widen it"}, {side, "outside the sides", "widen it"},
+                                     {"light.near", "before light.near", "lower it"}, {"light.far", "beyond light.far", "raise it"}};
+            const Naming& n = names[cut.plane];
+            result.warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(n.key),
+                                       QStringLiteral("%1 % of the visible receivers lie outside the light volume (%2): they are lit "
+                                                      "without a shadow test; %3, or set light.fit=scene")
+                                           .arg(percent(cut.share), QString::fromLatin1(n.where), QString::fromLatin1(n.fix))});
+        }
+        return result;
+    }
+
+    const bool perspective = manual.perspective;
+    LightVolume fitted;
+    fitted.direction = manual.direction;
+    fitted.perspective = perspective;
+    // A directional light's volume hangs off its target, so its distance changes nothing.
+    const glm::dvec3 anchor = perspective ? light.position : light.target;
+    const glm::dmat4 view = stableLookAlong(anchor, manual.direction);
     // Light space: x and y across the map (tangents of the angle for a perspective light), and
-    // distance from the light along its axis.
+    // distance from the anchor along the direction.
     const auto toLight = [&](const glm::dvec3& p) {
-        const glm::dvec3 v(frame.view * glm::dvec4(p, 1.0));
+        const glm::dvec3 v(view * glm::dvec4(p, 1.0));
         const double depth = -v.z;
         return perspective ? glm::dvec3(v.x / depth, v.y / depth, depth) : glm::dvec3(v.x, v.y, depth);
     };
 
-    std::vector<glm::dmat4> seen{frame.viewProjection};
-    if (camera)
-        seen.push_back(*camera);
+    double reach = 0.0;     // from the anchor to the farthest corner of anything
+    for (const FitObject& object : objects) {
+        if (!object.bounds.isEmpty()) {
+            for (const glm::dvec3& c : object.bounds.corners())
+                reach = std::max(reach, glm::length(c - anchor));
+        }
+    }
+    std::vector<glm::dmat4> limits = seen;
+    if (perspective) {
+        // One map covers at most a cone of kMaxFittedFov in front of the light.
+        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
+        const double farthest = 2.0 * reach + 1.0;
+        const double n = farthest * 1e-9;
+        limits.push_back(glm::frustum(-t * n, t * n, -t * n, t * n, n, farthest) * view);
+        const Cut cut = measureCut(objects, seen, limits.back());
+        result.cutShare = cut.share;
+        if (cut.share > kCutWorthSaying && result.anythingToShadow) {
+            result.warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.position"),
+                                       QStringLiteral("%1 % of the visible receivers lie behind the light or outside the widest cone one "
+                                                      "map can cover (%2°): they are lit without a shadow test; move the light away "
+                                                      "from them, or use an ortho light")
+                                           .arg(percent(cut.share))
+                                           .arg(kMaxFittedFov)});
+        }
+    }
+
+    // What can be seen: each receiver's part inside the camera (and the cone), in light space.
+    std::vector<Bounds> seenParts(objects.size());
     Bounds region;
-    for (const Bounds& receiver : receivers) {
-        for (const glm::dvec3& p : clipBoxToFrusta(receiver, seen))
-            region.extend(toLight(p));
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (!objects[i].receives || objects[i].bounds.isEmpty())
+            continue;
+        for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits))
+            seenParts[i].extend(toLight(p));
+        region.extend(seenParts[i]);
     }
     if (region.isEmpty()) {
         result.anythingToShadow = false;
         return result;
     }
+    // A region of zero width (a receiver seen edge-on) still makes a prism.
+    const double regionSpan = std::max({region.max.x - region.min.x, region.max.y - region.min.y, perspective ? 1e-9 : reach * 1e-9, 1e-12});
+    region.min -= glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
+    region.max += glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
 
-    // The casters that can shadow the region: their part inside the prism (ortho) or pyramid
-    // (perspective) over the region that ends at the region's far side. An ortho prism starts
-    // behind every caster: depth clamp lets casters before the near plane cast.
-    double casterStart = light.nearPlane;
+    // What can cast onto it: each caster's part over the region, in front of its far side.
+    // (A perspective prism starts a millionth of the way out: closer, its far plane, taken back
+    // out of the matrix, would move by more than the margin below.)
+    double casterStart = perspective ? region.max.z * 1e-6 : region.min.z;
     if (!perspective) {
-        for (const Bounds& caster : casters) {
-            if (caster.isEmpty())
-                continue;
-            for (const glm::dvec3& c : caster.corners())
-                casterStart = std::min(casterStart, toLight(c).z - 1.0);
+        for (const FitObject& object : objects) {
+            if (object.casts && !object.bounds.isEmpty()) {
+                for (const glm::dvec3& c : object.bounds.corners())
+                    casterStart = std::min(casterStart, toLight(c).z - 1.0);
+            }
         }
     }
+    const double regionFar = region.max.z + std::abs(region.max.z) * 1e-6 + 1e-12;
     const glm::dmat4 prism = perspective
         ? glm::frustum(region.min.x * casterStart, region.max.x * casterStart, region.min.y * casterStart, region.max.y * casterStart,
-                       casterStart, region.max.z)
-        : glm::ortho(region.min.x, region.max.x, region.min.y, region.max.y, casterStart, region.max.z);
-    double nearest = region.min.z;
-    bool anyCaster = false;
-    // A region of zero width (a receiver seen edge-on) gives no prism; then every caster counts.
-    const bool prismValid = isFinite(prism) && region.max.x > region.min.x && region.max.y > region.min.y;
-    for (const Bounds& caster : casters) {
-        const std::vector<glm::dvec3> part = clipBoxToFrusta(caster, {prismValid ? prism * frame.view : frame.viewProjection});
-        for (const glm::dvec3& p : part) {
-            nearest = std::min(nearest, toLight(p).z);
-            anyCaster = true;
+                       casterStart, regionFar) * view
+        : glm::ortho(region.min.x, region.max.x, region.min.y, region.max.y, casterStart, regionFar) * view;
+    std::vector<Bounds> casterParts(objects.size());
+    for (std::size_t j = 0; j < objects.size(); ++j) {
+        if (objects[j].casts && !objects[j].bounds.isEmpty() && isFinite(prism)) {
+            for (const glm::dvec3& p : clipBoxToFrusta(objects[j].bounds, {prism}))
+                casterParts[j].extend(toLight(p));
         }
     }
-    if (!anyCaster) {
+
+    // The map covers where a caster's part lies over a receiver's part that is behind it: the
+    // shadow of a caster falls at its own place in light space.
+    Bounds footprint;
+    for (std::size_t j = 0; j < objects.size(); ++j) {
+        const Bounds& c = casterParts[j];
+        if (c.isEmpty())
+            continue;
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            const Bounds& r = seenParts[i];
+            if (r.isEmpty() || (i == j && objects[j].convex) || !(r.max.z > c.min.z))
+                continue;
+            const glm::dvec2 low = glm::max(glm::dvec2(c.min), glm::dvec2(r.min));
+            const glm::dvec2 high = glm::min(glm::dvec2(c.max), glm::dvec2(r.max));
+            if (low.x <= high.x && low.y <= high.y) {
+                footprint.extend(glm::dvec3(low, 0.0));
+                footprint.extend(glm::dvec3(high, 0.0));
+            }
+        }
+    }
+    if (footprint.isEmpty()) {
         result.anythingToShadow = false;
         return result;
     }
 
-    LightSettings fitted = light;
     const double texels = double(mapSize);
+    glm::dvec2 centre = (glm::dvec2(footprint.min) + glm::dvec2(footprint.max)) * 0.5;
+    glm::dvec2 span = glm::dvec2(footprint.max) - glm::dvec2(footprint.min);
+    span = glm::max(span, glm::dvec2(std::max({span.x, span.y, regionSpan}) * 1e-3));
+    span *= texels / std::max(texels - 2.0 * kMarginTexels, texels * 0.5);
+    double grid = 0.0;  // the depth range snaps to this (world units, ortho)
+    if (light.stabilize) {
+        // Whole texels, and coarse steps of size: the snapped centre moves by up to a sixteenth.
+        for (int a = 0; a < 2; ++a) {
+            span[a] = ladderUp(span[a] * 16.0 / 15.0);
+            const double step = span[a] / texels * std::max(1.0, std::floor(texels / 16.0));
+            centre[a] = std::round(centre[a] / step) * step;
+            grid = std::max(grid, step);
+        }
+    }
     if (perspective) {
-        const double manualTan = std::tan(glm::radians(light.fov) * 0.5);
-        double tanHalf = std::max({std::abs(region.min.x), std::abs(region.max.x), std::abs(region.min.y), std::abs(region.max.y)});
-        tanHalf = std::max(tanHalf * (1.0 + 2.0 / texels), manualTan * 1e-6);   // one texel of margin
-        double nearPlane = std::max(light.nearPlane, nearest * (1.0 - 1e-3));
-        double farPlane = std::min(light.farPlane, region.max.z * (1.0 + 1e-3));
-        if (light.stabilize) {
-            tanHalf = ladderUp(tanHalf);
-            nearPlane = std::max(light.nearPlane, ladderDown(nearPlane));
-            farPlane = std::min(light.farPlane, ladderUp(farPlane));
+        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
+        fitted.left = std::max(centre.x - span.x * 0.5, -t);
+        fitted.right = std::min(centre.x + span.x * 0.5, t);
+        fitted.bottom = std::max(centre.y - span.y * 0.5, -t);
+        fitted.top = std::min(centre.y + span.y * 0.5, t);
+    }
+
+    // Near and far: the receivers over the footprint (casters in front of it are clamped to
+    // the near plane by the depth pass and still cast).
+    const glm::dvec2 low = centre - span * 0.5, high = centre + span * 0.5;
+    const glm::dmat4 column = perspective
+        ? glm::frustum(low.x * casterStart, high.x * casterStart, low.y * casterStart, high.y * casterStart, casterStart, regionFar) * view
+        : glm::ortho(low.x, high.x, low.y, high.y, region.min.z - 1.0, regionFar) * view;
+    std::vector<glm::dmat4> columnLimits = limits;
+    columnLimits.push_back(column);
+    Bounds depths;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (!seenParts[i].isEmpty() && isFinite(column)) {
+            for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, columnLimits))
+                depths.extend(toLight(p));
         }
-        fitted.fov = glm::degrees(2.0 * std::atan(std::min(tanHalf, manualTan)));
+    }
+    if (depths.isEmpty())
+        depths = region;
+    const double depthSpan = depths.max.z - depths.min.z;
+    if (perspective) {
+        double nearPlane = std::max(depths.min.z * (1.0 - 1e-3), depths.max.z * 1e-4);
+        double farPlane = depths.max.z * (1.0 + 1e-3) + 1e-12;
+        if (light.stabilize) {
+            nearPlane = ladderDown(nearPlane);
+            farPlane = ladderUp(farPlane);
+        }
+        fitted.origin = light.position;
         fitted.nearPlane = nearPlane;
-        fitted.farPlane = farPlane;
+        fitted.farPlane = std::max(farPlane, nearPlane * (1.0 + 1e-6));
     } else {
-        glm::dvec2 centre = (glm::dvec2(region.min) + glm::dvec2(region.max)) * 0.5;
-        const glm::dvec2 size = glm::dvec2(region.max) - glm::dvec2(region.min);
-        double half = std::max({size.x, size.y, light.extent * 1e-6}) * 0.5;
-        double grid = 0.0;  // world units the centre and the depth range snap to
-        if (light.stabilize) {
-            // Snapping moves the centre by up to grid / 2 <= extent / 16: grow by 16/15 first.
-            half = ladderUp(half * 16.0 / 15.0);
-            grid = 2.0 * half / texels * std::max(1.0, std::floor(texels / 16.0));
-            centre = glm::round(centre / grid) * grid;
-        } else {
-            half *= 1.0 + 2.0 / texels;
-        }
-        if (half >= light.extent) {
-            half = light.extent;
-            centre = glm::dvec2(0.0);
-        } else if (grid == 0.0) {
-            // Stay inside the volume as set (the region is inside it, so this keeps it covered).
-            // A snapped centre may stick out by up to grid / 2 instead: clamping would undo the
-            // whole-texel steps, and what it shows there is shadowed in truth too.
-            centre = glm::clamp(centre, glm::dvec2(-(light.extent - half)), glm::dvec2(light.extent - half));
-        }
-        const double margin = grid > 0.0 ? grid : (region.max.z - nearest) * 1e-3 + 1e-9 * std::abs(region.max.z);
-        double nearPlane = nearest - margin;
-        double farPlane = region.max.z + margin;
+        const double margin = depthSpan * 1e-3 + std::max(span.x, span.y) * 1e-3;
+        double nearPlane = depths.min.z - margin;
+        double farPlane = depths.max.z + margin;
         if (grid > 0.0) {
             nearPlane = std::floor(nearPlane / grid) * grid;
             farPlane = std::ceil(farPlane / grid) * grid;
         }
-        fitted.extent = half;
-        fitted.nearPlane = std::max(light.nearPlane, nearPlane);
-        fitted.farPlane = std::min(light.farPlane, farPlane);
-        // Move sideways along the map's axes; the direction, and with it the basis, stays.
-        const glm::dvec3 shift = centre.x * glm::dvec3(frame.view[0][0], frame.view[1][0], frame.view[2][0])
-                               + centre.y * glm::dvec3(frame.view[0][1], frame.view[1][1], frame.view[2][1]);
-        fitted.position += shift;
-        fitted.target += shift;
+        // Centre the volume on its own origin: the matrices then hold small numbers however far
+        // the scene is from the target, and float keeps its precision.
+        const double middle = (nearPlane + farPlane) * 0.5;
+        const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
+        const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
+        fitted.origin = anchor + right * centre.x + up * centre.y + manual.direction * middle;
+        fitted.left = -span.x * 0.5;
+        fitted.right = span.x * 0.5;
+        fitted.bottom = -span.y * 0.5;
+        fitted.top = span.y * 0.5;
+        fitted.nearPlane = nearPlane - middle;
+        fitted.farPlane = farPlane - middle;
     }
-    if (!(fitted.nearPlane < fitted.farPlane)) {
-        // Everything at one depth (a single flat receiver facing the light): keep the set range.
-        fitted.nearPlane = light.nearPlane;
-        fitted.farPlane = light.farPlane;
-    }
-    result.light = fitted;
-    result.fitted = !(fitted == light);
-    result.texelAfter = texelWorldSize(fitted, mapSize);
+    result.volume = fitted;
+    result.fitted = true;
+    result.texelAfter = texelWorldSize(fitted, mapSize, distance);
     return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Bounds.h"
+#include "LightMath.h"
 #include "Settings.h"
 
 #include <glm/mat4x4.hpp>
@@ -11,31 +12,50 @@
 
 namespace shadowlab {
 
-// The light's volume shrunk to what matters, in double precision and without GL.
+// One scene object as the fit sees it: a world box and its roles.
+struct FitObject {
+    Bounds bounds;
+    bool casts = true;
+    bool receives = true;
+    bool convex = false;        // a convex object cannot shadow itself
+};
+
+// The light's volume from the scene, in double precision and without GL.
 //
-// "What can be seen" is every receiver box clipped to the camera's frustum and to the light's
-// volume as set: the set volume is an upper bound (up to the snapping margin of `stabilize`,
-// at most 1/16 of the fitted size), the camera frustum is what makes the fit worth having on scenes with a
-// large ground plane. "What can cast onto it" is every caster whose light-space box overlaps
-// that region in the map plane and is not entirely behind it. The fitted volume keeps the
-// light's direction (an ortho light moves sideways, a perspective light narrows its cone) and
-// covers exactly those, with near and far as tight as the casters and receivers allow.
+// With light.fit = scene the volume as set does not limit anything: a directional light is a
+// direction, and its map covers, in light space, exactly the receivers the camera sees that a
+// caster can shadow (a caster's part over a receiver and in front of it), with separate x and
+// y extents and near/far as tight as those receivers allow (casters in front of the near plane
+// still cast: the depth pass clamps their depth). A perspective light does the same with its
+// cone (asymmetric, at most kMaxFittedFov wide) and near/far. The result does not depend on
+// how far the light is from its target.
 //
 // With `stabilize` the fitted volume moves in whole texels and grows or shrinks in coarse
 // steps, so a moving camera neither makes the shadow edges shimmer nor changes the volume,
 // and the shadow map is reused, until the visible region crosses a step.
+//
+// With light.fit = manual the volume is exactly as set; receivers the camera sees outside it
+// are lit without a shadow test, and the fit says how much of them and past which plane.
 struct FittedLight {
-    LightSettings light;        // the volume the passes use (the input when nothing changed)
-    bool fitted = false;        // false: manual fit, or the fit could not shrink the volume
+    LightVolume volume;         // what the passes use
+    bool fitted = false;        // false: manual fit
     bool anythingToShadow = true; // false: no caster can shadow a visible receiver (or no caster at all)
     double texelBefore = 0.0;   // world size of one texel with the volume as set
-    double texelAfter = 0.0;    // ... and with the fitted volume
+    double texelAfter = 0.0;    // ... and with the volume used
+    // Share of the visible receivers' surface that lies outside the volume used, where it is
+    // lit without a shadow test, and a warning naming the plane that cuts most (empty when none).
+    double cutShare = 0.0;
+    std::vector<SettingsIssue> warnings;
 };
 
-// `light` must be valid (validate()); casters and receivers are world-space boxes (empty ones
-// are ignored); `camera` is the camera's view-projection (nullopt: everything is seen).
-FittedLight fitLight(const LightSettings& light, const std::vector<Bounds>& casters, const std::vector<Bounds>& receivers,
-                  const std::optional<glm::dmat4>& camera, int mapSize);
+// The widest cone a fitted perspective light covers (full angle, degrees): wider, a single map
+// spends almost all of its texels at the rim.
+inline constexpr double kMaxFittedFov = 150.0;
+
+// `light` must be valid (validate()); objects' empty boxes are ignored; `camera` is the
+// camera's view-projection (nullopt: everything is seen).
+FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
+                     int mapSize);
 
 // The vertices of the convex region `box` ∩ each frustum (conventional clip space of each
 // view-projection): empty when they do not overlap. Exposed for tests of the fit.

@@ -13,39 +13,88 @@ namespace shadowlab {
 
 glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target)
 {
-    const glm::dvec3 forward = glm::normalize(target - eye);
+    return stableLookAlong(eye, target - eye);
+}
+
+glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction)
+{
+    const glm::dvec3 forward = glm::normalize(direction);
     // World up unless the view is within ~2.5 degrees of vertical; then world -z, which is
     // as good as any other horizontal axis and keeps "up" on the map stable.
     const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
-    return glm::lookAt(eye, target, up);
+    // glm::lookAt's basis, from the direction itself: eye + direction would round away
+    // the direction's low bits when the eye is far from the origin.
+    const glm::dvec3 side = glm::normalize(glm::cross(forward, up));
+    const glm::dvec3 upward = glm::cross(side, forward);
+    glm::dmat4 view(1.0);
+    for (int i = 0; i < 3; ++i) {
+        view[i][0] = side[i];
+        view[i][1] = upward[i];
+        view[i][2] = -forward[i];
+    }
+    view[3][0] = -glm::dot(side, eye);
+    view[3][1] = -glm::dot(upward, eye);
+    view[3][2] = glm::dot(forward, eye);
+    return view;
 }
 
-LightFrame computeLightFrame(const LightSettings& light, bool reversedDepth)
+LightVolume manualVolume(const LightSettings& light)
 {
     const double distance = glm::length(light.position - light.target);
     if (!(distance > 0.0) || !std::isfinite(distance))
         throw SettingsError(QStringLiteral("light.position"), QStringLiteral("the light must be away from its target"));
     if (!(light.nearPlane < light.farPlane))
         throw SettingsError(QStringLiteral("light.far"), QStringLiteral("far must be greater than near"));
-
-    LightFrame f;
-    f.position = light.position;
-    f.direction = (light.target - light.position) / distance;
-    f.targetDistance = distance;
-    f.perspective = light.projection == LightProjection::Perspective;
-    f.nearPlane = light.nearPlane;
-    f.farPlane = light.farPlane;
-    f.view = stableLookAt(light.position, light.target);
-    if (f.perspective) {
+    LightVolume v;
+    v.origin = light.position;
+    v.direction = (light.target - light.position) / distance;
+    v.perspective = light.projection == LightProjection::Perspective;
+    v.nearPlane = light.nearPlane;
+    v.farPlane = light.farPlane;
+    if (v.perspective) {
         if (!(light.nearPlane > 0.0))
             throw SettingsError(QStringLiteral("light.near"), QStringLiteral("a perspective light needs near > 0"));
         if (!(light.fov > 0.0 && light.fov < 180.0))
             throw SettingsError(QStringLiteral("light.fov"), QStringLiteral("the field of view must be in (0, 180) degrees"));
-        f.projection = glm::perspective(glm::radians(light.fov), 1.0, light.nearPlane, light.farPlane);
+        const double t = std::tan(glm::radians(light.fov) * 0.5);
+        v.left = v.bottom = -t;
+        v.right = v.top = t;
     } else {
         if (!(light.extent > 0.0))
             throw SettingsError(QStringLiteral("light.extent"), QStringLiteral("the ortho half-size must be > 0"));
-        f.projection = glm::ortho(-light.extent, light.extent, -light.extent, light.extent, light.nearPlane, light.farPlane);
+        v.left = v.bottom = -light.extent;
+        v.right = v.top = light.extent;
+    }
+    return v;
+}
+
+LightFrame computeLightFrame(const LightSettings& light, bool reversedDepth)
+{
+    return computeLightFrame(light, manualVolume(light), reversedDepth);
+}
+
+LightFrame computeLightFrame(const LightSettings& light, const LightVolume& v, bool reversedDepth)
+{
+    const double distance = glm::length(light.position - light.target);
+    if (!(distance > 0.0) || !std::isfinite(distance))
+        throw SettingsError(QStringLiteral("light.position"), QStringLiteral("the light must be away from its target"));
+    if (!(v.nearPlane < v.farPlane) || !(v.left < v.right) || !(v.bottom < v.top) || (v.perspective && !(v.nearPlane > 0.0)))
+        throw SettingsError(QStringLiteral("light"), QStringLiteral("the light's volume is empty; check light.near, light.far, light.extent and light.fov"));
+
+    LightFrame f;
+    f.volume = v;
+    f.position = light.position;
+    f.direction = (light.target - light.position) / distance;
+    f.targetDistance = distance;
+    f.perspective = v.perspective;
+    f.nearPlane = v.nearPlane;
+    f.farPlane = v.farPlane;
+    f.view = stableLookAlong(v.origin, v.direction);
+    if (f.perspective) {
+        const double n = v.nearPlane;
+        f.projection = glm::frustum(v.left * n, v.right * n, v.bottom * n, v.top * n, n, v.farPlane);
+    } else {
+        f.projection = glm::ortho(v.left, v.right, v.bottom, v.top, v.nearPlane, v.farPlane);
     }
     f.viewProjection = f.projection * f.view;
     // Clip space [-1, 1] to texture space [0, 1].
@@ -93,14 +142,17 @@ CameraFrame computeCameraFrame(const CameraSettings& camera, double aspect, cons
     return f;
 }
 
-double texelWorldSize(const LightSettings& light, int mapSize)
+double texelWorldSize(const LightVolume& volume, int mapSize, double distance)
 {
     if (mapSize <= 0)
         return 0.0;
-    if (light.projection == LightProjection::Ortho)
-        return 2.0 * light.extent / mapSize;
-    const double distance = glm::length(light.position - light.target);
-    return 2.0 * distance * std::tan(glm::radians(light.fov) * 0.5) / mapSize;
+    const double span = std::max(volume.width(), volume.height()) / mapSize;
+    return volume.perspective ? span * distance : span;
+}
+
+double texelWorldSize(const LightSettings& light, int mapSize)
+{
+    return texelWorldSize(manualVolume(light), mapSize, glm::length(light.position - light.target));
 }
 
 bool isOutsideFrustum(const glm::dmat4& viewProjection, const Bounds& box, bool ignoreNear)

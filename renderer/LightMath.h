@@ -12,6 +12,23 @@ namespace shadowlab {
 
 // Everything the passes need to know about the light, in double precision. Pure functions,
 // no GL: computed once per change and converted to float only at upload.
+// The box (ortho) or pyramid (perspective) the shadow map covers, in the light's view space:
+// x and y across the map, depth along the light's direction. A directional light's volume is
+// anchored at any point of its axis: its shadow depends on the direction alone.
+struct LightVolume {
+    glm::dvec3 origin{0.0};             // ortho: a point on the axis; perspective: the light's position
+    glm::dvec3 direction{0.0, -1.0, 0.0}; // unit
+    bool perspective = false;
+    // Ortho: world units from the axis; perspective: tangents of the angle from the axis.
+    double left = -1.0, right = 1.0, bottom = -1.0, top = 1.0;
+    double nearPlane = 1.0;             // along the direction from the origin; perspective: > 0
+    double farPlane = 10.0;
+
+    double width() const { return right - left; }
+    double height() const { return top - bottom; }
+    bool operator==(const LightVolume&) const = default;
+};
+
 struct LightFrame {
     glm::dmat4 view{1.0};
     glm::dmat4 projection{1.0};
@@ -23,7 +40,8 @@ struct LightFrame {
     bool reversedDepth = false;
     glm::dmat4 depthViewProjection{1.0};
     glm::dmat4 depthShadowMatrix{1.0};
-    glm::dvec3 position{0.0};
+    LightVolume volume;                   // what the matrices cover
+    glm::dvec3 position{0.0};             // the light as set (a directional light's volume ignores it)
     glm::dvec3 direction{0.0, -1.0, 0.0}; // unit, from the light toward its target
     double targetDistance = 1.0;          // from the light to its target
     bool perspective = false;
@@ -44,18 +62,29 @@ struct CameraFrame {
 // straight above or below its target still gets an orthonormal, finite basis.
 // Requires eye != target (see validate()).
 glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target);
+// The same, looking from `eye` along `direction` (any length > 0).
+glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction);
 
-// Throws SettingsError for settings that cannot make a frame (light at its target, near >= far,
-// non-positive perspective near, ...): callers get a message, never a NaN matrix.
-// `light` is used as given (fitting is LightFitting.h's job).
+// The volume exactly as set: light.extent, light.fov, light.near and light.far around the axis
+// from light.position toward light.target. Throws SettingsError for settings that cannot make
+// one (light at its target, near >= far, non-positive perspective near, ...).
+LightVolume manualVolume(const LightSettings& light);
+
+// The frame of `light` whose matrices cover `volume` (fitting is LightFitting.h's job).
+// Throws SettingsError when the volume cannot make finite matrices: callers get a message,
+// never a NaN matrix.
+LightFrame computeLightFrame(const LightSettings& light, const LightVolume& volume, bool reversedDepth = false);
+// The frame of the volume as set.
 LightFrame computeLightFrame(const LightSettings& light, bool reversedDepth = false);
 
 // The camera's matrices for a viewport of the given aspect ratio; near and far enclose
 // `sceneBounds` so nothing of the scene is clipped.
 CameraFrame computeCameraFrame(const CameraSettings& camera, double aspect, const Bounds& sceneBounds);
 
-// World-space width of one shadow-map texel: across the whole map for an ortho light, at
-// the target's distance for a perspective one.
+// World-space width of one shadow-map texel (the wider axis): for an ortho volume across the
+// whole map, for a perspective one at `distance` from the light.
+double texelWorldSize(const LightVolume& volume, int mapSize, double distance = 1.0);
+// ... of the volume as set, at the target's distance for a perspective light.
 double texelWorldSize(const LightSettings& light, int mapSize);
 
 // True when `box` lies entirely outside the frustum of `viewProjection` on one side.

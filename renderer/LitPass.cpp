@@ -62,6 +62,10 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
+    if (settings.bias.space == BiasSpace::Depth)
+        defines << QStringLiteral("BIAS_DEPTH");
+    else if (settings.bias.space == BiasSpace::Texel)
+        defines << QStringLiteral("BIAS_TEXEL");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
     if (measure)
@@ -109,15 +113,17 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
     p.program.set(p.lightDirection, glm::vec3(light.direction));
-    p.program.set(p.biasSlope, float(settings.bias.slope));
-    p.program.set(p.biasMin, float(settings.bias.min));
 
     const bool shadows = settings.shadow.enabled && map != nullptr;
     if (shadows) {
+        // World size of a texel (at unit distance for a perspective light), the wider axis, with
+        // the fitted volume the map was rendered with.
+        const double texel = texelWorldSize(light.volume, map->size());
+        const double biasScale = settings.bias.space == BiasSpace::Texel ? texel : 1.0;
+        p.program.set(p.biasSlope, float(settings.bias.slope * biasScale));
+        p.program.set(p.biasMin, float(settings.bias.min * biasScale));
         p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
-        // World size of a texel (at unit distance for a perspective light): 2 / (P[0][0] size)
-        // for both projections, with the fitted volume the map was rendered with.
-        p.program.set(p.normalOffset, float(settings.bias.normal * 2.0 / (light.projection[0][0] * map->size())));
+        p.program.set(p.normalOffset, float(settings.bias.normal * texel));
         p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
         m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
         m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());

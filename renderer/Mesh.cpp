@@ -51,6 +51,7 @@ void addGridIndices(Mesh& mesh, int columns, int rows)
 Mesh plane(float halfSize, float uvRepeat)
 {
     Mesh mesh;
+    mesh.convex = true;
     const float h = halfSize;
     addQuad(mesh, {-h, 0, h}, {h, 0, h}, {h, 0, -h}, {-h, 0, -h}, {uvRepeat, uvRepeat});
     return mesh;
@@ -59,6 +60,7 @@ Mesh plane(float halfSize, float uvRepeat)
 Mesh cube()
 {
     Mesh mesh;
+    mesh.convex = true;
     const glm::vec3 p[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                             {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     addQuad(mesh, p[4], p[5], p[6], p[7]); // +z
@@ -75,6 +77,7 @@ Mesh sphere(int segments, int rings)
     segments = std::max(segments, 3);
     rings = std::max(rings, 3);
     Mesh mesh;
+    mesh.convex = true;
     for (int r = 0; r <= rings; ++r) {
         const float v = float(r) / float(rings);
         const float theta = v * glm::pi<float>();
@@ -121,6 +124,7 @@ Mesh torus(float major, float minor, int segments, int sides)
 Mesh pyramid()
 {
     Mesh mesh;
+    mesh.convex = true;
     const glm::vec3 apex(0, 1, 0);
     const glm::vec3 b[4] = {{-1, -1, 1}, {1, -1, 1}, {1, -1, -1}, {-1, -1, -1}};
     for (int i = 0; i < 4; ++i)

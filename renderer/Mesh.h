@@ -18,6 +18,7 @@ struct Vertex {
 struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
+    bool convex = false;        // no part can shadow another part (the light fit uses this)
 };
 
 namespace meshes {

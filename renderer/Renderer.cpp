@@ -44,21 +44,21 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     const CameraFrame camera = computeCameraFrame(settings.camera, aspect, scene.bounds());
 
     // Every object receives; casters are the objects that cast.
-    std::vector<Bounds> casters, receivers;
+    std::vector<FitObject> objects;
+    objects.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        receivers.push_back(m_scene->objectBounds(i));
-        if (scene.objects[i].castsShadow)
-            casters.push_back(m_scene->objectBounds(i));
+        const SceneObject& object = scene.objects[i];
+        objects.push_back({m_scene->objectBounds(i), object.castsShadow, true, scene.meshes.at(std::size_t(object.mesh)).convex});
     }
-    const FittedLight fit = fitLight(settings.light, casters, receivers, camera.viewProjection, settings.map.size);
-    const LightFrame light = computeLightFrame(fit.light, reversed);
+    FittedLight fit = fitLight(settings.light, objects, camera.viewProjection, settings.map.size);
+    const LightFrame light = computeLightFrame(settings.light, fit.volume, reversed);
     stats.texelWorldSizeBeforeFit = fit.texelBefore;
     stats.texelWorldSize = fit.texelAfter;
     stats.lightFitted = fit.fitted;
     stats.reversedDepth = reversed;
 
     if (settings.shadow.enabled) {
-        const ShadowKey key{m_sceneGeneration, fit.light, reversed, settings.map.size, settings.map.format,
+        const ShadowKey key{m_sceneGeneration, fit.volume, reversed, settings.map.size, settings.map.format,
                             settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
         if (m_shadowKey != key && !fit.anythingToShadow) {
             // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
@@ -79,7 +79,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
             ++m_shadowPassCount;
         }
     }
-    m_fittedLight = fit.light;
+    m_fit = std::move(fit);
     m_light = light;
     m_camera = camera;
 }

@@ -6,6 +6,7 @@
 #include "GpuScene.h"
 #include "GpuTimer.h"
 #include "LightMath.h"
+#include "LightFitting.h"
 #include "LitPass.h"
 #include "MeasureTarget.h"
 #include "RenderTarget.h"
@@ -49,8 +50,8 @@ public:
     // (for the audit's degenerate scenes; the `scene` key offers only the presets). Uploaded on
     // the next render().
     void setScene(std::optional<Scene> scene);
-    // The light volume of the last frame after light.fit (the passes' volume).
-    const LightSettings& fittedLight() const { return m_fittedLight; }
+    // The light volume of the last frame after light.fit (the passes' volume), with what it cut.
+    const FittedLight& lastFit() const { return m_fit; }
     // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run since construction.
@@ -71,7 +72,7 @@ private:
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {
         int sceneGeneration = 0;
-        LightSettings light;        // after fitting
+        LightVolume volume;         // after fitting
         bool reversedDepth = false;
         int mapSize = 0;
         DepthFormat format = DepthFormat::Depth24;
@@ -96,7 +97,7 @@ private:
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
-    LightSettings m_fittedLight;
+    FittedLight m_fit;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;

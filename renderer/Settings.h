@@ -11,6 +11,7 @@ namespace shadowlab {
 enum class LightProjection { Ortho, Perspective };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
+enum class BiasSpace { World, Texel, Depth };
 enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear };
 enum class ShadingModel { Phong, BlinnPhong };
 
@@ -39,12 +40,19 @@ struct MapSettings {
     bool operator==(const MapSettings&) const = default;
 };
 
-// Depth bias = max(slope * (1 - N.L), min), in depth-buffer units ([0, 1] window depth);
-// (1 - N.L) <= 1 keeps it bounded at grazing angles, unlike the slope * tan(theta) form.
+// Bias = max(slope * (1 - N.L), min): (1 - N.L) <= 1 keeps it bounded at grazing angles,
+// unlike the slope * tan(theta) form. Its unit is `space`:
+// - World: world units along the ray to the light, so the same setting means the same offset
+//   for any near/far, map size or fitted extent (the default);
+// - Texel: texels of the map (world size of one texel, at the receiver's distance for a
+//   perspective light), so the offset follows the resolution, like Filament's bias;
+// - Depth: depth-buffer units ([0, 1] window depth), the classic tutorial form, whose world
+//   meaning grows with far - near.
 // Normal offset moves the shadow lookup along the surface normal, in shadow-map texels.
 struct BiasSettings {
-    double slope = 0.02;                    // [0, 0.5]
-    double min = 0.001;                     // [0, 0.5]
+    BiasSpace space = BiasSpace::World;
+    double slope = 0.05;                    // [0, 100]; with Depth [0, 0.5]
+    double min = 0.005;                     // [0, 100]; with Depth [0, 0.5]
     double normal = 0.0;                    // texels, [0, 8]
     // Back faces only into the shadow map: on `seed` as accurate as any bias alone and the
     // cheapest shadow pass (the single-sided ground is not drawn), so on the accuracy

@@ -183,6 +183,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
 
 const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("perspective")};
 const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
+const QStringList kBiasSpaceNames{QStringLiteral("world"), QStringLiteral("texel"), QStringLiteral("depth")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
 const QStringList kFilterNames{QStringLiteral("hard"), QStringLiteral("pcf"), QStringLiteral("pcf-dither4"),
                                QStringLiteral("pcf64"), QStringLiteral("hw-bilinear")};
@@ -237,10 +238,12 @@ std::vector<Entry> makeEntries()
                            "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
     e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
                                        "Depth texture format: 32-bit float keeps precision with far-away near/far ratios"));
-    e.push_back(numberKey("bias.slope", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.bias.slope; },
-                          "Slope-scaled depth bias, times (1 - N.L): too little shows acne on lit slopes, too much detaches shadows (peter panning)"));
-    e.push_back(numberKey("bias.min", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.bias.min; },
-                          "Minimum depth bias, in depth units: removes acne on surfaces facing the light, too much makes shadows leak at contacts"));
+    e.push_back(choiceKey<BiasSpace>("bias.space", kBiasSpaceNames, [](auto& s) -> auto& { return s.bias.space; },
+                                     "Unit of bias.slope and bias.min: world units along the ray to the light (same offset for any near/far, map size or fit), texels of the map (follows the resolution), or depth-buffer units (the classic form, whose world offset grows with far - near)"));
+    e.push_back(numberKey("bias.slope", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.slope; },
+                          "Slope-scaled bias, times (1 - N.L), in the unit of bias.space (world units, texels, or depth units <= 0.5): too little shows acne on lit slopes, too much detaches shadows (peter panning)"));
+    e.push_back(numberKey("bias.min", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.min; },
+                          "Minimum bias, in the unit of bias.space (world units, texels, or depth units <= 0.5): removes acne on surfaces facing the light, too much makes shadows leak at contacts"));
     e.push_back(numberKey("bias.normal", Range{0.0, 8.0}, [](auto& s) -> auto& { return s.bias.normal; },
                           "Normal-offset bias in shadow-map texels: looks the shadow up from a point moved off the surface, against acne at grazing angles without detaching contact shadows as much as depth bias"));
     e.push_back(boolKey("bias.cull_front", [](auto& s) -> auto& { return s.bias.cullFront; },
@@ -417,6 +420,7 @@ void saveSettingsFile(const QString& path, const Settings& settings)
 QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }
 QString toString(LightFit value) { return kFitNames.value(int(value)); }
 QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
+QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
 QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
 
@@ -446,8 +450,18 @@ std::vector<SettingsIssue> validate(const Settings& s)
         error("light.far", QStringLiteral("far (%1) must be greater than near (%2)")
                                .arg(formatNumber(s.light.farPlane), formatNumber(s.light.nearPlane)));
 
-    if (errors.empty() && s.light.projection == LightProjection::Perspective && s.map.format == DepthFormat::Depth24
-        && s.light.farPlane / s.light.nearPlane > 1e5)
+    if (s.bias.space == BiasSpace::Depth) {
+        // A depth-unit bias above half the depth range pushes every receiver through its casters.
+        for (const auto& [key, value] : {std::pair{"bias.slope", s.bias.slope}, std::pair{"bias.min", s.bias.min}}) {
+            if (value > 0.5)
+                error(key, QStringLiteral("%1 is more than half the depth range; in depth units (bias.space=depth) it must be in [0, 0.5], "
+                                          "or choose bias.space=world")
+                               .arg(formatNumber(value)));
+        }
+    }
+
+    if (errors.empty() && s.light.fit == LightFit::Manual && s.light.projection == LightProjection::Perspective
+        && s.map.format == DepthFormat::Depth24 && s.light.farPlane / s.light.nearPlane > 1e5)
         warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.near"),
                             QStringLiteral("far/near = %1 leaves a 24-bit depth map almost no precision far away; raise light.near or use map.format=depth32f")
                                 .arg(formatNumber(s.light.farPlane / s.light.nearPlane))});

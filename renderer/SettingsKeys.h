@@ -50,6 +50,7 @@ void saveSettingsFile(const QString& path, const Settings& settings);
 QString toString(LightProjection value);
 QString toString(LightFit value);
 QString toString(DepthFormat value);
+QString toString(BiasSpace value);
 QString toString(FilterMode value);
 QString toString(ShadingModel value);
 

@@ -12,8 +12,9 @@ in vec4 vShadowCoord;
 uniform sampler2D uDiffuse;
 uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
-uniform float uBiasSlope;       // depth units per unit of (1 - N.L)
-uniform float uBiasMin;         // depth units
+uniform float uBiasSlope;       // per unit of (1 - N.L); world units (depth units with BIAS_DEPTH)
+uniform float uBiasMin;         // world units (depth units with BIAS_DEPTH)
+uniform mat4 uShadowWorld;      // world -> shadow texture space; used on directions only
 
 layout(location = 0) out vec4 fragColor;
 #ifdef MEASURE
@@ -47,10 +48,20 @@ float shadowVisibility(vec3 normal, vec3 toLight)
         return 0.0;             // facing away: unlit anyway, so skip the lookups
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+#ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
     return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
 #else
     return filterShadow(coord.xy, coord.z - bias);
+#endif
+#else
+#if defined(BIAS_TEXEL) && defined(LIGHT_PERSPECTIVE)
+    bias *= vShadowCoord.w;     // a perspective texel grows with the distance from the light
+#endif
+    // Compare from a point moved toward the light by `bias` world units: on the ray to the
+    // light, so it stays on the same texel, and the same offset whatever the depth range.
+    vec4 moved = vShadowCoord + uShadowWorld * vec4(toLight * bias, 0.0);
+    return filterShadow(coord.xy, moved.z / moved.w);
 #endif
 #else
     return 1.0;

@@ -115,8 +115,8 @@ private Q_SLOTS:
 
     void riskyValuesWarnButRender()
     {
-        const Run r = shadowlab({"render", "--size", "64x64", "--out", m_dir.filePath("risky.png"), "--set", "light.projection=perspective",
-                                 "--set", "light.near=0.00001", "--set", "light.far=100"});
+        const Run r = shadowlab({"render", "--size", "64x64", "--out", m_dir.filePath("risky.png"), "--set", "light.fit=manual",
+                                 "--set", "light.projection=perspective", "--set", "light.near=0.00001", "--set", "light.far=100"});
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.err.contains("warning: light.near"), qPrintable(r.err));
     }

@@ -68,7 +68,7 @@ private Q_SLOTS:
         QTest::newRow("NaN") << "bias.slope" << "nan" << "finite";
         QTest::newRow("infinity") << "light.extent" << "inf" << "finite";
         QTest::newRow("not a number") << "light.far" << "far" << "not a number";
-        QTest::newRow("negative bias") << "bias.min" << "-0.1" << "[0, 0.5]";
+        QTest::newRow("negative bias") << "bias.min" << "-0.1" << "[0, 100]";
         QTest::newRow("fov 180") << "light.fov" << "180" << "(0, 180)";
         QTest::newRow("fov 0") << "light.fov" << "0" << "(0, 180)";
         QTest::newRow("even kernel") << "filter.kernel" << "4" << "odd";
@@ -113,6 +113,7 @@ private Q_SLOTS:
         QTest::newRow("perspective near 0") << QStringList{"light.projection=perspective", "light.near=0"} << "light.near";
         QTest::newRow("light at target") << QStringList{"light.position=1,2,3", "light.target=1,2,3"} << "light.position";
         QTest::newRow("camera at target") << QStringList{"camera.position=0,1,0", "camera.target=0,1,0"} << "camera.position";
+        QTest::newRow("depth bias over half the range") << QStringList{"bias.space=depth", "bias.min=0.6"} << "bias.min";
     }
 
     void crossFieldRulesNameTheKey()
@@ -132,6 +133,7 @@ private Q_SLOTS:
     void riskyButValidValuesWarn()
     {
         Settings s;
+        applyAssignment(s, "light.fit=manual");   // a fitted light picks its own near and far
         applyAssignment(s, "light.projection=perspective");
         applyAssignment(s, "light.near=0.001");
         applyAssignment(s, "light.far=100000");

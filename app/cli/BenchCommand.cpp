@@ -35,6 +35,7 @@ Settings tutorialSettings(Settings s)
     s.filter.kernel = 3;
     s.shadow.enabled = true;
     s.bias = BiasSettings{};
+    s.bias.space = BiasSpace::Depth;    // the tutorial's bias is in depth units
     s.bias.slope = 0.05;
     s.bias.min = 0.005;
     s.bias.cullFront = false;

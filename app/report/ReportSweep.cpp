@@ -36,13 +36,20 @@ std::vector<SweepEntry> resolutionSweep()
 std::vector<SweepEntry> biasSweep()
 {
     std::vector<SweepEntry> s;
-    // The classic slope/min grid draws front faces, where bias alone must hold acne off.
-    for (const char* slope : {"0", "0.005", "0.02", "0.05"}) {
-        for (const char* min : {"0", "0.0005", "0.001", "0.005"})
-            s.push_back({QStringLiteral("bias %1/%2").arg(QLatin1String(slope), QLatin1String(min)),
+    // The slope/min grid in world units draws front faces, where bias alone must hold acne off.
+    for (const char* slope : {"0", "0.01", "0.05", "0.2"}) {
+        for (const char* min : {"0", "0.001", "0.005", "0.02"})
+            s.push_back({QStringLiteral("bias %1/%2 wu").arg(QLatin1String(slope), QLatin1String(min)),
                          {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
                           QStringLiteral("bias.min=%1").arg(QLatin1String(min))}});
     }
+    for (const char* slope : {"1", "3"}) {
+        s.push_back({QStringLiteral("bias %1/0.5 texels").arg(QLatin1String(slope)),
+                     {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=texel"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
+                      QStringLiteral("bias.min=0.5")}});
+    }
+    s.push_back({QStringLiteral("bias 0.02/0.001 depth units"), {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=depth"),
+                                                                  QStringLiteral("bias.slope=0.02"), QStringLiteral("bias.min=0.001")}});
     s.push_back({QStringLiteral("cull front, no bias"), {QStringLiteral("bias.cull_front=true"), QStringLiteral("bias.slope=0"),
                                                           QStringLiteral("bias.min=0")}});
     s.push_back({QStringLiteral("no front-face culling"), {QStringLiteral("bias.cull_front=false")}});
@@ -52,13 +59,47 @@ std::vector<SweepEntry> biasSweep()
     return s;
 }
 
+// The tutorial most learners copy: 3 x 3 PCF on a 1024 map, bias 0.05/0.005 in depth units,
+// front faces, the hand-set volume.
+QStringList tutorialAssignments()
+{
+    return {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
+            QStringLiteral("bias.space=depth"), QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"),
+            QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual")};
+}
+
+// Light placements around the preset's target, from overhead to grazing and from near to very
+// far, each with the defaults and with the tutorial configuration.
+std::vector<SweepEntry> lightsSweep()
+{
+    std::vector<SweepEntry> s;
+    const struct {
+        const char* name;
+        const char* position;   // relative to the target
+    } placements[] = {{"preset", nullptr},
+                      {"(-2, 4, -1)", "-2,4,-1"},
+                      {"(-4, 8, -2), twice as far", "-4,8,-2"},
+                      {"(-200, 400, -100)", "-200,400,-100"},
+                      {"(1000, 1000, 1000)", "1000,1000,1000"},
+                      {"(0.5, 8, 0.3), nearly overhead", "0.5,8,0.3"},
+                      {"(0, 6, 0), straight above", "0,6,0"},
+                      {"(3, 2, 4)", "3,2,4"},
+                      {"(-6, 1.2, -2), grazing", "-6,1.2,-2"},
+                      {"(5, 0.4, -3), 4 deg", "5,0.4,-3"}};
+    for (const auto& p : placements) {
+        QStringList at;
+        if (p.position)
+            at << QStringLiteral("light.position=%1").arg(QLatin1String(p.position)) << QStringLiteral("light.target=0,0,0");
+        s.push_back({QStringLiteral("defaults @ %1").arg(QLatin1String(p.name)), at});
+        s.push_back({QStringLiteral("tutorial @ %1").arg(QLatin1String(p.name)), tutorialAssignments() + at});
+    }
+    return s;
+}
+
 std::vector<SweepEntry> defaultSweep()
 {
     std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
-                              {QStringLiteral("tutorial (pcf 3, 1024, 0.05/0.005)"),
-                               {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
-                                QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"), QStringLiteral("bias.cull_front=false"),
-                                QStringLiteral("light.fit=manual")}},
+                              {QStringLiteral("tutorial (pcf 3, 1024, 0.05/0.005 depth)"), tutorialAssignments()},
                               {QStringLiteral("perspective light"), {QStringLiteral("light.projection=perspective")}},
                               {QStringLiteral("depth32f"), {QStringLiteral("map.format=depth32f")}}};
     for (auto part : {filterSweep(), resolutionSweep(), biasSweep()})
@@ -112,7 +153,7 @@ std::vector<SweepEntry> sweepFromFile(const QString& path)
 
 QStringList builtInSweeps()
 {
-    return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias")};
+    return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
@@ -125,6 +166,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
         return resolutionSweep();
     if (nameOrFile == u"bias")
         return biasSweep();
+    if (nameOrFile == u"lights")
+        return lightsSweep();
     return sweepFromFile(nameOrFile);
 }
 

@@ -16,7 +16,7 @@ struct SweepEntry {
 };
 
 // The built-in sweeps: "default" (all of the below, plus the classic tutorial configuration),
-// "filters", "resolution", "bias"; or a JSON file: an array of {"label": ..., "set": {key: value}}
+// "filters", "resolution", "bias", "lights"; or a JSON file: an array of {"label": ..., "set": {key: value}}
 // objects (or {"configurations": [...]}). Throws UsageError / SettingsError with the file named.
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile);
 QStringList builtInSweeps();
