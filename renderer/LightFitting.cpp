@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <QStringList>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -135,7 +137,7 @@ double area(const std::vector<Polygon>& faces)
 // `volume` (a view-projection), and a warning naming the plane that cuts the most of it.
 struct Cut {
     double share = 0.0;
-    std::size_t plane = 0;      // left, right, bottom, top, near, far
+    std::array<double, 6> byPlane{};    // share outside each of left, right, bottom, top, near, far
 };
 
 Cut measureCut(const std::vector<FitObject>& objects, const std::vector<glm::dmat4>& seen, const glm::dmat4& volume)
@@ -158,9 +160,11 @@ Cut measureCut(const std::vector<FitObject>& objects, const std::vector<glm::dma
             outside[k] += area(clipFaces(visible, {Plane{-volumePlanes[k].n, -volumePlanes[k].d}}));
     }
     Cut cut;
-    if (total > 0.0)
+    if (total > 0.0) {
         cut.share = std::clamp(1.0 - inside / total, 0.0, 1.0);
-    cut.plane = std::size_t(std::max_element(outside.begin(), outside.end()) - outside.begin());
+        for (std::size_t k = 0; k < outside.size(); ++k)
+            cut.byPlane[k] = std::clamp(outside[k] / total, 0.0, 1.0);
+    }
     return cut;
 }
 
@@ -213,15 +217,22 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
         result.cutShare = cut.share;
         if (cut.share > kCutWorthSaying && result.anythingToShadow) {
             const char* side = manual.perspective ? "light.fov" : "light.extent";
-            struct Naming { const char* key; const char* where; const char* fix; };
-            const Naming names[6] = {{side, "outside the sides", "widen it"}, {side, "outside the sides", "widen it"},
-                                     {side, "outside the sides", "widen it"}, {side, "outside the sides", "widen it"},
-                                     {"light.near", "before light.near", "lower it"}, {"light.far", "beyond light.far", "raise it"}};
-            const Naming& n = names[cut.plane];
-            result.warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(n.key),
+            // Every plane that cuts, the sides together, most first; the warning sits at the first.
+            struct Part { double share; const char* key; const char* where; };
+            std::vector<Part> parts{{cut.byPlane[0] + cut.byPlane[1] + cut.byPlane[2] + cut.byPlane[3], side, "outside the sides"},
+                                    {cut.byPlane[4], "light.near", "before light.near"},
+                                    {cut.byPlane[5], "light.far", "beyond light.far"}};
+            std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.share > b.share; });
+            QStringList where;
+            for (const Part& part : parts) {
+                if (part.share > kCutWorthSaying)
+                    where << QStringLiteral("%1 % %2").arg(percent(std::min(part.share, cut.share)), QString::fromLatin1(part.where));
+            }
+            result.warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(parts.front().key),
                                        QStringLiteral("%1 % of the visible receivers lie outside the light volume (%2): they are lit "
-                                                      "without a shadow test; %3, or set light.fit=scene")
-                                           .arg(percent(cut.share), QString::fromLatin1(n.where), QString::fromLatin1(n.fix))});
+                                                      "without a shadow test; widen the volume (light.extent or light.fov, light.near, "
+                                                      "light.far), or set light.fit=scene")
+                                           .arg(percent(cut.share), where.join(QStringLiteral(", ")))});
         }
         return result;
     }

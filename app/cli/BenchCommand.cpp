@@ -23,6 +23,7 @@ struct Phase {
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
+    FittedLight fit;        // of the last frame
 };
 
 // The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
@@ -56,6 +57,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
                 continue;
             const FrameStats& f = p.headless->renderer().lastFrame();
             p.last = f;
+            p.fit = p.headless->renderer().lastFit();
             if (f.shadowPassRendered) {
                 p.shadow.push_back(f.shadowPassMs);
                 p.shadowWall.push_back(f.shadowPassWallMs);
@@ -172,6 +174,7 @@ int runBench(const QStringList& arguments)
             out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QStringLiteral(", %1 draws").arg(r.shadowDraws)) << '\n';
             out() << "  " << formatTexelLine(r.last) << '\n';
+            printFitWarnings(r.fit, r.name);
             out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
             out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';
             out() << "  lit pass (wall):   " << formatStats(summarize(r.litWall)) << '\n';

@@ -91,6 +91,12 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     return settings;
 }
 
+void printFitWarnings(const FittedLight& fit, const QString& context)
+{
+    for (const SettingsIssue& issue : fit.warnings)
+        err() << "warning: " << (context.isEmpty() ? QString() : context + QStringLiteral(": ")) << issue.key << ": " << issue.message << Qt::endl;
+}
+
 QString formatTexelLine(const FrameStats& stats)
 {
     return QStringLiteral("shadow texel: %1 world units as set, %2 as rendered%3%4")

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LightFitting.h"
+
 #include "FrameStats.h"
 #include "Settings.h"
 
@@ -41,6 +43,8 @@ Settings settingsFromOptions(const QCommandLineParser& parser);
 
 // "shadow texel: 0.0195 world units as set, 0.0132 fitted (light.fit=scene)": what fitting bought.
 QString formatTexelLine(const FrameStats& stats);
+// The light fit's warnings (receivers a manual volume cuts, ...) on stderr, after `context`.
+void printFitWarnings(const FittedLight& fit, const QString& context = {});
 
 // "1280x720" -> QSize; throws UsageError naming the option.
 QSize parseSize(const QString& text, const QString& option);

@@ -40,6 +40,7 @@ int runRender(const QStringList& arguments)
         HeadlessRenderer headless;
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
+        printFitWarnings(headless.renderer().lastFit());
         if (parser.isSet(QStringLiteral("out")))
             save(scene, parser.value(QStringLiteral("out")));
         if (parser.isSet(QStringLiteral("depth-out"))) {

@@ -89,6 +89,7 @@ int runReport(const QStringList& arguments)
             ReportRow row{sweep[c].label, sweep[c].assignments, {}, {}, {}, {}, false};
             row.accuracy = meter.measure(headless.renderer(), configurations[c], size,
                                          [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
+            printFitWarnings(headless.renderer().lastFit(), sweep[c].label);
             if (row.accuracy.raysPerSecond > 0.0)
                 raysPerSecond = row.accuracy.raysPerSecond;
             noiseFloor = std::max(noiseFloor, row.accuracy.areaNoiseFloor);
