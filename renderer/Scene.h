@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "Bounds.h"
 #include "Mesh.h"
 
@@ -26,6 +28,7 @@ struct Scene {
     QString name;
     std::vector<Mesh> meshes;
     std::vector<SceneObject> objects;
+    std::optional<double> groundHeight; // y of a ground plane the camera should stay above, if any
 
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts

@@ -18,6 +18,7 @@ glm::dmat4 placement(glm::dvec3 position, double scale, double angleDegrees = 0.
 
 void addGround(Scene& scene, double y)
 {
+    scene.groundHeight = y;
     scene.meshes.push_back(meshes::plane(25.0f, 25.0f));
     scene.objects.push_back({QStringLiteral("ground"), int(scene.meshes.size() - 1),
                              glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, y, 0.0)), TextureKind::Checker, true});

@@ -116,6 +116,8 @@ private slots:
     void idleWindowDrawsNoFrames();
     void settingsPersistAcrossWindows();
     void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
+    void orbitNeverGoesBelowTheGround_data();
+    void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
 
@@ -439,6 +441,41 @@ void tst_MainWindow::orbitKeepsTheDistanceAndZoomNeverReachesTheTarget()
     OrbitCamera panned(start);
     panned.pan(QPointF(100.0, 0.0), QSize(800, 600));
     QVERIFY(glm::length((panned.settings().position - start.position) - (panned.settings().target - start.target)) < 1e-9);
+}
+
+void tst_MainWindow::orbitNeverGoesBelowTheGround_data()
+{
+    QTest::addColumn<QString>("scene");
+    for (const QString& name : sceneNames())
+        QTest::newRow(qPrintable(name)) << name;
+}
+
+// Dragging down as far as one likes, zooming out and panning down: the camera stays above the
+// preset's ground plane, and keeps its distance while orbiting.
+void tst_MainWindow::orbitNeverGoesBelowTheGround()
+{
+    QFETCH(QString, scene);
+    const Scene built = buildScene(scene);
+    QVERIFY(built.groundHeight.has_value());
+    const double ground = *built.groundHeight;
+    const CameraSettings start = presetSettings(scene).camera;
+    const double distance = glm::length(start.position - start.target);
+    OrbitCamera camera(start, ground);
+    for (int i = 0; i < 40; ++i) {
+        camera.orbit(7.0, -11.0);
+        QCOMPARE_GT(camera.settings().position.y, ground);
+        QVERIFY(qAbs(glm::length(camera.settings().position - camera.settings().target) - distance) < 1e-9 * distance);
+    }
+    camera.zoom(-20.0);
+    QCOMPARE_GT(camera.settings().position.y, ground);
+    for (int i = 0; i < 40; ++i)
+        camera.pan(QPointF(0.0, -200.0), QSize(800, 600));
+    QCOMPARE_GT(camera.settings().position.y, ground);
+    // Without a ground, the same drag goes under.
+    OrbitCamera free(start);
+    for (int i = 0; i < 40; ++i)
+        free.orbit(7.0, -11.0);
+    QCOMPARE_LT(free.settings().position.y, ground);
 }
 
 void tst_MainWindow::screenshotNameSaysWhatIsOnScreen()

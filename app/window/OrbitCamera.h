@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "Settings.h"
 
 #include <QPointF>
@@ -12,7 +14,8 @@ namespace shadowlab {
 // Pitch stays short of the poles so the camera never looks straight along its up axis.
 class OrbitCamera {
 public:
-    explicit OrbitCamera(const CameraSettings& camera) : m_camera(camera) {}
+    // With a ground height, orbits, pans and zooms keep the camera above that plane.
+    explicit OrbitCamera(const CameraSettings& camera, std::optional<double> ground = std::nullopt) : m_camera(camera), m_ground(ground) {}
 
     const CameraSettings& settings() const { return m_camera; }
 
@@ -25,7 +28,10 @@ public:
     void zoom(double steps);
 
 private:
+    void stayAboveGround();
+
     CameraSettings m_camera;
+    std::optional<double> m_ground;
 };
 
 } // namespace shadowlab

@@ -146,7 +146,7 @@ void SceneView::mouseMoveEvent(QMouseEvent* event)
     m_lastMouse = position;
     if (delta.isNull())
         return;
-    OrbitCamera camera(m_settings.camera);
+    OrbitCamera camera(m_settings.camera, groundHeight());
     if (event->buttons() & Qt::LeftButton)
         camera.orbit(delta.x() * kDegreesPerPixel, delta.y() * kDegreesPerPixel);
     else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton))
@@ -158,9 +158,15 @@ void SceneView::mouseMoveEvent(QMouseEvent* event)
 
 void SceneView::wheelEvent(QWheelEvent* event)
 {
-    OrbitCamera camera(m_settings.camera);
+    OrbitCamera camera(m_settings.camera, groundHeight());
     camera.zoom(event->angleDelta().y() / 120.0);
     emit cameraEdited(camera.settings());
+}
+
+std::optional<double> SceneView::groundHeight() const
+{
+    const Scene* scene = m_renderer ? m_renderer->scene() : nullptr;
+    return scene ? scene->groundHeight : std::nullopt;
 }
 
 void SceneView::keyPressEvent(QKeyEvent* event)

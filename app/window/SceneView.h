@@ -38,6 +38,8 @@ public:
 
     // Null until the first initializeGL() and after the context goes away.
     const Renderer* renderer() const { return m_renderer.get(); }
+    // The y of the scene's ground plane, which orbiting keeps the camera above (none: free).
+    std::optional<double> groundHeight() const;
     // The settings of the image on screen (the last ones that rendered).
     const std::optional<Settings>& renderedSettings() const { return m_rendered; }
     int frameCount() const { return m_frameCount; }
