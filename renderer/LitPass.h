@@ -35,7 +35,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, shadowMap, shadowTexel;
+        GLint diffuse, shadowMap, shadowDepth, shadowTexel;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
     };
 

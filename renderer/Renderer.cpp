@@ -79,7 +79,6 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
             ++m_shadowPassCount;
         }
     }
-    m_fittedLight = fit.light;
     m_light = light;
     m_camera = camera;
 }

@@ -49,8 +49,6 @@ public:
     // (for the audit's degenerate scenes; the `scene` key offers only the presets). Uploaded on
     // the next render().
     void setScene(std::optional<Scene> scene);
-    // The light volume of the last frame after light.fit (the passes' volume).
-    const LightSettings& fittedLight() const { return m_fittedLight; }
     // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run since construction.
@@ -96,7 +94,6 @@ private:
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
-    LightSettings m_fittedLight;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;
