@@ -91,10 +91,10 @@ std::vector<SweepEntry> sweepFromFile(const QString& path)
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
     if (error.error != QJsonParseError::NoError)
-        throw SettingsError(QString(), QStringLiteral("sweep '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
+        throw SettingsError(QString(), QStringLiteral("sweep file '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
     const QJsonArray array = doc.isArray() ? doc.array() : doc.object().value(QStringLiteral("configurations")).toArray();
     if (array.isEmpty())
-        throw SettingsError(QString(), QStringLiteral("sweep '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
+        throw SettingsError(QString(), QStringLiteral("sweep file '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
     std::vector<SweepEntry> sweep;
     for (const QJsonValue& v : array) {
         const QJsonObject o = v.toObject();

@@ -292,8 +292,8 @@ std::vector<AuditCase> makeCatalogue()
     // Every filter of the technique table, in each variation a sweep tries.
     for (const ShadowTechnique& technique : shadowTechniques()) {
         for (const TechniqueVariation& variation : technique.sweep)
-            c.push_back({QStringLiteral("filter %1 on seed").arg(variation.label), QStringLiteral("renders; finite; error <= 3 %"),
-                         accurate(seedWith(variation.assignments), 0.03)});
+            c.push_back({QStringLiteral("filter %1 on seed").arg(variation.label), QStringLiteral("renders; finite; error <= 1 %"),
+                         accurate(seedWith(variation.assignments), 0.01)});
     }
     add("PCF kernel 1 equals hard", "identical images", [](HeadlessRenderer& h) {
         const QImage hard = h.renderScene(seedWith({"filter.mode=hard"}), kSize);

@@ -272,6 +272,10 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
     auto* combo = new QComboBox;
     combo->setObjectName(key);
     combo->addItems(info.choices);
+    if (key == u"filter.mode") {
+        for (const ShadowTechnique& t : shadowTechniques())
+            combo->setItemData(int(t.mode), t.help, Qt::ToolTipRole);
+    }
     combo->setToolTip(tooltipFor(info));
     connect(combo, &QComboBox::currentTextChanged, this, [this, key](const QString& text) {
         if (m_loading)
