@@ -2,6 +2,7 @@
 
 #include "Settings.h"
 
+#include <QByteArray>
 #include <QString>
 #include <QStringList>
 
@@ -40,6 +41,13 @@ struct TechniqueParameter {
     std::variant<int FilterSettings::*, double FilterSettings::*> field;   // where the value lives
 };
 
+// A uniform a technique's GLSL reads, with its value for the current settings (a radius, a
+// light size): set on every frame, so changing it needs no new shader variant.
+struct TechniqueUniform {
+    QByteArray name;        // "uPoissonRadius"
+    float value = 0.0f;
+};
+
 // One configuration a sweep tries for a technique: its label and the settings it changes.
 struct TechniqueVariation {
     QString label;
@@ -54,11 +62,13 @@ struct ShadowTechnique {
     QString label;                  // for people: dock, help page
     QString help;                   // one line: what it does, what it costs
     QString shaderFile;             // under shaders/: defines float filterShadow(vec2 uv, float reference)
-    ShadowMapKind map = ShadowMapKind::DepthCompare;
+    ShadowMapKind map = ShadowMapKind::DepthCompare;   // the renderer refuses kinds it does not build
     std::vector<ShadowSampler> samplers;    // in texture-unit order
     QStringList parameters;         // keys of techniqueParameters() it reads
     // Extra #defines of the lit pass's variant (compile-time parameters such as a kernel width).
-    std::function<QStringList(const FilterSettings&)> defines;
+    std::function<QStringList(const Settings&)> defines;
+    // Uniforms it reads (run-time parameters); empty for most.
+    std::function<std::vector<TechniqueUniform>(const Settings&)> uniforms;
     // The short name of a configuration, with its parameters ("pcf 3×3"); labels everywhere.
     std::function<QString(const FilterSettings&)> describe;
     std::vector<TechniqueVariation> sweep;  // what `report --sweep filters` and the dock try

@@ -1,6 +1,8 @@
 #include "LitPass.h"
 
 #include "PassState.h"
+#include "RenderError.h"
+#include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
 #include <glm/common.hpp>
@@ -38,13 +40,21 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 {
 }
 
+GLint LitPass::Program::techniqueUniform(const QByteArray& name)
+{
+    auto it = techniqueUniforms.find(name);
+    if (it == techniqueUniforms.end())
+        it = techniqueUniforms.emplace(name, program.uniform(name.constData())).first;
+    return it->second;
+}
+
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
 QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth)
 {
     QStringList defines;
     const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
-    defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings.filter);
+    defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
     if (settings.shadow.enabled)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
@@ -71,6 +81,9 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bo
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
                     const ShadowMap* map, const RenderTarget& target, bool measure)
 {
+    if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments)
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which this renderer does not build yet")
+                              .arg(toString(settings.filter.mode)));
     Program& p = programFor(settings, measure, light.reversedDepth);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
@@ -100,6 +113,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
 
     const bool shadows = settings.shadow.enabled && map != nullptr;
     if (shadows) {
+        for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
+            p.program.set(p.techniqueUniform(u.name), u.value);
         p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
         // World size of a texel (at unit distance for a perspective light): 2 / (P[0][0] size)
         // for both projections, with the fitted volume the map was rendered with.
