@@ -1,11 +1,13 @@
 #include "AuditCatalogue.h"
 
+#include "Limits.h"
 #include "RayTracer.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowReference.h"
+#include "ShadowTechnique.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -271,7 +273,7 @@ std::vector<AuditCase> makeCatalogue()
     });
     add("map size above the driver maximum", "refused, naming map.size and the driver's limit", [](HeadlessRenderer& h) {
         Settings s = presetSettings(QStringLiteral("seed"));
-        s.map.size = std::min(h.renderer().maxTextureSize() * 2, 16384);
+        s.map.size = std::min(h.renderer().maxTextureSize() * 2, kMaxImageSide);
         if (s.map.size <= h.renderer().maxTextureSize())
             return AuditOutcome{true, true, std::nullopt, QStringLiteral("the driver allows every size the key allows")};
         return refused(s, "map.size")(h);
@@ -279,7 +281,7 @@ std::vector<AuditCase> makeCatalogue()
     add("map size 16", "blocky but finite (error reported, not judged: 16 texels cannot resolve the scene)",
         accurate(seedWith({"map.size=16"}), 0.0, Judge::FiniteOnly));
     add("map size at the driver maximum", "allocates and renders, or fails with a clear message; finite", [](HeadlessRenderer& h) {
-        const int size = std::min(h.renderer().maxTextureSize(), 16384);
+        const int size = std::min(h.renderer().maxTextureSize(), kMaxImageSide);
         Settings s = seedWith({QStringLiteral("map.size=%1").arg(size)});
         try {
             AuditOutcome o = accurate(s, 0.02)(h);
@@ -289,6 +291,12 @@ std::vector<AuditCase> makeCatalogue()
             return AuditOutcome{true, true, std::nullopt, QStringLiteral("%1 x %1 refused: %2").arg(size).arg(QString::fromStdString(e.what()))};
         }
     });
+    // Every filter of the technique table, in each variation a sweep tries.
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        for (const TechniqueVariation& variation : technique.sweep)
+            c.push_back({QStringLiteral("filter %1 on seed").arg(variation.label), QStringLiteral("renders; finite; error <= 1 %"),
+                         accurate(seedWith(variation.assignments), 0.01)});
+    }
     add("PCF kernel 1 equals hard", "identical images", [](HeadlessRenderer& h) {
         const QImage hard = h.renderScene(seedWith({"filter.mode=hard"}), kSize);
         const QImage pcf = h.renderScene(seedWith({"filter.mode=pcf", "filter.kernel=1"}), kSize);

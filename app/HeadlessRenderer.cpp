@@ -1,5 +1,7 @@
 #include "HeadlessRenderer.h"
 
+#include "GlDebug.h"
+#include "Limits.h"
 #include "RenderError.h"
 #include "SettingsError.h"
 
@@ -10,7 +12,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr int kMaxTargetSide = 16384;
+constexpr int kMaxTargetSide = kMaxImageSide;
 
 } // namespace
 
@@ -31,6 +33,7 @@ HeadlessRenderer::HeadlessRenderer()
         throw RenderError(QStringLiteral("the OpenGL context does not provide the 3.3 core functions (got %1.%2)")
                               .arg(m_context.format().majorVersion())
                               .arg(m_context.format().minorVersion()));
+    installGlDebugLogger();
     m_renderer = std::make_unique<Renderer>(m_gl);
 }
 

@@ -1,34 +1,22 @@
 #include "DepthPass.h"
 
-#include <QOpenGLContext>
-
-// Core in GL 4.5; the 3.3 headers may not name them.
-#ifndef GL_NEGATIVE_ONE_TO_ONE
-#define GL_NEGATIVE_ONE_TO_ONE 0x935E
-#endif
-#ifndef GL_ZERO_TO_ONE
-#define GL_ZERO_TO_ONE 0x935F
-#endif
+#include "PassState.h"
 
 namespace shadowlab {
 
 DepthPass::DepthPass(GlFunctions* gl)
     : m_gl(gl), m_program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), {}),
       m_mvpLocation(m_program.uniform("uLightModelViewProjection"))
+    , m_reversedDepth(hasClipControl())
 {
-    QOpenGLContext* context = QOpenGLContext::currentContext();
-    const QSurfaceFormat format = context ? context->format() : QSurfaceFormat();
-    const bool core45 = format.version() >= qMakePair(4, 5);
-    if (context && (core45 || context->hasExtension(QByteArrayLiteral("GL_ARB_clip_control"))))
-        m_clipControl = reinterpret_cast<decltype(m_clipControl)>(context->getProcAddress("glClipControl"));
 }
 
 void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
 {
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
-    m_gl->glViewport(0, 0, map.size(), map.size());
-    resetPassState(m_gl);
-    m_gl->glDepthMask(GL_TRUE);
+    PassState state;
+    state.viewport = QRect(0, 0, map.size(), map.size());
+    applyPassState(m_gl, state);
     m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     m_gl->glClearDepth(1.0);
@@ -38,29 +26,22 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
     clear(map, reversed);
-    m_gl->glEnable(GL_DEPTH_TEST);
-    if (reversed)
-        m_clipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    m_gl->glDepthFunc(reversed ? GL_GREATER : GL_LESS);
-
+    PassState state;
+    state.viewport = QRect(0, 0, map.size(), map.size());
+    state.depthTest = true;
+    state.depthFunc = reversed ? GL_GREATER : GL_LESS;
+    state.zeroToOneDepth = reversed;
     // The fitted near plane is the nearest receiver, not the nearest caster: casters between
     // the light and the near plane still cast, so clamp their depth to the near plane instead
     // of clipping them away (a perspective light's side planes still clip what is behind it).
     const bool clampDepth = true;
-    m_gl->glEnable(GL_DEPTH_CLAMP);
-    if (bias.cullFront) {
-        m_gl->glEnable(GL_CULL_FACE);
-        m_gl->glCullFace(GL_FRONT);
-    } else {
-        m_gl->glDisable(GL_CULL_FACE);
-    }
-    const bool offset = bias.polygonFactor != 0.0 || bias.polygonUnits != 0.0;
-    if (offset) {
-        m_gl->glEnable(GL_POLYGON_OFFSET_FILL);
-        // Offsets push depth away from the light, which is downward with reversed depth.
-        const float sign = reversed ? -1.0f : 1.0f;
-        m_gl->glPolygonOffset(sign * float(bias.polygonFactor), sign * float(bias.polygonUnits));
-    }
+    state.depthClamp = clampDepth;
+    state.cullFace = bias.cullFront ? GL_FRONT : GL_NONE;
+    // Offsets push depth away from the light, which is downward with reversed depth.
+    const float sign = reversed ? -1.0f : 1.0f;
+    state.polygonOffsetFactor = sign * float(bias.polygonFactor);
+    state.polygonOffsetUnits = sign * float(bias.polygonUnits);
+    applyPassState(m_gl, state);
 
     m_program.bind();
     int draws = 0;
@@ -75,15 +56,8 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
     }
 
     m_gl->glBindVertexArray(0);
-    if (offset)
-        m_gl->glDisable(GL_POLYGON_OFFSET_FILL);
-    m_gl->glDisable(GL_CULL_FACE);
-    m_gl->glCullFace(GL_BACK);
-    m_gl->glDisable(GL_DEPTH_CLAMP);
-    if (reversed) {
-        m_clipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
-        m_gl->glDepthFunc(GL_LESS);
-    }
+    // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.
+    applyPassState(m_gl, PassState{});
     return draws;
 }
 

@@ -17,7 +17,7 @@ public:
     explicit DepthPass(GlFunctions* gl);
 
     // Whether render() accepts frames with LightFrame::reversedDepth.
-    bool supportsReversedDepth() const { return m_clipControl != nullptr; }
+    bool supportsReversedDepth() const { return m_reversedDepth; }
 
     // Clears the map to the far depth: every lookup compares lit.
     void clear(const ShadowMap& map, bool reversedDepth);
@@ -28,7 +28,7 @@ private:
     GlFunctions* m_gl;
     ShaderProgram m_program;
     GLint m_mvpLocation;
-    void (QOPENGLF_APIENTRYP m_clipControl)(GLenum origin, GLenum depth) = nullptr;
+    bool m_reversedDepth = false;
 };
 
 } // namespace shadowlab

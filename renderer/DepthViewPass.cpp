@@ -1,5 +1,7 @@
 #include "DepthViewPass.h"
 
+#include "PassState.h"
+
 namespace shadowlab {
 
 DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
@@ -23,6 +25,10 @@ DepthViewPass::DepthViewPass(GlFunctions* gl)
     m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     m_gl->glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    labelGlObject(GlLabelKind::Sampler, s, QStringLiteral("depth view: raw depth"));
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    labelGlObject(GlLabelKind::VertexArray, m_emptyVertexArray.id(), QStringLiteral("depth view: no attributes"));
+    m_gl->glBindVertexArray(0);
 }
 
 void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible)
@@ -39,10 +45,9 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
     Program& p = *variant;
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    m_gl->glViewport(0, 0, target.size.width(), target.size.height());
-    resetPassState(m_gl);
-    m_gl->glDisable(GL_DEPTH_TEST);
-    m_gl->glDisable(GL_CULL_FACE);
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    applyPassState(m_gl, state);
 
     p.program.bind();
     p.program.set(p.depth, 0);

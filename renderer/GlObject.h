@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QOpenGLFunctions_3_3_Core>
+#include <QString>
 
 #include <utility>
 
@@ -60,15 +61,12 @@ Object makeGlObject(GlFunctions* gl)
     return Object(gl, id);
 }
 
-// State a pass relies on but does not otherwise set, reset at the start of every pass: a widget
-// that also paints with QPainter, or a caller's own drawing, may leave any of it changed.
-inline void resetPassState(GlFunctions* gl)
-{
-    gl->glDisable(GL_BLEND);
-    gl->glDisable(GL_SCISSOR_TEST);
-    gl->glDisable(GL_STENCIL_TEST);
-    gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-}
+enum class GlLabelKind { Buffer, Framebuffer, Program, Query, Sampler, Texture, VertexArray };
+
+// Names a GL object for debuggers and driver messages (glObjectLabel) where the context has
+// KHR_debug or GL 4.3, and does nothing elsewhere. Buffers, textures, vertex arrays,
+// framebuffers and queries exist only once bound (or begun): label them after that.
+void labelGlObject(GlLabelKind kind, GLuint id, const QString& label);
 
 inline GlBuffer makeBuffer(GlFunctions* gl) { return makeGlObject<GlBuffer, &GlFunctions::glGenBuffers>(gl); }
 inline GlVertexArray makeVertexArray(GlFunctions* gl) { return makeGlObject<GlVertexArray, &GlFunctions::glGenVertexArrays>(gl); }

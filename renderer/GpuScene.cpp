@@ -24,6 +24,10 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(s
         gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
         gl->glEnableVertexAttribArray(2);
         gl->glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+        const QString name = QStringLiteral("%1 mesh %2").arg(m_scene.name).arg(m_meshes.size());
+        labelGlObject(GlLabelKind::VertexArray, g.vertexArray.id(), name);
+        labelGlObject(GlLabelKind::Buffer, g.vertices.id(), name + QStringLiteral(": vertices"));
+        labelGlObject(GlLabelKind::Buffer, g.indices.id(), name + QStringLiteral(": indices"));
         m_meshes.push_back(std::move(g));
     }
     gl->glBindVertexArray(0);
@@ -38,6 +42,8 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(s
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        labelGlObject(GlLabelKind::Texture, texture.id(),
+                      kind == TextureKind::Checker ? QStringLiteral("checker texture") : QStringLiteral("wood texture"));
         m_textures[std::size_t(kind)] = std::move(texture);
     }
     gl->glBindTexture(GL_TEXTURE_2D, 0);

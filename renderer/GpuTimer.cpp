@@ -14,6 +14,10 @@ void GpuTimer::begin()
         m_pending[std::size_t(next)] = false;
     }
     m_gl->glBeginQuery(GL_TIME_ELAPSED, m_queries[std::size_t(next)].id());
+    if (!m_labelled[std::size_t(next)]) {    // a query exists only once begun
+        labelGlObject(GlLabelKind::Query, m_queries[std::size_t(next)].id(), QStringLiteral("pass timer %1").arg(next));
+        m_labelled[std::size_t(next)] = true;
+    }
     m_last = next;
 }
 

@@ -23,6 +23,7 @@ private:
     GlFunctions* m_gl;
     std::array<GlQuery, 2> m_queries;
     std::array<bool, 2> m_pending{false, false};
+    std::array<bool, 2> m_labelled{false, false};
     int m_last = -1;
 };
 

@@ -1,5 +1,7 @@
 #include "LightGizmoPass.h"
 
+#include "PassState.h"
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -32,6 +34,8 @@ LightGizmoPass::LightGizmoPass(GlFunctions* gl)
     m_gl->glEnableVertexAttribArray(1);
     m_gl->glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
                                 reinterpret_cast<const void*>(offsetof(LineVertex, color)));
+    labelGlObject(GlLabelKind::VertexArray, m_vertexArray.id(), QStringLiteral("light gizmo"));
+    labelGlObject(GlLabelKind::Buffer, m_vertices.id(), QStringLiteral("light gizmo: lines"));
     m_gl->glBindVertexArray(0);
     m_gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -77,7 +81,6 @@ void LightGizmoPass::render(const LightFrame& light, const CameraFrame& camera, 
     }
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    m_gl->glViewport(0, 0, target.size.width(), target.size.height());
     m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_vertices.id());
     m_gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m_lines.size() * sizeof(LineVertex)), m_lines.data(), GL_STREAM_DRAW);
     m_gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -85,24 +88,31 @@ void LightGizmoPass::render(const LightFrame& light, const CameraFrame& camera, 
     m_program.bind();
     m_program.set(m_viewProjection, glm::mat4(camera.viewProjection));
     m_gl->glBindVertexArray(m_vertexArray.id());
-    m_gl->glEnable(GL_BLEND);
-    m_gl->glEnable(GL_DEPTH_TEST);
-    m_gl->glDepthMask(GL_FALSE);
 
     // Hidden parts first at a fixed faint alpha, then the visible ones at their own. The
     // target's alpha stays 1: a widget's framebuffer is composited as premultiplied colour.
-    m_gl->glDepthFunc(GL_GREATER);
-    m_gl->glBlendFuncSeparate(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_ZERO, GL_ONE);
-    m_gl->glBlendColor(0.0f, 0.0f, 0.0f, kHiddenAlpha);
+    PassState hidden;
+    hidden.viewport = QRect(QPoint(0, 0), target.size);
+    hidden.depthTest = true;
+    hidden.depthWrite = false;
+    hidden.depthFunc = GL_GREATER;
+    hidden.blend = true;
+    hidden.blendSourceRgb = GL_CONSTANT_ALPHA;
+    hidden.blendDestinationRgb = GL_ONE_MINUS_CONSTANT_ALPHA;
+    hidden.blendSourceAlpha = GL_ZERO;
+    hidden.blendDestinationAlpha = GL_ONE;
+    hidden.blendConstantAlpha = kHiddenAlpha;
+    applyPassState(m_gl, hidden);
     m_gl->glDrawArrays(GL_LINES, 0, GLsizei(m_lines.size()));
-    m_gl->glDepthFunc(GL_LEQUAL);
-    m_gl->glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    PassState visible = hidden;
+    visible.depthFunc = GL_LEQUAL;
+    visible.blendSourceRgb = GL_SRC_ALPHA;
+    visible.blendDestinationRgb = GL_ONE_MINUS_SRC_ALPHA;
+    applyPassState(m_gl, visible);
     m_gl->glDrawArrays(GL_LINES, 0, GLsizei(m_lines.size()));
 
     m_gl->glBindVertexArray(0);
-    m_gl->glDepthMask(GL_TRUE);
-    m_gl->glDepthFunc(GL_LESS);
-    m_gl->glDisable(GL_BLEND);
+    applyPassState(m_gl, PassState{});
 }
 
 } // namespace shadowlab

@@ -1,5 +1,10 @@
 #include "LitPass.h"
 
+#include "PassState.h"
+#include "RenderError.h"
+#include "SettingsKeys.h"
+#include "ShadowTechnique.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -26,6 +31,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
       shadowMap(program.uniform("uShadowMap")),
+      shadowDepth(program.uniform("uShadowDepth")),
       shadowTexel(program.uniform("uShadowTexel")),
       lightPosition(program.uniform("uLightPosition")),
       lightDirection(program.uniform("uLightDirection")),
@@ -34,28 +40,21 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 {
 }
 
+GLint LitPass::Program::techniqueUniform(const QByteArray& name)
+{
+    auto it = techniqueUniforms.find(name);
+    if (it == techniqueUniforms.end())
+        it = techniqueUniforms.emplace(name, program.uniform(name.constData())).first;
+    return it->second;
+}
+
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
 QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth)
 {
     QStringList defines;
-    switch (settings.filter.mode) {
-    case FilterMode::Hard:
-        defines << QStringLiteral("FILTER_HARD");
-        break;
-    case FilterMode::Pcf:
-        defines << QStringLiteral("FILTER_PCF") << QStringLiteral("PCF_KERNEL %1").arg(settings.filter.kernel);
-        break;
-    case FilterMode::PcfDither4:
-        defines << QStringLiteral("FILTER_PCF_DITHER4");
-        break;
-    case FilterMode::Pcf64:
-        defines << QStringLiteral("FILTER_PCF64");
-        break;
-    case FilterMode::HwBilinear:
-        defines << QStringLiteral("FILTER_HW_BILINEAR");
-        break;
-    }
+    const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
+    defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
     if (settings.shadow.enabled)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
@@ -86,16 +85,17 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bo
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
                     const ShadowMap* map, const RenderTarget& target, bool measure)
 {
+    if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments)
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which this renderer does not build yet")
+                              .arg(toString(settings.filter.mode)));
     Program& p = programFor(settings, measure, light.reversedDepth);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    m_gl->glViewport(0, 0, target.size.width(), target.size.height());
-    resetPassState(m_gl);
-    m_gl->glEnable(GL_DEPTH_TEST);
-    m_gl->glDepthFunc(GL_LESS);
-    m_gl->glDepthMask(GL_TRUE);
-    m_gl->glEnable(GL_CULL_FACE);
-    m_gl->glCullFace(GL_BACK);
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.depthTest = true;
+    state.cullFace = GL_BACK;
+    applyPassState(m_gl, state);
     m_gl->glClearColor(0.11f, 0.12f, 0.15f, 1.0f);
     m_gl->glClearDepth(1.0);
     m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -107,7 +107,6 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
 
     p.program.bind();
     p.program.set(p.diffuse, int(kDiffuseUnit));
-    p.program.set(p.shadowMap, int(kShadowUnit));
     // Camera-relative: differences of large coordinates are taken in double here, not in float
     // on the GPU.
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
@@ -122,12 +121,20 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         const double biasScale = settings.bias.space == BiasSpace::Texel ? texel : 1.0;
         p.program.set(p.biasSlope, float(settings.bias.slope * biasScale));
         p.program.set(p.biasMin, float(settings.bias.min * biasScale));
+        for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
+            p.program.set(p.techniqueUniform(u.name), u.value);
         p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
         p.program.set(p.normalOffset, float(settings.bias.normal * texel));
         p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
-        m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
-        m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
-        m_gl->glBindSampler(kShadowUnit, map->compareSampler(settings.filter.mode == FilterMode::HwBilinear));
+        // Each sampler the technique's row asks for reads the map on a unit of its own.
+        const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+        for (std::size_t i = 0; i < samplers.size(); ++i) {
+            const GLuint unit = kShadowUnit + GLuint(i);
+            p.program.set(samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap, int(unit));
+            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+            m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
+            m_gl->glBindSampler(unit, map->sampler(samplers[i]));
+        }
     }
     m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
 
@@ -159,9 +166,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (shadows) {
-        m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit);
-        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-        m_gl->glBindSampler(kShadowUnit, 0);
+        for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size(); ++i) {
+            m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit + GLuint(i));
+            m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+            m_gl->glBindSampler(kShadowUnit + GLuint(i), 0);
+        }
         m_gl->glActiveTexture(GL_TEXTURE0);
     }
     m_gl->glDisable(GL_CULL_FACE);

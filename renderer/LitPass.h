@@ -35,8 +35,10 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, shadowMap, shadowTexel;
+        GLint diffuse, shadowMap, shadowDepth, shadowTexel;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
+        std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
+        GLint techniqueUniform(const QByteArray& name);
     };
 
     Program& programFor(const Settings& settings, bool measure, bool reversedDepth);

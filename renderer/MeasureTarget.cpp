@@ -8,10 +8,11 @@ namespace shadowlab {
 
 namespace {
 
-GlTexture makeAttachment(GlFunctions* gl, GLenum internalFormat, GLenum format, GLenum type, QSize size)
+GlTexture makeAttachment(GlFunctions* gl, GLenum internalFormat, GLenum format, GLenum type, QSize size, const char* name)
 {
     GlTexture texture = makeTexture(gl);
     gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("measurement: %1").arg(QLatin1String(name)));
     gl->glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), size.width(), size.height(), 0, format, type, nullptr);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -36,11 +37,12 @@ RenderTarget MeasureTarget::ensure(QSize size)
     if (m_framebuffer && size == m_size)
         return {m_framebuffer.id(), m_size};
     GlFramebuffer framebuffer = makeFramebuffer(m_gl);
-    GlTexture color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size);
-    GlTexture position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
-    GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size);
-    GlTexture depth = makeAttachment(m_gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, size);
+    GlTexture color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size, "colour");
+    GlTexture position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "position, visibility");
+    GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "normal, mask");
+    GlTexture depth = makeAttachment(m_gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, size, "depth");
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    labelGlObject(GlLabelKind::Framebuffer, framebuffer.id(), QStringLiteral("measurement"));
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, position.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal.id(), 0);

@@ -22,19 +22,33 @@ QByteArray readResource(const QString& file, const QString& includedFrom)
     return f.readAll();
 }
 
-QByteArray expandIncludes(const QString& file, const QString& includedFrom, int depth)
+// The file a `#include NAME` line names through a define `NAME "file"` (the variant picks it).
+QString includedByDefine(const QString& name, const QStringList& defines, const QString& file)
+{
+    static const QRegularExpression define(QStringLiteral(R"re(^(\w+)\s+"([^"]+)"$)re"));
+    for (const QString& d : defines) {
+        const QRegularExpressionMatch m = define.match(d);
+        if (m.hasMatch() && m.captured(1) == name)
+            return m.captured(2);
+    }
+    throw RenderError(QStringLiteral("'%1' includes %2, which the variant does not define as a file").arg(file, name));
+}
+
+QByteArray expandIncludes(const QString& file, const QString& includedFrom, const QStringList& defines, int depth)
 {
     if (depth > 8)
         throw RenderError(QStringLiteral("shader includes nest too deep at '%1' (a cycle?)").arg(file));
-    static const QRegularExpression include(QStringLiteral(R"re(^\s*#include\s+"([^"]+)"\s*$)re"));
+    static const QRegularExpression include(QStringLiteral(R"re(^\s*#include\s+(?:"([^"]+)"|(\w+))\s*$)re"));
     QByteArray out;
     const QList<QByteArray> lines = readResource(file, includedFrom).split('\n');
     for (const QByteArray& line : lines) {
         const QRegularExpressionMatch m = include.match(QString::fromUtf8(line));
-        if (m.hasMatch())
-            out += expandIncludes(m.captured(1), file, depth + 1);
-        else
+        if (m.hasMatch()) {
+            const QString included = m.captured(1).isEmpty() ? includedByDefine(m.captured(2), defines, file) : m.captured(1);
+            out += expandIncludes(included, file, defines, depth + 1);
+        } else {
             out += line + '\n';
+        }
     }
     return out;
 }
@@ -44,9 +58,11 @@ QByteArray expandIncludes(const QString& file, const QString& includedFrom, int 
 QByteArray loadShaderSource(const QString& file, const QStringList& defines)
 {
     QByteArray source = "#version 330 core\n";
-    for (const QString& define : defines)
-        source += "#define " + define.toUtf8() + '\n';
-    return source + expandIncludes(file, QString(), 0);
+    for (const QString& define : defines) {
+        if (!define.endsWith(QLatin1Char('"')))    // file names are for #include, not for GLSL
+            source += "#define " + define.toUtf8() + '\n';
+    }
+    return source + expandIncludes(file, QString(), defines, 0);
 }
 
 ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines)
@@ -59,6 +75,7 @@ ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const Q
         throw RenderError(QStringLiteral("%1%2 does not compile:\n%3").arg(fragmentFile, variant, m_program->log()));
     if (!m_program->link())
         throw RenderError(QStringLiteral("%1 + %2%3 do not link:\n%4").arg(vertexFile, fragmentFile, variant, m_program->log()));
+    labelGlObject(GlLabelKind::Program, m_program->programId(), vertexFile + QStringLiteral(" + ") + fragmentFile + variant);
 }
 
 GLint ShaderProgram::uniform(const char* name) const

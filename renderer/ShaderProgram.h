@@ -14,8 +14,9 @@
 
 namespace shadowlab {
 
-// Reads a shader from the :/shaders resource, expanding `#include "file"` lines, and puts
-// `#version 330 core` and one `#define` per entry of `defines` in front ("NAME" or "NAME VALUE").
+// Reads a shader from the :/shaders resource, expanding `#include "file"` lines and
+// `#include NAME` lines whose file an entry `NAME "file"` of `defines` names, and puts
+// `#version 330 core` and one `#define` per other entry in front ("NAME" or "NAME VALUE").
 // Throws RenderError naming the file when it or an include is missing.
 QByteArray loadShaderSource(const QString& file, const QStringList& defines);
 

@@ -29,6 +29,9 @@ ShadowMap::ShadowMap(GlFunctions* gl)
     configureSampler(gl, m_compareNearest.id(), GL_NEAREST, true, false);
     configureSampler(gl, m_compareLinear.id(), GL_LINEAR, true, false);
     configureSampler(gl, m_raw.id(), GL_NEAREST, false, false);
+    labelGlObject(GlLabelKind::Sampler, m_compareNearest.id(), QStringLiteral("shadow map: compare nearest"));
+    labelGlObject(GlLabelKind::Sampler, m_compareLinear.id(), QStringLiteral("shadow map: compare linear"));
+    labelGlObject(GlLabelKind::Sampler, m_raw.id(), QStringLiteral("shadow map: raw depth"));
 }
 
 void ShadowMap::ensure(int size, DepthFormat format, bool reversedDepth)
@@ -41,6 +44,19 @@ void ShadowMap::ensure(int size, DepthFormat format, bool reversedDepth)
         configureSampler(m_gl, m_raw.id(), GL_NEAREST, false, reversedDepth);
         m_reversedDepth = reversedDepth;
     }
+}
+
+GLuint ShadowMap::sampler(ShadowSampler kind) const
+{
+    switch (kind) {
+    case ShadowSampler::CompareNearest:
+        return m_compareNearest.id();
+    case ShadowSampler::CompareLinear:
+        return m_compareLinear.id();
+    case ShadowSampler::RawNearest:
+        return m_raw.id();
+    }
+    return 0;
 }
 
 void ShadowMap::allocate(int size, DepthFormat format)
@@ -62,6 +78,7 @@ void ShadowMap::allocate(int size, DepthFormat format)
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("shadow map %1² %2").arg(size).arg(toString(format)));
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (const GLenum error = m_gl->glGetError(); error != GL_NO_ERROR) {
         throw RenderError(QStringLiteral("the driver cannot allocate a %1 x %1 %2 shadow map (GL error 0x%3); choose a smaller map.size")
@@ -78,6 +95,7 @@ void ShadowMap::allocate(int size, DepthFormat format)
     m_gl->glDrawBuffer(GL_NONE);
     m_gl->glReadBuffer(GL_NONE);
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    labelGlObject(GlLabelKind::Framebuffer, framebuffer.id(), QStringLiteral("shadow pass"));
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         throw RenderError(QStringLiteral("the %1 x %1 %2 shadow-map framebuffer is incomplete (status 0x%3)")

@@ -2,14 +2,15 @@
 
 #include "GlObject.h"
 #include "Settings.h"
+#include "ShadowTechnique.h"
 
 namespace shadowlab {
 
 // The light's depth texture and the framebuffer that renders into it. Border-clamped with a
 // border depth at the far end (1.0, or 0.0 with reversed depth, which also compares GEQUAL),
-// so lookups outside the map compare as lit. Two sampler objects read
-// the same texture: a comparison sampler for the lit pass (nearest or linear) and a raw one
-// for the depth-map view.
+// so lookups outside the map compare as lit. Three sampler objects
+// read the same texture, one per ShadowSampler a technique may ask for: comparison nearest,
+// comparison linear, and raw depth (nearest).
 class ShadowMap {
 public:
     explicit ShadowMap(GlFunctions* gl);
@@ -24,8 +25,8 @@ public:
     bool reversedDepth() const { return m_reversedDepth; }
     GLuint texture() const { return m_texture.id(); }
     GLuint framebuffer() const { return m_framebuffer.id(); }
-    GLuint compareSampler(bool linear) const { return linear ? m_compareLinear.id() : m_compareNearest.id(); }
-    GLuint rawSampler() const { return m_raw.id(); }
+    // The sampler object a technique's row asks for (ShadowTechnique::samplers).
+    GLuint sampler(ShadowSampler kind) const;
 
 private:
     void allocate(int size, DepthFormat format);

@@ -4,6 +4,7 @@
 #include "AccuracyMeter.h"
 #include "Application.h"
 #include "HeadlessRenderer.h"
+#include "Measurement.h"
 #include "SceneLibrary.h"
 #include "SettingsKeys.h"
 
@@ -114,7 +115,7 @@ private Q_SLOTS:
         double previous = 1.0;
         for (int mapSize : {64, 256, 1024, 4096}) {
             const Settings s = presetWith("occluder", {"filter.mode=hard", QString("map.size=%1").arg(mapSize)});
-            const AccuracyResult r = meter.measure(headless.renderer(), s, QSize(320, 240));
+            const AccuracyResult r = measureAccuracy(meter, headless.renderer(), s, QSize(320, 240));
             qInfo("map %4d: misclassified %.3f%% (false shadow %.3f%%, false light %.3f%%)", mapSize, 100 * r.hard.misclassified,
                   100 * r.hard.falseShadow, 100 * r.hard.falseLight);
             QVERIFY2(r.hard.misclassified < previous, qPrintable(QString("map %1 did not improve").arg(mapSize)));
@@ -130,11 +131,11 @@ private Q_SLOTS:
         AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
         const QSize size(320, 180);
         // The classic demonstration: the whole plane in the map (a manual volume), no bias.
-        const AccuracyResult acne = meter.measure(headless.renderer(), presetWith("seed", {"light.fit=manual", "bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"light.fit=manual", "bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
         // Fitted, the map holds only what a caster can shadow: acne stays near the casters.
-        const AccuracyResult fittedAcne = meter.measure(headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
-        const AccuracyResult defaults = meter.measure(headless.renderer(), presetSettings("seed"), size);
-        const AccuracyResult panning = meter.measure(headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.min=1", "filter.mode=hard"}), size);
+        const AccuracyResult fittedAcne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult defaults = measureAccuracy(meter, headless.renderer(), presetSettings("seed"), size);
+        const AccuracyResult panning = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.min=1", "filter.mode=hard"}), size);
         qInfo("no bias: false shadow %.2f%%, false light %.2f%%", 100 * acne.hard.falseShadow, 100 * acne.hard.falseLight);
         qInfo("defaults: false shadow %.2f%%, false light %.2f%%", 100 * defaults.hard.falseShadow, 100 * defaults.hard.falseLight);
         qInfo("min bias 1 world unit: false shadow %.2f%%, false light %.2f%%", 100 * panning.hard.falseShadow, 100 * panning.hard.falseLight);
@@ -152,8 +153,8 @@ private Q_SLOTS:
         HeadlessRenderer headless;
         AccuracyMeter meter(ReferenceOptions{true, 0.25, 8});
         const QSize size(160, 120);
-        const AccuracyResult hard = meter.measure(headless.renderer(), presetWith("occluder", {"filter.mode=hard"}), size);
-        const AccuracyResult pcf = meter.measure(headless.renderer(), presetWith("occluder", {"filter.mode=pcf64", "map.size=512"}), size);
+        const AccuracyResult hard = measureAccuracy(meter, headless.renderer(), presetWith("occluder", {"filter.mode=hard"}), size);
+        const AccuracyResult pcf = measureAccuracy(meter, headless.renderer(), presetWith("occluder", {"filter.mode=pcf64", "map.size=512"}), size);
         QVERIFY(!hard.referenceReused);
         QVERIFY(pcf.referenceReused);
         QCOMPARE(meter.referenceComputations(), 1);

@@ -3,6 +3,7 @@
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 #include <QJsonDocument>
 #include <QTemporaryDir>
@@ -209,6 +210,48 @@ private Q_SLOTS:
             QCOMPARE(e.key(), QString("filter.kernel"));
             QVERIFY(QString(e.what()).contains("bad.json"));
         }
+    }
+
+    // The technique table is what filter.mode offers, in FilterMode order; every parameter a
+    // technique reads is a key; every sweep variation is valid and selects its technique.
+    void techniqueTableDrivesTheKeys()
+    {
+        const SettingKey* mode = findSettingKey("filter.mode");
+        QVERIFY(mode);
+        QCOMPARE(mode->choices.size(), qsizetype(shadowTechniques().size()));
+        for (std::size_t i = 0; i < shadowTechniques().size(); ++i) {
+            const ShadowTechnique& t = shadowTechniques()[i];
+            QCOMPARE(int(t.mode), int(i));
+            QCOMPARE(mode->choices[qsizetype(i)], t.key);
+            QCOMPARE(toString(t.mode), t.key);
+            QVERIFY2(mode->help.contains(t.key), qPrintable(t.key));
+            QCOMPARE(t.shaderFile, QStringLiteral("shadow/%1.glsl").arg(t.key));
+            QVERIFY(!t.samplers.empty());
+            QVERIFY(!t.label.isEmpty() && !t.help.isEmpty());
+            for (const QString& parameter : t.parameters)
+                QVERIFY2(findSettingKey(parameter), qPrintable(parameter));
+            QVERIFY2(!t.sweep.empty(), qPrintable(t.key));
+            for (const TechniqueVariation& v : t.sweep) {
+                Settings s;
+                for (const QString& assignment : v.assignments)
+                    applyAssignment(s, assignment);
+                ensureValid(s);
+                QCOMPARE(int(s.filter.mode), int(t.mode));
+            }
+        }
+        for (const TechniqueParameter& p : techniqueParameters()) {
+            const SettingKey* key = findSettingKey(p.key);
+            QVERIFY2(key, qPrintable(p.key));
+            QCOMPARE(key->minimum, p.minimum);
+            QCOMPARE(key->maximum, p.maximum);
+        }
+        Settings pcf;
+        applyAssignment(pcf, "filter.mode=pcf");
+        applyAssignment(pcf, "filter.kernel=5");
+        QCOMPARE(filterLabel(pcf.filter), QStringLiteral("pcf 5×5"));
+        QVERIFY(usesParameter(pcf.filter, "filter.kernel"));
+        applyAssignment(pcf, "filter.mode=hard");
+        QVERIFY(!usesParameter(pcf.filter, "filter.kernel"));
     }
 };
 

@@ -3,10 +3,13 @@
 // lit, acne appears without bias and not with the defaults, filters soften the edge.
 #include "Application.h"
 #include "HeadlessRenderer.h"
+#include "LitPass.h"
 #include "RenderProbe.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShaderProgram.h"
+#include "ShadowTechnique.h"
 
 #include <QtTest>
 
@@ -211,6 +214,20 @@ private Q_SLOTS:
         QVERIFY(a.shadowExpected >= 20);
         QVERIFY2(a.shadowWrong <= a.shadowExpected / 50, qPrintable(QString("%1 of %2").arg(a.shadowWrong).arg(a.shadowExpected)));
         QVERIFY2(a.litWrong <= a.litExpected / 100, qPrintable(QString("%1 of %2").arg(a.litWrong).arg(a.litExpected)));
+    }
+
+    // Each row of the technique table brings its own GLSL file into the lit pass, and the
+    // file name stays out of the GLSL (whose preprocessor knows no strings).
+    void eachTechniqueIncludesItsOwnFile()
+    {
+        for (const ShadowTechnique& t : shadowTechniques()) {
+            Settings s = presetSettings("seed");
+            s.filter.mode = t.mode;
+            const QByteArray source = loadShaderSource(QStringLiteral("lit.frag"), LitPass::variantDefines(s));
+            QCOMPARE(source.count("\nfloat filterShadow("), qsizetype(1));
+            QVERIFY2(!source.contains("#include"), qPrintable(t.key));
+            QVERIFY2(!source.contains('"'), qPrintable(t.key));
+        }
     }
 
     void noBiasShowsAcneAndTheDefaultsDoNot()

@@ -1,8 +1,10 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
+#include "Measurement.h"
 #include "SampleStats.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 #include <QJsonArray>
 #include <memory>
@@ -44,30 +46,26 @@ Settings tutorialSettings(Settings s)
     return s;
 }
 
-// Frames of all phases are interleaved (one of each in turn, each phase on its own context),
-// so a slow spell of a shared machine hits every phase alike and their ratio stays fair.
+// Each phase on its own context, timed by the one interleaved loop so a slow spell of a
+// shared machine hits every phase alike and their ratio stays fair.
 void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int frames)
 {
-    for (int i = 0; i < warmup + frames; ++i) {
-        for (Phase& p : phases) {
-            if (p.moving)
-                p.headless->renderer().invalidateShadowMap();
-            p.headless->renderFrame(p.settings, size, TimingMode::Finish);
-            if (i < warmup)
-                continue;
-            const FrameStats& f = p.headless->renderer().lastFrame();
-            p.last = f;
-            p.fit = p.headless->renderer().lastFit();
-            if (f.shadowPassRendered) {
-                p.shadow.push_back(f.shadowPassMs);
-                p.shadowWall.push_back(f.shadowPassWallMs);
-                ++p.shadowPassesRun;
-                p.shadowDraws = f.shadowDraws;
-            }
-            p.lit.push_back(f.litPassMs);
-            p.litWall.push_back(f.litPassWallMs);
-            p.wall.push_back(f.frameWallMs);
-        }
+    std::vector<TimedRun> runs;
+    for (Phase& p : phases)
+        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}});
+    timeInterleaved(runs, size, warmup, frames);
+    for (std::size_t i = 0; i < phases.size(); ++i) {
+        Phase& p = phases[i];
+        FrameSamples& s = runs[i].samples;
+        p.shadow = std::move(s.shadow);
+        p.lit = std::move(s.lit);
+        p.shadowWall = std::move(s.shadowWall);
+        p.litWall = std::move(s.litWall);
+        p.wall = std::move(s.wall);
+        p.shadowPassesRun = s.shadowPassesRun;
+        p.shadowDraws = s.shadowDraws;
+        p.last = s.last;
+        p.fit = p.headless->renderer().lastFit();
     }
 }
 
@@ -133,9 +131,7 @@ int runBench(const QStringList& arguments)
                      tutorialSettings(settings), true);
         runInterleaved(phases, size, warmup, frames);
         const QString rendererString = phases.front().headless->renderer().rendererString();
-        const QString filter = settings.filter.mode == FilterMode::Pcf
-                                   ? QStringLiteral("pcf %1x%1").arg(settings.filter.kernel)
-                                   : toString(settings.filter.mode);
+        const QString filter = filterLabel(settings.filter);
         const QString summary = QStringLiteral("scene %1, %2x%3, map %4x%4 %5, filter %6, bias slope %7 min %8")
                                     .arg(settings.scene)
                                     .arg(size.width())

@@ -1,9 +1,12 @@
 #include "CliSupport.h"
 
+#include "IoError.h"
+#include "Limits.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "TraceError.h"
 
 #include <QFile>
 #include <QJsonDocument>
@@ -114,8 +117,8 @@ QSize parseSize(const QString& text, const QString& option)
     const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
     if (!okW || !okH)
         throw UsageError(QStringLiteral("--%1: '%2' is not a size; write WIDTHxHEIGHT, e.g. 1280x720").arg(option, text));
-    if (w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw UsageError(QStringLiteral("--%1: %2 is out of range; width and height must be in [1, 16384]").arg(option, text));
+    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        throw UsageError(QStringLiteral("--%1: %2 is out of range; width and height must be in [1, %3]").arg(option, text).arg(kMaxImageSide));
     return {w, h};
 }
 
@@ -139,6 +142,12 @@ int guarded(const QString& command, const std::function<int()>& body)
         err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
         return kExitBadInput;
     } catch (const RenderError& e) {
+        err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
+        return kExitFailure;
+    } catch (const IoError& e) {
+        err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
+        return kExitFailure;
+    } catch (const TraceError& e) {
         err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
         return kExitFailure;
     }

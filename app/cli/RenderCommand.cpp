@@ -1,6 +1,7 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
+#include "IoError.h"
 #include "RenderError.h"
 
 #include <QFileInfo>
@@ -12,7 +13,7 @@ namespace {
 void save(const QImage& image, const QString& path)
 {
     if (!image.save(path, "PNG"))
-        throw RenderError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
+        throw IoError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
     out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << image.width() << "x" << image.height() << ")" << Qt::endl;
 }
 

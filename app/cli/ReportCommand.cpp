@@ -2,6 +2,7 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
+#include "Measurement.h"
 #include "ReportSweep.h"
 #include "ReportWriter.h"
 
@@ -87,7 +88,7 @@ int runReport(const QStringList& arguments)
         for (std::size_t c = 0; c < sweep.size(); ++c) {
             const double start = accuracyShare * double(c) / sweep.size(), step = accuracyShare / sweep.size();
             ReportRow row{sweep[c].label, sweep[c].assignments, {}, {}, {}, {}, false};
-            row.accuracy = meter.measure(headless.renderer(), configurations[c], size,
+            row.accuracy = measureAccuracy(meter, headless.renderer(), configurations[c], size,
                                          [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
             printFitWarnings(headless.renderer().lastFit(), sweep[c].label);
             if (row.accuracy.raysPerSecond > 0.0)
@@ -99,25 +100,15 @@ int runReport(const QStringList& arguments)
         // lands on every configuration alike. The shadow pass runs every frame. Each measured
         // frame follows an unmeasured one of the same configuration, so the switch from the
         // previous configuration (a shadow map of another size to allocate) is not timed.
-        std::vector<std::vector<double>> shadow(sweep.size()), lit(sweep.size()), frame(sweep.size());
-        for (int i = 0; i < warmup + frames; ++i) {
-            for (std::size_t c = 0; c < sweep.size(); ++c) {
-                headless.renderFrame(configurations[c], size, TimingMode::Finish);
-                headless.renderer().invalidateShadowMap();
-                headless.renderFrame(configurations[c], size, TimingMode::Finish);
-                if (i < warmup)
-                    continue;
-                const FrameStats& f = headless.renderer().lastFrame();
-                shadow[c].push_back(f.shadowPassWallMs);
-                lit[c].push_back(f.litPassWallMs);
-                frame[c].push_back(f.frameWallMs);
-            }
-            progress.show(accuracyShare + (1.0 - accuracyShare) * (i + 1) / (warmup + frames), QStringLiteral("timing"));
-        }
+        std::vector<TimedRun> runs;
+        for (const Settings& configuration : configurations)
+            runs.push_back({&headless, configuration, true, true, {}});
+        timeInterleaved(runs, size, warmup, frames,
+                        [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
         for (std::size_t c = 0; c < sweep.size(); ++c) {
-            rows[c].shadowPass = summarize(shadow[c]);
-            rows[c].litPass = summarize(lit[c]);
-            rows[c].frame = summarize(frame[c]);
+            rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
+            rows[c].litPass = summarize(runs[c].samples.litWall);
+            rows[c].frame = summarize(runs[c].samples.wall);
         }
         progress.done();
         markParetoFront(rows);

@@ -2,6 +2,7 @@
 #include "Commands.h"
 #include "DepthMapView.h"
 #include "MainWindow.h"
+#include "IoError.h"
 #include "RenderError.h"
 #include "SceneView.h"
 #include "SettingsKeys.h"
@@ -88,7 +89,7 @@ int runScreenshot(const QStringList& arguments)
         const QString path = parser.value(QStringLiteral("out"));
         const QImage image = window.grab().toImage();
         if (image.isNull() || !image.save(path, "PNG"))
-            throw RenderError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
+            throw IoError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
         out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << image.width() << "x" << image.height() << ")" << Qt::endl;
         return kExitOk;
     });

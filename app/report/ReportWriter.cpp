@@ -1,6 +1,6 @@
 #include "ReportWriter.h"
 
-#include "RenderError.h"
+#include "IoError.h"
 
 #include <embree3/rtcore_config.h>
 
@@ -24,7 +24,7 @@ void writeFile(const QString& path, const QByteArray& bytes)
 {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size())
-        throw RenderError(QStringLiteral("cannot write '%1': %2").arg(path, file.errorString()));
+        throw IoError(QStringLiteral("cannot write '%1': %2").arg(path, file.errorString()));
 }
 
 QString csvField(QString text)
@@ -162,7 +162,7 @@ QString machineFacts()
 void writeReport(const QString& directory, const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
     if (!QDir().mkpath(directory))
-        throw RenderError(QStringLiteral("cannot create the report folder '%1'").arg(directory));
+        throw IoError(QStringLiteral("cannot create the report folder '%1'").arg(directory));
     const QDir dir(directory);
 
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10,shadow_p90,lit_ms,lit_p10,lit_p90,frame_ms,frame_p10,frame_p90,"

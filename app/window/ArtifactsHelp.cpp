@@ -1,6 +1,7 @@
 #include "ArtifactsHelp.h"
 
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 #include <QDialogButtonBox>
 #include <QTextBrowser>
@@ -38,10 +39,8 @@ caster has no back face close enough; with a large minimum bias, contacts leak.
 <h3>Aliasing (blocky edges)</h3>
 <p>Stair-stepped shadow edges: one texel covers many screen pixels. <b>Fixes:</b> more texels
 (<i>Size</i>), a tighter light volume (<i>Extent</i>, <i>Field of view</i>, <i>Near/Far</i>),
-or filtering: <i>PCF</i> averages N×N comparisons (cost N² taps per pixel),
-<i>pcf-dither4</i> gets a similar look from 4 dithered taps, <i>hw-bilinear</i> lets the
-hardware blend 4 comparisons in one tap.</p>
-
+or a filter (<i>Filtering → Filter</i>):</p>
+%FILTERS%
 <h3>Depth precision</h3>
 <p>For a perspective light, depth resolution falls off with distance as far/near grows; a
 24-bit map runs out far from the light and acne comes back there. <b>Fixes:</b> push
@@ -79,7 +78,11 @@ QString ArtifactsHelp::html()
                      .arg(key.key, key.range.toHtmlEscaped(), key.help.toHtmlEscaped());
     table += QStringLiteral("</table><p>The same keys work as <tt>shadowlab render --set key=value</tt> and in "
                             "exported JSON files. <i>wu</i> is a world unit.</p>");
-    return QString::fromUtf8(kArtifacts) + table;
+    QString filters = QStringLiteral("<ul>");
+    for (const ShadowTechnique& t : shadowTechniques())
+        filters += QStringLiteral("<li><i>%1</i> — %2</li>").arg(t.label.toHtmlEscaped(), t.help.toHtmlEscaped());
+    filters += QStringLiteral("</ul>");
+    return QString::fromUtf8(kArtifacts).replace(QStringLiteral("%FILTERS%"), filters) + table;
 }
 
 } // namespace shadowlab

@@ -1,6 +1,7 @@
 #include "DepthMapView.h"
 
 #include "DepthViewPass.h"
+#include "GlDebug.h"
 #include "RenderError.h"
 #include "Renderer.h"
 #include "SceneView.h"
@@ -78,6 +79,7 @@ void DepthMapView::initializeGL()
         m_gl = nullptr;
         return;
     }
+    installGlDebugLogger();
     try {
         m_pass = std::make_unique<DepthViewPass>(m_gl);
     } catch (const RenderError& e) {
@@ -85,6 +87,9 @@ void DepthMapView::initializeGL()
         return;
     }
     m_readFramebuffer = makeFramebuffer(m_gl);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_readFramebuffer.id());
+    labelGlObject(GlLabelKind::Framebuffer, m_readFramebuffer.id(), QStringLiteral("depth-map view: texel read-back"));
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &DepthMapView::cleanup, Qt::UniqueConnection);
 }
 

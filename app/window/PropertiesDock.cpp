@@ -3,6 +3,7 @@
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 #include "SliderSpinBox.h"
 
 #include <QCheckBox>
@@ -48,14 +49,28 @@ const Presentation kPresentations[] = {
     {"bias.min", "Minimum", "", 4, 0.0, 0.02},
     {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
     {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
-    {"filter.kernel", "PCF kernel", " texels", 0, 1.0, 9.0},
 };
 
-const Presentation& presentation(const QString& key)
+// A Presentation for people: from the list above, or from the technique table for the
+// parameters of shadow filters (their whole range on the slider).
+struct Look {
+    QString label;
+    QString unit;
+    int decimals;
+    double sliderLow;
+    double sliderHigh;
+    SliderSpinBox::Scale scale = SliderSpinBox::Scale::Linear;
+};
+
+Look presentation(const QString& key)
 {
     for (const Presentation& p : kPresentations) {
         if (key == QLatin1String(p.key))
-            return p;
+            return {QString::fromUtf8(p.label), QString::fromUtf8(p.unit), p.decimals, p.sliderLow, p.sliderHigh, p.scale};
+    }
+    for (const TechniqueParameter& p : techniqueParameters()) {
+        if (key == p.key)
+            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : 2, p.minimum, p.maximum};
     }
     throw SettingsError(key, QStringLiteral("has no field in the properties dock"));
 }
@@ -134,7 +149,8 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
 
     QGridLayout* filter = addGroup(tr("Filtering"));
     addChoice(filter, QStringLiteral("filter.mode"));
-    addNumber(filter, QStringLiteral("filter.kernel"));
+    for (const TechniqueParameter& parameter : techniqueParameters())
+        addNumber(filter, parameter.key);
 
     QGridLayout* shading = addGroup(tr("Shading"));
     addChoice(shading, QStringLiteral("shading.model"));
@@ -187,14 +203,14 @@ void PropertiesDock::addRow(QGridLayout* grid, const QString& label, const QStri
 void PropertiesDock::addNumber(QGridLayout* grid, const QString& key)
 {
     const SettingKey& info = keyInfo(key);
-    const Presentation& look = presentation(key);
+    const Look look = presentation(key);
     // Open ends of a range ((0, 180)) become the nearest value the spin box can show.
     const double step = std::pow(10.0, -look.decimals);
     const bool loOpen = info.range.startsWith(QLatin1Char('('));
     const bool hiOpen = info.range.contains(QLatin1Char(')'));
     auto* editor = new SliderSpinBox(info.minimum + (loOpen ? step : 0.0), info.maximum - (hiOpen ? step : 0.0), look.decimals);
     editor->setObjectName(key);
-    editor->setSuffix(QString::fromUtf8(look.unit));
+    editor->setSuffix(look.unit);
     editor->setSliderSpan(look.sliderLow, look.sliderHigh, look.scale);
     if (info.range.contains(QStringLiteral("odd")))
         editor->setSingleStep(2.0);
@@ -208,14 +224,14 @@ void PropertiesDock::addNumber(QGridLayout* grid, const QString& key)
     Field field{key, nullptr, {editor}, [editor, key](const Settings& s) { editor->setValue(settingValue(s, key).toDouble()); }};
     // Huge limits ([-1e7, 1e7]) only say "any sensible number": the tooltip still has them.
     const bool telling = std::max(std::abs(info.minimum), std::abs(info.maximum)) < 1e5;
-    addRow(grid, QString::fromUtf8(look.label), (telling ? info.range : QString()) + QString::fromUtf8(look.unit), editor,
+    addRow(grid, look.label, (telling ? info.range : QString()) + look.unit, editor,
            std::move(field));
 }
 
 void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
 {
     const SettingKey& info = keyInfo(key);
-    const Presentation& look = presentation(key);
+    const Look look = presentation(key);
     auto* editor = new QWidget;
     auto* layout = new QVBoxLayout(editor);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -226,7 +242,7 @@ void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
         const QString axis = QString(QLatin1Char("xyz"[i]));
         auto* box = new SliderSpinBox(info.minimum, info.maximum, look.decimals);
         box->setObjectName(key + QLatin1Char('.') + axis);
-        box->setSuffix(QString::fromUtf8(look.unit));
+        box->setSuffix(look.unit);
         box->setSliderSpan(look.sliderLow, look.sliderHigh);
         box->setSingleStep(0.1);
         box->setToolTip(tooltipFor(info));
@@ -247,7 +263,7 @@ void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
                     for (int i = 0; i < 3; ++i)
                         boxes[std::size_t(i)]->setValue(xyz.value(i).toDouble());
                 }};
-    addRow(grid, QString::fromUtf8(look.label), QString(), editor, std::move(field));
+    addRow(grid, look.label, QString(), editor, std::move(field));
 }
 
 void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
@@ -256,6 +272,10 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
     auto* combo = new QComboBox;
     combo->setObjectName(key);
     combo->addItems(info.choices);
+    if (key == u"filter.mode") {
+        for (const ShadowTechnique& t : shadowTechniques())
+            combo->setItemData(int(t.mode), t.help, Qt::ToolTipRole);
+    }
     combo->setToolTip(tooltipFor(info));
     connect(combo, &QComboBox::currentTextChanged, this, [this, key](const QString& text) {
         if (m_loading)
@@ -440,14 +460,16 @@ QString PropertiesDock::errorText(const QString& key) const
 void PropertiesDock::updateDependentRows()
 {
     // Show only what the current technique uses: extent for an ortho light, field of view for
-    // a perspective one; the kernel width only matters to PCF.
+    // a perspective one; a filter's parameters only while a filter that reads them is selected.
     const bool ortho = m_pending.light.projection == LightProjection::Ortho;
     for (QWidget* w : m_rows.value(QStringLiteral("light.extent")))
         w->setVisible(ortho);
     for (QWidget* w : m_rows.value(QStringLiteral("light.fov")))
         w->setVisible(!ortho);
-    for (QWidget* w : m_rows.value(QStringLiteral("filter.kernel")))
-        w->setEnabled(m_pending.filter.mode == FilterMode::Pcf);
+    for (const TechniqueParameter& parameter : techniqueParameters()) {
+        for (QWidget* w : m_rows.value(parameter.key))
+            w->setEnabled(usesParameter(m_pending.filter, parameter.key));
+    }
 }
 
 void PropertiesDock::setAnimation(bool animate, double degreesPerSecond)

@@ -16,9 +16,12 @@ namespace shadowlab {
 
 class SliderSpinBox;
 
-// Every setting of one side (A or B), grouped as a shadow-mapping person thinks of them:
-// Light, Shadow map, Bias, Filtering, Shading, Scene. Built from settingKeys(): the spin boxes
-// take their ranges from it and the tooltips its help, so the dock and the CLI never disagree.
+// The settings of one side (A or B), grouped as a shadow-mapping person thinks of them:
+// Light, Shadow map, Bias, Filtering, Shading, Scene (the camera is the scene view's; light.fit,
+// light.stabilize, light.radius and bias.normal are set from the command line or a settings
+// file). Built from settingKeys() and, for the filter's parameters, the technique table: the
+// spin boxes take their ranges from them and the tooltips their help, so the dock and the CLI
+// never disagree.
 // Each edit goes through applySetting() and validate(); an edit that makes the settings
 // impossible (near >= far) is kept in its field, marked there with the reason, and not
 // emitted, so the views keep the last valid image.

@@ -1,5 +1,6 @@
 #include "SceneView.h"
 
+#include "GlDebug.h"
 #include "LightGizmoPass.h"
 #include "OrbitCamera.h"
 #include "RenderError.h"
@@ -69,6 +70,7 @@ void SceneView::initializeGL()
         emit renderFailed(QString(), QStringLiteral("this OpenGL context does not provide OpenGL 3.3 core"));
         return;
     }
+    installGlDebugLogger();
     try {
         m_renderer = std::make_unique<Renderer>(gl);
         m_gizmo = std::make_unique<LightGizmoPass>(gl);

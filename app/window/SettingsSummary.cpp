@@ -1,19 +1,9 @@
 #include "SettingsSummary.h"
 
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 namespace shadowlab {
-
-namespace {
-
-QString filterText(const FilterSettings& filter)
-{
-    if (filter.mode == FilterMode::Pcf)
-        return QStringLiteral("pcf %1×%1").arg(filter.kernel);
-    return toString(filter.mode);
-}
-
-} // namespace
 
 QString squareSize(int side)
 {
@@ -26,7 +16,7 @@ QString settingsSummary(const Settings& settings)
     if (!settings.shadow.enabled)
         return QStringLiteral("%1 · shadows off").arg(toString(settings.shading.model));
     QString text = QStringLiteral("%1 · slope %2 · min %3 · %4 %5")
-                       .arg(filterText(settings.filter))
+                       .arg(filterLabel(settings.filter))
                        .arg(settings.bias.slope)
                        .arg(settings.bias.min)
                        .arg(squareSize(settings.map.size), toString(settings.light.projection));
@@ -39,9 +29,8 @@ QString settingsSummary(const Settings& settings)
 
 QString screenshotFileName(const Settings& settings, const QDateTime& when)
 {
-    QString filter = toString(settings.filter.mode);
-    if (settings.filter.mode == FilterMode::Pcf)
-        filter += QString::number(settings.filter.kernel);
+    // The label without spaces or signs a file name would not want: "pcf 5×5" -> "pcf5".
+    QString filter = filterLabel(settings.filter).section(QChar(0x00D7), 0, 0).remove(QLatin1Char(' '));
     const QString technique = settings.shadow.enabled ? QStringLiteral("%1-%2").arg(filter).arg(settings.map.size)
                                                       : QStringLiteral("noshadow");
     return QStringLiteral("shadowlab-%1-%2-%3.png").arg(when.toString(QStringLiteral("yyyy-MM-dd-HHmm")), settings.scene, technique);

@@ -1,6 +1,6 @@
 #include "RayTracer.h"
 
-#include "RenderError.h"
+#include "TraceError.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,7 +12,7 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
 {
     m_device = rtcNewDevice(nullptr);
     if (!m_device)
-        throw RenderError(QStringLiteral("Embree could not start (error %1)").arg(int(rtcGetDeviceError(nullptr))));
+        throw TraceError(QStringLiteral("Embree could not start (error %1)").arg(int(rtcGetDeviceError(nullptr))));
     m_scene = rtcNewScene(m_device);
     // Robust traversal: shadow rays graze triangle edges all the time (cube edges, contacts).
     rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_ROBUST);
@@ -42,7 +42,7 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
     }
     rtcCommitScene(m_scene);
     if (const RTCError error = rtcGetDeviceError(m_device); error != RTC_ERROR_NONE)
-        throw RenderError(QStringLiteral("Embree could not build the scene (error %1)").arg(int(error)));
+        throw TraceError(QStringLiteral("Embree could not build the scene (error %1)").arg(int(error)));
 }
 
 RayTracer::~RayTracer()

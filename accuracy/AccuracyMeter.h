@@ -1,8 +1,9 @@
 #pragma once
 
-#include "Renderer.h"
+#include "Scene.h"
 #include "ShadowMetrics.h"
 #include "ShadowReference.h"
+#include "VisibilityBuffer.h"
 
 #include <QImage>
 
@@ -23,6 +24,11 @@ struct AccuracyResult {
     bool referenceReused = false;
 };
 
+// The one comparison of a measured shadow term with its reference, used by the accuracy dock,
+// `report` and the tests: metrics against the hard and (when traced) the area reference, and
+// the error image over the measured frame. Only light-facing pixels count.
+AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const ReferenceVisibility& reference);
+
 // Measures a renderer's shadow term against the ray-traced reference for the same pixels.
 // The reference depends only on scene, camera, image size and light placement (not on map
 // size, bias or filter), so it is traced once and reused while those stay the same.
@@ -30,8 +36,9 @@ class AccuracyMeter {
 public:
     explicit AccuracyMeter(ReferenceOptions options = {});
 
-    // `renderer`'s context must be current. Throws like Renderer::render().
-    AccuracyResult measure(Renderer& renderer, const Settings& settings, QSize size,
+    // `buffer` is what the renderer read back for `settings` (Renderer::renderVisibility()),
+    // `scene` and `light` what it drew with. Throws TraceError when Embree fails.
+    AccuracyResult measure(const VisibilityBuffer& buffer, const Scene& scene, const LightFrame& light, const Settings& settings,
                            const std::function<void(double)>& progress = {});
 
     int referenceComputations() const { return m_referenceComputations; }

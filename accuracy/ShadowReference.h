@@ -1,9 +1,9 @@
 #pragma once
 
 #include "LightMath.h"
-#include "MeasureTarget.h"
 #include "RayTracer.h"
 #include "Settings.h"
+#include "VisibilityBuffer.h"
 
 #include <QSize>
 

@@ -34,7 +34,7 @@ struct LightSettings {
 };
 
 struct MapSettings {
-    int size = 2048;                        // texels per side, [16, 16384] and <= GL_MAX_TEXTURE_SIZE
+    int size = 2048;                        // texels per side, [16, kMaxImageSide] and <= GL_MAX_TEXTURE_SIZE
     DepthFormat format = DepthFormat::Depth24;
 
     bool operator==(const MapSettings&) const = default;
@@ -102,7 +102,7 @@ struct ReferenceSettings {
 };
 
 struct Settings {
-    QString scene = QStringLiteral("seed"); // one of sceneNames()
+    QString scene = QStringLiteral("seed"); // one of sceneNames() (SceneNames.h)
     LightSettings light;
     MapSettings map;
     BiasSettings bias;

@@ -1,12 +1,16 @@
 #include "SettingsKeys.h"
 
-#include "SceneLibrary.h"
+#include "Limits.h"
+#include "SceneNames.h"
 #include "SettingsError.h"
+#include "ShadowTechnique.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <functional>
@@ -185,8 +189,13 @@ const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("pers
 const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
 const QStringList kBiasSpaceNames{QStringLiteral("world"), QStringLiteral("texel"), QStringLiteral("depth")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
-const QStringList kFilterNames{QStringLiteral("hard"), QStringLiteral("pcf"), QStringLiteral("pcf-dither4"),
-                               QStringLiteral("pcf64"), QStringLiteral("hw-bilinear")};
+// The filter.mode names, help and parameter keys come from the technique table.
+const QStringList kFilterNames = [] {
+    QStringList names;
+    for (const ShadowTechnique& t : shadowTechniques())
+        names << t.key;
+    return names;
+}();
 const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
 
 Entry sceneKey()
@@ -208,6 +217,28 @@ Entry sceneKey()
                     return QStringLiteral("'%1' is not a scene; choose one of %2").arg(s.scene, rangeText);
                 return std::nullopt;
             }};
+}
+
+Entry filterModeKey()
+{
+    QStringList parts;
+    for (const ShadowTechnique& t : shadowTechniques())
+        parts << t.help;
+    const QByteArray help = QStringLiteral("Shadow filter: %1").arg(parts.join(QStringLiteral("; "))).toUtf8();
+    return choiceKey<FilterMode>("filter.mode", kFilterNames, [](auto& s) -> auto& { return s.filter.mode; }, help.constData());
+}
+
+// A technique's parameter, typed and ranged as the technique table says.
+Entry parameterKey(const TechniqueParameter& p)
+{
+    const QByteArray key = p.key.toLatin1();    // copied into the entry
+    const QByteArray help = p.help.toUtf8();
+    if (const auto* field = std::get_if<int FilterSettings::*>(&p.field))
+        return integerKey(key.constData(), int(p.minimum), int(p.maximum), p.oddOnly,
+                          [m = *field](auto& s) -> auto& { return s.filter.*m; }, help.constData());
+    const auto member = std::get<double FilterSettings::*>(p.field);
+    return numberKey(key.constData(), Range{p.minimum, p.maximum}, [member](auto& s) -> auto& { return s.filter.*member; },
+                     help.constData());
 }
 
 std::vector<Entry> makeEntries()
@@ -234,7 +265,7 @@ std::vector<Entry> makeEntries()
                                     "scene: shrink the light volume (extent or fov, near, far) to what casts onto what the camera sees, for smaller texels and finer depth; manual: use it as set"));
     e.push_back(boolKey("light.stabilize", [](auto& s) -> auto& { return s.light.stabilize; },
                         "Snap the fitted volume to whole texels and coarse size steps: no shimmer and no shadow-pass redraw on small camera moves, at slightly larger texels"));
-    e.push_back(integerKey("map.size", 16, 16384, false, [](auto& s) -> auto& { return s.map.size; },
+    e.push_back(integerKey("map.size", 16, kMaxImageSide, false, [](auto& s) -> auto& { return s.map.size; },
                            "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
     e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
                                        "Depth texture format: 32-bit float keeps precision with far-away near/far ratios"));
@@ -252,10 +283,9 @@ std::vector<Entry> makeEntries()
                           "glPolygonOffset factor in the shadow pass: hardware slope bias, against acne at the cost of peter panning"));
     e.push_back(numberKey("bias.polygon_units", Range{-10000.0, 10000.0}, [](auto& s) -> auto& { return s.bias.polygonUnits; },
                           "glPolygonOffset units in the shadow pass: constant hardware bias in depth-buffer steps"));
-    e.push_back(choiceKey<FilterMode>("filter.mode", kFilterNames, [](auto& s) -> auto& { return s.filter.mode; },
-                                      "Shadow filter: hard (1 tap), pcf (N x N taps), pcf-dither4 (4 dithered taps), pcf64 (8 x 8 taps), hw-bilinear (hardware compare, bilinear)"));
-    e.push_back(integerKey("filter.kernel", 1, 9, true, [](auto& s) -> auto& { return s.filter.kernel; },
-                           "PCF kernel width in texels (pcf mode): wider softens edges and hides aliasing at N^2 taps per pixel"));
+    e.push_back(filterModeKey());
+    for (const TechniqueParameter& parameter : techniqueParameters())
+        e.push_back(parameterKey(parameter));
     e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
                         "Shadows on or off: off skips the shadow pass entirely"));
     e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },

@@ -1,8 +1,8 @@
 #include "ReportSweep.h"
 
-#include "CliSupport.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -13,13 +13,14 @@ namespace shadowlab {
 
 namespace {
 
+// Every technique's variations, as its row of the technique table lists them.
 std::vector<SweepEntry> filterSweep()
 {
     std::vector<SweepEntry> s;
-    for (const char* mode : {"hard", "pcf-dither4", "pcf64", "hw-bilinear"})
-        s.push_back({QString::fromLatin1(mode), {QStringLiteral("filter.mode=%1").arg(QLatin1String(mode))}});
-    for (int k : {1, 3, 5, 7})
-        s.push_back({QStringLiteral("pcf %1x%1").arg(k), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=%1").arg(k)}});
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        for (const TechniqueVariation& variation : technique.sweep)
+            s.push_back({variation.label, variation.assignments});
+    }
     return s;
 }
 
@@ -126,15 +127,15 @@ std::vector<SweepEntry> sweepFromFile(const QString& path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw cli::UsageError(QStringLiteral("--sweep: cannot read '%1': %2; give a file or one of %3")
+        throw SettingsError(QString(), QStringLiteral("cannot read sweep file '%1': %2; give a file or one of %3")
                                   .arg(path, file.errorString(), builtInSweeps().join(QStringLiteral(", "))));
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
     if (error.error != QJsonParseError::NoError)
-        throw cli::UsageError(QStringLiteral("--sweep: '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
+        throw SettingsError(QString(), QStringLiteral("sweep file '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
     const QJsonArray array = doc.isArray() ? doc.array() : doc.object().value(QStringLiteral("configurations")).toArray();
     if (array.isEmpty())
-        throw cli::UsageError(QStringLiteral("--sweep: '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
+        throw SettingsError(QString(), QStringLiteral("sweep file '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
     std::vector<SweepEntry> sweep;
     for (const QJsonValue& v : array) {
         const QJsonObject o = v.toObject();

@@ -1,14 +1,12 @@
 #pragma once
 
 #include "Scene.h"
+#include "SceneNames.h"
 #include "Settings.h"
 
 #include <QStringList>
 
 namespace shadowlab {
-
-// The built-in scene presets: "seed", "torus", "cubes".
-QStringList sceneNames();
 
 // Builds a preset's geometry; throws SettingsError for an unknown name.
 Scene buildScene(const QString& name);

@@ -17,7 +17,8 @@ struct SweepEntry {
 
 // The built-in sweeps: "default" (all of the below, plus the classic tutorial configuration),
 // "filters", "resolution", "bias", "lights"; or a JSON file: an array of {"label": ..., "set": {key: value}}
-// objects (or {"configurations": [...]}). Throws UsageError / SettingsError with the file named.
+// objects (or {"configurations": [...]}). Throws SettingsError naming the
+// file when it cannot be read or does not hold settings (like a settings file).
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile);
 QStringList builtInSweeps();
 

@@ -91,11 +91,6 @@ Scene occluderScene()
 
 } // namespace
 
-QStringList sceneNames()
-{
-    return {QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder")};
-}
-
 Scene buildScene(const QString& name)
 {
     if (name == u"seed")

@@ -1,0 +1,55 @@
+#include "AccuracyMeter.h"
+
+#include <algorithm>
+
+namespace shadowlab {
+
+AccuracyMeter::AccuracyMeter(ReferenceOptions options) : m_options(options) {}
+
+AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const ReferenceVisibility& reference)
+{
+    std::vector<bool> counts(std::size_t(buffer.pixelCount()));
+    std::vector<float> measured(counts.size());
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        counts[std::size_t(i)] = buffer.mask(i) == VisibilityBuffer::FacingLight;
+        measured[std::size_t(i)] = buffer.visibility(i);
+    }
+    AccuracyResult result;
+    result.hard = compareVisibility(measured, reference.hard, counts);
+    if (!reference.area.empty())
+        result.area = compareVisibility(measured, reference.area, counts);
+    result.areaNoiseFloor = reference.areaNoiseFloor;
+    result.frame = buffer.image;
+    result.hardErrors = errorImage(buffer.image, measured, reference.hard, counts);
+    return result;
+}
+
+AccuracyResult AccuracyMeter::measure(const VisibilityBuffer& buffer, const Scene& scene, const LightFrame& light,
+                                      const Settings& settings, const std::function<void(double)>& progress)
+{
+    const ReferenceKey key = referenceKeyFor(settings, buffer.size, m_options.area ? m_options.samplesPerAxis : 0);
+    auto cached = std::find_if(m_references.begin(), m_references.end(), [&](const auto& entry) { return entry.first == key; });
+    const bool reused = cached != m_references.end();
+    double raysPerSecond = 0.0;
+    if (reused) {
+        std::rotate(m_references.begin(), cached, cached + 1);
+        if (progress)
+            progress(1.0);
+    } else {
+        ReferenceOptions options = m_options;
+        options.lightRadius = settings.reference.lightRadius;
+        const RayTracer tracer(scene, buffer.cameraPosition);
+        m_references.insert(m_references.begin(), {key, traceReference(tracer, buffer, light, options, progress)});
+        if (m_references.size() > kCachedReferences)
+            m_references.pop_back();
+        ++m_referenceComputations;
+        raysPerSecond = m_references.front().second.raysPerSecond();
+    }
+
+    AccuracyResult result = compareWithReference(buffer, m_references.front().second);
+    result.referenceReused = reused;
+    result.raysPerSecond = raysPerSecond;
+    return result;
+}
+
+} // namespace shadowlab

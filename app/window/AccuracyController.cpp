@@ -1,0 +1,304 @@
+#include "AccuracyController.h"
+
+#include "AccuracyMeter.h"
+#include "HeadlessRenderer.h"
+#include "Measurement.h"
+#include "RayTracer.h"
+#include "SampleStats.h"
+#include "SettingsKeys.h"
+#include "SettingsSummary.h"
+#include "ShadowTechnique.h"
+
+#include <QTimer>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kProgressSteps = 1000;
+
+// One configuration of a sweep before it is measured.
+struct Variation {
+    QString label;
+    Settings settings;
+};
+
+// The current settings first, then one change at a time: each filter and the variations its
+// row of the technique table lists (PCF 1 to 7), half and
+// double the map, bias halved, doubled and off, front-face culling toggled. Changes that make
+// the settings invalid or repeat an earlier configuration are left out.
+std::vector<Variation> sweepAround(const Settings& base, int maxTextureSize)
+{
+    std::vector<Variation> out{{QStringLiteral("current settings"), base}};
+    auto add = [&](const QString& label, Settings s) {
+        const std::vector<SettingsIssue> issues = validate(s);  // errors come first
+        if (s.map.size > maxTextureSize || (!issues.empty() && issues.front().severity == SettingsIssue::Severity::Error))
+            return;
+        if (std::any_of(out.begin(), out.end(), [&](const Variation& v) { return v.settings == s; }))
+            return;
+        out.push_back({label, s});
+    };
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        Settings s = base;
+        s.filter.mode = technique.mode;
+        add(filterLabel(s.filter), s);
+        for (const TechniqueVariation& variation : technique.sweep) {
+            Settings v = base;
+            for (const QString& assignment : variation.assignments)
+                applyAssignment(v, assignment);
+            add(filterLabel(v.filter), v);
+        }
+    }
+    for (int size : {base.map.size / 2, base.map.size * 2}) {
+        Settings s = base;
+        s.map.size = size;
+        add(QStringLiteral("map %1").arg(squareSize(size)), s);
+    }
+    for (double factor : {0.5, 2.0, 0.0}) {
+        Settings s = base;
+        s.bias.slope *= factor;
+        s.bias.min *= factor;
+        add(factor == 0.0 ? QStringLiteral("no bias") : QStringLiteral("bias ×%1").arg(factor), s);
+    }
+    Settings culled = base;
+    culled.bias.cullFront = !base.bias.cullFront;
+    add(culled.bias.cullFront ? QStringLiteral("front-face culling") : QStringLiteral("no front-face culling"), culled);
+    return out;
+}
+
+} // namespace
+
+AccuracyController::AccuracyController(QObject* parent) : QObject(parent)
+{
+    // One trace at a time, on a thread of its own: traceReference() fans its rows out over the
+    // global pool and only polls from here, so it must not occupy one of that pool's threads.
+    m_tracePool.setMaxThreadCount(1);
+    connect(&m_traceWatcher, &QFutureWatcherBase::progressValueChanged, this,
+            [this](int value) { emit progressChanged(value, kProgressSteps); });
+    connect(&m_traceWatcher, &QFutureWatcherBase::finished, this, &AccuracyController::traceFinished);
+}
+
+AccuracyController::~AccuracyController()
+{
+    if (m_pending)
+        m_pending->cancel->store(true);
+    m_traceWatcher.waitForFinished();
+}
+
+void AccuracyController::setSettings(const Settings& settings)
+{
+    m_settings = settings;
+}
+
+void AccuracyController::setViewSize(QSize size)
+{
+    m_viewSize = size;
+}
+
+QSize AccuracyController::measureSize() const
+{
+    if (m_viewSize.isEmpty())
+        return {};
+    const double scale = std::min(1.0, double(kMaxMeasureSide) / std::max(m_viewSize.width(), m_viewSize.height()));
+    return {std::max(1, int(std::lround(m_viewSize.width() * scale))), std::max(1, int(std::lround(m_viewSize.height() * scale)))};
+}
+
+void AccuracyController::setAreaSamplesPerAxis(int samples)
+{
+    m_areaSamplesPerAxis = std::clamp(samples, 1, 64);
+}
+
+bool AccuracyController::isBusy() const
+{
+    return m_pending.has_value() || m_sweeping;
+}
+
+bool AccuracyController::measurementIsCurrent() const
+{
+    return m_measurement && m_measurement->settings == m_settings && m_measurement->errors.size() == measureSize();
+}
+
+HeadlessRenderer& AccuracyController::headless()
+{
+    if (!m_headless)
+        m_headless = std::make_unique<HeadlessRenderer>();
+    m_headless->makeCurrent();
+    return *m_headless;
+}
+
+void AccuracyController::compare()
+{
+    startMeasurement(false);
+}
+
+void AccuracyController::sweep()
+{
+    startMeasurement(true);
+}
+
+void AccuracyController::cancel()
+{
+    if (m_pending)
+        m_pending->cancel->store(true);
+    m_sweepCancelled = m_sweeping;
+    setStatus(tr("Cancelling…"));
+}
+
+void AccuracyController::startMeasurement(bool thenSweep)
+{
+    if (isBusy())
+        return;
+    const QSize size = measureSize();
+    if (size.isEmpty()) {
+        setStatus(tr("Nothing to measure: the scene view has no size yet."), true);
+        return;
+    }
+    try {
+        ensureValid(m_settings);
+        Renderer& renderer = headless().renderer();
+        auto buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(m_settings, size));
+        const ReferenceKey key = referenceKeyFor(m_settings, measureSize(), m_areaSamplesPerAxis);
+        if (m_referenceKey == key) {
+            m_lastReferenceReused = true;
+            measure(m_settings, *buffer);
+            if (thenSweep)
+                startSweep();
+            return;
+        }
+
+        // The worker gets copies: the renderer may load another scene while it traces.
+        auto scene = std::make_shared<const Scene>(*renderer.scene());
+        const LightFrame light = renderer.lightFrame();
+        const ReferenceOptions options{true, m_settings.reference.lightRadius, m_areaSamplesPerAxis};
+        auto cancelFlag = std::make_shared<std::atomic<bool>>(false);
+        m_pending = PendingTrace{key, m_settings, buffer, cancelFlag, thenSweep};
+        emit progressChanged(0, kProgressSteps);
+        setStatus(tr("Tracing the reference at %1×%2…").arg(size.width()).arg(size.height()));
+        m_traceWatcher.setFuture(QtConcurrent::run(&m_tracePool, [scene, buffer, light, options, cancelFlag](QPromise<TraceOutcome>& promise) {
+            promise.setProgressRange(0, kProgressSteps);
+            TraceOutcome outcome;
+            try {
+                const RayTracer tracer(*scene, buffer->cameraPosition);
+                outcome.reference = traceReference(tracer, *buffer, light, options,
+                                                   [&promise](double f) { promise.setProgressValue(int(f * kProgressSteps)); },
+                                                   cancelFlag.get());
+            } catch (const std::exception& e) {
+                outcome.error = QString::fromUtf8(e.what());
+            }
+            promise.addResult(std::move(outcome));
+        }));
+    } catch (const std::exception& e) {
+        setStatus(QString::fromUtf8(e.what()), true);
+    }
+    emit busyChanged(isBusy());
+}
+
+void AccuracyController::traceFinished()
+{
+    const PendingTrace pending = std::move(*m_pending);
+    m_pending.reset();
+    TraceOutcome outcome = m_traceWatcher.result();
+    emit busyChanged(isBusy());
+    if (!outcome.error.isEmpty()) {
+        setStatus(tr("The reference could not be traced: %1").arg(outcome.error), true);
+        return;
+    }
+    if (outcome.reference.cancelled || pending.cancel->load()) {
+        setStatus(tr("Cancelled; the partial reference was discarded."));
+        return;
+    }
+    m_reference = std::move(outcome.reference);
+    m_referenceKey = pending.key;
+    m_lastRaysPerSecond = m_reference.raysPerSecond();
+    m_lastReferenceReused = false;
+    try {
+        measure(pending.settings, *pending.buffer);
+        if (pending.thenSweep)
+            startSweep();
+    } catch (const std::exception& e) {
+        setStatus(QString::fromUtf8(e.what()), true);
+    }
+}
+
+void AccuracyController::measure(const Settings& settings, const VisibilityBuffer& buffer)
+{
+    const AccuracyResult result = compareWithReference(buffer, m_reference);
+    Measurement m;
+    m.settings = settings;
+    m.hard = result.hard;
+    m.area = result.area;
+    m.areaNoiseFloor = result.areaNoiseFloor;
+    m.errors = result.hardErrors;
+    m_measurement = std::move(m);
+    setStatus(m_measurement->hard.pixels == 0 ? tr("No surface in view faces the light; nothing to compare.") : QString());
+    emit measurementChanged();
+}
+
+void AccuracyController::startSweep()
+{
+    const int maxTextureSize = headless().renderer().maxTextureSize();
+    m_sweepPlan.clear();
+    for (Variation& v : sweepAround(m_settings, maxTextureSize))
+        m_sweepPlan.push_back({v.label, std::move(v.settings), 0.0, 0.0});
+    m_sweepPoints.clear();
+    m_sweepSkipped.clear();
+    m_sweepNext = 0;
+    m_sweepSize = measureSize();
+    m_sweeping = true;
+    m_sweepCancelled = false;
+    emit sweepStarted(m_sweepSize);
+    emit sweepPointsChanged();
+    emit progressChanged(0, int(m_sweepPlan.size()));
+    emit busyChanged(true);
+    QTimer::singleShot(0, this, &AccuracyController::sweepStep);
+}
+
+void AccuracyController::sweepStep()
+{
+    if (m_sweepCancelled) {
+        finishSweep(tr("Sweep cancelled after %1 of %2 configurations.").arg(m_sweepPoints.size()).arg(m_sweepPlan.size()));
+        return;
+    }
+    if (m_sweepNext >= m_sweepPlan.size()) {
+        finishSweep(m_sweepSkipped.isEmpty() ? QString() : tr("Left out: %1").arg(m_sweepSkipped.join(QStringLiteral("; "))));
+        return;
+    }
+    SweepPoint point = m_sweepPlan[m_sweepNext++];
+    setStatus(tr("Sweep %1/%2: %3").arg(m_sweepNext).arg(m_sweepPlan.size()).arg(point.label));
+    try {
+        HeadlessRenderer& h = headless();
+        const VisibilityBuffer buffer = h.renderer().renderVisibility(point.settings, m_sweepSize);
+        point.misclassifiedPercent = 100.0 * compareWithReference(buffer, m_reference).hard.misclassified;
+
+        // One untimed frame compiles the lit variant; every frame redraws the shadow map, so
+        // the time is what a moving light costs, not the cached-map best case.
+        std::vector<TimedRun> runs{{&h, point.settings, true, false, {}}};
+        timeInterleaved(runs, m_sweepSize, 1, kTimedFrames);
+        point.frameMs = summarize(runs.front().samples.wall).median;
+        m_sweepPoints.push_back(point);
+        emit sweepPointsChanged();
+    } catch (const std::exception& e) {
+        m_sweepSkipped << QStringLiteral("%1 (%2)").arg(point.label, QString::fromUtf8(e.what()));
+    }
+    emit progressChanged(int(m_sweepNext), int(m_sweepPlan.size()));
+    QTimer::singleShot(0, this, &AccuracyController::sweepStep);
+}
+
+void AccuracyController::finishSweep(const QString& message)
+{
+    m_sweeping = false;
+    m_sweepCancelled = false;
+    emit busyChanged(false);
+    setStatus(message, !m_sweepSkipped.isEmpty());
+}
+
+void AccuracyController::setStatus(const QString& text, bool error)
+{
+    emit statusChanged(text, error);
+}
+
+} // namespace shadowlab

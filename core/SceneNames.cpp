@@ -1,0 +1,11 @@
+#include "SceneNames.h"
+
+namespace shadowlab {
+
+const QStringList& sceneNames()
+{
+    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder")};
+    return names;
+}
+
+} // namespace shadowlab

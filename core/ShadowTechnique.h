@@ -1,0 +1,88 @@
+#pragma once
+
+#include "Settings.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <variant>
+#include <vector>
+
+namespace shadowlab {
+
+// What a technique reads from the shadow pass.
+enum class ShadowMapKind {
+    DepthCompare,   // a depth texture, compared in hardware against the receiver's depth
+    RawDepth,       // the same depth texture read as numbers (a blocker search, say)
+    Moments,        // a filterable moments texture (VSM, EVSM)
+};
+
+// One sampler a technique's GLSL declares, bound to its own texture unit. Compare samplers
+// are `uniform sampler2DShadow uShadowMap`, raw ones `uniform sampler2D uShadowDepth`.
+enum class ShadowSampler {
+    CompareNearest, // one comparison per tap
+    CompareLinear,  // a hardware bilinear blend of four comparisons per tap
+    RawNearest,     // depth values, no comparison
+};
+
+// A setting only some techniques read (a kernel width, a radius, a tap count). Its key joins
+// the settings table right after `filter.mode`, with this range; the properties dock enables
+// its row only while a technique that lists it is selected.
+struct TechniqueParameter {
+    QString key;            // "filter.kernel"
+    QString label;          // the dock row's label
+    QString unit;           // shown after the range in the dock, e.g. " texels"
+    QString help;           // one line: what it does and what it trades against
+    double minimum = 0.0;
+    double maximum = 0.0;
+    bool oddOnly = false;   // integers only
+    std::variant<int FilterSettings::*, double FilterSettings::*> field;   // where the value lives
+};
+
+// A uniform a technique's GLSL reads, with its value for the current settings (a radius, a
+// light size): set on every frame, so changing it needs no new shader variant.
+struct TechniqueUniform {
+    QByteArray name;        // "uPoissonRadius"
+    float value = 0.0f;
+};
+
+// One configuration a sweep tries for a technique: its label and the settings it changes.
+struct TechniqueVariation {
+    QString label;
+    QStringList assignments;    // "key=value"
+};
+
+// A row of the technique table: everything the settings, the lit pass, the dock, the help
+// page, the report's sweeps and the audit need to know about one shadow filter.
+struct ShadowTechnique {
+    FilterMode mode;
+    QString key;                    // the `filter.mode` value
+    QString label;                  // for people: dock, help page
+    QString help;                   // one line: what it does, what it costs
+    QString shaderFile;             // under shaders/: defines float filterShadow(vec2 uv, float reference)
+    ShadowMapKind map = ShadowMapKind::DepthCompare;   // the renderer refuses kinds it does not build
+    std::vector<ShadowSampler> samplers;    // in texture-unit order
+    QStringList parameters;         // keys of techniqueParameters() it reads
+    // Extra #defines of the lit pass's variant (compile-time parameters such as a kernel width).
+    std::function<QStringList(const Settings&)> defines;
+    // Uniforms it reads (run-time parameters); empty for most.
+    std::function<std::vector<TechniqueUniform>(const Settings&)> uniforms;
+    // The short name of a configuration, with its parameters ("pcf 3×3"); labels everywhere.
+    std::function<QString(const FilterSettings&)> describe;
+    std::vector<TechniqueVariation> sweep;  // what `report --sweep filters` and the dock try
+};
+
+// Every technique, in FilterMode order (the order of the `filter.mode` choices).
+const std::vector<ShadowTechnique>& shadowTechniques();
+const ShadowTechnique& shadowTechnique(FilterMode mode);
+// The parameters techniques read, in settings-table order.
+const std::vector<TechniqueParameter>& techniqueParameters();
+
+// The label of a filter configuration, e.g. "hard" or "pcf 3×3".
+QString filterLabel(const FilterSettings& filter);
+// Whether the selected technique reads `parameterKey`.
+bool usesParameter(const FilterSettings& filter, const QString& parameterKey);
+
+} // namespace shadowlab
