@@ -12,6 +12,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <unistd.h>
+
 namespace shadowlab::cli {
 
 QTextStream& out()
@@ -98,6 +100,27 @@ void printFitWarnings(const FittedLight& fit, const QString& context)
 {
     for (const SettingsIssue& issue : fit.warnings)
         err() << "warning: " << (context.isEmpty() ? QString() : context + QStringLiteral(": ")) << issue.key << ": " << issue.message << Qt::endl;
+}
+
+ProgressBar::ProgressBar() : m_enabled(isatty(STDERR_FILENO) == 1) { m_timer.start(); }
+
+void ProgressBar::show(double fraction, const QString& what)
+{
+    if (!m_enabled)
+        return;
+    const int width = 30;
+    const int filled = int(fraction * width + 0.5);
+    const double elapsed = double(m_timer.elapsed()) / 1000.0;
+    const QString left = fraction > 0.02 ? QStringLiteral("%1 s left").arg(int(elapsed / fraction - elapsed + 0.5)) : QStringLiteral("…");
+    err() << "\r[" << QString(filled, QLatin1Char('#')) << QString(width - filled, QLatin1Char('.')) << "] "
+          << QString::number(int(fraction * 100)).rightJustified(3) << "%  " << left.leftJustified(12) << what.left(40).leftJustified(40)
+          << Qt::flush;
+}
+
+void ProgressBar::done()
+{
+    if (m_enabled)
+        err() << '\r' << QString(100, QLatin1Char(' ')) << '\r' << Qt::flush;
 }
 
 QString formatTexelLine(const FrameStats& stats)

@@ -6,6 +6,7 @@
 #include "Settings.h"
 
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QSize>
 #include <QStringList>
 #include <QTextStream>
@@ -52,6 +53,18 @@ int parseCount(const QString& text, const QString& option, int minimum, int maxi
 
 // Runs `body`, turning SettingsError / UsageError into exit code 2 and RenderError into 1,
 // with the message on stderr.
+// A one-line progress bar with the time left, redrawn in place on stderr; only on a terminal.
+class ProgressBar {
+public:
+    ProgressBar();
+    void show(double fraction, const QString& what);
+    void done();
+
+private:
+    bool m_enabled;
+    QElapsedTimer m_timer;
+};
+
 int guarded(const QString& command, const std::function<int()>& body);
 
 } // namespace shadowlab::cli

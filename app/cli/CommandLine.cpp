@@ -18,6 +18,7 @@ const Command kCommands[] = {
     {"report", "Error against run time over a sweep, against a ray-traced reference", runReport},
     {"settings", "List every setting with its default and range", runSettings},
     {"audit", "Run the extreme and degenerate cases and print pass/fail for each", runAudit},
+    {"tune", "Search the bias that misclassifies the fewest pixels, over several light directions", runTune},
     {"screenshot", "Save the explorer window, rendered offscreen, as PNG", runScreenshot, true},
 };
 

@@ -10,6 +10,7 @@ int runBench(const QStringList& arguments);
 int runReport(const QStringList& arguments);
 int runSettings(const QStringList& arguments);
 int runAudit(const QStringList& arguments);
+int runTune(const QStringList& arguments);
 int runScreenshot(const QStringList& arguments);  // needs a QApplication
 
 // True when `name` is a subcommand; runCommand dispatches to it (`args[0]` is the name).

@@ -13,38 +13,6 @@
 
 namespace shadowlab::cli {
 
-namespace {
-
-// A one-line progress bar with the time left, redrawn in place; only on a terminal.
-class ProgressBar {
-public:
-    ProgressBar() : m_enabled(isatty(STDERR_FILENO) == 1) { m_timer.start(); }
-
-    void show(double fraction, const QString& what)
-    {
-        if (!m_enabled)
-            return;
-        const int width = 30;
-        const int filled = int(fraction * width + 0.5);
-        const double elapsed = double(m_timer.elapsed()) / 1000.0;
-        const QString left = fraction > 0.02 ? QStringLiteral("%1 s left").arg(int(elapsed / fraction - elapsed + 0.5)) : QStringLiteral("…");
-        err() << "\r[" << QString(filled, QLatin1Char('#')) << QString(width - filled, QLatin1Char('.')) << "] "
-              << QString::number(int(fraction * 100)).rightJustified(3) << "%  " << left.leftJustified(12) << what.left(40).leftJustified(40)
-              << Qt::flush;
-    }
-    void done()
-    {
-        if (m_enabled)
-            err() << '\r' << QString(100, QLatin1Char(' ')) << '\r' << Qt::flush;
-    }
-
-private:
-    bool m_enabled;
-    QElapsedTimer m_timer;
-};
-
-} // namespace
-
 int runReport(const QStringList& arguments)
 {
     return guarded(QStringLiteral("report"), [&] {
