@@ -78,7 +78,7 @@ void ShadowMap::allocate(int size, DepthFormat format)
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("shadow map %1² %2").arg(size).arg(toString(format)));
+    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("shadow map %1 x %1 %2").arg(size).arg(toString(format)));
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (const GLenum error = m_gl->glGetError(); error != GL_NO_ERROR) {
         throw RenderError(QStringLiteral("the driver cannot allocate a %1 x %1 %2 shadow map (GL error 0x%3); choose a smaller map.size")
