@@ -84,9 +84,14 @@ BiasTuning BiasTuner::result() const
     t.current = m_grid.back();
     for (std::size_t i = 0; i < t.candidates.size(); ++i) {
         const BiasCandidate& a = t.candidates[i];
+        // Dominated: another is no worse on both and better on one, or the same on both with
+        // a smaller bias (the curve keeps one point per trade-off).
         const bool dominated = std::any_of(t.candidates.begin(), t.candidates.end(), [&](const BiasCandidate& b) {
-            return b.falseShadow <= a.falseShadow && b.falseLight <= a.falseLight
-                && (b.falseShadow < a.falseShadow || b.falseLight < a.falseLight);
+            const bool noWorse = b.falseShadow <= a.falseShadow && b.falseLight <= a.falseLight;
+            const bool better = b.falseShadow < a.falseShadow || b.falseLight < a.falseLight;
+            const bool smallerTwin = b.falseShadow == a.falseShadow && b.falseLight == a.falseLight
+                                  && std::pair(b.slope + b.min, b.slope) < std::pair(a.slope + a.min, a.slope);
+            return noWorse && (better || smallerTwin);
         });
         if (!dominated)
             t.front.push_back(i);

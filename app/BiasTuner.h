@@ -42,7 +42,7 @@ class BiasTuner {
 public:
     BiasTuner(const Settings& settings, QSize size);
 
-    int steps() const { return int((m_grid.size() + 1) * m_placements.size()); }
+    int steps() const { return int(m_grid.size() * m_placements.size()); }
     int stepsDone() const { return m_step; }
     bool done() const { return m_step >= steps(); }
     // `renderer`'s context must be current. Throws like Renderer::render().
