@@ -11,11 +11,11 @@ namespace shadowlab {
 
 // OSMesa cannot make a context current without a colour buffer, so each offscreen
 // surface carries a small private one. Real rendering goes into FBOs.
-class OsMesaOffscreenSurface : public QPlatformOffscreenSurface
+class HeadlessOffscreenSurface : public QPlatformOffscreenSurface
 {
 public:
-    explicit OsMesaOffscreenSurface(QOffscreenSurface *surface);
-    ~OsMesaOffscreenSurface() override;
+    explicit HeadlessOffscreenSurface(QOffscreenSurface *surface);
+    ~HeadlessOffscreenSurface() override;
 
     bool isValid() const override;
 

@@ -2,10 +2,11 @@
 
 #include <QtCore/QByteArray>
 #include <QtCore/QtPlugin>
+#include <qpa/qplatformintegrationfactory_p.h>
 
 // Lives in the same object file as selectPlatformForHeadlessUse() so that calling the
 // function is what makes the linker keep the plugin registration.
-Q_IMPORT_PLUGIN(OsMesaIntegrationPlugin)
+Q_IMPORT_PLUGIN(HeadlessIntegrationPlugin)
 
 #if defined(__SANITIZE_ADDRESS__)
 // Mesa 22's OSMesa never frees its per-process state and per-size framebuffer records,
@@ -14,7 +15,7 @@ Q_IMPORT_PLUGIN(OsMesaIntegrationPlugin)
 // we failed to destroy is owned by an OsMesaOpenGLContext allocated from Qt, not Mesa.
 extern "C" const char *__lsan_default_suppressions()
 {
-    return "leak:libOSMesa.so\n";
+    return "leak:libOSMesa.so\nleak:libEGL_mesa.so\nleak:libgallium\n";
 }
 #endif
 
@@ -27,7 +28,37 @@ void selectPlatformForHeadlessUse()
         return;
     if (!qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
         return;
-    qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("osmesa"));
+    qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("headless"));
+}
+
+QStringList headlessPlatformNames()
+{
+    return { QStringLiteral("headless"), QStringLiteral("egl"), QStringLiteral("osmesa") };
+}
+
+QStringList availablePlatformNames()
+{
+    QStringList names = QPlatformIntegrationFactory::keys() + headlessPlatformNames();
+    names.removeDuplicates();
+    return names;
+}
+
+namespace {
+QString &activeBackend()
+{
+    static QString name;
+    return name;
+}
+} // namespace
+
+QString activeHeadlessBackend()
+{
+    return activeBackend();
+}
+
+void setActiveHeadlessBackend(const QString &backend)
+{
+    activeBackend() = backend;
 }
 
 } // namespace shadowlab

@@ -1,0 +1,103 @@
+#include "EglDisplay.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+
+#include <EGL/eglext.h>
+
+#include <array>
+
+namespace shadowlab {
+
+namespace {
+
+bool hasExtension(EGLDisplay display, const char *name)
+{
+    const char *extensions = eglQueryString(display, EGL_EXTENSIONS);
+    return extensions && QByteArray(extensions).split(' ').contains(QByteArray(name));
+}
+
+// Creating (and dropping) a 3.3 core context is the only sure test: some displays
+// initialise and then offer ES only, or no configless or surfaceless contexts.
+QString coreContextProblem(EGLDisplay display)
+{
+    if (!hasExtension(display, "EGL_KHR_surfaceless_context"))
+        return QStringLiteral("no EGL_KHR_surfaceless_context");
+    if (!hasExtension(display, "EGL_KHR_no_config_context") && !hasExtension(display, "EGL_MESA_configless_context"))
+        return QStringLiteral("no EGL_KHR_no_config_context");
+    if (!eglBindAPI(EGL_OPENGL_API))
+        return QStringLiteral("no desktop OpenGL");
+    const std::array<EGLint, 7> attributes = {
+        EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE,
+    };
+    const EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes.data());
+    if (context == EGL_NO_CONTEXT)
+        return QStringLiteral("no OpenGL 3.3 core context (EGL error 0x%1)").arg(eglGetError(), 0, 16);
+    eglDestroyContext(display, context);
+    return QString();
+}
+
+} // namespace
+
+std::unique_ptr<EglDisplay> EglDisplay::open(QString *whyNot)
+{
+    QStringList problems;
+    const char *clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const QList<QByteArray> client = clientExtensions ? QByteArray(clientExtensions).split(' ') : QList<QByteArray>();
+    const auto getPlatformDisplay =
+            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+
+    auto tryDisplay = [&](EGLDisplay display, const QString &platform) -> std::unique_ptr<EglDisplay> {
+        EGLint major = 0;
+        EGLint minor = 0;
+        if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
+            problems << QStringLiteral("%1: cannot initialise").arg(platform);
+            return nullptr;
+        }
+        const QString problem = coreContextProblem(display);
+        if (problem.isEmpty())
+            return std::unique_ptr<EglDisplay>(new EglDisplay(display, platform));
+        problems << QStringLiteral("%1: %2").arg(platform, problem);
+        eglTerminate(display);
+        return nullptr;
+    };
+
+    if (!getPlatformDisplay) {
+        problems << QStringLiteral("no eglGetPlatformDisplayEXT");
+    } else {
+        if (client.contains("EGL_MESA_platform_surfaceless")) {
+            if (auto display = tryDisplay(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
+                                          QStringLiteral("surfaceless")))
+                return display;
+        } else {
+            problems << QStringLiteral("no EGL_MESA_platform_surfaceless");
+        }
+        const auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        if (client.contains("EGL_EXT_platform_device") && queryDevices) {
+            std::array<EGLDeviceEXT, 16> devices{};
+            EGLint count = 0;
+            if (queryDevices(EGLint(devices.size()), devices.data(), &count)) {
+                for (EGLint i = 0; i < count; ++i) {
+                    if (auto display = tryDisplay(getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr),
+                                                  QStringLiteral("device")))
+                        return display;
+                }
+            }
+            if (count == 0)
+                problems << QStringLiteral("no EGL device");
+        } else {
+            problems << QStringLiteral("no EGL_EXT_platform_device");
+        }
+    }
+    if (whyNot)
+        *whyNot = problems.join(QStringLiteral("; "));
+    return nullptr;
+}
+
+EglDisplay::~EglDisplay()
+{
+    eglTerminate(m_display);
+}
+
+} // namespace shadowlab

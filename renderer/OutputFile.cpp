@@ -1,0 +1,91 @@
+#include "OutputFile.h"
+
+#include "MessageText.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QSaveFile>
+#include <QTemporaryFile>
+
+namespace shadowlab {
+
+namespace {
+
+OutputError badLocation(const QString& what, const QString& path, const QString& reason)
+{
+    return OutputError(OutputError::Kind::BadLocation, QStringLiteral("%1: cannot write '%2': %3").arg(what, displayText(path), reason));
+}
+
+// Creating (and at once removing) a file is the only sure test: permissions say nothing
+// about read-only mounts or /proc, and root passes every permission check.
+QString folderProblem(const QString& folder)
+{
+    const QFileInfo info(folder);
+    if (!info.exists())
+        return QStringLiteral("the folder '%1' does not exist").arg(displayText(folder));
+    if (!info.isDir())
+        return QStringLiteral("'%1' is not a folder").arg(displayText(folder));
+    QTemporaryFile probe(QDir(folder).filePath(QStringLiteral(".shadowlab-probe-XXXXXX")));
+    if (!probe.open())
+        return QStringLiteral("the folder '%1' does not accept new files (%2)").arg(displayText(folder), probe.errorString());
+    return QString();
+}
+
+} // namespace
+
+void checkOutputFile(const QString& path, const QString& what)
+{
+    if (path.isEmpty())
+        throw OutputError(OutputError::Kind::BadLocation, QStringLiteral("%1: give a file name").arg(what));
+    const QFileInfo info(path);
+    if (info.exists() && info.isDir())
+        throw badLocation(what, path, QStringLiteral("it is a folder; give a file name in it"));
+    if (info.exists() && !info.isFile())
+        throw badLocation(what, path, QStringLiteral("it is a device, pipe or socket, not a file; give a file name in a folder"));
+    if (info.exists() && !info.isWritable())
+        throw badLocation(what, path, QStringLiteral("the file is read-only"));
+    if (const QString problem = folderProblem(info.absolutePath()); !problem.isEmpty())
+        throw badLocation(what, path, problem);
+}
+
+void checkOutputFolder(const QString& path, const QString& what)
+{
+    if (path.isEmpty())
+        throw OutputError(OutputError::Kind::BadLocation, QStringLiteral("%1: give a folder name").arg(what));
+    QFileInfo info(path);
+    if (info.exists()) {
+        if (const QString problem = folderProblem(info.absoluteFilePath()); !problem.isEmpty())
+            throw badLocation(what, path, problem);
+        return;
+    }
+    // The nearest existing parent must let the missing folders be created.
+    QDir parent(info.absoluteFilePath());
+    while (!parent.exists() && parent.cdUp()) {
+    }
+    if (const QString problem = folderProblem(parent.absolutePath()); !problem.isEmpty())
+        throw badLocation(what, path, problem);
+}
+
+void writeOutputFile(const QString& path, const QByteArray& bytes)
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot write '%1': %2").arg(displayText(path), file.errorString()));
+    if (file.write(bytes) != bytes.size() || !file.commit())
+        throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("writing '%1' failed, so it was left as it was: %2")
+                                                              .arg(displayText(path), file.errorString()));
+}
+
+QByteArray encodePng(const QImage& image)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (image.isNull() || !image.save(&buffer, "PNG"))
+        throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("the %1x%2 image could not be encoded as PNG").arg(image.width()).arg(image.height()));
+    return bytes;
+}
+
+} // namespace shadowlab
