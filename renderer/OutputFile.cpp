@@ -9,6 +9,11 @@
 #include <QSaveFile>
 #include <QTemporaryFile>
 
+#include <cerrno>
+#include <cstring>
+
+#include <unistd.h>
+
 namespace shadowlab {
 
 namespace {
@@ -73,7 +78,30 @@ void writeOutputFile(const QString& path, const QByteArray& bytes)
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot write '%1': %2").arg(displayText(path), file.errorString()));
-    if (file.write(bytes) != bytes.size() || !file.commit())
+    // Written with write(2) and synced here rather than through QIODevice: its buffered writes
+    // lose a short write (a full disk, a file size limit) without an error.
+    const int fd = file.handle();
+    qsizetype done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.constData() + done, std::size_t(bytes.size() - done));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        done += n;
+    }
+    const QString reason = done < bytes.size() ? QString::fromLocal8Bit(std::strerror(errno))
+                         : ::fsync(fd) != 0    ? QString::fromLocal8Bit(std::strerror(errno))
+                                               : QString();
+    if (!reason.isEmpty()) {
+        file.cancelWriting();
+        throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("writing '%1' failed after %2 of %3 bytes, so it was left as it was: %4")
+                                                              .arg(displayText(path))
+                                                              .arg(done)
+                                                              .arg(bytes.size())
+                                                              .arg(reason));
+    }
+    if (!file.commit())
         throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("writing '%1' failed, so it was left as it was: %2")
                                                               .arg(displayText(path), file.errorString()));
 }

@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 #include "Commands.h"
+#include "HeadlessPlatform.h"
 #include "HeadlessRenderer.h"
 #include "OutputFile.h"
 
@@ -50,6 +51,8 @@ int runRender(const QStringList& arguments)
         HeadlessRenderer headless;
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
+        if (const QString backend = activeHeadlessBackend(); !backend.isEmpty())
+            out() << "headless platform: " << backend << ", " << headless.renderer().rendererString() << Qt::endl;
         QByteArray scenePng, depthPng;
         QSize depthSize;
         if (parser.isSet(QStringLiteral("out")))
