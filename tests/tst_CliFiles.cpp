@@ -494,6 +494,7 @@ private Q_SLOTS:
         // No display and nothing asked for: the headless platform, EGL first.
         QTest::newRow("nothing set") << std::optional<QString>() << std::optional<QString>() << "egl-surfaceless";
         QTest::newRow("egl") << std::optional<QString>("egl") << std::optional<QString>() << "egl-surfaceless";
+        QTest::newRow("egl device") << std::optional<QString>("egl") << std::optional<QString>() << "egl-device";
 #ifdef SHADOWLAB_HAVE_OSMESA
         QTest::newRow("SHADOWLAB_HEADLESS=osmesa") << std::optional<QString>() << std::optional<QString>("osmesa") << "osmesa";
         QTest::newRow("osmesa") << std::optional<QString>("osmesa") << std::optional<QString>() << "osmesa";
@@ -510,6 +511,9 @@ private Q_SLOTS:
         options.env["WAYLAND_DISPLAY"] = std::nullopt;
         options.env["QT_QPA_PLATFORM"] = platform;
         options.env["SHADOWLAB_HEADLESS"] = forced;
+        // The EGL device path (a GPU with no display) is taken where surfaceless Mesa is
+        // missing; Mesa's software device stands in for the GPU here.
+        options.env["SHADOWLAB_EGL_PLATFORM"] = backend == u"egl-device" ? std::optional<QString>("device") : std::nullopt;
         const QString out = m_dir.filePath("backend-" + backend + ".png");
         const Run r = shadowlab({"render", "--size", "96x64", "--out", out}, options);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));

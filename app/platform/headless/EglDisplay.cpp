@@ -63,18 +63,27 @@ std::unique_ptr<EglDisplay> EglDisplay::open(QString *whyNot)
         return nullptr;
     };
 
-    if (!getPlatformDisplay) {
+    // SHADOWLAB_EGL_PLATFORM=surfaceless|device tries only that one (to test the device path
+    // on a machine that also has surfaceless Mesa).
+    const QString only = qEnvironmentVariable("SHADOWLAB_EGL_PLATFORM").toLower();
+    const bool trySurfaceless = only.isEmpty() || only == u"surfaceless";
+    const bool tryDevice = only.isEmpty() || only == u"device";
+    if (!trySurfaceless && !tryDevice) {
+        problems << QStringLiteral("SHADOWLAB_EGL_PLATFORM='%1' is neither surfaceless nor device").arg(only);
+    } else if (!getPlatformDisplay) {
         problems << QStringLiteral("no eglGetPlatformDisplayEXT");
     } else {
-        if (client.contains("EGL_MESA_platform_surfaceless")) {
+        if (trySurfaceless && !client.contains("EGL_MESA_platform_surfaceless")) {
+            problems << QStringLiteral("no EGL_MESA_platform_surfaceless");
+        } else if (trySurfaceless) {
             if (auto display = tryDisplay(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr),
                                           QStringLiteral("surfaceless")))
                 return display;
-        } else {
-            problems << QStringLiteral("no EGL_MESA_platform_surfaceless");
         }
         const auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-        if (client.contains("EGL_EXT_platform_device") && queryDevices) {
+        if (tryDevice && (!client.contains("EGL_EXT_platform_device") || !queryDevices)) {
+            problems << QStringLiteral("no EGL_EXT_platform_device");
+        } else if (tryDevice) {
             std::array<EGLDeviceEXT, 16> devices{};
             EGLint count = 0;
             if (queryDevices(EGLint(devices.size()), devices.data(), &count)) {
@@ -86,8 +95,6 @@ std::unique_ptr<EglDisplay> EglDisplay::open(QString *whyNot)
             }
             if (count == 0)
                 problems << QStringLiteral("no EGL device");
-        } else {
-            problems << QStringLiteral("no EGL_EXT_platform_device");
         }
     }
     if (whyNot)
