@@ -35,10 +35,23 @@ QString unknownPlatformProblem(const QString& requested)
     if (requested.isEmpty())
         return QString();
     const QStringList available = shadowlab::availablePlatformNames();
+    const bool haveDisplay = !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    QStringList needDisplay;
     for (const QString& candidate : requested.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
-        if (available.contains(candidate.section(QLatin1Char(':'), 0, 0).trimmed(), Qt::CaseInsensitive))
-            return QString();
+        const QString name = candidate.section(QLatin1Char(':'), 0, 0).trimmed().toLower();
+        if (!available.contains(name, Qt::CaseInsensitive))
+            continue;
+        // Qt aborts when a window-system platform finds no display to connect to.
+        if (!haveDisplay && (name == u"xcb" || name.startsWith(u"wayland"))) {
+            needDisplay << name;
+            continue;
+        }
+        return QString();
     }
+    if (!needDisplay.isEmpty())
+        return QStringLiteral("shadowlab: the Qt platform '%1' needs a display and there is none (DISPLAY and WAYLAND_DISPLAY are unset); "
+                              "leave QT_QPA_PLATFORM and -platform out to render headless")
+            .arg(needDisplay.join(QStringLiteral("', '")));
     return QStringLiteral("shadowlab: there is no Qt platform '%1'; available: %2")
         .arg(shadowlab::displayText(requested), available.join(QStringLiteral(", ")));
 }

@@ -472,6 +472,8 @@ private Q_SLOTS:
         QTest::newRow("-platform bogus") << QStringList{"-platform", "bogus"} << QString();
         QTest::newRow("-platform bogus render") << QStringList{"-platform", "bogus", "render", "--out", m_dir.filePath("never.png")} << QString();
         QTest::newRow("QT_QPA_PLATFORM=bogus") << QStringList{"render", "--out", m_dir.filePath("never.png")} << "bogus";
+        QTest::newRow("-platform xcb with no display") << QStringList{"-platform", "xcb", "render", "--out", m_dir.filePath("never.png")}
+                                                       << QString();
     }
 
     void unknownPlatformIsAClearError()
@@ -481,9 +483,15 @@ private Q_SLOTS:
         Options options;
         if (!environment.isEmpty())
             options.env["QT_QPA_PLATFORM"] = environment;
+        options.env["DISPLAY"] = std::nullopt;
+        options.env["WAYLAND_DISPLAY"] = std::nullopt;
         const Run r = shadowlab(arguments, options);
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("no Qt platform 'bogus'") && r.err.contains("egl"), qPrintable(r.err));
+        if (arguments.contains("xcb"))
+            QVERIFY2(r.err.contains("'xcb' needs a display"), qPrintable(r.err));
+        else
+            QVERIFY2(r.err.contains("no Qt platform 'bogus'") && r.err.contains("egl"), qPrintable(r.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never.png")));
     }
 
     void headlessBackendIsChosenWithNoDisplay_data()

@@ -40,6 +40,9 @@ QStringList availablePlatformNames()
 {
     QStringList names = QPlatformIntegrationFactory::keys() + headlessPlatformNames();
     names.removeDuplicates();
+#ifndef SHADOWLAB_HAVE_OSMESA
+    names.removeAll(QStringLiteral("osmesa")); // the plugin's key, but this build has no OSMesa
+#endif
     return names;
 }
 
