@@ -10,9 +10,10 @@ Q_IMPORT_PLUGIN(HeadlessIntegrationPlugin)
 
 #if defined(__SANITIZE_ADDRESS__)
 // Mesa 22's OSMesa never frees its per-process state and per-size framebuffer records,
-// even for a context made current, released and destroyed by the book; without this
-// every GL test would fail LeakSanitizer at exit. Leaks of ours still show: a context
-// we failed to destroy is owned by an OsMesaOpenGLContext allocated from Qt, not Mesa.
+// even for a context made current, released and destroyed by the book, and its EGL driver
+// keeps per-process state too; without this every GL test would fail LeakSanitizer at
+// exit. Leaks of ours still show: a context we failed to destroy is owned by an
+// OsMesaOpenGLContext or EglOpenGLContext allocated from Qt, not Mesa.
 extern "C" const char *__lsan_default_suppressions()
 {
     return "leak:libOSMesa.so\nleak:libEGL_mesa.so\nleak:libgallium\n";
