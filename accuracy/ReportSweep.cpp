@@ -1,13 +1,15 @@
 #include "ReportSweep.h"
 
+#include "InputFile.h"
+#include "MessageText.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QJsonParseError>
 
 namespace shadowlab {
 
@@ -108,49 +110,49 @@ std::vector<SweepEntry> defaultSweep()
     return s;
 }
 
-QString valueText(const QJsonValue& v)
-{
-    if (v.isBool())
-        return v.toBool() ? QStringLiteral("true") : QStringLiteral("false");
-    if (v.isDouble())
-        return QString::number(v.toDouble(), 'g', 15);
-    if (v.isArray()) {
-        QStringList parts;
-        for (const QJsonValue& x : v.toArray())
-            parts << QString::number(x.toDouble(), 'g', 15);
-        return parts.join(QLatin1Char(','));
-    }
-    return v.toString();
-}
+} // namespace
 
-std::vector<SweepEntry> sweepFromFile(const QString& path)
+std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw SettingsError(QString(), QStringLiteral("cannot read sweep file '%1': %2; give a file or one of %3")
-                                  .arg(path, file.errorString(), builtInSweeps().join(QStringLiteral(", "))));
+    const QString name = displayText(path);
+    auto problem = [&](const QString& what) {
+        return SettingsError(QString(), QStringLiteral("--sweep: '%1' %2; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(name, what));
+    };
     QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &error);
     if (error.error != QJsonParseError::NoError)
-        throw SettingsError(QString(), QStringLiteral("sweep file '%1' is not valid JSON at offset %2: %3").arg(path).arg(error.offset).arg(error.errorString()));
+        throw SettingsError(QString(), QStringLiteral("--sweep: '%1' is not valid JSON at offset %2: %3").arg(name).arg(error.offset).arg(error.errorString()));
+    if (doc.isObject() && !doc.object().value(QStringLiteral("configurations")).isArray())
+        throw problem(QStringLiteral("is an object without a \"configurations\" array"));
     const QJsonArray array = doc.isArray() ? doc.array() : doc.object().value(QStringLiteral("configurations")).toArray();
     if (array.isEmpty())
-        throw SettingsError(QString(), QStringLiteral("sweep file '%1' holds no configurations; write [{\"label\": \"...\", \"set\": {\"key\": value}}, ...]").arg(path));
+        throw problem(QStringLiteral("holds no configurations"));
     std::vector<SweepEntry> sweep;
-    for (const QJsonValue& v : array) {
-        const QJsonObject o = v.toObject();
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString where = QStringLiteral("entry %1").arg(i + 1);
+        if (!array[i].isObject())
+            throw problem(QStringLiteral("has %1 that is not an object").arg(where));
+        const QJsonObject o = array[i].toObject();
+        for (auto it = o.begin(); it != o.end(); ++it) {
+            if (it.key() != u"label" && it.key() != u"set")
+                throw problem(QStringLiteral("has %1 with the unknown member '%2' (only \"label\" and \"set\")").arg(where, displayText(it.key())));
+        }
+        if (o.contains(QStringLiteral("label")) && !o.value(QStringLiteral("label")).isString())
+            throw problem(QStringLiteral("has %1 whose \"label\" is not a string").arg(where));
+        if (o.contains(QStringLiteral("set")) && !o.value(QStringLiteral("set")).isObject())
+            throw problem(QStringLiteral("has %1 whose \"set\" is not an object of key: value").arg(where));
         SweepEntry entry{o.value(QStringLiteral("label")).toString(), {}};
-        const QJsonObject set = o.value(QStringLiteral("set")).toObject();
-        for (auto it = set.begin(); it != set.end(); ++it)
-            entry.assignments << it.key() + QLatin1Char('=') + valueText(it.value());
+        try {
+            entry.assignments = assignmentsFromJson(o.value(QStringLiteral("set")).toObject());
+        } catch (const SettingsError& e) {
+            throw SettingsError(e.key(), QStringLiteral("in '%1', %2: %3").arg(name, where, QString::fromStdString(e.what())));
+        }
         if (entry.label.isEmpty())
             entry.label = entry.assignments.isEmpty() ? QStringLiteral("base") : entry.assignments.join(QStringLiteral(", "));
         sweep.push_back(entry);
     }
     return sweep;
 }
-
-} // namespace
 
 QStringList builtInSweeps()
 {
@@ -169,7 +171,13 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
         return biasSweep();
     if (nameOrFile == u"lights")
         return lightsSweep();
-    return sweepFromFile(nameOrFile);
+    QByteArray bytes;
+    try {
+        bytes = readInputFile(nameOrFile, QStringLiteral("sweep file"));
+    } catch (const SettingsError& e) {
+        throw SettingsError(QString(), QStringLiteral("--sweep: %1; give a file or one of %2").arg(QString::fromStdString(e.what()), builtInSweeps().join(QStringLiteral(", "))));
+    }
+    return parseSweepFile(bytes, nameOrFile);
 }
 
 Settings applySweepEntry(const Settings& base, const SweepEntry& entry)
@@ -180,7 +188,7 @@ Settings applySweepEntry(const Settings& base, const SweepEntry& entry)
             applyAssignment(s, a);
         ensureValid(s);
     } catch (const SettingsError& e) {
-        throw SettingsError(e.key(), QStringLiteral("in sweep entry '%1': %2").arg(entry.label, QString::fromUtf8(e.what())));
+        throw SettingsError(e.key(), QStringLiteral("in sweep entry '%1': %2").arg(displayText(entry.label), QString::fromUtf8(e.what())));
     }
     return s;
 }

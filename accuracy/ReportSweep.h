@@ -2,6 +2,7 @@
 
 #include "Settings.h"
 
+#include <QByteArray>
 #include <QString>
 #include <QStringList>
 
@@ -17,10 +18,14 @@ struct SweepEntry {
 
 // The built-in sweeps: "default" (all of the below, plus the classic tutorial configuration),
 // "filters", "resolution", "bias", "lights"; or a JSON file: an array of {"label": ..., "set": {key: value}}
-// objects (or {"configurations": [...]}). Throws SettingsError naming the
-// file when it cannot be read or does not hold settings (like a settings file).
+// objects (or {"configurations": [...]}). Throws SettingsError with the file named.
+// The file is read once, within readInputFile()'s limits; every entry must be an object with
+// only "label" (a string) and "set" (an object of setting values).
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile);
 QStringList builtInSweeps();
+
+// The sweep a file's bytes describe, checked as loadSweep() does; `path` names it in errors.
+std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& path);
 
 // The settings of one entry; throws SettingsError prefixed with the entry's label.
 Settings applySweepEntry(const Settings& base, const SweepEntry& entry);

@@ -20,7 +20,7 @@ void configureApplication()
     QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
     QCoreApplication::setOrganizationName(QStringLiteral("ShadowLab"));
     QCoreApplication::setApplicationName(QStringLiteral("ShadowLab"));
-    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SHADOWLAB_VERSION));
 }
 
 } // namespace shadowlab

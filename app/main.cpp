@@ -1,4 +1,5 @@
 #include "Application.h"
+#include "HeadlessPlatform.h"
 #include "MainWindow.h"
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
@@ -6,9 +7,68 @@
 #include <QApplication>
 #include <QGuiApplication>
 
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+// The platform Qt will be asked for: "-platform name" (or --platform, or =name) wins over
+// QT_QPA_PLATFORM. Empty when neither names one.
+QString requestedPlatform(int argc, char* argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const QString argument = QString::fromLocal8Bit(argv[i]);
+        for (const QString& flag : {QStringLiteral("-platform"), QStringLiteral("--platform")}) {
+            if (argument == flag)
+                return i + 1 < argc ? QString::fromLocal8Bit(argv[i + 1]) : QStringLiteral(" ");
+            if (argument.startsWith(flag + QLatin1Char('=')))
+                return argument.mid(flag.size() + 1);
+        }
+    }
+    return qEnvironmentVariable("QT_QPA_PLATFORM");
+}
+
+// Qt aborts when no platform it was asked for exists; say so while we still can, naming
+// what is available. ("xcb:option" carries options; "a;b" lists fallbacks.)
+QString unknownPlatformProblem(const QString& requested)
+{
+    if (requested.isEmpty())
+        return QString();
+    const QStringList available = shadowlab::availablePlatformNames();
+    const bool haveDisplay = !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    QStringList needDisplay;
+    for (const QString& candidate : requested.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+        const QString name = candidate.section(QLatin1Char(':'), 0, 0).trimmed().toLower();
+        if (!available.contains(name, Qt::CaseInsensitive))
+            continue;
+        // Qt aborts when a window-system platform finds no display to connect to.
+        if (!haveDisplay && (name == u"xcb" || name.startsWith(u"wayland"))) {
+            needDisplay << name;
+            continue;
+        }
+        return QString();
+    }
+    if (!needDisplay.isEmpty())
+        return QStringLiteral("shadowlab: the Qt platform '%1' needs a display and there is none (DISPLAY and WAYLAND_DISPLAY are unset); "
+                              "leave QT_QPA_PLATFORM and -platform out to render headless")
+            .arg(needDisplay.join(QStringLiteral("', '")));
+    return QStringLiteral("shadowlab: there is no Qt platform '%1'; available: %2")
+        .arg(shadowlab::displayText(requested), available.join(QStringLiteral(", ")));
+}
+
+} // namespace
+
 int main(int argc, char* argv[])
 {
+    if (argc == 2 && (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-v") == 0)) {
+        std::printf("shadowlab %s\n", SHADOWLAB_VERSION);
+        return shadowlab::cli::kExitOk;
+    }
     shadowlab::configureApplication();
+    if (const QString problem = unknownPlatformProblem(requestedPlatform(argc, argv)); !problem.isEmpty()) {
+        std::fprintf(stderr, "%s\n", qPrintable(problem));
+        return shadowlab::cli::kExitBadInput;
+    }
 
     QStringList arguments;
     for (int i = 1; i < argc; ++i)
@@ -30,13 +90,16 @@ int main(int argc, char* argv[])
     }
     if (!arguments.isEmpty()) {
         QGuiApplication app(argc, argv);
-        shadowlab::cli::err() << "shadowlab: unknown command '" << arguments.first() << "'\n\n";
-        shadowlab::cli::printUsage();
-        return shadowlab::cli::kExitBadInput;
+        const QStringList left = QGuiApplication::arguments().mid(1); // without Qt's own options
+        if (!left.isEmpty()) {
+            shadowlab::cli::err() << "shadowlab: unknown command '" << shadowlab::displayText(left.first()) << "'\n\n";
+            shadowlab::cli::printUsage();
+            return shadowlab::cli::kExitBadInput;
+        }
     }
 
     QApplication app(argc, argv);
-    if (QGuiApplication::platformName() == u"osmesa") {
+    if (shadowlab::headlessPlatformNames().contains(QGuiApplication::platformName())) {
         // A window nobody can see would run forever: say what to do instead.
         shadowlab::cli::err() << "shadowlab: there is no display, so the explorer cannot open.\n"
                               << "Render it offscreen instead: shadowlab screenshot --out window.png" << Qt::endl;

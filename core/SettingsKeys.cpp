@@ -2,17 +2,22 @@
 
 #include "Limits.h"
 #include "SceneNames.h"
+#include "InputFile.h"
+#include "MessageText.h"
+#include "OutputFile.h"
 #include "SettingsError.h"
 #include "ShadowTechnique.h"
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
 
 #include <glm/geometric.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <functional>
 #include <optional>
 
@@ -71,12 +76,30 @@ std::optional<QString> checkVec3(const glm::dvec3& v)
     return std::nullopt;
 }
 
+// Why `text`, which Qt would not read as a double, is refused: a number too small or too
+// large for a double is called that, not "not a number".
+QString numberProblem(const QString& text)
+{
+    const QByteArray latin = text.trimmed().toLatin1();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(latin.constData(), &end);
+    if (!latin.isEmpty() && end == latin.constData() + latin.size() && errno == ERANGE) {
+        if (std::abs(v) < 1.0)
+            return QStringLiteral("'%1' is too small: it underflows to 0 in double precision (the smallest normal magnitude is %2); write 0 or a larger value")
+                .arg(displayText(text))
+                .arg(std::numeric_limits<double>::min());
+        return QStringLiteral("'%1' is too large: it overflows double precision").arg(displayText(text));
+    }
+    return QStringLiteral("'%1' is not a number").arg(displayText(text));
+}
+
 double parseNumber(const QString& key, const QString& text, const Range& range)
 {
     bool ok = false;
     const double v = text.trimmed().toDouble(&ok);
     if (!ok)
-        throw SettingsError(key, QStringLiteral("'%1' is not a number; allowed: %2").arg(text, range.text()));
+        throw SettingsError(key, QStringLiteral("%1; allowed: %2").arg(numberProblem(text), range.text()));
     if (auto problem = checkNumber(v, range))
         throw SettingsError(key, *problem);
     return v;
@@ -117,7 +140,7 @@ Entry integerKey(const char* key, int lo, int hi, bool oddOnly, Field field, con
                 bool ok = false;
                 const int value = v.trimmed().toInt(&ok);
                 if (!ok)
-                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(v, rangeText));
+                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(displayText(v), rangeText));
                 if (auto problem = check(value))
                     throw SettingsError(k, *problem);
                 field(s) = value;
@@ -138,7 +161,7 @@ Entry boolKey(const char* key, Field field, const char* help)
                 else if (t == u"false" || t == u"0" || t == u"off" || t == u"no")
                     field(s) = false;
                 else
-                    throw SettingsError(k, QStringLiteral("'%1' is not a boolean; allowed: true | false").arg(v));
+                    throw SettingsError(k, QStringLiteral("'%1' is not a boolean; allowed: true | false").arg(displayText(v)));
             },
             [](const Settings&) { return std::optional<QString>(); }};
 }
@@ -153,13 +176,13 @@ Entry vec3Key(const char* key, Field field, const char* help)
             [field, k](Settings& s, const QString& v) {
                 const QStringList parts = v.split(QLatin1Char(','));
                 if (parts.size() != 3)
-                    throw SettingsError(k, QStringLiteral("'%1' is not a vector; write three numbers x,y,z").arg(v));
+                    throw SettingsError(k, QStringLiteral("'%1' is not a vector; write three numbers x,y,z").arg(displayText(v)));
                 glm::dvec3 result;
                 for (int i = 0; i < 3; ++i) {
                     bool ok = false;
                     result[i] = parts[i].trimmed().toDouble(&ok);
                     if (!ok)
-                        throw SettingsError(k, QStringLiteral("'%1' is not a vector; write three numbers x,y,z").arg(v));
+                        throw SettingsError(k, QStringLiteral("'%1' is not a vector of three numbers x,y,z: %2").arg(displayText(v), numberProblem(parts[i])));
                 }
                 if (auto problem = checkVec3(result))
                     throw SettingsError(k, *problem);
@@ -179,7 +202,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
             [field, names, k, rangeText](Settings& s, const QString& v) {
                 const int index = names.indexOf(v.trimmed().toLower());
                 if (index < 0)
-                    throw SettingsError(k, QStringLiteral("'%1' is not allowed; choose one of %2").arg(v, rangeText));
+                    throw SettingsError(k, QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
                 field(s) = Enum(index);
             },
             [](const Settings&) { return std::optional<QString>(); }};
@@ -209,12 +232,12 @@ Entry sceneKey()
             [names, rangeText](Settings& s, const QString& v) {
                 const QString name = v.trimmed().toLower();
                 if (!names.contains(name))
-                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1' is not a scene; choose one of %2").arg(v, rangeText));
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1' is not a scene; choose one of %2").arg(displayText(v), rangeText));
                 s.scene = name;
             },
             [names, rangeText](const Settings& s) -> std::optional<QString> {
                 if (!names.contains(s.scene))
-                    return QStringLiteral("'%1' is not a scene; choose one of %2").arg(s.scene, rangeText);
+                    return QStringLiteral("'%1' is not a scene; choose one of %2").arg(displayText(s.scene), rangeText);
                 return std::nullopt;
             }};
 }
@@ -382,7 +405,7 @@ void applyAssignment(Settings& settings, const QString& assignment)
 {
     const qsizetype eq = assignment.indexOf(QLatin1Char('='));
     if (eq <= 0)
-        throw SettingsError(QString(), QStringLiteral("'%1' is not key=value, e.g. --set bias.slope=0.01").arg(assignment));
+        throw SettingsError(QString(), QStringLiteral("'%1' is not key=value, e.g. --set bias.slope=0.01").arg(displayText(assignment)));
     applySetting(settings, assignment.left(eq), assignment.mid(eq + 1));
 }
 
@@ -406,6 +429,16 @@ QJsonObject settingsToJson(const Settings& settings)
     return object;
 }
 
+QStringList assignmentsFromJson(const QJsonObject& object)
+{
+    std::vector<std::pair<QString, QJsonValue>> flat;
+    flattenJson(object, QString(), flat);
+    QStringList assignments;
+    for (const auto& [key, value] : flat)
+        assignments << key + QLatin1Char('=') + jsonValueText(key, value);
+    return assignments;
+}
+
 Settings settingsFromJson(const QJsonObject& object, const Settings& base)
 {
     std::vector<std::pair<QString, QJsonValue>> flat;
@@ -416,35 +449,39 @@ Settings settingsFromJson(const QJsonObject& object, const Settings& base)
     return result;
 }
 
-Settings loadSettingsFile(const QString& path, const Settings& base)
+QJsonObject readSettingsObject(const QString& path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw SettingsError(QString(), QStringLiteral("cannot read settings file '%1': %2").arg(path, file.errorString()));
+    const QByteArray bytes = readInputFile(path, QStringLiteral("settings file"));
     QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &error);
     if (error.error != QJsonParseError::NoError)
         throw SettingsError(QString(), QStringLiteral("settings file '%1' is not valid JSON at offset %2: %3")
-                                           .arg(path)
+                                           .arg(displayText(path))
                                            .arg(error.offset)
                                            .arg(error.errorString()));
     if (!doc.isObject())
-        throw SettingsError(QString(), QStringLiteral("settings file '%1' must hold a JSON object of key: value pairs").arg(path));
+        throw SettingsError(QString(), QStringLiteral("settings file '%1' must hold a JSON object of key: value pairs").arg(displayText(path)));
+    return doc.object();
+}
+
+Settings settingsFromFileObject(const QString& path, const QJsonObject& object, const Settings& base)
+{
     try {
-        return settingsFromJson(doc.object(), base);
+        return settingsFromJson(object, base);
     } catch (const SettingsError& e) {
-        throw SettingsError(e.key(), QStringLiteral("in '%1': %2").arg(path, QString::fromStdString(e.what())));
+        throw SettingsError(e.key(), QStringLiteral("in '%1': %2").arg(displayText(path), QString::fromStdString(e.what())));
     }
+}
+
+Settings loadSettingsFile(const QString& path, const Settings& base)
+{
+    return settingsFromFileObject(path, readSettingsObject(path), base);
 }
 
 void saveSettingsFile(const QString& path, const Settings& settings)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
-        throw SettingsError(QString(), QStringLiteral("cannot write settings file '%1': %2").arg(path, file.errorString()));
-    const QByteArray bytes = QJsonDocument(settingsToJson(settings)).toJson(QJsonDocument::Indented);
-    if (file.write(bytes) != bytes.size())
-        throw SettingsError(QString(), QStringLiteral("cannot write settings file '%1': %2").arg(path, file.errorString()));
+    checkOutputFile(path, QStringLiteral("settings file"));
+    writeOutputFile(path, QJsonDocument(settingsToJson(settings)).toJson(QJsonDocument::Indented));
 }
 
 QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }

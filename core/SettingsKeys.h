@@ -39,12 +39,23 @@ void applyAssignment(Settings& settings, const QString& assignment);
 // Flat object of dotted keys to values, in key order.
 QJsonObject settingsToJson(const Settings& settings);
 
+// A JSON object (flat dotted keys, or nested objects that spell the same keys) as "key=value"
+// assignments; throws SettingsError naming the key for a value that is not a number, string,
+// boolean or array of numbers. Keys and values are checked when applied.
+QStringList assignmentsFromJson(const QJsonObject& object);
+
 // Applies a JSON object (flat dotted keys, or nested objects that spell the same keys) on
 // top of `base`. Throws SettingsError for unknown keys, wrong types or values out of range.
 Settings settingsFromJson(const QJsonObject& object, const Settings& base);
 
-// Reads a JSON settings file; the message names the file when it is missing or malformed.
+// Reads a JSON settings file once (pipes work; see readInputFile() for the limits); throws
+// SettingsError naming the file when it is missing, too big, malformed or not an object.
+QJsonObject readSettingsObject(const QString& path);
+// settingsFromJson() with errors that name the file.
+Settings settingsFromFileObject(const QString& path, const QJsonObject& object, const Settings& base);
+// Both of the above.
 Settings loadSettingsFile(const QString& path, const Settings& base);
+// Writes the file whole or not at all; throws OutputError (see OutputFile.h).
 void saveSettingsFile(const QString& path, const Settings& settings);
 
 QString toString(LightProjection value);

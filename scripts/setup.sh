@@ -9,9 +9,20 @@ preset="${SHADOWLAB_PRESET:-release}"
 packages=(
     cmake ninja-build g++ pkg-config
     qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
-    libglm-dev libosmesa6-dev libgl-dev libegl-dev libgl1-mesa-dri libembree-dev
+    libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev
     fonts-dejavu-core
 )
+
+# OSMesa is optional (Mesa 25.1 removed it): the headless platform uses EGL, and OSMesa as well
+# where the distribution still has it.
+if apt-cache show libosmesa6-dev >/dev/null 2>&1; then
+    packages+=(libosmesa6-dev)
+fi
+
+# The fuzz preset builds with clang and links libFuzzer (scripts/fuzz.sh).
+if [ "$preset" = fuzz ]; then
+    packages+=(clang libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Set up, build and run the whole test suite (Qt Test through CTest, headless).
+# Set up, build and run the whole test suite (Qt Test through CTest, on the headless platform: EGL, and OSMesa for the platform tests).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
 cd "$root"
-QT_QPA_PLATFORM=osmesa ctest --preset "${SHADOWLAB_PRESET:-release}" "$@"
+ctest --preset "${SHADOWLAB_PRESET:-release}" "$@"

@@ -5,7 +5,7 @@
 #include <QtTest/QtTest>
 #include <QtWidgets/QApplication>
 
-// QTEST_MAIN for ShadowLab: selects the headless "osmesa" platform (unless the
+// QTEST_MAIN for ShadowLab: selects the headless platform (unless the
 // environment names another) before the QApplication exists, so every test can
 // create widgets, windows and GL contexts with no display server. Like QTEST_MAIN
 // it calls an optional static TestClass::initMain() first, the place for

@@ -18,9 +18,6 @@ struct Run {
 Run shadowlab(const QStringList& arguments)
 {
     QProcess process;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert("QT_QPA_PLATFORM", "osmesa");
-    process.setProcessEnvironment(env);
     process.start(QStringLiteral(SHADOWLAB_BINARY), arguments);
     if (!process.waitForFinished(300000))
         return {};

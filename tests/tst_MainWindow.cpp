@@ -113,6 +113,8 @@ private slots:
     void saveScreenshotWritesPng();
     void impossibleValueIsShownAtTheFieldAndTheImageStays();
     void viewResizedToZeroAndBack();
+    void unwritablePathsAreRefusedAndOldFilesKept_data();
+    void unwritablePathsAreRefusedAndOldFilesKept();
     void idleWindowDrawsNoFrames();
     void settingsPersistAcrossWindows();
     void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
@@ -375,7 +377,9 @@ void tst_MainWindow::viewResizedToZeroAndBack()
     const QList<int> sizes = splitter->sizes();
     splitter->setSizes({0, sizes[0] + sizes[1]});
     QVERIFY(settle(*m_window));
-    QCOMPARE(m_window->sceneView(Side::A)->width(), 0);
+    // A view squeezed to nothing would never draw again: it keeps its minimum instead.
+    QVERIFY(m_window->sceneView(Side::A)->minimumWidth() > 0);
+    QCOMPARE(m_window->sceneView(Side::A)->width(), m_window->sceneView(Side::A)->minimumWidth());
     splitter->setSizes({sizes[0] + sizes[1], 0});
     QVERIFY(settle(*m_window));
 
@@ -386,6 +390,53 @@ void tst_MainWindow::viewResizedToZeroAndBack()
     QVERIFY(settle(*m_window));
     QVERIFY(distinctLevels(scene()) > 20);
     QVERIFY(distinctLevels(depthMap()) > 20);
+}
+
+void tst_MainWindow::unwritablePathsAreRefusedAndOldFilesKept_data()
+{
+    QTest::addColumn<QString>("what");
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("mentions");
+    for (const char* what : {"export", "screenshot"}) {
+        QTest::addRow("%s to /dev/full", what) << what << "/dev/full" << "not a file";
+        QTest::addRow("%s into /proc", what) << what << "/proc/nope.json" << "does not accept new files";
+        QTest::addRow("%s into a missing folder", what) << what << "%DIR%/missing/x.json" << "does not exist";
+        QTest::addRow("%s over a folder", what) << what << "%DIR%" << "folder";
+    }
+}
+
+void tst_MainWindow::unwritablePathsAreRefusedAndOldFilesKept()
+{
+    QFETCH(QString, what);
+    QFETCH(QString, path);
+    QFETCH(QString, mentions);
+    const QString folder = m_dir.filePath(QStringLiteral("unwritable-") + what);
+    QVERIFY(QDir().mkpath(folder));
+    const QString old = folder + QStringLiteral("/old.json");
+    const QByteArray oldContent("{\"bias.slope\": 0.25}");
+    {
+        QFile f(old);
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write(oldContent) == oldContent.size());
+    }
+    path.replace(QStringLiteral("%DIR%"), folder);
+    const QString error = what == u"export" ? m_window->exportSettings(path)
+                                            : m_window->saveScreenshot(ScreenshotDialog::Target::SceneView, path);
+    QVERIFY2(error.contains(mentions), qPrintable(error));
+    QStringList left = QDir(folder).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot);
+    QCOMPARE(left, QStringList{QStringLiteral("old.json")}); // nothing partial or temporary
+
+    // Over an existing file the write replaces it whole.
+    QVERIFY2((what == u"export" ? m_window->exportSettings(old) : m_window->saveScreenshot(ScreenshotDialog::Target::SceneView, old)).isEmpty(),
+             "writing over an existing file failed");
+    QFile written(old);
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    const QByteArray bytes = written.readAll();
+    if (what == u"export")
+        QCOMPARE(loadSettingsFile(old, Settings{}).bias.slope, m_window->settings(Side::A).bias.slope);
+    else
+        QVERIFY(!QImage::fromData(bytes, "PNG").isNull());
+    left = QDir(folder).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot);
+    QCOMPARE(left, QStringList{QStringLiteral("old.json")});
 }
 
 void tst_MainWindow::idleWindowDrawsNoFrames()

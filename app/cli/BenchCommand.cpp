@@ -15,6 +15,9 @@ namespace shadowlab::cli {
 
 namespace {
 
+// As render: the frame's colour, depth and the shadow map, about 16 bytes per pixel.
+const SizeLimits kBenchSize{{1, 1}, {8192, 8192}, QStringLiteral("bench keeps about 16 bytes per pixel in memory")};
+
 struct Phase {
     QString name;
     QString description;
@@ -105,7 +108,7 @@ int runBench(const QStringList& arguments)
         if (!parseArguments(parser, QStringLiteral("bench"), arguments))
             return kExitOk;
         const Settings settings = settingsFromOptions(parser);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kBenchSize);
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
         const QString phase = parser.value(QStringLiteral("phase"));

@@ -2,14 +2,13 @@
 
 #include "IoError.h"
 #include "Limits.h"
+#include "OutputFile.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "TraceError.h"
 
-#include <QFile>
-#include <QJsonDocument>
 #include <QJsonObject>
 
 #include <unistd.h>
@@ -37,7 +36,13 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
         return false;
     }
     if (!parser.positionalArguments().isEmpty())
-        throw UsageError(QStringLiteral("unexpected argument '%1'; run `shadowlab %2 --help`").arg(parser.positionalArguments().first(), command));
+        throw UsageError(QStringLiteral("unexpected argument '%1'; run `shadowlab %2 --help`").arg(displayText(parser.positionalArguments().first()), command));
+    // QCommandLineParser keeps the last of a repeated option; a user who wrote two meant something.
+    const QStringList given = parser.optionNames();
+    for (const QString& name : given) {
+        if (name != u"set" && name != u"set-b" && given.count(name) > 1)
+            throw UsageError(QStringLiteral("--%1 is given %2 times; give it once").arg(displayText(name)).arg(given.count(name)));
+    }
     return true;
 }
 
@@ -51,27 +56,16 @@ void addSettingsOptions(QCommandLineParser& parser)
                       QStringLiteral("file.json")});
 }
 
-namespace {
-
-QString sceneOfFile(const QString& path)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return QString(); // loadSettingsFile() reports the error with the file's name
-    const QJsonObject object = QJsonDocument::fromJson(file.readAll()).object();
-    return object.value(QStringLiteral("scene")).toString();
-}
-
-} // namespace
-
 Settings settingsFromOptions(const QCommandLineParser& parser)
 {
     const QStringList assignments = parser.values(QStringLiteral("set"));
     const QString file = parser.value(QStringLiteral("settings"));
 
+    // Read once: the file may be a pipe.
+    const QJsonObject fileObject = file.isEmpty() ? QJsonObject() : readSettingsObject(file);
     QString scene = QStringLiteral("seed");
-    if (!file.isEmpty() && !sceneOfFile(file).isEmpty())
-        scene = sceneOfFile(file);
+    if (const QString fileScene = fileObject.value(QStringLiteral("scene")).toString(); !fileScene.isEmpty())
+        scene = fileScene;
     if (parser.isSet(QStringLiteral("scene")))
         scene = parser.value(QStringLiteral("scene"));
     for (const QString& a : assignments) {
@@ -83,7 +77,7 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
 
     Settings settings = presetSettings(probe.scene);
     if (!file.isEmpty())
-        settings = loadSettingsFile(file, settings);
+        settings = settingsFromFileObject(file, fileObject, settings);
     for (const QString& a : assignments)
         applyAssignment(settings, a);
     settings.scene = probe.scene;
@@ -91,7 +85,7 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     for (const SettingsIssue& issue : validate(settings)) {
         if (issue.severity == SettingsIssue::Severity::Error)
             throw SettingsError(issue.key, issue.message);
-        err() << "warning: " << issue.key << ": " << issue.message << Qt::endl;
+        err() << "warning: " << issue.key << ": " << escapeControlCharacters(issue.message) << Qt::endl;
     }
     return settings;
 }
@@ -132,17 +126,22 @@ QString formatTexelLine(const FrameStats& stats)
              stats.reversedDepth ? QStringLiteral(", reversed depth") : QString());
 }
 
-QSize parseSize(const QString& text, const QString& option)
+QSize parseSize(const QString& text, const QString& option, const SizeLimits& limits)
 {
     const QStringList parts = text.toLower().split(QLatin1Char('x'));
     bool okW = false, okH = false;
     const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
     const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
     if (!okW || !okH)
-        throw UsageError(QStringLiteral("--%1: '%2' is not a size; write WIDTHxHEIGHT, e.g. 1280x720").arg(option, text));
-    if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-        throw UsageError(QStringLiteral("--%1: %2 is out of range; width and height must be in [1, %3]").arg(option, text).arg(kMaxImageSide));
-    return {w, h};
+        throw UsageError(QStringLiteral("--%1: '%2' is not a size; write WIDTHxHEIGHT, e.g. 1280x720").arg(option, displayText(text)));
+    const QSize size(w, h);
+    auto sizeText = [](QSize s) { return QStringLiteral("%1x%2").arg(s.width()).arg(s.height()); };
+    if (w < limits.minimum.width() || h < limits.minimum.height())
+        throw UsageError(QStringLiteral("--%1: %2 is too small; the minimum is %3").arg(option, sizeText(size), sizeText(limits.minimum)));
+    if (w > limits.maximum.width() || h > limits.maximum.height())
+        throw UsageError(QStringLiteral("--%1: %2 is too large; the maximum is %3 (%4)")
+                             .arg(option, sizeText(size), sizeText(limits.maximum), limits.reason));
+    return size;
 }
 
 int parseCount(const QString& text, const QString& option, int minimum, int maximum)
@@ -150,7 +149,7 @@ int parseCount(const QString& text, const QString& option, int minimum, int maxi
     bool ok = false;
     const int value = text.toInt(&ok);
     if (!ok || value < minimum || value > maximum)
-        throw UsageError(QStringLiteral("--%1: '%2' is not allowed; give a whole number in [%3, %4]").arg(option, text).arg(minimum).arg(maximum));
+        throw UsageError(QStringLiteral("--%1: '%2' is not allowed; give a whole number in [%3, %4]").arg(option, displayText(text)).arg(minimum).arg(maximum));
     return value;
 }
 
@@ -164,6 +163,9 @@ int guarded(const QString& command, const std::function<int()>& body)
     } catch (const UsageError& e) {
         err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
         return kExitBadInput;
+    } catch (const OutputError& e) {
+        err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
+        return e.kind() == OutputError::Kind::BadLocation ? kExitBadInput : kExitFailure;
     } catch (const RenderError& e) {
         err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
         return kExitFailure;

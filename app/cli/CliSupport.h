@@ -3,6 +3,7 @@
 #include "LightFitting.h"
 
 #include "FrameStats.h"
+#include "MessageText.h"
 #include "Settings.h"
 
 #include <QCommandLineParser>
@@ -18,20 +19,22 @@ namespace shadowlab::cli {
 
 // Exit codes of every subcommand.
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;     // the program failed (driver, I/O)
-constexpr int kExitBadInput = 2;    // the user asked for something impossible; nothing was done
+constexpr int kExitFailure = 1;     // the program failed (driver, or I/O while writing: the old file is kept)
+constexpr int kExitBadInput = 2;    // the user asked for something impossible (including an output path that
+                                    // cannot be written, found before any work); nothing was done
 
 // Bad command-line input that is not a setting (a malformed --size, a missing option).
 class UsageError : public std::runtime_error {
 public:
-    explicit UsageError(const QString& message) : std::runtime_error(message.toStdString()) {}
+    explicit UsageError(const QString& message) : std::runtime_error(escapeControlCharacters(message).toStdString()) {}
 };
 
 QTextStream& out();
 QTextStream& err();
 
-// Parses `arguments` (those after the command's name); throws UsageError for unknown options
-// or stray positional arguments. Returns false when --help was asked for and printed.
+// Parses `arguments` (those after the command's name); throws UsageError for unknown options,
+// options given twice (all but --set and --set-b) or stray positional arguments. Returns false
+// when --help was asked for and printed.
 bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments);
 
 // Adds --scene, --set (repeatable) and --settings to `parser`.
@@ -47,12 +50,16 @@ QString formatTexelLine(const FrameStats& stats);
 // The light fit's warnings (receivers a manual volume cuts, ...) on stderr, after `context`.
 void printFitWarnings(const FittedLight& fit, const QString& context = {});
 
-// "1280x720" -> QSize; throws UsageError naming the option.
-QSize parseSize(const QString& text, const QString& option);
+// "1280x720" -> QSize within [minimum, maximum] (each side); throws UsageError naming the
+// option, the command's limits and what they are for.
+struct SizeLimits {
+    QSize minimum{1, 1};
+    QSize maximum;
+    QString reason;     // why the maximum, e.g. "report keeps ~90 bytes per pixel in memory"
+};
+QSize parseSize(const QString& text, const QString& option, const SizeLimits& limits);
 int parseCount(const QString& text, const QString& option, int minimum, int maximum);
 
-// Runs `body`, turning SettingsError / UsageError into exit code 2 and RenderError into 1,
-// with the message on stderr.
 // A one-line progress bar with the time left, redrawn in place on stderr; only on a terminal.
 class ProgressBar {
 public:
@@ -65,6 +72,8 @@ private:
     QElapsedTimer m_timer;
 };
 
+// Runs `body`, turning SettingsError / UsageError / OutputError(BadLocation) into exit code 2
+// and RenderError / OutputError(WriteFailed) into 1, with the message on stderr.
 int guarded(const QString& command, const std::function<int()>& body);
 
 } // namespace shadowlab::cli

@@ -1,7 +1,9 @@
 #include "CliSupport.h"
 #include "Commands.h"
+#include "HeadlessPlatform.h"
 #include "HeadlessRenderer.h"
-#include "IoError.h"
+#include "ImageFile.h"
+#include "OutputFile.h"
 #include "RenderError.h"
 
 #include <QFileInfo>
@@ -10,11 +12,12 @@ namespace shadowlab::cli {
 
 namespace {
 
-void save(const QImage& image, const QString& path)
+// The image, its depth buffer and the read-back take about 16 bytes per pixel: 1 GiB at most.
+const SizeLimits kRenderSize{{1, 1}, {8192, 8192}, QStringLiteral("render keeps about 16 bytes per pixel in memory")};
+
+void report(const QString& path, QSize size)
 {
-    if (!image.save(path, "PNG"))
-        throw IoError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
-    out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << image.width() << "x" << image.height() << ")" << Qt::endl;
+    out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << size.width() << "x" << size.height() << ")" << Qt::endl;
 }
 
 } // namespace
@@ -35,20 +38,40 @@ int runRender(const QStringList& arguments)
         if (!parser.isSet(QStringLiteral("out")) && !parser.isSet(QStringLiteral("depth-out")))
             throw UsageError(QStringLiteral("say where to write: --out scene.png and/or --depth-out depth.png"));
 
+        // Every output is checked before any work, so one that cannot be written leaves the others alone.
+        const QString scenePath = parser.value(QStringLiteral("out"));
+        const QString depthPath = parser.value(QStringLiteral("depth-out"));
+        if (parser.isSet(QStringLiteral("out")))
+            checkOutputFile(scenePath, QStringLiteral("--out"));
+        if (parser.isSet(QStringLiteral("depth-out")))
+            checkOutputFile(depthPath, QStringLiteral("--depth-out"));
         const Settings settings = settingsFromOptions(parser);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kRenderSize);
+        if (parser.isSet(QStringLiteral("depth-out")) && !settings.shadow.enabled)
+            throw UsageError(QStringLiteral("--depth-out needs shadows; drop --set shadow.enabled=false"));
 
         HeadlessRenderer headless;
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
         printFitWarnings(headless.renderer().lastFit());
+        if (const QString backend = activeHeadlessBackend(); !backend.isEmpty())
+            out() << "headless platform: " << backend << ", " << headless.renderer().rendererString() << Qt::endl;
+        QByteArray scenePng, depthPng;
+        QSize depthSize;
         if (parser.isSet(QStringLiteral("out")))
-            save(scene, parser.value(QStringLiteral("out")));
+            scenePng = encodePng(scene);
         if (parser.isSet(QStringLiteral("depth-out"))) {
-            if (!settings.shadow.enabled)
-                throw UsageError(QStringLiteral("--depth-out needs shadows; drop --set shadow.enabled=false"));
             const int side = std::min(settings.map.size, 2048);
-            save(headless.renderDepthMap(QSize(side, side)), parser.value(QStringLiteral("depth-out")));
+            depthSize = QSize(side, side);
+            depthPng = encodePng(headless.renderDepthMap(depthSize));
+        }
+        if (parser.isSet(QStringLiteral("out"))) {
+            writeOutputFile(scenePath, scenePng);
+            report(scenePath, scene.size());
+        }
+        if (parser.isSet(QStringLiteral("depth-out"))) {
+            writeOutputFile(depthPath, depthPng);
+            report(depthPath, depthSize);
         }
         return kExitOk;
     });

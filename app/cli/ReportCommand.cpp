@@ -3,6 +3,7 @@
 #include "Commands.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
+#include "OutputFile.h"
 #include "ReportSweep.h"
 #include "ReportWriter.h"
 
@@ -12,6 +13,14 @@
 #include <unistd.h>
 
 namespace shadowlab::cli {
+
+namespace {
+
+// The accuracy pass keeps float targets, world positions and two traced references per pixel,
+// about 90 bytes per pixel: 8.3 Mpixels (3840x2160) is about 750 MB.
+const SizeLimits kReportSize{{1, 1}, {3840, 2160}, QStringLiteral("report keeps about 90 bytes per pixel in memory")};
+
+} // namespace
 
 int runReport(const QStringList& arguments)
 {
@@ -34,8 +43,10 @@ int runReport(const QStringList& arguments)
             return kExitOk;
         if (!parser.isSet(QStringLiteral("out")))
             throw UsageError(QStringLiteral("say where to write the report: --out DIR"));
+        const QString directory = parser.value(QStringLiteral("out"));
+        checkOutputFolder(directory, QStringLiteral("--out")); // before minutes of work, not after
         const Settings base = settingsFromOptions(parser);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kReportSize);
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
         const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
@@ -94,7 +105,6 @@ int runReport(const QStringList& arguments)
         facts.raysPerSecond = raysPerSecond;
         facts.referenceComputations = meter.referenceComputations();
         facts.seconds = double(total.elapsed()) / 1000.0;
-        const QString directory = parser.value(QStringLiteral("out"));
         writeReport(directory, rows, facts);
 
         out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "

@@ -2,7 +2,8 @@
 #include "Commands.h"
 #include "DepthMapView.h"
 #include "MainWindow.h"
-#include "IoError.h"
+#include "ImageFile.h"
+#include "OutputFile.h"
 #include "RenderError.h"
 #include "SceneView.h"
 #include "SettingsKeys.h"
@@ -16,6 +17,9 @@ namespace shadowlab::cli {
 namespace {
 
 constexpr int kTimeoutMs = 60000;
+// The window grabbed as an image, its views' framebuffers and the composed backing store:
+// about 40 bytes per pixel, 670 MB at the maximum.
+const SizeLimits kScreenshotSize{{1, 1}, {4096, 4096}, QStringLiteral("screenshot keeps about 40 bytes per pixel in memory")};
 constexpr int kSettledMs = 200;     // no new frame for this long: the window is done drawing
 
 int totalFrames(const MainWindow& window)
@@ -66,6 +70,8 @@ int runScreenshot(const QStringList& arguments)
             return kExitOk;
         if (!parser.isSet(QStringLiteral("out")))
             throw UsageError(QStringLiteral("say where to write: --out window.png"));
+        const QString path = parser.value(QStringLiteral("out"));
+        checkOutputFile(path, QStringLiteral("--out"));
         if (parser.isSet(QStringLiteral("set-b")) && !parser.isSet(QStringLiteral("compare")))
             throw UsageError(QStringLiteral("--set-b describes side B; add --compare"));
         if (!qobject_cast<QApplication*>(QCoreApplication::instance()))
@@ -76,20 +82,27 @@ int runScreenshot(const QStringList& arguments)
         for (const QString& assignment : parser.values(QStringLiteral("set-b")))
             applyAssignment(b, assignment);
         ensureValid(b);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kScreenshotSize);
 
         MainWindow window(MainWindow::Persistence::None);
         window.setCompareMode(parser.isSet(QStringLiteral("compare")));
+        // Below the layout's minimum the views get no room and never draw.
+        const QSize minimum = window.minimumSizeHint().expandedTo(window.minimumSize());
+        if (size.width() < minimum.width() || size.height() < minimum.height())
+            throw UsageError(QStringLiteral("--size: %1x%2 is smaller than the explorer window can be laid out%3; the minimum is %4x%5")
+                                 .arg(size.width())
+                                 .arg(size.height())
+                                 .arg(parser.isSet(QStringLiteral("compare")) ? QStringLiteral(" in compare mode") : QString())
+                                 .arg(minimum.width())
+                                 .arg(minimum.height()));
         window.setSettings(MainWindow::Side::A, a);
         window.setSettings(MainWindow::Side::B, b);
         window.resize(size);
         window.show();
         waitUntilRendered(window);
 
-        const QString path = parser.value(QStringLiteral("out"));
         const QImage image = window.grab().toImage();
-        if (image.isNull() || !image.save(path, "PNG"))
-            throw IoError(QStringLiteral("cannot write '%1'; check that its folder exists and is writable").arg(path));
+        writeOutputFile(path, encodePng(image));
         out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << image.width() << "x" << image.height() << ")" << Qt::endl;
         return kExitOk;
     });

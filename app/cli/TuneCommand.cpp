@@ -2,6 +2,7 @@
 #include "CliSupport.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
+#include "OutputFile.h"
 #include "SettingsKeys.h"
 
 #include <QFileInfo>
@@ -12,6 +13,10 @@
 namespace shadowlab::cli {
 
 namespace {
+
+// Each candidate at each placement renders and traces the image once; the reference per
+// placement is kept, about 90 bytes per pixel as in `report`.
+const SizeLimits kTuneSize{{1, 1}, {1920, 1080}, QStringLiteral("tune renders every candidate at every light direction at this size")};
 
 QString percent(double share) { return QString::number(100.0 * share, 'f', 3); }
 
@@ -41,7 +46,9 @@ int runTune(const QStringList& arguments)
         if (!parseArguments(parser, QStringLiteral("tune"), arguments))
             return kExitOk;
         const Settings settings = settingsFromOptions(parser);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"));
+        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kTuneSize);
+        if (parser.isSet(QStringLiteral("out")))
+            checkOutputFile(parser.value(QStringLiteral("out")), QStringLiteral("--out"));   // before minutes of work
 
         HeadlessRenderer headless;
         BiasTuner tuner(settings, size);
@@ -57,7 +64,7 @@ int runTune(const QStringList& arguments)
         tuned.bias.slope = best.slope;
         tuned.bias.min = best.min;
         if (parser.isSet(QStringLiteral("out")))
-            saveSettingsFile(parser.value(QStringLiteral("out")), tuned);
+            saveSettingsFile(parser.value(QStringLiteral("out")), tuned);   // whole or not at all
 
         const QString unit = toString(t.space);
         if (parser.isSet(QStringLiteral("json"))) {

@@ -1,6 +1,7 @@
 #include "ReportWriter.h"
 
-#include "IoError.h"
+#include "MessageText.h"
+#include "OutputFile.h"
 
 #include <embree3/rtcore_config.h>
 
@@ -22,9 +23,7 @@ namespace {
 
 void writeFile(const QString& path, const QByteArray& bytes)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size())
-        throw IoError(QStringLiteral("cannot write '%1': %2").arg(path, file.errorString()));
+    writeOutputFile(path, bytes);
 }
 
 QString csvField(QString text)
@@ -162,7 +161,7 @@ QString machineFacts()
 void writeReport(const QString& directory, const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
     if (!QDir().mkpath(directory))
-        throw IoError(QStringLiteral("cannot create the report folder '%1'").arg(directory));
+        throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot create the report folder '%1'").arg(displayText(directory)));
     const QDir dir(directory);
 
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10,shadow_p90,lit_ms,lit_p10,lit_p90,frame_ms,frame_p10,frame_p90,"

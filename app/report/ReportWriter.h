@@ -40,7 +40,7 @@ void markParetoFront(std::vector<ReportRow>& rows);
 
 // Writes report.csv, report.json and a self-contained report.html (inline SVG charts of error
 // against time with the Pareto front, the table, and the error images of the best and worst
-// rows). Throws IoError when a file cannot be written.
+// rows). Each file is written whole or not at all; throws OutputError when one cannot be.
 void writeReport(const QString& directory, const std::vector<ReportRow>& rows, const ReportFacts& facts);
 
 // CPU model, cores, memory, OS, Qt and Embree versions, one line.

@@ -3,6 +3,8 @@
 #include "AccuracyDock.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
+#include "ImageFile.h"
+#include "OutputFile.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
@@ -103,6 +105,7 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     m_sceneSplitter->addWidget(m_scenePanes[1]);
     m_mainSplitter = new QSplitter(Qt::Horizontal);
     m_mainSplitter->setObjectName(QStringLiteral("mainSplitter"));
+    m_mainSplitter->setChildrenCollapsible(false); // a collapsed view never draws
     m_mainSplitter->addWidget(m_sceneSplitter);
     m_mainSplitter->addWidget(m_depthPane);
     m_mainSplitter->setStretchFactor(0, 3);
@@ -439,8 +442,12 @@ QString MainWindow::saveScreenshot(ScreenshotDialog::Target target, const QStrin
     }
     if (image.isNull())
         return tr("There is nothing to capture: the view has no size.");
-    if (!image.convertToFormat(QImage::Format_RGB32).save(path, "PNG"))
-        return tr("Cannot write '%1'; check that its folder exists and is writable.").arg(QDir::toNativeSeparators(path));
+    try {
+        checkOutputFile(path, tr("Screenshot"));
+        writeOutputFile(path, encodePng(image.convertToFormat(QImage::Format_RGB32)));
+    } catch (const OutputError& e) {
+        return QString::fromStdString(e.what());
+    }
     statusBar()->showMessage(tr("Saved %1 (%2×%3)").arg(QDir::toNativeSeparators(path)).arg(image.width()).arg(image.height()), 8000);
     return QString();
 }
@@ -461,7 +468,7 @@ QString MainWindow::exportSettings(const QString& path) const
 {
     try {
         saveSettingsFile(path, m_settings[index(m_selected)]);
-    } catch (const SettingsError& e) {
+    } catch (const OutputError& e) {
         return QString::fromStdString(e.what());
     }
     return QString();

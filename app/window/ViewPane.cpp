@@ -16,7 +16,8 @@ ViewPane::ViewPane(QWidget* view, QWidget* parent) : QFrame(parent), m_view(view
     layout->addWidget(m_caption);
     layout->addWidget(view, 1);
     setHighlighted(false);
-    setMinimumSize(0, 0);
+    // A view squeezed to no pixels never draws (and a screenshot would wait for it forever).
+    view->setMinimumSize(64, 48);
 }
 
 void ViewPane::setCaption(const QString& title, const QString& detail)

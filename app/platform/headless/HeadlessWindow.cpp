@@ -1,7 +1,10 @@
-#include "OsMesaWindow.h"
+#include "HeadlessWindow.h"
 
+#ifdef SHADOWLAB_HAVE_OSMESA
 #include "OsMesaOpenGLContext.h"
+#endif
 
+#include <QtCore/QSet>
 #include <QtGui/QPainter>
 #include <QtGui/QWindow>
 #include <qpa/qplatformscreen.h>
@@ -20,12 +23,19 @@ WId nextWindowId()
     static std::atomic<WId> counter{ 0 };
     return ++counter;
 }
+
+QSet<WId> &liveWindows()
+{
+    static QSet<WId> ids;
+    return ids;
+}
 } // namespace
 
-OsMesaWindow::OsMesaWindow(QWindow *window)
+HeadlessWindow::HeadlessWindow(QWindow *window)
     : QPlatformWindow(window)
     , m_winId(nextWindowId())
 {
+    liveWindows().insert(m_winId);
     // Gives windows created without a size the usual default size and placement.
     const QRect initial = initialGeometry(window, windowGeometry(), defaultWidth, defaultHeight);
     if (window->windowStates() & (Qt::WindowFullScreen | Qt::WindowMaximized))
@@ -34,14 +44,22 @@ OsMesaWindow::OsMesaWindow(QWindow *window)
         setGeometry(initial);
 }
 
-OsMesaWindow::~OsMesaWindow()
+HeadlessWindow::~HeadlessWindow()
 {
+    liveWindows().remove(m_winId);
+#ifdef SHADOWLAB_HAVE_OSMESA
     // OSMesa writes into the bound buffer whenever the context flushes, including
     // when it is later released or destroyed; never leave it pointing at freed memory.
     OsMesaOpenGLContext::releaseIfDrawingTo(m_renderPixels.data());
+#endif
 }
 
-void OsMesaWindow::setGeometry(const QRect &rect)
+bool HeadlessWindow::isAlive(WId id)
+{
+    return liveWindows().contains(id);
+}
+
+void HeadlessWindow::setGeometry(const QRect &rect)
 {
     // OSMesa needs at least 1x1 to make a context current, so empty windows get one pixel.
     const QRect adjusted(rect.topLeft(), rect.size().expandedTo(QSize(1, 1)));
@@ -56,7 +74,7 @@ void OsMesaWindow::setGeometry(const QRect &rect)
         reportExposure();
 }
 
-void OsMesaWindow::setVisible(bool visible)
+void HeadlessWindow::setVisible(bool visible)
 {
     if (visible == m_visible)
         return;
@@ -73,7 +91,7 @@ void OsMesaWindow::setVisible(bool visible)
     reportExposure();
 }
 
-void OsMesaWindow::setWindowState(Qt::WindowStates state)
+void HeadlessWindow::setWindowState(Qt::WindowStates state)
 {
     QRect target = m_normalGeometry;
     if (state & Qt::WindowFullScreen)
@@ -90,40 +108,42 @@ void OsMesaWindow::setWindowState(Qt::WindowStates state)
     QWindowSystemInterface::handleWindowStateChanged(window(), state);
 }
 
-void OsMesaWindow::requestActivateWindow()
+void HeadlessWindow::requestActivateWindow()
 {
     if (m_visible)
         QWindowSystemInterface::handleWindowActivated(window(), Qt::ActiveWindowFocusReason);
 }
 
-WId OsMesaWindow::winId() const
+WId HeadlessWindow::winId() const
 {
     return m_winId;
 }
 
-QSurfaceFormat OsMesaWindow::format() const
+QSurfaceFormat HeadlessWindow::format() const
 {
     // Any format can be honoured: the pixels live in client memory.
     return window()->requestedFormat();
 }
 
-OsMesaWindow::RenderBuffer OsMesaWindow::renderBuffer()
+HeadlessWindow::RenderBuffer HeadlessWindow::renderBuffer()
 {
     const QSize size = geometry().size();
     if (size != m_renderSize) {
+#ifdef SHADOWLAB_HAVE_OSMESA
         OsMesaOpenGLContext::releaseIfDrawingTo(m_renderPixels.data());
+#endif
         m_renderPixels.assign(std::size_t(size.width()) * std::size_t(size.height()), 0u);
         m_renderSize = size;
     }
     return { m_renderPixels.data(), m_renderSize };
 }
 
-const void *OsMesaWindow::renderPixels() const
+const void *HeadlessWindow::renderPixels() const
 {
     return m_renderPixels.data();
 }
 
-void OsMesaWindow::presentRenderBuffer()
+void HeadlessWindow::presentRenderBuffer()
 {
     if (m_renderPixels.empty())
         return;
@@ -136,7 +156,12 @@ void OsMesaWindow::presentRenderBuffer()
     m_presented = frame.mirrored(false, true).convertToFormat(QImage::Format_ARGB32_Premultiplied);
 }
 
-void OsMesaWindow::presentImage(const QImage &source, const QRegion &region, const QPoint &offset)
+void HeadlessWindow::presentFrame(const QImage &frame)
+{
+    m_presented = frame.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+}
+
+void HeadlessWindow::presentImage(const QImage &source, const QRegion &region, const QPoint &offset)
 {
     const QSize size = geometry().size();
     if (m_presented.size() != size) {
@@ -149,12 +174,12 @@ void OsMesaWindow::presentImage(const QImage &source, const QRegion &region, con
         painter.drawImage(rect, source, rect.translated(offset));
 }
 
-QImage OsMesaWindow::presentedImage() const
+QImage HeadlessWindow::presentedImage() const
 {
     return m_presented;
 }
 
-void OsMesaWindow::reportExposure()
+void HeadlessWindow::reportExposure()
 {
     QWindowSystemInterface::handleExposeEvent(window(), QRect(QPoint(), geometry().size()));
 }

@@ -1,6 +1,8 @@
-#include "OsMesaOffscreenSurface.h"
+#include "HeadlessOffscreenSurface.h"
 
+#ifdef SHADOWLAB_HAVE_OSMESA
 #include "OsMesaOpenGLContext.h"
+#endif
 
 namespace shadowlab {
 
@@ -10,29 +12,31 @@ namespace {
 constexpr QSize bufferSize(64, 64);
 } // namespace
 
-OsMesaOffscreenSurface::OsMesaOffscreenSurface(QOffscreenSurface *surface)
+HeadlessOffscreenSurface::HeadlessOffscreenSurface(QOffscreenSurface *surface)
     : QPlatformOffscreenSurface(surface)
     , m_pixels(std::size_t(bufferSize.width()) * std::size_t(bufferSize.height()), 0u)
 {
 }
 
-OsMesaOffscreenSurface::~OsMesaOffscreenSurface()
+HeadlessOffscreenSurface::~HeadlessOffscreenSurface()
 {
-    // See OsMesaWindow: a bound buffer must outlive the binding.
+#ifdef SHADOWLAB_HAVE_OSMESA
+    // See HeadlessWindow: a bound buffer must outlive the binding.
     OsMesaOpenGLContext::releaseIfDrawingTo(m_pixels.data());
+#endif
 }
 
-bool OsMesaOffscreenSurface::isValid() const
+bool HeadlessOffscreenSurface::isValid() const
 {
     return true;
 }
 
-void *OsMesaOffscreenSurface::pixels()
+void *HeadlessOffscreenSurface::pixels()
 {
     return m_pixels.data();
 }
 
-QSize OsMesaOffscreenSurface::size() const
+QSize HeadlessOffscreenSurface::size() const
 {
     return bufferSize;
 }

@@ -1,11 +1,11 @@
-#include "OsMesaTheme.h"
+#include "HeadlessTheme.h"
 
 #include <QtCore/QStringList>
 #include <QtCore/QVariant>
 
 namespace shadowlab {
 
-QVariant OsMesaTheme::themeHint(ThemeHint hint) const
+QVariant HeadlessTheme::themeHint(ThemeHint hint) const
 {
     if (hint == StyleNames)
         return QStringList{ QStringLiteral("Fusion") };

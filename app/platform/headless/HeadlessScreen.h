@@ -6,7 +6,7 @@ namespace shadowlab {
 
 // A fixed 1920x1080 screen at 96 dpi, so layouts and font sizes match a common
 // desktop. Grabbing shows what windows last presented (raster flush or GL swap).
-class OsMesaScreen : public QPlatformScreen
+class HeadlessScreen : public QPlatformScreen
 {
 public:
     QRect geometry() const override;

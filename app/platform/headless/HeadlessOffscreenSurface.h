@@ -10,12 +10,13 @@
 namespace shadowlab {
 
 // OSMesa cannot make a context current without a colour buffer, so each offscreen
-// surface carries a small private one. Real rendering goes into FBOs.
-class OsMesaOffscreenSurface : public QPlatformOffscreenSurface
+// surface carries a small private one (EGL contexts are current with no surface and
+// ignore it). Real rendering goes into FBOs.
+class HeadlessOffscreenSurface : public QPlatformOffscreenSurface
 {
 public:
-    explicit OsMesaOffscreenSurface(QOffscreenSurface *surface);
-    ~OsMesaOffscreenSurface() override;
+    explicit HeadlessOffscreenSurface(QOffscreenSurface *surface);
+    ~HeadlessOffscreenSurface() override;
 
     bool isValid() const override;
 

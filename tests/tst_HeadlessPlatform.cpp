@@ -1,5 +1,6 @@
-// The headless "osmesa" platform plugin: contexts, FBOs, sharing and QOpenGLWidget
-// must all work with no display server, and without Qt complaining.
+// The headless platform plugin: contexts, FBOs, sharing and QOpenGLWidget must all work
+// with no display server, and without Qt complaining, on each backend (EGL with no
+// surface, OSMesa). CTest runs this once per platform name: headless, egl, osmesa.
 #include "HeadlessTestMain.h"
 
 #include <QtGui/QOffscreenSurface>
@@ -137,7 +138,7 @@ void setOrUnset(const char *name, const QByteArray &value)
 
 } // namespace
 
-class tst_OsMesaPlatform : public QObject
+class tst_HeadlessPlatform : public QObject
 {
     Q_OBJECT
 
@@ -152,6 +153,8 @@ private slots:
     void selectsPlatformOnlyWhenNothingElseIsConfigured_data();
     void selectsPlatformOnlyWhenNothingElseIsConfigured();
 
+    void backendIsTheOneAskedFor();
+
     void coreContextProvidesFunctions33();
     void contextReportsCreatedFormat_data();
     void contextReportsCreatedFormat();
@@ -165,22 +168,23 @@ private slots:
     void openGLWidgetSurvivesZeroSizeAndDestruction();
 };
 
-void tst_OsMesaPlatform::initTestCase()
+void tst_HeadlessPlatform::initTestCase()
 {
-    QCOMPARE(QGuiApplication::platformName(), QStringLiteral("osmesa"));
+    QVERIFY2(shadowlab::headlessPlatformNames().contains(QGuiApplication::platformName()),
+             qPrintable(QGuiApplication::platformName()));
     QVERIFY(QGuiApplication::primaryScreen());
     QCOMPARE(QGuiApplication::primaryScreen()->size(), QSize(1920, 1080));
     QCOMPARE(QGuiApplication::primaryScreen()->logicalDotsPerInch(), 96.0);
 }
 
-void tst_OsMesaPlatform::init()
+void tst_HeadlessPlatform::init()
 {
     // Any warning is a failure: "QOpenGLWidget: Failed to make context current",
     // QRhi creation failures and the like are exactly what this plugin must avoid.
     QTest::failOnWarning(QRegularExpression(QStringLiteral(".*")));
 }
 
-void tst_OsMesaPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured_data()
+void tst_HeadlessPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured_data()
 {
     // A null QByteArray means "unset".
     QTest::addColumn<QByteArray>("platform");
@@ -188,15 +192,15 @@ void tst_OsMesaPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured_data()
     QTest::addColumn<QByteArray>("waylandDisplay");
     QTest::addColumn<QByteArray>("expected");
 
-    QTest::newRow("nothing set") << QByteArray() << QByteArray() << QByteArray() << QByteArray("osmesa");
-    QTest::newRow("empty display") << QByteArray() << QByteArray("") << QByteArray() << QByteArray("osmesa");
+    QTest::newRow("nothing set") << QByteArray() << QByteArray() << QByteArray() << QByteArray("headless");
+    QTest::newRow("empty display") << QByteArray() << QByteArray("") << QByteArray() << QByteArray("headless");
     QTest::newRow("X display") << QByteArray() << QByteArray(":0") << QByteArray() << QByteArray();
     QTest::newRow("Wayland display") << QByteArray() << QByteArray() << QByteArray("wayland-0") << QByteArray();
     QTest::newRow("explicit platform") << QByteArray("offscreen") << QByteArray() << QByteArray()
                                        << QByteArray("offscreen");
 }
 
-void tst_OsMesaPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured()
+void tst_HeadlessPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured()
 {
     QFETCH(QByteArray, platform);
     QFETCH(QByteArray, display);
@@ -215,7 +219,21 @@ void tst_OsMesaPlatform::selectsPlatformOnlyWhenNothingElseIsConfigured()
     QCOMPARE(qgetenv("QT_QPA_PLATFORM"), expected);
 }
 
-void tst_OsMesaPlatform::coreContextProvidesFunctions33()
+void tst_HeadlessPlatform::backendIsTheOneAskedFor()
+{
+    // "headless" takes EGL first; Mesa here has the surfaceless platform, so that is what
+    // it must get. "egl" and "osmesa" force their backend.
+    const QString platform = QGuiApplication::platformName();
+    const QString backend = shadowlab::activeHeadlessBackend();
+    // SHADOWLAB_EGL_PLATFORM=device makes EGL take its device path (CTest runs that too).
+    const QString eglPlatform = qEnvironmentVariable("SHADOWLAB_EGL_PLATFORM", QStringLiteral("surfaceless"));
+    if (platform == u"osmesa")
+        QCOMPARE(backend, QStringLiteral("osmesa"));
+    else
+        QCOMPARE(backend, QStringLiteral("egl-") + eglPlatform);
+}
+
+void tst_HeadlessPlatform::coreContextProvidesFunctions33()
 {
     OffscreenGL gl;
     QVERIFY(gl.create(formatFor(3, 3, QSurfaceFormat::CoreProfile)));
@@ -251,7 +269,7 @@ void tst_OsMesaPlatform::coreContextProvidesFunctions33()
     QCOMPARE(QOpenGLContext::currentContext(), nullptr);
 }
 
-void tst_OsMesaPlatform::contextReportsCreatedFormat_data()
+void tst_HeadlessPlatform::contextReportsCreatedFormat_data()
 {
     QTest::addColumn<QSurfaceFormat>("requested");
     QTest::addColumn<QSurfaceFormat::OpenGLContextProfile>("expectedProfile");
@@ -268,7 +286,7 @@ void tst_OsMesaPlatform::contextReportsCreatedFormat_data()
                                             << 3 << 0;
 }
 
-void tst_OsMesaPlatform::contextReportsCreatedFormat()
+void tst_HeadlessPlatform::contextReportsCreatedFormat()
 {
     QFETCH(QSurfaceFormat, requested);
     QFETCH(QSurfaceFormat::OpenGLContextProfile, expectedProfile);
@@ -294,7 +312,7 @@ void tst_OsMesaPlatform::contextReportsCreatedFormat()
     QVERIFY(profileMask & expectedBit);
 }
 
-void tst_OsMesaPlatform::framebufferObjectReadsBackClearColour_data()
+void tst_HeadlessPlatform::framebufferObjectReadsBackClearColour_data()
 {
     QTest::addColumn<QColor>("colour");
     QTest::newRow("red") << QColor(255, 0, 0);
@@ -302,7 +320,7 @@ void tst_OsMesaPlatform::framebufferObjectReadsBackClearColour_data()
     QTest::newRow("near white") << QColor(250, 240, 230);
 }
 
-void tst_OsMesaPlatform::framebufferObjectReadsBackClearColour()
+void tst_HeadlessPlatform::framebufferObjectReadsBackClearColour()
 {
     QFETCH(QColor, colour);
 
@@ -322,7 +340,7 @@ void tst_OsMesaPlatform::framebufferObjectReadsBackClearColour()
     QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
 }
 
-void tst_OsMesaPlatform::sharedContextsSeeTheSameTexture()
+void tst_HeadlessPlatform::sharedContextsSeeTheSameTexture()
 {
     const QColor colour(200, 100, 50);
     const QSurfaceFormat format = formatFor(3, 3, QSurfaceFormat::CoreProfile);
@@ -374,7 +392,7 @@ void tst_OsMesaPlatform::sharedContextsSeeTheSameTexture()
     cf->glDeleteTextures(1, &texture);
 }
 
-void tst_OsMesaPlatform::windowShowsSwappedFrameUpright()
+void tst_HeadlessPlatform::windowShowsSwappedFrameUpright()
 {
     const QColor top(255, 0, 0);
     const QColor bottom(0, 0, 255);
@@ -429,14 +447,14 @@ void tst_OsMesaPlatform::windowShowsSwappedFrameUpright()
     QCOMPARE(context.functions()->glGetError(), GLenum(GL_NO_ERROR));
 }
 
-void tst_OsMesaPlatform::openGLWidgetShowsItsFrame_data()
+void tst_HeadlessPlatform::openGLWidgetShowsItsFrame_data()
 {
     QTest::addColumn<bool>("inMainWindow");
     QTest::newRow("plain top-level widget") << false;
     QTest::newRow("main window") << true;
 }
 
-void tst_OsMesaPlatform::openGLWidgetShowsItsFrame()
+void tst_HeadlessPlatform::openGLWidgetShowsItsFrame()
 {
     QFETCH(bool, inMainWindow);
     const QColor colour(40, 180, 90);
@@ -481,7 +499,7 @@ void tst_OsMesaPlatform::openGLWidgetShowsItsFrame()
                  qPrintable(QStringLiteral("screen grab: ") + mismatch));
 }
 
-void tst_OsMesaPlatform::openGLWidgetSurvivesZeroSizeAndDestruction()
+void tst_HeadlessPlatform::openGLWidgetSurvivesZeroSizeAndDestruction()
 {
     const QColor colour(220, 60, 120);
     QWidget topLevel;
@@ -524,5 +542,5 @@ void tst_OsMesaPlatform::openGLWidgetSurvivesZeroSizeAndDestruction()
     QVERIFY(!colourMismatch(windowImage.pixelColor(50, 50), colour, QString()).isEmpty());
 }
 
-SHADOWLAB_TEST_MAIN(tst_OsMesaPlatform)
-#include "tst_OsMesaPlatform.moc"
+SHADOWLAB_TEST_MAIN(tst_HeadlessPlatform)
+#include "tst_HeadlessPlatform.moc"

@@ -1,7 +1,7 @@
 #include "OsMesaOpenGLContext.h"
 
-#include "OsMesaOffscreenSurface.h"
-#include "OsMesaWindow.h"
+#include "HeadlessOffscreenSurface.h"
+#include "HeadlessWindow.h"
 
 #include <QtCore/QRegularExpression>
 #include <QtGui/QOpenGLContext>
@@ -128,11 +128,11 @@ bool OsMesaOpenGLContext::makeCurrent(QPlatformSurface *surface)
     void *pixels = nullptr;
     QSize size;
     if (surface->surface()->surfaceClass() == QSurface::Window) {
-        const OsMesaWindow::RenderBuffer buffer = static_cast<OsMesaWindow *>(surface)->renderBuffer();
+        const HeadlessWindow::RenderBuffer buffer = static_cast<HeadlessWindow *>(surface)->renderBuffer();
         pixels = buffer.pixels;
         size = buffer.size;
     } else {
-        auto *offscreen = static_cast<OsMesaOffscreenSurface *>(surface);
+        auto *offscreen = static_cast<HeadlessOffscreenSurface *>(surface);
         pixels = offscreen->pixels();
         size = offscreen->size();
     }
@@ -149,7 +149,7 @@ void OsMesaOpenGLContext::swapBuffers(QPlatformSurface *surface)
 {
     if (surface->surface()->surfaceClass() != QSurface::Window)
         return;
-    auto *window = static_cast<OsMesaWindow *>(surface);
+    auto *window = static_cast<HeadlessWindow *>(surface);
     if (!isCurrentOn(window->renderPixels())) {
         qWarning("OSMesa: swapBuffers() needs the context to be current on the window");
         return;

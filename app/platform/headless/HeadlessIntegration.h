@@ -9,16 +9,18 @@ class QPlatformServices;
 
 namespace shadowlab {
 
-class OsMesaScreen;
+class EglDisplay;
+class HeadlessScreen;
 
 // The headless platform: one fixed screen, windows backed by client memory, and
-// OpenGL from OSMesa. Everything a QOpenGLWidget in a QMainWindow needs, nothing
-// that talks to a display server.
-class OsMesaIntegration : public QPlatformIntegration
+// OpenGL from EGL with no surface or from OSMesa. Everything a QOpenGLWidget in a
+// QMainWindow needs, nothing that talks to a display server.
+class HeadlessIntegration : public QPlatformIntegration
 {
 public:
-    OsMesaIntegration();
-    ~OsMesaIntegration() override;
+    // With an EGL display, contexts come from EGL; without one, from OSMesa.
+    explicit HeadlessIntegration(std::unique_ptr<EglDisplay> egl);
+    ~HeadlessIntegration() override;
 
     bool hasCapability(Capability cap) const override;
 
@@ -34,9 +36,10 @@ public:
     QPlatformTheme *createPlatformTheme(const QString &name) const override;
 
 private:
+    std::unique_ptr<EglDisplay> m_egl;
     std::unique_ptr<QPlatformFontDatabase> m_fontDatabase;
     std::unique_ptr<QPlatformServices> m_services;
-    OsMesaScreen *m_screen = nullptr; // owned by QtGui once announced
+    HeadlessScreen *m_screen = nullptr; // owned by QtGui once announced
 };
 
 } // namespace shadowlab

@@ -9,10 +9,10 @@ namespace shadowlab {
 // Raster widgets paint into a plain QImage. A flush copies it into the window's
 // presented image; with QRhi composition (QOpenGLWidget present) Qt uploads
 // toImage() as a texture instead and the GL swap presents.
-class OsMesaBackingStore : public QPlatformBackingStore
+class HeadlessBackingStore : public QPlatformBackingStore
 {
 public:
-    explicit OsMesaBackingStore(QWindow *window);
+    explicit HeadlessBackingStore(QWindow *window);
 
     QPaintDevice *paintDevice() override;
     void flush(QWindow *window, const QRegion &region, const QPoint &offset) override;

@@ -1,6 +1,6 @@
-#include "OsMesaScreen.h"
+#include "HeadlessScreen.h"
 
-#include "OsMesaWindow.h"
+#include "HeadlessWindow.h"
 
 #include <QtGui/QGuiApplication>
 #include <QtGui/QPainter>
@@ -21,47 +21,47 @@ QRect grabRect(const QSize &available, int x, int y, int width, int height)
 }
 } // namespace
 
-QRect OsMesaScreen::geometry() const
+QRect HeadlessScreen::geometry() const
 {
     return QRect(QPoint(0, 0), screenSize);
 }
 
-int OsMesaScreen::depth() const
+int HeadlessScreen::depth() const
 {
     return 32;
 }
 
-QImage::Format OsMesaScreen::format() const
+QImage::Format HeadlessScreen::format() const
 {
     return QImage::Format_RGB32;
 }
 
-QSizeF OsMesaScreen::physicalSize() const
+QSizeF HeadlessScreen::physicalSize() const
 {
     return QSizeF(screenSize) * (millimetresPerInch / dotsPerInch);
 }
 
-QDpi OsMesaScreen::logicalDpi() const
+QDpi HeadlessScreen::logicalDpi() const
 {
     return QDpi(dotsPerInch, dotsPerInch);
 }
 
-QDpi OsMesaScreen::logicalBaseDpi() const
+QDpi HeadlessScreen::logicalBaseDpi() const
 {
     return QDpi(dotsPerInch, dotsPerInch);
 }
 
-QString OsMesaScreen::name() const
+QString HeadlessScreen::name() const
 {
-    return QStringLiteral("osmesa");
+    return QStringLiteral("headless");
 }
 
-QPixmap OsMesaScreen::grabWindow(WId window, int x, int y, int width, int height) const
+QPixmap HeadlessScreen::grabWindow(WId window, int x, int y, int width, int height) const
 {
     if (window) {
         const QWindowList windows = QGuiApplication::allWindows();
         for (QWindow *candidate : windows) {
-            auto *platformWindow = static_cast<OsMesaWindow *>(candidate->handle());
+            auto *platformWindow = static_cast<HeadlessWindow *>(candidate->handle());
             if (platformWindow && platformWindow->winId() == window) {
                 const QImage presented = platformWindow->presentedImage();
                 return QPixmap::fromImage(presented.copy(grabRect(presented.size(), x, y, width, height)));
@@ -78,7 +78,7 @@ QPixmap OsMesaScreen::grabWindow(WId window, int x, int y, int width, int height
     painter.translate(-area.topLeft());
     const QWindowList windows = QGuiApplication::topLevelWindows();
     for (QWindow *candidate : windows) {
-        const auto *platformWindow = static_cast<const OsMesaWindow *>(candidate->handle());
+        const auto *platformWindow = static_cast<const HeadlessWindow *>(candidate->handle());
         if (platformWindow && candidate->isExposed())
             painter.drawImage(platformWindow->geometry().topLeft(), platformWindow->presentedImage());
     }

@@ -9,17 +9,18 @@
 
 namespace shadowlab {
 
-// A window that exists only in memory. It owns two images:
-//  - the GL render buffer OSMesa draws into when a context is current on the window
-//    (RGBA bytes, bottom row first, sized to the window; reallocated lazily when the
-//    window size changed, at the next makeCurrent), and
+// A window that exists only in memory. It owns
+//  - with OSMesa, the GL render buffer OSMesa draws into when a context is current on the
+//    window (RGBA bytes, bottom row first, sized to the window; reallocated lazily when the
+//    window size changed, at the next makeCurrent; EGL contexts keep a framebuffer object
+//    per window instead), and
 //  - the presented image, top row first, updated by swapBuffers() and by raster
 //    backing-store flushes: what a screen grab shows.
-class OsMesaWindow : public QPlatformWindow
+class HeadlessWindow : public QPlatformWindow
 {
 public:
-    explicit OsMesaWindow(QWindow *window);
-    ~OsMesaWindow() override;
+    explicit HeadlessWindow(QWindow *window);
+    ~HeadlessWindow() override;
 
     void setGeometry(const QRect &rect) override;
     void setVisible(bool visible) override;
@@ -41,9 +42,14 @@ public:
     const void *renderPixels() const;
     // Copies the finished GL frame (render buffer) into the presented image.
     void presentRenderBuffer();
+    // Shows a finished GL frame (top row first) read back from a framebuffer object.
+    void presentFrame(const QImage &frame);
     // Copies the given area of a raster backing store into the presented image.
     void presentImage(const QImage &source, const QRegion &region, const QPoint &offset);
     QImage presentedImage() const;
+
+    // False once the window with this id is destroyed (GUI thread only).
+    static bool isAlive(WId id);
 
 private:
     void reportExposure();

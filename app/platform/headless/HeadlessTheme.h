@@ -6,7 +6,7 @@ namespace shadowlab {
 
 // Pins the widget style so headless screenshots look the same on every machine,
 // whatever desktop settings the environment happens to carry.
-class OsMesaTheme : public QPlatformTheme
+class HeadlessTheme : public QPlatformTheme
 {
 public:
     QVariant themeHint(ThemeHint hint) const override;

@@ -1,6 +1,6 @@
-#include "OsMesaBackingStore.h"
+#include "HeadlessBackingStore.h"
 
-#include "OsMesaWindow.h"
+#include "HeadlessWindow.h"
 
 #include <QtGui/QPainter>
 #include <QtGui/QWindow>
@@ -10,23 +10,23 @@ extern void qt_scrollRectInImage(QImage &img, const QRect &rect, const QPoint &o
 
 namespace shadowlab {
 
-OsMesaBackingStore::OsMesaBackingStore(QWindow *window)
+HeadlessBackingStore::HeadlessBackingStore(QWindow *window)
     : QPlatformBackingStore(window)
 {
 }
 
-QPaintDevice *OsMesaBackingStore::paintDevice()
+QPaintDevice *HeadlessBackingStore::paintDevice()
 {
     return &m_image;
 }
 
-void OsMesaBackingStore::flush(QWindow *window, const QRegion &region, const QPoint &offset)
+void HeadlessBackingStore::flush(QWindow *window, const QRegion &region, const QPoint &offset)
 {
-    if (auto *platformWindow = static_cast<OsMesaWindow *>(window->handle()))
+    if (auto *platformWindow = static_cast<HeadlessWindow *>(window->handle()))
         platformWindow->presentImage(m_image, region, offset);
 }
 
-void OsMesaBackingStore::resize(const QSize &size, const QRegion &staticContents)
+void HeadlessBackingStore::resize(const QSize &size, const QRegion &staticContents)
 {
     Q_UNUSED(staticContents);
     const QImage::Format format =
@@ -35,7 +35,7 @@ void OsMesaBackingStore::resize(const QSize &size, const QRegion &staticContents
         m_image = QImage(size, format);
 }
 
-bool OsMesaBackingStore::scroll(const QRegion &area, int dx, int dy)
+bool HeadlessBackingStore::scroll(const QRegion &area, int dx, int dy)
 {
     if (m_image.isNull())
         return false;
@@ -43,7 +43,7 @@ bool OsMesaBackingStore::scroll(const QRegion &area, int dx, int dy)
     return true;
 }
 
-void OsMesaBackingStore::beginPaint(const QRegion &region)
+void HeadlessBackingStore::beginPaint(const QRegion &region)
 {
     // Translucent windows expect repainted areas to start out transparent.
     if (!m_image.hasAlphaChannel())
@@ -54,7 +54,7 @@ void OsMesaBackingStore::beginPaint(const QRegion &region)
         painter.fillRect(rect, Qt::transparent);
 }
 
-QImage OsMesaBackingStore::toImage() const
+QImage HeadlessBackingStore::toImage() const
 {
     return m_image;
 }
