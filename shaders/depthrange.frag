@@ -18,10 +18,18 @@ vec2 fetchRange(ivec2 p)
 
 void main()
 {
-    // Levels follow GL's size rule (each half the one below, rounded down), so where the level
-    // below has an odd size the last texel here also takes in the one left over.
     ivec2 last = textureSize(uSource, 0) - 1;
     ivec2 p = ivec2(gl_FragCoord.xy) * 2;
+#ifdef FROM_DEPTH
+    // Level 0 halves the map rounding up: each texel covers its own 2 x 2 (clamped at the edge).
+    vec2 a = fetchRange(min(p, last));
+    vec2 b = fetchRange(min(p + ivec2(1, 0), last));
+    vec2 c = fetchRange(min(p + ivec2(0, 1), last));
+    vec2 d = fetchRange(min(p + ivec2(1, 1), last));
+    range = vec2(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)));
+#else
+    // The next levels follow GL's size rule (each half the one below, rounded down), so where
+    // the level below has an odd size the last texel here also takes in the one left over.
     ivec2 end = min(p + 1, last);
     ivec2 lastHere = (last + 1) / 2 - 1;
     if (ivec2(gl_FragCoord.xy).x == lastHere.x)
@@ -35,4 +43,5 @@ void main()
             range = vec2(min(range.x, r.x), max(range.y, r.y));
         }
     }
+#endif
 }

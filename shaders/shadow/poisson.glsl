@@ -6,16 +6,19 @@ uniform float uPoissonRadius;   // texels (filter.radius)
 float filterShadow(vec2 uv, float reference)
 {
     vec2 radius = uPoissonRadius * uShadowTexel;
+    int taps = POISSON_TAPS;
+    float verdict = -1.0;
 #ifdef EARLY_OUT
-    float verdict = footprintVerdict(uv, radius, tapReferenceRange(radius, reference, true));
+    verdict = footprintVerdict(uv, radius, tapReferenceRange(radius, reference, true));
+    // A tap count known only per pixel keeps this a loop (see pcf.glsl).
     if (verdict >= 0.0)
-        return verdict;
+        taps = 0;
 #endif
     mat2 rotation = tapRotation();
     float lit = 0.0;
-    for (int i = 0; i < POISSON_TAPS; ++i) {
+    for (int i = 0; i < taps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * radius;
         lit += shadowTap(uv + offset, wideTapReference(offset, reference));
     }
-    return lit / float(POISSON_TAPS);
+    return verdict >= 0.0 ? verdict : lit / float(POISSON_TAPS);
 }
