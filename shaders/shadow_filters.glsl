@@ -121,7 +121,10 @@ float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
     ivec2 hi = ivec2(floor((uv + radius) * size)) + 1;
     if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(size))))
         return -1.0;
-    int span = max(hi.x - lo.x, hi.y - lo.y);
+    // The level from the radius alone, an upper bound of hi - lo: the same for every pixel of a
+    // fixed-size kernel, as llvmpipe appears to fetch one level for a whole group of pixels
+    // (PCSS, whose footprint differs per pixel, disagreed with its own taps at large levels).
+    int span = int(ceil(2.0 * max(radius.x, radius.y) * size.x)) + 3;
     int level = 0;
     while ((2 << level) <= span)
         ++level;                // texels of 2^(level + 1) map texels: the footprint spans at most 2 x 2
