@@ -68,7 +68,8 @@ QStringList tutorialAssignments()
 {
     return {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
             QStringLiteral("bias.space=depth"), QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"),
-            QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual")};
+            QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual"),
+            QStringLiteral("filter.early_out=false")};
 }
 
 // Light placements around the preset's target, from overhead to grazing and from near to very

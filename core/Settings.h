@@ -12,7 +12,7 @@ enum class LightProjection { Ortho, Perspective };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
-enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear };
+enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss };
 enum class ShadingModel { Phong, BlinnPhong };
 
 // Every field carries its range in a comment; SettingsKeys.cpp holds the same ranges for
@@ -63,6 +63,11 @@ struct BiasSettings {
     bool cullFront = true;
     double polygonFactor = 0.0;             // glPolygonOffset factor, [-16, 16]
     double polygonUnits = 0.0;              // glPolygonOffset units, [-10000, 10000]
+    // Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane, from its
+    // depth gradient in shadow-map space, instead of the centre's depth (pcf) or a bias grown
+    // with the tap's distance (poisson, pcss): exact on planar receivers, wrong where the
+    // gradient is (curved surfaces, silhouettes).
+    bool receiverPlane = false;
 
     bool operator==(const BiasSettings&) const = default;
 };
@@ -72,6 +77,12 @@ struct FilterSettings {
     // than 3 x 3 PCF on a 1024 map, at about two thirds of its frame time (`shadowlab bench --baseline`).
     FilterMode mode = FilterMode::HwBilinear;
     int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf
+    int taps = 16;                          // [8, 64]; Poisson taps of FilterMode::Poisson and Pcss
+    double radius = 2.5;                    // texels, [0.5, 32]; used by FilterMode::Poisson
+    // pcf and poisson skip their taps where a min/max depth mip of the map says the whole
+    // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
+    // costs more with every shadow pass than the skipped taps save (`shadowlab report`).
+    bool earlyOut = false;
 
     bool operator==(const FilterSettings&) const = default;
 };

@@ -306,9 +306,13 @@ std::vector<Entry> makeEntries()
                           "glPolygonOffset factor in the shadow pass: hardware slope bias, against acne at the cost of peter panning"));
     e.push_back(numberKey("bias.polygon_units", Range{-10000.0, 10000.0}, [](auto& s) -> auto& { return s.bias.polygonUnits; },
                           "glPolygonOffset units in the shadow pass: constant hardware bias in depth-buffer steps"));
+    e.push_back(boolKey("bias.receiver_plane", [](auto& s) -> auto& { return s.bias.receiverPlane; },
+                        "Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane (its depth gradient in shadow-map space): no over-darkening of lit slopes by wide kernels with a small bias, but acne or leaks on curved receivers and at silhouettes, where the gradient is wrong"));
     e.push_back(filterModeKey());
     for (const TechniqueParameter& parameter : techniqueParameters())
         e.push_back(parameterKey(parameter));
+    e.push_back(boolKey("filter.early_out", [](auto& s) -> auto& { return s.filter.earlyOut; },
+                        "Penumbra-only filtering: pcf and poisson skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
     e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
                         "Shadows on or off: off skips the shadow pass entirely"));
     e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },

@@ -72,6 +72,9 @@ struct ShadowTechnique {
     // The short name of a configuration, with its parameters ("pcf 3×3"); labels everywhere.
     std::function<QString(const FilterSettings&)> describe;
     std::vector<TechniqueVariation> sweep;  // what `report --sweep filters` and the dock try
+    // Reads the min/max depth mip of the map to skip its taps where the whole footprint is lit
+    // or shadowed (filter.early_out): the renderer builds the mip with each shadow pass then.
+    bool penumbraOnly = false;
 };
 
 // Every technique, in FilterMode order (the order of the `filter.mode` choices).

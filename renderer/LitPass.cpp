@@ -33,6 +33,10 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowTexel(program.uniform("uShadowTexel")),
+      shadowUvWorld(program.uniform("uShadowUvWorld")),
+      shadowDepthRange(program.uniform("uShadowDepthRange")),
+      depthRange(program.uniform("uDepthRange")),
+      depthRangeLevels(program.uniform("uDepthRangeLevels")),
       lightPosition(program.uniform("uLightPosition")),
       lightDirection(program.uniform("uLightDirection")),
       biasSlope(program.uniform("uBiasSlope")),
@@ -65,11 +69,20 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("BIAS_DEPTH");
     else if (settings.bias.space == BiasSpace::Texel)
         defines << QStringLiteral("BIAS_TEXEL");
+    if (settings.bias.receiverPlane)
+        defines << QStringLiteral("RECEIVER_PLANE");
+    if (usesDepthRange(settings))
+        defines << QStringLiteral("EARLY_OUT");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
     if (measure)
         defines << QStringLiteral("MEASURE");
     return defines;
+}
+
+bool LitPass::usesDepthRange(const Settings& settings)
+{
+    return settings.shadow.enabled && settings.filter.earlyOut && shadowTechnique(settings.filter.mode).penumbraOnly;
 }
 
 LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth)
@@ -83,11 +96,14 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bo
 }
 
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-                    const ShadowMap* map, const RenderTarget& target, bool measure)
+                    const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange)
 {
     if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments)
         throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which this renderer does not build yet")
                               .arg(toString(settings.filter.mode)));
+    const bool readsRange = usesDepthRange(settings) && map != nullptr;
+    if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
+        throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
     Program& p = programFor(settings, measure, light.reversedDepth);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
@@ -124,6 +140,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
             p.program.set(p.techniqueUniform(u.name), u.value);
         p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
+        p.program.set(p.shadowUvWorld, glm::vec2(float(light.volume.width()), float(light.volume.height())));
+        p.program.set(p.shadowDepthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
         p.program.set(p.normalOffset, float(settings.bias.normal * texel));
         p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
         // Each sampler the technique's row asks for reads the map on a unit of its own.
@@ -134,6 +152,14 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
             m_gl->glActiveTexture(GL_TEXTURE0 + unit);
             m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
             m_gl->glBindSampler(unit, map->sampler(samplers[i]));
+        }
+        if (readsRange) {
+            const GLuint unit = kShadowUnit + GLuint(samplers.size());
+            p.program.set(p.depthRange, int(unit));
+            p.program.set(p.depthRangeLevels, depthRange->levels());
+            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+            m_gl->glBindTexture(GL_TEXTURE_2D, depthRange->texture());
+            m_gl->glBindSampler(unit, 0);
         }
     }
     m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
@@ -166,7 +192,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (shadows) {
-        for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size(); ++i) {
+        for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size() + (readsRange ? 1 : 0); ++i) {
             m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit + GLuint(i));
             m_gl->glBindTexture(GL_TEXTURE_2D, 0);
             m_gl->glBindSampler(kShadowUnit + GLuint(i), 0);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DepthRangePass.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "RenderTarget.h"
@@ -23,8 +24,14 @@ public:
     // With `measure` the target must also have two RGBA32F attachments, which receive the
     // camera-relative position and shadow visibility, and the geometric normal and a mask
     // (1 facing the light, 2 facing away, 0 background). Returns the number of draw calls.
+    // `depthRange` is the min/max depth mip of `map` for penumbra-only filtering; it must be
+    // current (built from the map as it is) whenever usesDepthRange(settings).
     int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-               const ShadowMap* map, const RenderTarget& target, bool measure = false);
+               const ShadowMap* map, const RenderTarget& target, bool measure = false, const DepthRangePass* depthRange = nullptr);
+
+    // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
+    // technique that can skip its taps).
+    static bool usesDepthRange(const Settings& settings);
 
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
     static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false);
@@ -35,7 +42,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, shadowMap, shadowDepth, shadowTexel;
+        GLint diffuse, shadowMap, shadowDepth, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);

@@ -64,6 +64,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
             // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
             m_depthPass.clear(m_shadowMap, reversed);
             m_shadowKey = key;
+            ++m_mapGeneration;
         } else if (m_shadowKey != key) {
             QElapsedTimer wall;
             wall.start();
@@ -75,8 +76,23 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
                 stats.shadowPassWallMs = double(wall.nsecsElapsed()) * 1e-6;
             }
             m_shadowKey = key;
+            ++m_mapGeneration;
             stats.shadowPassRendered = true;
             ++m_shadowPassCount;
+        }
+    }
+    // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
+    // filtering is turned on over a map it was not built from. Timed with the shadow pass.
+    if (LitPass::usesDepthRange(settings) && m_depthRangeGeneration != m_mapGeneration) {
+        if (!m_depthRange)
+            m_depthRange = std::make_unique<DepthRangePass>(m_gl);
+        QElapsedTimer wall;
+        wall.start();
+        m_depthRange->build(m_shadowMap);
+        m_depthRangeGeneration = m_mapGeneration;
+        if (timing == TimingMode::Finish && stats.shadowPassRendered) {
+            m_gl->glFinish();
+            stats.shadowPassWallMs += double(wall.nsecsElapsed()) * 1e-6;
         }
     }
     m_fit = std::move(fit);
@@ -114,7 +130,8 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     QElapsedTimer lit;
     lit.start();
     m_litTimer.begin();
-    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target);
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
+                                      m_depthRange.get());
     m_litTimer.end();
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
@@ -136,7 +153,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     const RenderTarget target = m_measureTarget->ensure(size);
     m_litTimer.begin();
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
-                                      true);
+                                      true, m_depthRange.get());
     m_litTimer.end();
     finishTiming(TimingMode::Finish, stats);
     m_stats = stats;

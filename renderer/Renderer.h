@@ -1,6 +1,7 @@
 #pragma once
 
 #include "DepthPass.h"
+#include "DepthRangePass.h"
 #include "DepthViewPass.h"
 #include "FrameStats.h"
 #include "GpuScene.h"
@@ -45,6 +46,8 @@ public:
     const LightFrame& lightFrame() const { return m_light; }
     const CameraFrame& cameraFrame() const { return m_camera; }
     const ShadowMap& shadowMap() const { return m_shadowMap; }
+    // The min/max depth mip of the map for penumbra-only filtering; null until first needed.
+    const DepthRangePass* depthRange() const { return m_depthRange.get(); }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
     // Renders `scene` instead of the preset that settings.scene names, until reset with nullopt
     // (for the audit's degenerate scenes; the `scene` key offers only the presets). Uploaded on
@@ -88,6 +91,9 @@ private:
     DepthPass m_depthPass;
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
+    std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
+    int m_mapGeneration = 0;        // counts changes of the shadow map's content
+    int m_depthRangeGeneration = -1;    // the map generation the depth range was built from
     std::unique_ptr<GpuScene> m_scene;
     std::unique_ptr<MeasureTarget> m_measureTarget;   // built on first measurement
     GpuTimer m_shadowTimer;

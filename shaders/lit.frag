@@ -34,9 +34,17 @@ vec3 directionToLight(vec3 position)
 float shadowVisibility(vec3 normal, vec3 toLight)
 {
 #ifdef SHADOWS
+    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
+#ifdef RECEIVER_PLANE
+    // The receiver's depth as a plane over the map, from its screen-space derivatives (taken
+    // before any branch, where they are defined): depth change per uv unit. A degenerate
+    // footprint (the plane seen edge-on from the camera) gets a flat plane.
+    vec3 dx = dFdx(coord), dy = dFdy(coord);
+    float det = dx.x * dy.y - dx.y * dy.x;
+    gReceiverSlope = abs(det) > 1e-20 ? vec2(dx.z * dy.y - dx.y * dy.z, dx.x * dy.z - dx.z * dy.x) / det : vec2(0.0);
+#endif
     if (vShadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
-    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
 #ifdef REVERSED_Z
     if (coord.z < 0.0)
         return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
@@ -48,6 +56,14 @@ float shadowVisibility(vec3 normal, vec3 toLight)
         return 0.0;             // facing away: unlit anyway, so skip the lookups
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+    // For the wide filters: a tap d world units away on this receiver's plane lies up to
+    // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
+    // where N.L and so the light term is nearly 0 anyway).
+    float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
+    vec4 alongRay = uShadowWorld * vec4(toLight, 0.0);
+    float depthPerWorld = (alongRay.z * vShadowCoord.w - vShadowCoord.z * alongRay.w) / (vShadowCoord.w * vShadowCoord.w);
+    gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
+    gShadowW = vShadowCoord.w;
 #ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
     return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater

@@ -7,10 +7,153 @@
 
 uniform sampler2DShadow uShadowMap;
 uniform vec2 uShadowTexel;      // 1 / map size
+uniform vec2 uShadowUvWorld;    // world size of the map's [0, 1] square (perspective: at unit distance)
+uniform vec2 uShadowDepthRange; // near and far of the light volume, world units along its axis
+
+// The receiver, for the wide filters; set by the lit pass before it calls filterShadow.
+float gShadowW;                 // the receiver's clip w (its distance along a perspective light's axis)
+float gGrowth;                  // change of depth per world unit of a tap's distance, at the receiver's slope
+vec2 gReceiverSlope;            // depth per uv unit of the receiver's plane (RECEIVER_PLANE)
 
 float shadowTap(vec2 uv, float reference)
 {
     return texture(uShadowMap, vec3(uv, reference));
 }
+
+// World distance from the light (along its axis) of a depth of the map.
+float shadowDistance(float depth)
+{
+#ifdef REVERSED_Z
+    depth = 1.0 - depth;
+#endif
+    float n = uShadowDepthRange.x, f = uShadowDepthRange.y;
+#ifdef LIGHT_PERSPECTIVE
+    return n * f / (f - depth * (f - n));
+#else
+    return n + depth * (f - n);
+#endif
+}
+
+// World length of a tap offset (uv) at the receiver.
+float tapWorldLength(vec2 offset)
+{
+#ifdef LIGHT_PERSPECTIVE
+    return length(offset * uShadowUvWorld) * gShadowW;
+#else
+    return length(offset * uShadowUvWorld);
+#endif
+}
+
+// The depth the tap `offset` (uv) away from the receiver compares against: on the receiver's
+// plane with RECEIVER_PLANE, else the centre's depth (a box filter's classic form).
+float planeTapReference(vec2 offset, float reference)
+{
+#ifdef RECEIVER_PLANE
+    return reference + dot(gReceiverSlope, offset);
+#else
+    return reference;
+#endif
+}
+
+// For the disk filters: on the receiver's plane with RECEIVER_PLANE, else the bias grown with
+// the tap's distance by the receiver's slope, so a wide disk does not darken a lit slope.
+float wideTapReference(vec2 offset, float reference)
+{
+#ifdef RECEIVER_PLANE
+    return reference + dot(gReceiverSlope, offset);
+#else
+    return reference + gGrowth * tapWorldLength(offset);
+#endif
+}
+
+// The lowest and highest reference of taps within `radius` (uv, per axis) of the centre.
+vec2 tapReferenceRange(vec2 radius, float reference, bool grown)
+{
+#ifdef RECEIVER_PLANE
+    float spread = dot(abs(gReceiverSlope), radius);
+    return vec2(reference - spread, reference + spread);
+#else
+    float grownBy = grown ? gGrowth * tapWorldLength(radius) : 0.0;
+    return vec2(min(reference, reference + grownBy), max(reference, reference + grownBy));
+#endif
+}
+
+// Interleaved gradient noise (Jimenez 2014): a rotation per pixel that neighbours average out.
+mat2 tapRotation()
+{
+    float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    float c = cos(angle), s = sin(angle);
+    return mat2(c, s, -s, c);
+}
+
+// 64 points in the unit disk, each placed farthest from those before it, so every prefix of N
+// points covers the disk evenly.
+const vec2 kPoissonDisk[64] = vec2[64](
+    vec2(-0.3525, -0.6987), vec2(0.5682, 0.7945), vec2(0.8406, -0.4862), vec2(-0.7418, 0.5535),
+    vec2(0.0261, 0.0852), vec2(-0.9386, -0.2136), vec2(-0.1119, 0.9162), vec2(0.8477, 0.2082),
+    vec2(0.3052, -0.8103), vec2(-0.4337, -0.1533), vec2(0.3866, -0.2699), vec2(-0.2675, 0.4437),
+    vec2(0.1808, 0.5886), vec2(0.4270, 0.2494), vec2(-0.0807, -0.3846), vec2(-0.7776, 0.1517),
+    vec2(-0.7347, -0.6082), vec2(-0.1073, -0.9789), vec2(-0.5028, 0.8327), vec2(0.7375, -0.1538),
+    vec2(0.2342, 0.9451), vec2(0.6521, 0.4740), vec2(0.6581, -0.7515), vec2(-0.3495, 0.1345),
+    vec2(-0.0086, -0.6964), vec2(-0.4921, -0.4344), vec2(0.4361, -0.5555), vec2(0.1681, 0.3174),
+    vec2(0.9760, -0.0269), vec2(0.3114, -0.0025), vec2(-0.5169, 0.3414), vec2(0.1998, -0.4455),
+    vec2(-0.1769, -0.0806), vec2(-0.2635, 0.6968), vec2(-0.9282, 0.3636), vec2(0.1211, -0.2073),
+    vec2(-0.6891, -0.1472), vec2(0.4225, 0.5868), vec2(0.5720, 0.0463), vec2(-0.5725, -0.7997),
+    vec2(0.1467, -0.9677), vec2(-0.4851, 0.5684), vec2(-0.9913, 0.0412), vec2(0.9586, -0.2678),
+    vec2(-0.0183, 0.4637), vec2(-0.0247, 0.6913), vec2(-0.7098, -0.3785), vec2(0.8998, 0.4249),
+    vec2(0.6038, -0.3881), vec2(-0.3437, -0.9195), vec2(-0.5682, 0.0383), vec2(-0.2812, -0.3328),
+    vec2(-0.3141, 0.9076), vec2(-0.1045, 0.2592), vec2(-0.1889, -0.5677), vec2(0.7219, 0.6756),
+    vec2(-0.7228, 0.3481), vec2(0.3208, 0.7563), vec2(0.6339, 0.2270), vec2(0.0641, 0.8574),
+    vec2(-0.8808, -0.4735), vec2(0.4879, -0.8452), vec2(-0.1827, -0.7825), vec2(0.2483, -0.6364));
+
+#ifdef EARLY_OUT
+uniform sampler2D uDepthRange;  // level k: min (r) and max (g) depth of 2^(k+1) x 2^(k+1) map texels
+uniform int uDepthRangeLevels;
+
+// Penumbra-only filtering: 1 when every nearest-texel tap within `radius` (uv, per axis) of
+// `uv` compares lit against any reference in `references` (lowest, highest), 0 when every one
+// compares shadowed, -1 when the footprint may hold a penumbra (or leaves the map). Exact: the
+// taps that would be skipped are the very comparisons the mip bounds.
+float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
+{
+    vec2 size = 1.0 / uShadowTexel;
+    ivec2 lo = ivec2(floor((uv - radius) * size)) - 1;  // a texel of margin for rounding
+    ivec2 hi = ivec2(floor((uv + radius) * size)) + 1;
+    if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(size))))
+        return -1.0;
+    // The level from the radius alone, an upper bound of hi - lo: the same for every pixel of a
+    // fixed-size kernel, as llvmpipe appears to fetch one level for a whole group of pixels
+    // (PCSS, whose footprint differs per pixel, disagreed with its own taps at large levels).
+    int span = int(ceil(2.0 * max(radius.x, radius.y) * size.x)) + 3;
+    int level = 0;
+    while ((2 << level) <= span)
+        ++level;                // texels of 2^(level + 1) map texels: the footprint spans at most 2 x 2
+    if (level >= uDepthRangeLevels)
+        return -1.0;
+    ivec2 last = textureSize(uDepthRange, level) - 1;
+    ivec2 base = lo >> (level + 1);
+    vec2 a = texelFetch(uDepthRange, min(base, last), level).rg;
+    vec2 b = texelFetch(uDepthRange, min(base + ivec2(1, 0), last), level).rg;
+    vec2 c = texelFetch(uDepthRange, min(base + ivec2(0, 1), last), level).rg;
+    vec2 d = texelFetch(uDepthRange, min(base + ivec2(1, 1), last), level).rg;
+    float nearest = min(min(a.r, b.r), min(c.r, d.r));
+    float farthest = max(max(a.g, b.g), max(c.g, d.g));
+    // Clamped as the hardware comparison clamps them, and widened a little: the hardware may
+    // round the reference to the map's precision before comparing.
+    references = clamp(references, 0.0, 1.0) + vec2(-1.0e-5, 1.0e-5);
+#ifdef REVERSED_Z
+    if (references.x > farthest)
+        return 1.0;             // every reference nearer the light (greater) than every depth
+    if (references.y < nearest)
+        return 0.0;
+#else
+    if (references.y < nearest)
+        return 1.0;
+    if (references.x > farthest)
+        return 0.0;
+#endif
+    return -1.0;
+}
+#endif
 
 #include SHADOW_TECHNIQUE

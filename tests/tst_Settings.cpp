@@ -59,6 +59,20 @@ private Q_SLOTS:
         QVERIFY(s.bias.cullFront);
         applyAssignment(s, "light.projection=perspective");
         QVERIFY(s.light.projection == LightProjection::Perspective);
+        applyAssignment(s, "filter.mode=pcss");
+        QVERIFY(s.filter.mode == FilterMode::Pcss);
+        applyAssignment(s, "filter.taps=8");
+        QCOMPARE(s.filter.taps, 8);
+        applyAssignment(s, "filter.taps=64");
+        QCOMPARE(s.filter.taps, 64);
+        applyAssignment(s, "filter.radius=0.5");
+        QCOMPARE(s.filter.radius, 0.5);
+        applyAssignment(s, "filter.radius=32");
+        QCOMPARE(s.filter.radius, 32.0);
+        applyAssignment(s, "bias.receiver_plane=true");
+        QVERIFY(s.bias.receiverPlane);
+        applyAssignment(s, "filter.early_out=false");
+        QVERIFY(!s.filter.earlyOut);
     }
 
     void badValuesAreRefused_data()
@@ -84,6 +98,14 @@ private Q_SLOTS:
         QTest::newRow("vector with NaN") << "camera.position" << "1,nan,2" << "finite";
         QTest::newRow("not a bool") << "shadow.enabled" << "maybe" << "true | false";
         QTest::newRow("unknown key") << "bias.sloppy" << "1" << "shadowlab settings";
+        QTest::newRow("7 Poisson taps") << "filter.taps" << "7" << "[8, 64]";
+        QTest::newRow("65 Poisson taps") << "filter.taps" << "65" << "[8, 64]";
+        QTest::newRow("fractional taps") << "filter.taps" << "12.5" << "whole number";
+        QTest::newRow("Poisson radius 0.25") << "filter.radius" << "0.25" << "[0.5, 32]";
+        QTest::newRow("Poisson radius 33") << "filter.radius" << "33" << "[0.5, 32]";
+        QTest::newRow("radius NaN") << "filter.radius" << "nan" << "finite";
+        QTest::newRow("receiver plane not a bool") << "bias.receiver_plane" << "sometimes" << "true | false";
+        QTest::newRow("early out not a bool") << "filter.early_out" << "2" << "true | false";
     }
 
     void badValuesAreRefused()
@@ -252,6 +274,38 @@ private Q_SLOTS:
         QVERIFY(usesParameter(pcf.filter, "filter.kernel"));
         applyAssignment(pcf, "filter.mode=hard");
         QVERIFY(!usesParameter(pcf.filter, "filter.kernel"));
+    }
+
+    // PCSS's light is the area reference's disk: light.radius in world units for a perspective
+    // light, its angular radius seen from the target for a directional one.
+    void pcssLightSizeIsTheReferencesDisk_data()
+    {
+        QTest::addColumn<QString>("projection");
+        QTest::addColumn<double>("radius");
+        QTest::addColumn<double>("expected");
+        // The default light: position (-2, 4, -1), target the origin, sqrt(21) apart.
+        QTest::newRow("ortho 0.25") << "ortho" << 0.25 << 0.25 / std::sqrt(21.0);
+        QTest::newRow("ortho 1") << "ortho" << 1.0 << 1.0 / std::sqrt(21.0);
+        QTest::newRow("perspective 0.25") << "perspective" << 0.25 << 0.25;
+        QTest::newRow("perspective 0") << "perspective" << 0.0 << 0.0;
+    }
+
+    void pcssLightSizeIsTheReferencesDisk()
+    {
+        QFETCH(QString, projection);
+        QFETCH(double, radius);
+        QFETCH(double, expected);
+        Settings s;
+        applyAssignment(s, "filter.mode=pcss");
+        applyAssignment(s, "light.projection=" + projection);
+        applyAssignment(s, QString("light.radius=%1").arg(radius));
+        const std::vector<TechniqueUniform> uniforms = shadowTechnique(FilterMode::Pcss).uniforms(s);
+        QCOMPARE(uniforms.size(), std::size_t(1));
+        QCOMPARE(uniforms[0].name, QByteArray("uLightSize"));
+        QVERIFY(std::abs(uniforms[0].value - expected) < 1e-6);
+        QVERIFY(usesParameter(s.filter, "filter.taps"));
+        QVERIFY(!usesParameter(s.filter, "filter.radius"));
+        QCOMPARE(filterLabel(s.filter), QStringLiteral("pcss 16"));
     }
 };
 

@@ -39,6 +39,7 @@ Settings tutorialSettings(Settings s)
     s.map.format = DepthFormat::Depth24;
     s.filter.mode = FilterMode::Pcf;
     s.filter.kernel = 3;
+    s.filter.earlyOut = false;          // a tutorial filters every pixel
     s.shadow.enabled = true;
     s.bias = BiasSettings{};
     s.bias.space = BiasSpace::Depth;    // the tutorial's bias is in depth units

@@ -146,11 +146,13 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     addBool(bias, QStringLiteral("bias.cull_front"), tr("Cull front faces in the shadow pass"));
     addNumber(bias, QStringLiteral("bias.polygon_factor"));
     addNumber(bias, QStringLiteral("bias.polygon_units"));
+    addBool(bias, QStringLiteral("bias.receiver_plane"), tr("Receiver-plane depth for wide filters"));
 
     QGridLayout* filter = addGroup(tr("Filtering"));
     addChoice(filter, QStringLiteral("filter.mode"));
     for (const TechniqueParameter& parameter : techniqueParameters())
         addNumber(filter, parameter.key);
+    addBool(filter, QStringLiteral("filter.early_out"), tr("Filter only penumbrae"));
 
     QGridLayout* shading = addGroup(tr("Shading"));
     addChoice(shading, QStringLiteral("shading.model"));

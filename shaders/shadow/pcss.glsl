@@ -1,0 +1,59 @@
+// pcss: percentage-closer soft shadows (Fernando 2005) of a disk light. A blocker search over
+// the part of the map the light's disk covers as seen from the receiver, the blockers' mean
+// distance, then a Poisson filter as wide as the penumbra a planar blocker there would cast:
+// (receiver - blocker) times the disk's angular radius for a directional light, as the area
+// reference traces it, and by similar triangles for a perspective one.
+uniform sampler2D uShadowDepth; // the same map, raw depth
+uniform float uLightSize;       // ortho: light.radius / distance to the target; perspective: light.radius
+
+const int kBlockerTaps = 16;
+
+bool isBlocker(float depth, float reference)
+{
+#ifdef REVERSED_Z
+    return depth > reference;
+#else
+    return depth < reference;
+#endif
+}
+
+// The uv radius covered by the light's disk, seen from a receiver at `receiver`, at distance
+// `plane` from the light (both along its axis).
+vec2 diskFootprint(float receiver, float plane)
+{
+#ifdef LIGHT_PERSPECTIVE
+    return vec2(uLightSize * (receiver - plane) / (receiver * plane)) / uShadowUvWorld;
+#else
+    return vec2(uLightSize * (receiver - plane)) / uShadowUvWorld;
+#endif
+}
+
+float filterShadow(vec2 uv, float reference)
+{
+    float receiver = shadowDistance(reference);
+    // Every blocker lies between the near plane and the receiver, so the penumbra filter below
+    // stays inside this search region.
+    vec2 search = min(max(diskFootprint(receiver, uShadowDepthRange.x), uShadowTexel), vec2(0.5));
+    mat2 rotation = tapRotation();
+    float blockerSum = 0.0;
+    float blockers = 0.0;
+    for (int i = 0; i < kBlockerTaps; ++i) {
+        vec2 offset = rotation * kPoissonDisk[i] * search;
+        float depth = texture(uShadowDepth, uv + offset).r;
+        if (isBlocker(depth, wideTapReference(offset, reference))) {
+            blockerSum += depth;
+            blockers += 1.0;
+        }
+    }
+    if (blockers == 0.0)
+        return 1.0;
+    float blocker = shadowDistance(blockerSum / blockers);
+    // At least one texel, so contact shadows stay anti-aliased.
+    vec2 radius = clamp(diskFootprint(receiver, blocker), uShadowTexel, search);
+    float lit = 0.0;
+    for (int i = 0; i < POISSON_TAPS; ++i) {
+        vec2 offset = rotation * kPoissonDisk[i] * radius;
+        lit += shadowTap(uv + offset, wideTapReference(offset, reference));
+    }
+    return lit / float(POISSON_TAPS);
+}

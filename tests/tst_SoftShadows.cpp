@@ -1,0 +1,351 @@
+// The wide filters (pcf N×N, poisson, pcss) and their options (receiver-plane bias,
+// penumbra-only filtering for pcf and poisson), checked against the Embree references at exactly the rendered
+// pixels, the way a user checks a soft shadow: what the ray tracer says is shadowed is dark,
+// what it says is lit stays lit however wide the kernel, PCSS's penumbra grows with the light's
+// size and with the distance from blocker to receiver and is closer to the area light than a
+// fixed kernel, and skipping the taps outside penumbrae does not change the image.
+#include "Application.h"
+#include "HeadlessTestMain.h"
+#include "HeadlessRenderer.h"
+#include "RayTracer.h"
+#include "SceneLibrary.h"
+#include "SettingsKeys.h"
+#include "ShadowReference.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QtTest>
+
+using namespace shadowlab;
+
+namespace {
+
+const QSize kSize(240, 135);
+
+struct Measured {
+    VisibilityBuffer buffer;
+    ReferenceVisibility reference;
+};
+
+Measured measure(Renderer& renderer, const Settings& settings, bool area, QSize size = kSize)
+{
+    Measured m{renderer.renderVisibility(settings, size), {}};
+    const RayTracer tracer(*renderer.scene(), m.buffer.cameraPosition);
+    ReferenceOptions options;
+    options.area = area;
+    options.lightRadius = settings.reference.lightRadius;
+    options.samplesPerAxis = 8;
+    m.reference = traceReference(tracer, m.buffer, renderer.lightFrame(), options);
+    return m;
+}
+
+Settings with(const QString& scene, const QStringList& assignments)
+{
+    Settings s = presetSettings(scene);
+    for (const QString& a : assignments)
+        applyAssignment(s, a);
+    return s;
+}
+
+// Receiver pixels (facing the light) that disagree with `expected` by more than half.
+struct Agreement {
+    int counted = 0;
+    int referenceShadowed = 0;
+    int falseShadow = 0;
+    int falseLight = 0;
+    double meanAbsoluteError = 0.0;
+    QString text() const
+    {
+        return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light, MAE %5")
+            .arg(counted).arg(referenceShadowed).arg(falseShadow).arg(falseLight).arg(meanAbsoluteError, 0, 'f', 4);
+    }
+};
+
+Agreement agreement(const VisibilityBuffer& buffer, const std::vector<float>& expected)
+{
+    Agreement a;
+    double sum = 0.0;
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        const float measured = buffer.visibility(i);
+        const float e = expected[std::size_t(i)];
+        ++a.counted;
+        a.referenceShadowed += e < 0.5f;
+        a.falseShadow += measured < e - 0.5f;
+        a.falseLight += measured > e + 0.5f;
+        sum += std::abs(double(measured) - double(e));
+    }
+    a.meanAbsoluteError = a.counted ? sum / a.counted : 0.0;
+    return a;
+}
+
+// Share of receiver pixels strictly between shadow and light.
+double penumbraShare(const VisibilityBuffer& buffer)
+{
+    int counted = 0, between = 0;
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        ++counted;
+        between += buffer.visibility(i) > 0.05f && buffer.visibility(i) < 0.95f;
+    }
+    return counted ? double(between) / counted : 0.0;
+}
+
+int maxChannelDifference(const QImage& a, const QImage& b)
+{
+    int worst = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            worst = std::max({worst, std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)), std::abs(qBlue(p) - qBlue(q))});
+        }
+    }
+    return worst;
+}
+
+// The occluder scene with its board lifted to `height` above the plane (1 in the preset).
+Scene occluderAt(double height)
+{
+    Scene scene = buildScene(QStringLiteral("occluder"));
+    scene.objects[1].model = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, height - 1.0, 0.0)) * scene.objects[1].model;
+    return scene;
+}
+
+const QStringList kScenes{"seed", "torus", "cubes", "occluder"};
+
+} // namespace
+
+class TestSoftShadows : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private Q_SLOTS:
+    void initTestCase() { m_headless = std::make_unique<HeadlessRenderer>(); }
+    void cleanupTestCase() { m_headless.reset(); }
+    void cleanup() { m_headless->renderer().setScene(std::nullopt); }
+
+    // Dark where the reference is shadowed, lit where it is lit: PCSS against the area light it
+    // imitates, the fixed kernels against the hard reference.
+    void agreesWithTheReference_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        const std::pair<const char*, QStringList> configurations[] = {
+            {"poisson 16 r2.5", {"filter.mode=poisson"}},
+            {"poisson 64 r16", {"filter.mode=poisson", "filter.taps=64", "filter.radius=16"}},
+            {"poisson 8 r0.5", {"filter.mode=poisson", "filter.taps=8", "filter.radius=0.5"}},
+            {"poisson receiver plane", {"filter.mode=poisson", "filter.radius=8", "bias.receiver_plane=true"}},
+            {"pcf 7 receiver plane", {"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true"}},
+            {"pcss 16", {"filter.mode=pcss"}},
+            {"pcss 32 radius 0.5", {"filter.mode=pcss", "filter.taps=32", "light.radius=0.5"}},
+            {"pcss perspective", {"filter.mode=pcss", "light.projection=perspective"}},
+            {"pcss depth32f", {"filter.mode=pcss", "map.format=depth32f"}},
+            {"pcss receiver plane", {"filter.mode=pcss", "bias.receiver_plane=true"}},
+        };
+        for (const QString& scene : kScenes) {
+            for (const auto& [name, assignments] : configurations)
+                QTest::newRow(qPrintable(QString("%1, %2").arg(scene, name))) << scene << assignments;
+        }
+    }
+
+    void agreesWithTheReference()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        const Settings s = with(scene, assignments);
+        const bool pcss = s.filter.mode == FilterMode::Pcss;
+        const Measured m = measure(m_headless->renderer(), s, pcss);
+        const Agreement a = agreement(m.buffer, pcss ? m.reference.area : m.reference.hard);
+        qInfo().noquote() << a.text();
+        QVERIFY2(a.counted > 500, qPrintable(a.text()));
+        QVERIFY2(a.referenceShadowed > 20, qPrintable(a.text()));
+        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(a.text()));
+        QVERIFY2(a.falseShadow <= 0.005 * a.counted, qPrintable(a.text()));
+    }
+
+    // A wide Poisson disk with the default (small) bias keeps what the reference says is lit at
+    // full light away from the shadow's edges: the bias grows with each tap's distance.
+    void widePoissonKeepsLitReceiversLit_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<double>("radius");
+        for (const QString& scene : kScenes) {
+            for (const double radius : {8.0, 32.0})
+                QTest::newRow(qPrintable(QString("%1, radius %2").arg(scene).arg(radius))) << scene << radius;
+        }
+    }
+
+    void widePoissonKeepsLitReceiversLit()
+    {
+        QFETCH(QString, scene);
+        QFETCH(double, radius);
+        const Settings s = with(scene, {"filter.mode=poisson", "filter.taps=64", QString("filter.radius=%1").arg(radius)});
+        const Measured m = measure(m_headless->renderer(), s, false);
+        int lit = 0, darkened = 0;
+        double sum = 0.0;
+        for (int i = 0; i < m.buffer.pixelCount(); ++i) {
+            if (m.buffer.mask(i) != VisibilityBuffer::FacingLight || m.reference.hard[std::size_t(i)] < 0.5f)
+                continue;
+            ++lit;
+            darkened += m.buffer.visibility(i) < 0.5f;
+            sum += m.buffer.visibility(i);
+        }
+        const QString numbers = QString("%1 lit pixels, %2 below half light, mean visibility %3").arg(lit).arg(darkened).arg(sum / lit, 0, 'f', 4);
+        qInfo().noquote() << numbers;
+        QVERIFY2(lit > 500, qPrintable(numbers));
+        QVERIFY2(darkened <= 0.005 * lit, qPrintable(numbers));
+        QVERIFY2(sum / lit > 0.96, qPrintable(numbers));   // only the rims of shadows are in between
+    }
+
+    void pcssPenumbraWidensWithTheLightRadius()
+    {
+        double previous = 0.0, first = 0.0;
+        for (const double radius : {0.05, 0.15, 0.45}) {
+            const Settings s = with("occluder", {"filter.mode=pcss", "filter.taps=32", QString("light.radius=%1").arg(radius)});
+            const double share = penumbraShare(m_headless->renderer().renderVisibility(s, QSize(320, 180)));
+            qInfo("light.radius %.2f: %.2f%% of receiver pixels in penumbra", radius, 100.0 * share);
+            QVERIFY2(share > 1.3 * previous, qPrintable(QString("radius %1: %2 after %3").arg(radius).arg(share).arg(previous)));
+            if (first == 0.0)
+                first = share;
+            previous = share;
+        }
+        QVERIFY(first > 0.0);
+        QVERIFY(previous > 3.0 * first);
+    }
+
+    void pcssPenumbraWidensWithTheBlockerDistance()
+    {
+        auto shareAt = [this](double height, const QStringList& assignments) {
+            m_headless->renderer().setScene(occluderAt(height));
+            return penumbraShare(m_headless->renderer().renderVisibility(with("occluder", assignments), QSize(320, 180)));
+        };
+        const QStringList pcss{"filter.mode=pcss", "filter.taps=32", "light.radius=0.2"};
+        double previous = 0.0;
+        std::vector<double> shares;
+        for (const double height : {0.5, 1.0, 2.0}) {
+            const double share = shareAt(height, pcss);
+            qInfo("pcss, board %.1f above the plane: %.2f%% of receiver pixels in penumbra", height, 100.0 * share);
+            QVERIFY2(share > 1.3 * previous, qPrintable(QString("height %1: %2 after %3").arg(height).arg(share).arg(previous)));
+            shares.push_back(share);
+            previous = share;
+        }
+        // A fixed kernel's penumbra does not follow the blocker (its rim only changes with the
+        // shadow's outline in the image).
+        const double fixedLow = shareAt(0.5, {"filter.mode=poisson"});
+        const double fixedHigh = shareAt(2.0, {"filter.mode=poisson"});
+        qInfo("poisson, board 0.5 and 2.0 above the plane: %.3f%% and %.3f%%", 100.0 * fixedLow, 100.0 * fixedHigh);
+        QVERIFY(shares.back() / shares.front() > 2.0 * fixedHigh / fixedLow);
+    }
+
+    // What PCSS is for: closer to the area light than fixed kernels at the same light radius.
+    void pcssIsCloserToTheAreaLightThanFixedKernels_data()
+    {
+        QTest::addColumn<QString>("scene");
+        for (const QString& scene : kScenes)
+            QTest::newRow(qPrintable(scene)) << scene;
+    }
+
+    void pcssIsCloserToTheAreaLightThanFixedKernels()
+    {
+        QFETCH(QString, scene);
+        Renderer& r = m_headless->renderer();
+        const Measured pcss = measure(r, with(scene, {"filter.mode=pcss", "filter.taps=32"}), true);
+        const double pcssError = agreement(pcss.buffer, pcss.reference.area).meanAbsoluteError;
+        // Same camera, light and size: the same area reference.
+        const double pcfError = agreement(r.renderVisibility(with(scene, {"filter.mode=pcf", "filter.kernel=3"}), kSize), pcss.reference.area)
+                                    .meanAbsoluteError;
+        const double poissonError = agreement(r.renderVisibility(with(scene, {"filter.mode=poisson", "filter.taps=32"}), kSize),
+                                              pcss.reference.area).meanAbsoluteError;
+        qInfo("MAE against the area reference: pcss %.4f, pcf 3x3 %.4f, poisson %.4f", pcssError, pcfError, poissonError);
+        QVERIFY(pcssError < pcfError);
+        QVERIFY(pcssError < poissonError);
+    }
+
+    // Every texel of the min/max depth mip bounds the map texels under it, including the odd
+    // leftovers of sizes that are not powers of two.
+    void depthRangeBoundsTheMap_data()
+    {
+        QTest::addColumn<int>("mapSize");
+        for (const int size : {2048, 1000, 333, 17})
+            QTest::newRow(qPrintable(QString::number(size))) << size;
+    }
+
+    void depthRangeBoundsTheMap()
+    {
+        QFETCH(int, mapSize);
+        Renderer& r = m_headless->renderer();
+        m_headless->renderFrame(with("seed", {"filter.mode=pcf", "filter.early_out=true", QString("map.size=%1").arg(mapSize)}), kSize);
+        QVERIFY(r.depthRange());
+        m_headless->makeCurrent();
+        GlFunctions* gl = m_headless->functions();
+        std::vector<float> depth(std::size_t(mapSize) * std::size_t(mapSize));
+        gl->glBindTexture(GL_TEXTURE_2D, r.shadowMap().texture());
+        gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        gl->glBindTexture(GL_TEXTURE_2D, r.depthRange()->texture());
+        int bad = 0;
+        for (int level = 0; level < r.depthRange()->levels(); ++level) {
+            GLint size = 0;
+            gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &size);
+            std::vector<glm::vec2> range(std::size_t(size) * std::size_t(size));
+            gl->glGetTexImage(GL_TEXTURE_2D, level, GL_RG, GL_FLOAT, range.data());
+            const int cover = 2 << level;   // map texels per texel side
+            for (int y = 0; y < mapSize; ++y) {
+                for (int x = 0; x < mapSize; ++x) {
+                    const int tx = std::min(x / cover, size - 1), ty = std::min(y / cover, size - 1);
+                    const glm::vec2 r2 = range[std::size_t(ty) * std::size_t(size) + std::size_t(tx)];
+                    const float d = depth[std::size_t(y) * std::size_t(mapSize) + std::size_t(x)];
+                    // The read-back converts 24-bit depth to float on its own path: one ulp apart.
+                    if ((d < r2.x - 1e-6f || d > r2.y + 1e-6f) && bad++ < 5)
+                        qWarning("level %d texel %d,%d (%f, %f) misses map texel %d,%d depth %f", level, tx, ty, r2.x, r2.y, x, y, d);
+                }
+            }
+        }
+        gl->glBindTexture(GL_TEXTURE_2D, 0);
+        QCOMPARE(bad, 0);
+    }
+
+    // Penumbra-only filtering skips taps only where their result is known: the same image.
+    void earlyOutGivesTheSameImage_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        const std::pair<const char*, QStringList> configurations[] = {
+            {"pcf 3x3", {"filter.mode=pcf", "filter.kernel=3"}},
+            {"pcf 7x7", {"filter.mode=pcf", "filter.kernel=7"}},
+            {"pcf 9x9 receiver plane", {"filter.mode=pcf", "filter.kernel=9", "bias.receiver_plane=true"}},
+            {"poisson 16 r2.5", {"filter.mode=poisson"}},
+            {"poisson 64 r32", {"filter.mode=poisson", "filter.taps=64", "filter.radius=32"}},
+            {"poisson 24 r6, 1000 map", {"filter.mode=poisson", "filter.taps=24", "filter.radius=6", "map.size=1000"}},
+            {"poisson depth32f", {"filter.mode=poisson", "map.format=depth32f"}},
+            {"pcf 5x5 perspective", {"filter.mode=pcf", "filter.kernel=5", "light.projection=perspective"}},
+        };
+        for (const QString& scene : kScenes) {
+            for (const auto& [name, assignments] : configurations)
+                QTest::newRow(qPrintable(QString("%1, %2").arg(scene, name))) << scene << assignments;
+        }
+    }
+
+    void earlyOutGivesTheSameImage()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        Renderer& r = m_headless->renderer();
+        const VisibilityBuffer skipping = r.renderVisibility(with(scene, assignments + QStringList{"filter.early_out=true"}), kSize);
+        const VisibilityBuffer everyTap = r.renderVisibility(with(scene, assignments + QStringList{"filter.early_out=false"}), kSize);
+        QCOMPARE_LE(maxChannelDifference(skipping.image, everyTap.image), 1);
+        float worst = 0.0f;
+        for (int i = 0; i < skipping.pixelCount(); ++i)
+            worst = std::max(worst, std::abs(skipping.visibility(i) - everyTap.visibility(i)));
+        QCOMPARE_LE(worst, 1.0f / 255.0f);
+    }
+
+private:
+    std::unique_ptr<HeadlessRenderer> m_headless;
+};
+
+SHADOWLAB_TEST_MAIN(TestSoftShadows)
+#include "tst_SoftShadows.moc"
