@@ -30,6 +30,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowWorld(program.uniform("uShadowWorld")),
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
+      baseColour(program.uniform("uBaseColour")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowTexel(program.uniform("uShadowTexel")),
@@ -158,7 +159,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
         p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
-        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object.texture));
+        p.program.set(p.baseColour, object.baseColour);
+        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
         scene.draw(object);
         ++draws;
     }

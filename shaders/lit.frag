@@ -10,6 +10,7 @@ in vec2 vUv;
 in vec4 vShadowCoord;
 
 uniform sampler2D uDiffuse;
+uniform vec3 uBaseColour;   // multiplies the texture: white for presets, a material's base colour for models
 uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
 uniform float uBiasSlope;       // per unit of (1 - N.L); world units (depth units with BIAS_DEPTH)
@@ -70,7 +71,7 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 
 void main()
 {
-    vec3 albedo = texture(uDiffuse, vUv).rgb;
+    vec3 albedo = texture(uDiffuse, vUv).rgb * uBaseColour;
     vec3 normal = normalize(vNormal);
     vec3 toLight = directionToLight(vPosition);
     vec3 toEye = normalize(-vPosition);
