@@ -103,7 +103,8 @@ private Q_SLOTS:
         QTest::newRow("missing model") << QStringList{"render", "--out", out, "--scene", "/nonexistent/engine.glb"} << "engine.glb";
         QTest::newRow("empty model") << QStringList{"render", "--out", out, "--scene", models + "invalid/empty.obj"} << "empty.obj";
         QTest::newRow("points only") << QStringList{"bench", "--scene", models + "PLY/points.ply"} << "no triangles";
-        QTest::newRow("unsupported format") << QStringList{"report", "--scene", models + "invalid/readme.txt"} << "not a model format";
+        QTest::newRow("unsupported format") << QStringList{"report", "--out", m_dir.filePath("never"), "--scene", models + "invalid/readme.txt"}
+                                            << "not a model format";
         QTest::newRow("model without its buffer") << QStringList{"settings", "--scene", models + "glTF2/MissingBin/BoxTextured.gltf"}
                                                   << "BoxTextured.gltf";
         QTest::newRow("no output") << QStringList{"render"} << "--out";
