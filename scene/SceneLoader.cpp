@@ -202,7 +202,9 @@ Settings sceneFileSettings(const QString& path)
     Settings s;
     s.scene = scene.name;
     s.camera.fov = 45.0;
-    const double distance = radius / std::sin(glm::radians(s.camera.fov * 0.5)) * 1.05;
+    // Far enough that the bounding sphere fits the height with a margin, and most of the width
+    // of a narrow view (the window shares its width with the depth map and the dock).
+    const double distance = radius / std::sin(glm::radians(s.camera.fov * 0.5)) * 1.3;
     s.camera.target = centre;
     s.camera.position = centre + glm::normalize(glm::dvec3(0.55, 0.55, 1.0)) * distance;
     // From above at about 55 degrees elevation, from the side opposite the camera's left, so the
