@@ -211,9 +211,11 @@ Settings sceneFileSettings(const QString& path)
     // shadow falls on the ground in view.
     s.light.target = centre;
     s.light.position = centre + glm::normalize(glm::dvec3(-0.6, 1.4, -0.4)) * radius * 3.0;
-    s.light.extent = radius * 1.5;
+    // The hand-set volume (light.fit=manual) covers the ground in view, not just the model;
+    // the default fit shrinks it to what casts onto what the camera sees.
+    s.light.extent = radius * 4.0;
     s.light.nearPlane = radius * 0.5;
-    s.light.farPlane = radius * 6.0;
+    s.light.farPlane = radius * 8.0;
     // World-space lengths tuned on the seed preset scale with the model.
     const double scale = radius / kSeedObjectRadius;
     s.bias.slope = std::min(s.bias.slope * scale, 100.0);
