@@ -17,6 +17,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <QMimeData>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -382,6 +383,20 @@ private Q_SLOTS:
         // A bad file after a good one keeps the good one.
         QVERIFY(!window.openScene("/nonexistent.glb").isEmpty());
         QCOMPARE(window.settings(MainWindow::Side::A).scene, good);
+
+        // A file dropped on the scene view opens like File → Open Scene.
+        const QString dropped = model("PLY/cube.ply");
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(dropped)});
+        SceneView* view = window.sceneView(MainWindow::Side::A);
+        const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+        QDragEnterEvent enter(centre.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(centre, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &drop);
+        QCOMPARE(window.settings(MainWindow::Side::A).scene, dropped);
+        QCOMPARE(window.recentScenes(), (QStringList{dropped, good}));
     }
 
     void init() { if (!m_headless) m_headless = std::make_unique<HeadlessRenderer>(); }

@@ -234,7 +234,13 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_volumeAction);
     view->addAction(m_animateAction);
-    QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] { setCamera(presetSettings(m_settings[0].scene).camera); });
+    QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] {
+        try {
+            setCamera(presetSettings(m_settings[0].scene).camera);
+        } catch (const SettingsError& e) {
+            statusBar()->showMessage(tr("Cannot reset the camera: %1").arg(QString::fromUtf8(e.what())), 8000);
+        }
+    });
     resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
     view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
     view->addSeparator();

@@ -377,7 +377,13 @@ void PropertiesDock::editScene(const QString& name)
 
 void PropertiesDock::resetToDefaults()
 {
-    Settings defaults = presetSettings(m_pending.scene);
+    Settings defaults;
+    try {
+        defaults = presetSettings(m_pending.scene);
+    } catch (const SettingsError& e) {
+        markError(QStringLiteral("scene"), QString::fromStdString(e.what()));   // its file changed or went away
+        return;
+    }
     defaults.camera = m_pending.camera;
     setSettings(defaults);
     accept(defaults, QString());
