@@ -31,6 +31,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
       baseColour(program.uniform("uBaseColour")),
+      receives(program.uniform("uReceives")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowTexel(program.uniform("uShadowTexel")),
@@ -160,6 +161,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
         p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
         p.program.set(p.baseColour, object.baseColour);
+        p.program.set(p.receives, int(object.receivesShadow));
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
         scene.draw(object);
         ++draws;

@@ -26,6 +26,7 @@ struct SceneObject {
     glm::dmat4 model{1.0};              // object to world
     TextureKind texture = TextureKind::Wood;
     bool castsShadow = true;
+    bool receivesShadow = true;         // false: always lit, and left out of accuracy measurements
     glm::vec3 baseColour{1.0f};         // linear RGB in 0..1
     int image = -1;                     // index into Scene::images when texture is Image
 };

@@ -96,7 +96,7 @@ void addGround(Scene& scene, double height)
 }
 
 // Appends `part` to `scene` under `placement`.
-void append(Scene& scene, const Scene& part, const glm::dmat4& placement, bool casts)
+void append(Scene& scene, const Scene& part, const glm::dmat4& placement, bool casts, bool receives)
 {
     const int meshOffset = int(scene.meshes.size());
     const int imageOffset = int(scene.images.size());
@@ -108,6 +108,7 @@ void append(Scene& scene, const Scene& part, const glm::dmat4& placement, bool c
             object.image += imageOffset;
         object.model = placement * object.model;
         object.castsShadow = casts;
+        object.receivesShadow = receives;
         scene.objects.push_back(std::move(object));
     }
     scene.warnings += part.warnings;
@@ -156,7 +157,7 @@ Loaded loadScene(const QString& path)
         placement = glm::rotate(placement, glm::radians(rotation.y), glm::dvec3(0, 1, 0));
         placement = glm::rotate(placement, glm::radians(rotation.x), glm::dvec3(1, 0, 0));
         placement = glm::scale(placement, scale);
-        append(*scene, *part, placement, m.value(QStringLiteral("casts")).toBool(true));
+        append(*scene, *part, placement, m.value(QStringLiteral("casts")).toBool(true), m.value(QStringLiteral("receives")).toBool(true));
         identity.addData(part->identity);
     }
     if (ground.isDouble())

@@ -12,7 +12,7 @@ namespace shadowlab {
 //   { "models": [ { "file": "engine.glb",            // relative to the scene file
 //                   "position": [0, 0, 0], "rotation": [0, 90, 0],   // degrees about x, y, z
 //                   "scale": 1.0,                    // or [x, y, z]
-//                   "casts": true } ],
+//                   "casts": true, "receives": true } ],
 //     "ground": true,                                // false, or the ground's height
 //     "light.position": [..], "camera.target": [..], ...  // any key of `shadowlab settings`
 //   }

@@ -339,6 +339,43 @@ private Q_SLOTS:
         }
     }
 
+    void receivesFalseKeepsAModelLit_data()
+    {
+        QTest::addColumn<bool>("receives");
+        QTest::newRow("slab receives") << true;
+        QTest::newRow("slab does not receive") << false;
+    }
+
+    // A box over a wide slab, the light above and behind it: the slab shows the box's shadow
+    // unless the scene file says it does not receive, and then it is lit and not measured.
+    void receivesFalseKeepsAModelLit()
+    {
+        QFETCH(bool, receives);
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "slab.json", QStringLiteral(R"({
+            "models": [ { "file": "%1", "position": [0, 1, 0] },
+                        { "file": "%1", "position": [0, 0, 0], "scale": [6, 0.02, 6], "receives": %2 } ],
+            "ground": false,
+            "light.position": [0.5, 6, -6], "light.target": [0, 0, 0],
+            "camera.position": [0, 6, 4], "camera.target": [0, 0, 0]
+        })").arg(model("OBJ/box.obj"), receives ? "true" : "false").toUtf8());
+        const Settings s = presetSettings(QFileInfo(path).absoluteFilePath());
+        Renderer& renderer = m_headless->renderer();
+        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(160, 90));
+        int notReceiving = 0, shadowed = 0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) == VisibilityBuffer::NotReceiving) {
+                ++notReceiving;
+                QCOMPARE(buffer.visibility(i), 1.0f);
+            }
+            shadowed += buffer.mask(i) == VisibilityBuffer::FacingLight && buffer.visibility(i) < 0.5f;
+        }
+        QCOMPARE(notReceiving > 1000, !receives);
+        QCOMPARE(shadowed > 100, receives);
+        const Agreement a = agreement(renderer, s, QSize(160, 90));
+        QVERIFY(a.falseLight + a.falseShadow <= 0.02 * a.referenceShadowed + 0.004 * a.counted);
+    }
+
     void referenceCacheKeysOnContent()
     {
         QTemporaryDir dir;
