@@ -1,5 +1,7 @@
 #include "ShadowReference.h"
 
+#include "SceneLibrary.h"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -49,7 +51,7 @@ glm::dvec2 concentricDisk(double u, double v)
 
 ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPerAxis)
 {
-    return {settings.scene,          settings.camera,        size,
+    return {sceneIdentity(settings.scene), settings.camera, size,
             settings.light.position, settings.light.target,  settings.light.projection,
             settings.reference.lightRadius, samplesPerAxis};
 }

@@ -30,7 +30,7 @@ struct ReferenceVisibility {
 // Map size, bias and filter do not change it, so every configuration that shares a key can
 // share one trace.
 struct ReferenceKey {
-    QString scene;
+    QString scene;                  // sceneIdentity(): a preset's name or a hash of a file's content
     CameraSettings camera;
     QSize size;
     glm::dvec3 lightPosition{0.0};

@@ -322,7 +322,7 @@ std::vector<AuditCase> makeCatalogue()
                      onScene(withOffset(buildScene(QStringLiteral("seed")), shift),
                              accurate(offsetSettings(presetSettings(QStringLiteral("seed")), shift), 0.02))});
     }
-    add("empty scene", "no shadow pass, no draws, background only", onScene(Scene{QStringLiteral("empty"), {}, {}, std::nullopt}, [](HeadlessRenderer& h) {
+    add("empty scene", "no shadow pass, no draws, background only", onScene([] { Scene s; s.name = QStringLiteral("empty"); return s; }(), [](HeadlessRenderer& h) {
         const int passes = h.renderer().shadowPassCount();
         h.renderFrame(presetSettings(QStringLiteral("seed")), kSize);
         const FrameStats& f = h.renderer().lastFrame();

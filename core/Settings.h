@@ -116,7 +116,7 @@ struct ReferenceSettings {
 };
 
 struct Settings {
-    QString scene = QStringLiteral("seed"); // one of sceneNames() (SceneNames.h)
+    QString scene = QStringLiteral("seed"); // one of sceneNames() (SceneNames.h), or a model or scene file's absolute path
     LightSettings light;
     MapSettings map;
     BiasSettings bias;

@@ -8,6 +8,8 @@
 #include "SettingsError.h"
 #include "ShadowTechnique.h"
 
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonParseError>
@@ -224,20 +226,27 @@ const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-p
 Entry sceneKey()
 {
     const QStringList names = sceneNames();
-    const QString rangeText = names.join(QStringLiteral(" | "));
+    const QString rangeText = names.join(QStringLiteral(" | ")) + QStringLiteral(" | a model or scene file");
     return {SettingKey{QStringLiteral("scene"), QStringLiteral("choice"), rangeText,
-                       QStringLiteral("Built-in scene preset; choosing one also resets light and camera to the preset's"),
+                       QStringLiteral("Built-in scene preset, or the path of a model (glTF, OBJ, PLY, STL, COLLADA, FBX) or scene "
+                                      "file (.json); choosing one also resets light and camera to the scene's"),
                        names, 0, double(names.size() - 1)},
             [](const Settings& s) { return s.scene; },
             [names, rangeText](Settings& s, const QString& v) {
                 const QString name = v.trimmed().toLower();
-                if (!names.contains(name))
-                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1' is not a scene; choose one of %2").arg(displayText(v), rangeText));
-                s.scene = name;
+                if (names.contains(name)) {
+                    s.scene = name;
+                    return;
+                }
+                const QFileInfo file(v.trimmed());
+                if (!file.isFile())
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': no such file, and not a preset (%2); check the path")
+                                                                     .arg(displayText(v), names.join(QStringLiteral(" | "))));
+                s.scene = file.absoluteFilePath();
             },
-            [names, rangeText](const Settings& s) -> std::optional<QString> {
-                if (!names.contains(s.scene))
-                    return QStringLiteral("'%1' is not a scene; choose one of %2").arg(displayText(s.scene), rangeText);
+            [names](const Settings& s) -> std::optional<QString> {
+                if (!names.contains(s.scene) && !QFileInfo(s.scene).isFile())
+                    return QStringLiteral("'%1': no such file, and not a preset (%2); check the path").arg(displayText(s.scene), names.join(QStringLiteral(" | ")));
                 return std::nullopt;
             }};
 }

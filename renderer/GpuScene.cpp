@@ -32,21 +32,36 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(s
     }
     gl->glBindVertexArray(0);
 
-    for (TextureKind kind : {TextureKind::Checker, TextureKind::Wood}) {
-        const QImage image = makeProceduralTexture(kind);
+    const auto upload = [gl](const QImage& image, const QString& label) {
         GlTexture texture = makeTexture(gl);
         gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+        gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
         gl->glGenerateMipmap(GL_TEXTURE_2D);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        labelGlObject(GlLabelKind::Texture, texture.id(),
-                      kind == TextureKind::Checker ? QStringLiteral("checker texture") : QStringLiteral("wood texture"));
-        m_textures[std::size_t(kind)] = std::move(texture);
-    }
+        labelGlObject(GlLabelKind::Texture, texture.id(), label);
+        return texture;
+    };
+    m_textures[std::size_t(TextureKind::Checker)] = upload(makeProceduralTexture(TextureKind::Checker), QStringLiteral("checker texture"));
+    m_textures[std::size_t(TextureKind::Wood)] = upload(makeProceduralTexture(TextureKind::Wood), QStringLiteral("wood texture"));
+    QImage white(1, 1, QImage::Format_RGBA8888);
+    white.fill(Qt::white);
+    m_textures[std::size_t(TextureKind::Flat)] = upload(white, QStringLiteral("flat colour texture"));
+    for (const QImage& image : m_scene.images)
+        m_images.push_back(upload(image.convertToFormat(QImage::Format_RGBA8888), QStringLiteral("%1 image %2").arg(m_scene.name).arg(m_images.size())));
     gl->glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+GLuint GpuScene::texture(const SceneObject& object) const
+{
+    if (object.texture == TextureKind::Image && object.image >= 0 && std::size_t(object.image) < m_images.size())
+        return m_images[std::size_t(object.image)].id();
+    if (object.texture == TextureKind::Image)
+        return m_textures[std::size_t(TextureKind::Flat)].id();
+    return m_textures[std::size_t(object.texture)].id();
 }
 
 void GpuScene::draw(const SceneObject& object) const

@@ -8,8 +8,9 @@
 
 namespace shadowlab {
 
-// A Scene uploaded to one context: a vertex array per mesh (VAOs are per context) and a
-// mipmapped texture per TextureKind. Attribute locations: 0 position, 1 normal, 2 uv.
+// A Scene uploaded to one context: a vertex array per mesh (VAOs are per context), a mipmapped
+// texture per procedural TextureKind, a white one for flat colours and one per scene image.
+// Attribute locations: 0 position, 1 normal, 2 uv.
 class GpuScene {
 public:
     GpuScene(GlFunctions* gl, Scene scene);
@@ -19,7 +20,8 @@ public:
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
     // Binds the object's vertex array and draws it.
     void draw(const SceneObject& object) const;
-    GLuint texture(TextureKind kind) const { return m_textures[std::size_t(kind)].id(); }
+    // The diffuse texture the object's colour is multiplied by (its base colour multiplies it).
+    GLuint texture(const SceneObject& object) const;
 
 private:
     struct GpuMesh {
@@ -33,7 +35,8 @@ private:
     Scene m_scene;
     std::vector<GpuMesh> m_meshes;
     std::vector<Bounds> m_objectBounds;
-    std::array<GlTexture, 2> m_textures;
+    std::array<GlTexture, 3> m_textures;   // Checker, Wood, Flat (white)
+    std::vector<GlTexture> m_images;
 };
 
 } // namespace shadowlab

@@ -30,6 +30,8 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowWorld(program.uniform("uShadowWorld")),
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
+      baseColour(program.uniform("uBaseColour")),
+      receives(program.uniform("uReceives")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowTexel(program.uniform("uShadowTexel")),
@@ -184,7 +186,9 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
         p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
-        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object.texture));
+        p.program.set(p.baseColour, object.baseColour);
+        p.program.set(p.receives, int(object.receivesShadow));
+        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
         scene.draw(object);
         ++draws;
     }

@@ -43,12 +43,12 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     const double aspect = double(size.width()) / double(size.height());
     const CameraFrame camera = computeCameraFrame(settings.camera, aspect, scene.bounds());
 
-    // Every object receives; casters are the objects that cast.
+    // Receivers and casters as the scene's objects say.
     std::vector<FitObject> objects;
     objects.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        objects.push_back({m_scene->objectBounds(i), object.castsShadow, true, scene.meshes.at(std::size_t(object.mesh)).convex});
+        objects.push_back({m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
     }
     FittedLight fit = fitLight(settings.light, objects, camera.viewProjection, settings.map.size);
     const LightFrame light = computeLightFrame(settings.light, fit.volume, reversed);

@@ -7,13 +7,18 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <QByteArray>
+#include <QImage>
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
 namespace shadowlab {
 
-enum class TextureKind { Checker, Wood };
+// What colours an object: a procedural texture (presets), a flat base colour, or one of the
+// scene's images (an imported base-colour texture), each multiplied by the base colour.
+enum class TextureKind { Checker, Wood, Flat, Image };
 
 struct SceneObject {
     QString name;
@@ -21,6 +26,9 @@ struct SceneObject {
     glm::dmat4 model{1.0};              // object to world
     TextureKind texture = TextureKind::Wood;
     bool castsShadow = true;
+    bool receivesShadow = true;         // false: always lit, and left out of accuracy measurements
+    glm::vec3 baseColour{1.0f};         // linear RGB in 0..1
+    int image = -1;                     // index into Scene::images when texture is Image
 };
 
 // Meshes in object space and their placements; what the renderer and the ray tracer share.
@@ -29,6 +37,12 @@ struct Scene {
     std::vector<Mesh> meshes;
     std::vector<SceneObject> objects;
     std::optional<double> groundHeight; // y of a ground plane the camera should stay above, if any
+    std::vector<QImage> images;         // base-colour textures of imported materials, RGBA8888
+    // What a reference traced for this scene may be cached under: the preset's name, or a hash
+    // of a loaded file's bytes (and of every file it names), so a renamed copy shares a trace
+    // and an edited file does not.
+    QByteArray identity;
+    QStringList warnings;               // what the import changed or ignored, said once on load
 
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts

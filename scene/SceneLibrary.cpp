@@ -1,5 +1,6 @@
 #include "SceneLibrary.h"
 
+#include "SceneLoader.h"
 #include "SettingsError.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -93,6 +94,8 @@ Scene occluderScene()
 
 Scene buildScene(const QString& name)
 {
+    if (!sceneNames().contains(name))
+        return *loadSceneFile(name);
     if (name == u"seed")
         return seedScene();
     if (name == u"torus")
@@ -107,6 +110,8 @@ Scene buildScene(const QString& name)
 
 Settings presetSettings(const QString& name)
 {
+    if (!sceneNames().contains(name))
+        return sceneFileSettings(name);
     Settings s;
     s.scene = name;
     if (name == u"seed") {
@@ -146,8 +151,14 @@ Settings presetSettings(const QString& name)
         s.camera.target = {0.0, 0.0, 0.0};
         return s;
     }
-    buildScene(name); // throws the message that names the choices
     return s;
+}
+
+QString sceneIdentity(const QString& name)
+{
+    if (sceneNames().contains(name))
+        return name;
+    return QStringLiteral("sha256:") + QString::fromLatin1(loadSceneFile(name)->identity);
 }
 
 } // namespace shadowlab

@@ -9,8 +9,9 @@ preset="${SHADOWLAB_PRESET:-release}"
 packages=(
     cmake ninja-build g++ pkg-config
     qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
-    libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev
+    libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev libassimp-dev
     fonts-dejavu-core
+    assimp-testmodels  # test data: real and deliberately broken models
 )
 
 # OSMesa is optional (Mesa 25.1 removed it): the headless platform uses EGL, and OSMesa as well

@@ -10,6 +10,8 @@ in vec2 vUv;
 in vec4 vShadowCoord;
 
 uniform sampler2D uDiffuse;
+uniform vec3 uBaseColour;   // multiplies the texture: white for presets, a material's base colour for models
+uniform bool uReceives;     // false: the object is always lit
 uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
 uniform float uBiasSlope;       // per unit of (1 - N.L); world units (depth units with BIAS_DEPTH)
@@ -19,7 +21,7 @@ uniform mat4 uShadowWorld;      // world -> shadow texture space; used on direct
 layout(location = 0) out vec4 fragColor;
 #ifdef MEASURE
 layout(location = 1) out vec4 measuredPosition;    // camera-relative position, visibility
-layout(location = 2) out vec4 measuredNormal;      // geometric normal, 1 facing the light / 2 away
+layout(location = 2) out vec4 measuredNormal;      // geometric normal, 1 facing the light / 2 away / 3 not receiving
 #endif
 
 vec3 directionToLight(vec3 position)
@@ -86,7 +88,7 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 
 void main()
 {
-    vec3 albedo = texture(uDiffuse, vUv).rgb;
+    vec3 albedo = texture(uDiffuse, vUv).rgb * uBaseColour;
     vec3 normal = normalize(vNormal);
     vec3 toLight = directionToLight(vPosition);
     vec3 toEye = normalize(-vPosition);
@@ -100,7 +102,7 @@ void main()
     if (diffuse <= 0.0)
         specular = 0.0;
 
-    float visibility = shadowVisibility(normal, toLight);
+    float visibility = uReceives ? shadowVisibility(normal, toLight) : 1.0;
     vec3 ambient = 0.3 * albedo;
     vec3 direct = diffuse * albedo + specular * vec3(0.3);
     fragColor = vec4(ambient + visibility * direct, 1.0);
@@ -109,6 +111,6 @@ void main()
     if (dot(geometric, normal) < 0.0)
         geometric = -geometric;
     measuredPosition = vec4(vPosition, visibility);
-    measuredNormal = vec4(geometric, dot(normal, toLight) > 0.0 ? 1.0 : 2.0);
+    measuredNormal = vec4(geometric, !uReceives ? 3.0 : (dot(normal, toLight) > 0.0 ? 1.0 : 2.0));
 #endif
 }

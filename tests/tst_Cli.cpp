@@ -58,6 +58,17 @@ private Q_SLOTS:
         QVERIFY(colours.size() > 20); // a scene, not a cleared buffer
     }
 
+    void renderLoadsAModel()
+    {
+        const QString model = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+        if (!QFile::exists(model))
+            QSKIP("assimp-testmodels is not installed");
+        const QString out = m_dir.filePath("model.png");
+        const Run r = shadowlab({"render", "--scene", model, "--size", "160x100", "--out", out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(QImage(out).size(), QSize(160, 100));
+    }
+
     void settingsFileAndSetCombine()
     {
         const QString file = m_dir.filePath("s.json");
@@ -85,6 +96,14 @@ private Q_SLOTS:
         QTest::newRow("no equals") << QStringList{"render", "--out", out, "--set", "bias.slope"} << "key=value";
         QTest::newRow("unknown scene") << QStringList{"render", "--out", out, "--scene", "sponza"} << "seed";
         QTest::newRow("missing file") << QStringList{"render", "--out", out, "--settings", "/nonexistent/s.json"} << "s.json";
+        const QString models = "/usr/share/assimp/models/";
+        QTest::newRow("missing model") << QStringList{"render", "--out", out, "--scene", "/nonexistent/engine.glb"} << "engine.glb";
+        QTest::newRow("empty model") << QStringList{"render", "--out", out, "--scene", models + "invalid/empty.obj"} << "empty.obj";
+        QTest::newRow("points only") << QStringList{"bench", "--scene", models + "PLY/points.ply"} << "no triangles";
+        QTest::newRow("unsupported format") << QStringList{"report", "--out", m_dir.filePath("never"), "--scene", models + "invalid/readme.txt"}
+                                            << "not a model format";
+        QTest::newRow("model without its buffer") << QStringList{"settings", "--scene", models + "glTF2/MissingBin/BoxTextured.gltf"}
+                                                  << "BoxTextured.gltf";
         QTest::newRow("no output") << QStringList{"render"} << "--out";
         QTest::newRow("unknown option") << QStringList{"render", "--frobnicate"} << "frobnicate";
         QTest::newRow("bench frames 0") << QStringList{"bench", "--frames", "0"} << "--frames";

@@ -3,9 +3,11 @@
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
 #include "SampleStats.h"
+#include "SceneLibrary.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
+#include <QElapsedTimer>
 #include <QJsonArray>
 #include <memory>
 #include <QJsonDocument>
@@ -108,7 +110,18 @@ int runBench(const QStringList& arguments)
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
         if (!parseArguments(parser, QStringLiteral("bench"), arguments))
             return kExitOk;
+        // A model or scene file is imported here (then cached), so this is its load time.
+        QElapsedTimer loadTimer;
+        loadTimer.start();
         const Settings settings = settingsFromOptions(parser);
+        const double loadMs = double(loadTimer.nsecsElapsed()) * 1e-6;
+        std::size_t triangles = 0, meshes = 0;
+        {
+            const Scene scene = buildScene(settings.scene);
+            for (const SceneObject& object : scene.objects)
+                triangles += scene.meshes.at(std::size_t(object.mesh)).indices.size() / 3;
+            meshes = scene.objects.size();
+        }
         const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kBenchSize);
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
@@ -163,12 +176,17 @@ int runBench(const QStringList& arguments)
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                                {QStringLiteral("configuration"), summary},
+                                               {QStringLiteral("scene_load_ms"), loadMs},
+                                               {QStringLiteral("triangles"), qint64(triangles)},
+                                               {QStringLiteral("objects"), qint64(meshes)},
                                                {QStringLiteral("settings"), settingsToJson(settings)},
                                                {QStringLiteral("phases"), phaseArray}})
                          .toJson(QJsonDocument::Indented);
             return kExitOk;
         }
         out() << "renderer: " << rendererString << '\n' << "configuration: " << summary << '\n';
+        out() << "scene: " << triangles << " triangles in " << meshes << " drawn objects, loaded and checked in "
+              << QString::number(loadMs, 'f', 1) << " ms\n";
         for (const Phase& r : phases) {
             out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << warmup << " warm-up\n";
             out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames

@@ -5,10 +5,14 @@
 #include "OutputFile.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
+#include "SceneLoader.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "TraceError.h"
 
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
 #include <QJsonObject>
 
 #include <unistd.h>
@@ -48,8 +52,10 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
 
 void addSettingsOptions(QCommandLineParser& parser)
 {
-    parser.addOption({QStringLiteral("scene"), QStringLiteral("Scene preset: %1.").arg(sceneNames().join(QStringLiteral(", "))),
-                      QStringLiteral("name")});
+    parser.addOption({QStringLiteral("scene"),
+                      QStringLiteral("Scene preset (%1), or a model file (glTF, OBJ, PLY, STL, COLLADA, FBX) or scene file (.json).")
+                          .arg(sceneNames().join(QStringLiteral(", "))),
+                      QStringLiteral("name|file")});
     parser.addOption({QStringLiteral("set"), QStringLiteral("Set one setting, e.g. --set bias.slope=0.01 (repeatable; see `shadowlab settings`)."),
                       QStringLiteral("key=value")});
     parser.addOption({QStringLiteral("settings"), QStringLiteral("Read settings from a JSON file of key: value pairs."),
@@ -76,6 +82,10 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     applySetting(probe, QStringLiteral("scene"), scene); // validates the name with a helpful message
 
     Settings settings = presetSettings(probe.scene);
+    if (!sceneNames().contains(probe.scene)) {
+        for (const QString& warning : loadSceneFile(probe.scene)->warnings)
+            err() << "warning: " << QFileInfo(probe.scene).fileName() << ": " << warning << Qt::endl;
+    }
     if (!file.isEmpty())
         settings = settingsFromFileObject(file, fileObject, settings);
     for (const QString& a : assignments)

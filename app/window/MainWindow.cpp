@@ -7,7 +7,9 @@
 #include "OutputFile.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
+#include "ModelImporter.h"
 #include "SceneLibrary.h"
+#include "SceneLoader.h"
 #include "SceneView.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -19,12 +21,15 @@
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -40,6 +45,7 @@ namespace shadowlab {
 namespace {
 
 constexpr int kAnimationIntervalMs = 33;
+constexpr int kMaxRecentScenes = 8;
 const char* const kSideNames[] = {"A", "B"};
 
 std::size_t index(MainWindow::Side side)
@@ -73,6 +79,7 @@ std::optional<Settings> settingsFromText(const QString& text)
 MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(parent), m_persistence(persistence)
 {
     setWindowTitle(tr("ShadowLab"));
+    setAcceptDrops(true);   // a model or scene file dropped anywhere on the window, the views included
     m_settings[0] = presetSettings(QStringLiteral("seed"));
     m_settings[1] = m_settings[0];
 
@@ -207,6 +214,14 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open Scene…"), this, &MainWindow::openSceneInteractively);
+    open->setObjectName(QStringLiteral("openSceneAction"));
+    open->setShortcut(QKeySequence::Open);
+    open->setToolTip(tr("Load a model (glTF, OBJ, PLY, STL, COLLADA, FBX) or a scene file (.json); dropping a file on the view does the same (Ctrl+O)"));
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentScenesMenu"));
+    updateRecentMenu();
+    file->addSeparator();
     file->addAction(m_screenshotAction);
     file->addSeparator();
     file->addAction(tr("&Export Settings…"), this, &MainWindow::exportSettingsInteractively)->setObjectName(QStringLiteral("exportAction"));
@@ -222,7 +237,13 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(m_volumeAction);
     view->addAction(m_animateAction);
-    QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] { setCamera(presetSettings(m_settings[0].scene).camera); });
+    QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] {
+        try {
+            setCamera(presetSettings(m_settings[0].scene).camera);
+        } catch (const SettingsError& e) {
+            statusBar()->showMessage(tr("Cannot reset the camera: %1").arg(QString::fromUtf8(e.what())), 8000);
+        }
+    });
     resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
     view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
     view->addSeparator();
@@ -274,6 +295,80 @@ void MainWindow::createStatusBar()
 QAction* MainWindow::action(const QString& objectName) const
 {
     return findChild<QAction*>(objectName);
+}
+
+QString MainWindow::openScene(const QString& path)
+{
+    Settings candidate = m_settings[index(m_selected)];
+    try {
+        Settings probe;
+        applySetting(probe, QStringLiteral("scene"), path);
+        const Settings loaded = presetSettings(probe.scene);   // imports (cached) or throws
+        candidate.scene = loaded.scene;
+        candidate.light = loaded.light;
+        candidate.camera = loaded.camera;
+        candidate.bias = loaded.bias;
+        candidate.reference = loaded.reference;
+        setSettings(m_selected, candidate);
+    } catch (const SettingsError& e) {
+        return QString::fromUtf8(e.what());
+    }
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    m_recentScenes.removeAll(absolute);
+    m_recentScenes.prepend(absolute);
+    while (m_recentScenes.size() > kMaxRecentScenes)
+        m_recentScenes.removeLast();
+    updateRecentMenu();
+    if (!sceneNames().contains(candidate.scene)) {
+        const QStringList warnings = loadSceneFile(candidate.scene)->warnings;
+        if (!warnings.isEmpty())
+            statusBar()->showMessage(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
+    }
+    return QString();
+}
+
+void MainWindow::openSceneReporting(const QString& path)
+{
+    const QString error = openScene(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Cannot open scene"), tr("%1\n\nThe current scene stays.").arg(error));
+}
+
+void MainWindow::openSceneInteractively()
+{
+    QStringList patterns;
+    for (const QString& suffix : modelSuffixes())
+        patterns << QStringLiteral("*.") + suffix;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Scene"), m_recentScenes.isEmpty() ? QDir::homePath() : QFileInfo(m_recentScenes.first()).path(),
+        tr("Models and scene files (%1 *.json);;All files (*)").arg(patterns.join(QLatin1Char(' '))));
+    if (!path.isEmpty())
+        openSceneReporting(path);
+}
+
+void MainWindow::updateRecentMenu()
+{
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    for (const QString& path : m_recentScenes)
+        m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] { openSceneReporting(path); })->setToolTip(path);
+    m_recentMenu->setEnabled(!m_recentScenes.isEmpty());
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls() && event->mimeData()->urls().size() == 1 && event->mimeData()->urls().first().isLocalFile())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() != 1 || !urls.first().isLocalFile())
+        return;
+    event->acceptProposedAction();
+    openSceneReporting(urls.first().toLocalFile());
 }
 
 void MainWindow::setSettings(Side side, const Settings& settings)
@@ -540,6 +635,8 @@ void MainWindow::restoreState()
         QMainWindow::restoreState(state);
     if (const QByteArray splitter = store.value(QStringLiteral("window/splitter")).toByteArray(); !splitter.isEmpty())
         m_mainSplitter->restoreState(splitter);
+    m_recentScenes = store.value(QStringLiteral("scenes/recent")).toStringList();
+    updateRecentMenu();
     for (std::size_t i = 0; i < 2; ++i) {
         if (auto settings = settingsFromText(store.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString()))
             m_settings[i] = *settings;
@@ -557,6 +654,7 @@ void MainWindow::saveState() const
     store.setValue(QStringLiteral("window/geometry"), saveGeometry());
     store.setValue(QStringLiteral("window/state"), QMainWindow::saveState());
     store.setValue(QStringLiteral("window/splitter"), m_mainSplitter->saveState());
+    store.setValue(QStringLiteral("scenes/recent"), m_recentScenes);
     for (std::size_t i = 0; i < 2; ++i)
         store.setValue(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i])), settingsAsText(m_settings[i]));
     store.setValue(QStringLiteral("view/lightVolume"), m_volumeAction->isChecked());

@@ -11,6 +11,7 @@
 
 class QAction;
 class QLabel;
+class QMenu;
 class QSplitter;
 class QToolBar;
 
@@ -60,6 +61,12 @@ public:
     QString exportSettings(const QString& path) const;
     QString importSettings(const QString& path);
 
+    // Loads a model or scene file onto the selected side with the light and camera it brings
+    // and remembers it among the recent files; returns an empty string or what went wrong, and
+    // then the current scene stays.
+    QString openScene(const QString& path);
+    const QStringList& recentScenes() const { return m_recentScenes; }
+
     SceneView* sceneView(Side side) const { return m_views[std::size_t(side)]; }
     DepthMapView* depthMapView() const { return m_depthView; }
     PropertiesDock* propertiesDock() const { return m_dock; }
@@ -68,6 +75,8 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void createActions();
@@ -84,6 +93,9 @@ private:
     void updateStatus();
     void animateLight();
 
+    void openSceneInteractively();
+    void openSceneReporting(const QString& path);
+    void updateRecentMenu();
     void saveScreenshotInteractively();
     void exportSettingsInteractively();
     void importSettingsInteractively();
@@ -91,6 +103,8 @@ private:
     void showAbout();
 
     Persistence m_persistence;
+    QStringList m_recentScenes;     // newest first
+    QMenu* m_recentMenu = nullptr;
     std::array<Settings, 2> m_settings;
     Side m_selected = Side::A;
     bool m_compare = false;

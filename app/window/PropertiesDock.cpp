@@ -289,7 +289,11 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
     });
     Field field{key, nullptr, {combo}, [combo, key](const Settings& s) {
                     const QSignalBlocker block(combo);
-                    combo->setCurrentText(settingValue(s, key));
+                    const QString value = settingValue(s, key);
+                    // A loaded model or scene file joins the presets, so it can be chosen again.
+                    if (key == u"scene" && combo->findText(value) < 0)
+                        combo->addItem(value);
+                    combo->setCurrentText(value);
                 }};
     static const QHash<QString, QString> labels{{QStringLiteral("light.projection"), tr("Projection")},
                                                 {QStringLiteral("map.format"), tr("Depth format")},
@@ -375,7 +379,13 @@ void PropertiesDock::editScene(const QString& name)
 
 void PropertiesDock::resetToDefaults()
 {
-    Settings defaults = presetSettings(m_pending.scene);
+    Settings defaults;
+    try {
+        defaults = presetSettings(m_pending.scene);
+    } catch (const SettingsError& e) {
+        markError(QStringLiteral("scene"), QString::fromStdString(e.what()));   // its file changed or went away
+        return;
+    }
     defaults.camera = m_pending.camera;
     setSettings(defaults);
     accept(defaults, QString());

@@ -174,7 +174,12 @@ std::optional<double> SceneView::groundHeight() const
 void SceneView::keyPressEvent(QKeyEvent* event)
 {
     if (event->key() == Qt::Key_R || event->key() == Qt::Key_Home) {
-        emit cameraEdited(presetSettings(m_settings.scene).camera);
+        try {
+            emit cameraEdited(presetSettings(m_settings.scene).camera);
+        } catch (const SettingsError& e) {
+            // The scene's file changed or went away since it was loaded: keep the camera.
+            emit renderFailed(e.key(), QString::fromUtf8(e.what()));
+        }
         return;
     }
     QOpenGLWidget::keyPressEvent(event);

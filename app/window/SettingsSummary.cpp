@@ -3,6 +3,8 @@
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
+#include <QFileInfo>
+
 namespace shadowlab {
 
 QString squareSize(int side)
@@ -33,7 +35,8 @@ QString screenshotFileName(const Settings& settings, const QDateTime& when)
     QString filter = filterLabel(settings.filter).section(QChar(0x00D7), 0, 0).remove(QLatin1Char(' '));
     const QString technique = settings.shadow.enabled ? QStringLiteral("%1-%2").arg(filter).arg(settings.map.size)
                                                       : QStringLiteral("noshadow");
-    return QStringLiteral("shadowlab-%1-%2-%3.png").arg(when.toString(QStringLiteral("yyyy-MM-dd-HHmm")), settings.scene, technique);
+    return QStringLiteral("shadowlab-%1-%2-%3.png").arg(when.toString(QStringLiteral("yyyy-MM-dd-HHmm")),
+                                                            QFileInfo(settings.scene).completeBaseName(), technique);
 }
 
 } // namespace shadowlab

@@ -12,7 +12,8 @@ namespace shadowlab {
 
 // What the measuring variant of the lit pass wrote, read back to the CPU, rows top to bottom.
 struct VisibilityBuffer {
-    enum Mask : int { Background = 0, FacingLight = 1, FacingAway = 2 };
+    // NotReceiving: an object that receives no shadow (a scene file's "receives": false).
+    enum Mask : int { Background = 0, FacingLight = 1, FacingAway = 2, NotReceiving = 3 };
 
     QSize size;
     glm::dvec3 cameraPosition{0.0};             // positions below are relative to it

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "Scene.h"
+#include "Settings.h"
+
+#include <memory>
+
+namespace shadowlab {
+
+// Scenes the user brings: a model file (anything importModel() reads) or a scene file (.json):
+//
+//   { "models": [ { "file": "engine.glb",            // relative to the scene file
+//                   "position": [0, 0, 0], "rotation": [0, 90, 0],   // degrees about x, y, z
+//                   "scale": 1.0,                    // or [x, y, z]
+//                   "casts": true, "receives": true } ],
+//     "ground": true,                                // false, or the ground's height
+//     "light.position": [..], "camera.target": [..], ...  // any key of `shadowlab settings`
+//   }
+//
+// A model gets a ground plane under it, a camera framing it and a light from above at an
+// angle, all from its bounds; a scene file may turn the ground off and set any key.
+// Loads are cached by absolute path, size and modification time, so every command and view
+// shares one import. Throws SceneFileError naming the file, what is wrong and how to fix it.
+std::shared_ptr<const Scene> loadSceneFile(const QString& path);
+
+// The settings a loaded scene starts with: defaults, the light, camera, bias and reference
+// radius derived from its bounds, then the scene file's own keys. Throws like loadSceneFile().
+Settings sceneFileSettings(const QString& path);
+
+} // namespace shadowlab

@@ -1,0 +1,447 @@
+// Your own scenes: models from Debian's assimp-testmodels load with the right triangle counts
+// and sizes in every format, their shadows agree with the Embree reference, broken files give
+// an error that names the file and the problem, a scene file places models and sets keys,
+// references are cached by content, and the window keeps its scene when a file is bad.
+#include "Application.h"
+#include "HeadlessRenderer.h"
+#include "HeadlessTestMain.h"
+#include "MainWindow.h"
+#include "ModelImporter.h"
+#include "RayTracer.h"
+#include "SceneFileError.h"
+#include "SceneLibrary.h"
+#include "SceneLoader.h"
+#include "SceneView.h"
+#include "SettingsKeys.h"
+#include "ShadowReference.h"
+
+#include <glm/geometric.hpp>
+
+#include <QMimeData>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace shadowlab;
+
+namespace {
+
+const QString kModels = QStringLiteral("/usr/share/assimp/models/");
+
+QString model(const QString& relative)
+{
+    return kModels + relative;
+}
+
+std::size_t triangleCount(const Scene& scene, bool withGround = false)
+{
+    std::size_t n = 0;
+    for (const SceneObject& o : scene.objects) {
+        if (withGround || o.texture != TextureKind::Checker)
+            n += scene.meshes.at(std::size_t(o.mesh)).indices.size() / 3;
+    }
+    return n;
+}
+
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
+{
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+QByteArray readFile(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        qFatal("cannot read %s", qPrintable(path));
+    return file.readAll();
+}
+
+// A two-triangle square of side `size` at height `size`, and a small triangle on y = 0 beside
+// it where the ground will go, as OBJ text.
+QByteArray squareObj(double size)
+{
+    return QStringLiteral("v 0 %1 0\nv %1 %1 0\nv %1 %1 %1\nv 0 %1 %1\nv %2 0 %2\nv %3 0 %2\nv %2 0 %3\nf 1 3 2\nf 1 4 3\nf 5 7 6\n")
+        .arg(size, 0, 'g', 17)
+        .arg(3.0 * size, 0, 'g', 17)
+        .arg(3.1 * size, 0, 'g', 17)
+        .toUtf8();
+}
+
+struct Agreement {
+    int counted = 0;
+    int referenceShadowed = 0;
+    int falseShadow = 0;
+    int falseLight = 0;
+};
+
+Agreement agreement(Renderer& renderer, const Settings& settings, QSize size)
+{
+    const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
+    const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
+    ReferenceOptions options;
+    options.area = false;
+    const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
+    Agreement a;
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        const float measured = buffer.visibility(i);
+        const float expected = reference.hard[std::size_t(i)];
+        ++a.counted;
+        a.referenceShadowed += expected < 0.5f;
+        a.falseShadow += measured < expected - 0.5f;
+        a.falseLight += measured > expected + 0.5f;
+    }
+    return a;
+}
+
+} // namespace
+
+class TestModelImport : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        if (!QFileInfo::exists(model(QStringLiteral("OBJ/box.obj"))))
+            QSKIP("assimp-testmodels is not installed; run scripts/setup.sh");
+    }
+
+    void formatsLoad_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("triangles");
+        QTest::addColumn<double>("size");       // bounding-box diagonal in the file's units (0: not checked)
+        QTest::addColumn<bool>("textured");     // a base-colour texture was loaded
+        QTest::newRow("OBJ box") << model("OBJ/box.obj") << 12 << std::sqrt(3.0) << false;
+        QTest::newRow("OBJ spider") << model("OBJ/spider.obj") << 0 << 0.0 << true;
+        QTest::newRow("PLY cube") << model("PLY/cube.ply") << 12 << 0.0 << false;
+        QTest::newRow("PLY Wuson") << model("PLY/Wuson.ply") << 0 << 0.0 << false;
+        QTest::newRow("STL triangle") << model("STL/triangle.stl") << 1 << 0.0 << false;
+        QTest::newRow("STL spider binary") << model("STL/Spider_binary.stl") << 0 << 0.0 << false;
+        QTest::newRow("glTF 2 textured box") << model("glTF2/BoxTextured-glTF/BoxTextured.gltf") << 12 << std::sqrt(3.0) << true;
+        QTest::newRow("glTF 2 binary engine") << model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb") << 0 << 0.0 << false;
+        QTest::newRow("glTF 1 milk truck") << model("glTF/CesiumMilkTruck/CesiumMilkTruck.gltf") << 0 << 0.0 << true;
+        QTest::newRow("COLLADA cube") << model("Collada/cube_triangulate.dae") << 12 << 0.0 << false;
+        QTest::newRow("FBX box") << model("FBX/box.fbx") << 12 << 0.0 << false;
+    }
+
+    void formatsLoad()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, triangles);
+        QFETCH(double, size);
+        QFETCH(bool, textured);
+        const Scene scene = importModel(file);
+        const std::size_t count = triangleCount(scene);
+        qInfo().noquote() << QFileInfo(file).fileName() << count << "triangles," << scene.objects.size() << "objects, size"
+                          << glm::length(scene.bounds().max - scene.bounds().min) << scene.warnings;
+        QVERIFY(count > 0);
+        if (triangles > 0)
+            QCOMPARE(int(count), triangles);
+        const Bounds b = scene.bounds();
+        QVERIFY(!b.isEmpty());
+        QVERIFY(std::isfinite(glm::length(b.max - b.min)));
+        if (size > 0.0)
+            QVERIFY2(std::abs(glm::length(b.max - b.min) - size) < 1e-3 * size, qPrintable(QString::number(glm::length(b.max - b.min))));
+        for (const Mesh& mesh : scene.meshes) {
+            for (const Vertex& v : mesh.vertices) {
+                QVERIFY(std::abs(glm::length(v.normal) - 1.0f) < 1e-3f);   // generated where missing, never NaN
+                QVERIFY(std::isfinite(v.uv.x) && std::isfinite(v.uv.y));
+            }
+        }
+        const bool hasImage = std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.texture == TextureKind::Image; });
+        QCOMPARE(hasImage, textured);
+        QCOMPARE(scene.identity.size(), 64);    // sha256 in hex
+    }
+
+    // What a user sees first: the model, a ground under it and a light that casts its shadow
+    // onto the ground, and that shadow where the ray tracer puts it.
+    void shadowsAgreeWithTheReference_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("filter");
+        QTest::newRow("engine glb, hard") << model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb") << "hard";
+        QTest::newRow("engine glb, default filter") << model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb") << "";
+        QTest::newRow("milk truck glTF, hard") << model("glTF/CesiumMilkTruck/CesiumMilkTruck.gltf") << "hard";
+        QTest::newRow("Wuson PLY, hard") << model("PLY/Wuson.ply") << "hard";
+        QTest::newRow("spider STL, hard") << model("STL/Spider_binary.stl") << "hard";
+        QTest::newRow("box OBJ, hard") << model("OBJ/box.obj") << "hard";
+        QTest::newRow("COLLADA, hard") << model("Collada/cube_triangulate.dae") << "hard";
+    }
+
+    void shadowsAgreeWithTheReference()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, filter);
+        Settings s = presetSettings(file);
+        if (!filter.isEmpty())
+            applySetting(s, "filter.mode", filter);
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(240, 135));
+        const QString numbers = QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
+                                    .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
+        qInfo().noquote() << numbers;
+        QVERIFY2(a.counted > 2000, qPrintable(numbers));
+        // The derived light casts a shadow that shows: some of the view is in shadow.
+        QVERIFY2(a.referenceShadowed > 0.02 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseLight + a.falseShadow <= 0.02 * a.referenceShadowed + 0.004 * a.counted, qPrintable(numbers));
+    }
+
+    void brokenFilesGiveANamedError_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("problem");
+        QTest::newRow("missing") << "/nonexistent/model.glb" << "no such file";
+        QTest::newRow("unsupported") << model("invalid/readme.txt") << "not a model format";
+        QTest::newRow("empty OBJ") << model("invalid/empty.obj") << "empty";
+        QTest::newRow("empty PLY") << model("invalid/empty.ply") << "";
+        QTest::newRow("points only PLY") << model("PLY/points.ply") << "no triangles";
+        QTest::newRow("point cloud OBJ") << model("OBJ/point_cloud.obj") << "no triangles";
+        QTest::newRow("glTF without its .bin") << model("glTF2/MissingBin/BoxTextured.gltf") << "cannot be read";
+        QTest::newRow("glTF with infinite vertices") << model("glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb") << "";
+        QTest::newRow("glTF indices out of range") << model("glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf") << "";
+        QTest::newRow("glTF schema failure") << model("glTF2/SchemaFailures/sceneWrongType.gltf") << "";
+    }
+
+    void brokenFilesGiveANamedError()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, problem);
+        try {
+            Settings s;
+            applySetting(s, "scene", file);
+            const Scene scene = buildScene(s.scene);
+            QFAIL(qPrintable(QString("loaded %1 triangles").arg(triangleCount(scene))));
+        } catch (const SettingsError& e) {
+            const QString message = QString::fromUtf8(e.what());
+            qInfo().noquote() << message;
+            QVERIFY2(message.contains(QFileInfo(file).fileName()), qPrintable(message));
+            QVERIFY2(message.contains(problem), qPrintable(message));
+            QCOMPARE(e.key(), QString("scene"));
+        }
+    }
+
+    void truncatedFileGivesANamedError()
+    {
+        QTemporaryDir dir;
+        const QByteArray bytes = readFile(model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"));
+        const QString path = writeFile(dir, "truncated.glb", bytes.left(bytes.size() / 2));
+        QVERIFY_THROWS_EXCEPTION(SceneFileError, importModel(path));
+        try {
+            importModel(path);
+        } catch (const SceneFileError& e) {
+            QVERIFY(QString::fromUtf8(e.what()).contains("truncated.glb"));
+            QVERIFY(QString::fromUtf8(e.what()).contains("export it again"));
+        }
+    }
+
+    void absurdScalesAreNormalised_data()
+    {
+        QTest::addColumn<double>("size");
+        QTest::addColumn<bool>("scaled");
+        QTest::newRow("1e-6 units") << 1e-6 << true;
+        QTest::newRow("1 unit") << 1.0 << false;
+        QTest::newRow("1e6 units") << 1e6 << true;
+    }
+
+    void absurdScalesAreNormalised()
+    {
+        QFETCH(double, size);
+        QFETCH(bool, scaled);
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "square.obj", squareObj(size));
+        const Scene scene = importModel(path);
+        const double diagonal = glm::length(scene.bounds().max - scene.bounds().min);
+        QCOMPARE(int(triangleCount(scene)), 3);   // none merged away at either end of the range
+        QVERIFY(std::isfinite(diagonal));
+        QCOMPARE(scene.warnings.join(" ").contains("scaled by"), scaled);
+        if (scaled)
+            QVERIFY2(std::abs(diagonal - kNormalisedModelSize) < 1e-3 * kNormalisedModelSize, qPrintable(QString::number(diagonal)));
+        // ... and it renders with a shadow the reference agrees with, not NaN.
+        const Settings s = presetSettings(path);
+        QVERIFY(validate(s).empty() || validate(s).front().severity != SettingsIssue::Severity::Error);
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(160, 90));
+        QVERIFY(a.counted > 500);
+        QVERIFY2(a.referenceShadowed > 0.003 * a.counted, "the square casts no shadow on the ground");
+        QVERIFY(a.falseLight + a.falseShadow <= 0.03 * a.referenceShadowed + 0.004 * a.counted);
+    }
+
+    void missingTextureWarnsAndUsesTheBaseColour()
+    {
+        QTemporaryDir dir;
+        const QString folder = model("glTF2/BoxTextured-glTF/");
+        const QString path = writeFile(dir, "BoxTextured.gltf", readFile(folder + "BoxTextured.gltf"));
+        writeFile(dir, "BoxTextured0.bin", readFile(folder + "BoxTextured0.bin"));
+        const Scene scene = importModel(path);
+        QCOMPARE(int(triangleCount(scene)), 12);
+        QVERIFY2(scene.warnings.join(" ").contains("CesiumLogoFlat.png"), qPrintable(scene.warnings.join(" ")));
+        for (const SceneObject& o : scene.objects)
+            QVERIFY(o.texture == TextureKind::Flat);
+    }
+
+    void largeMeshesAreSplitForCulling()
+    {
+        // A 300 x 300 x 2 grid of triangles: split into pieces no bigger than the chunk size.
+        QTemporaryDir dir;
+        QByteArray obj;
+        const int n = 300;
+        for (int z = 0; z <= n; ++z)
+            for (int x = 0; x <= n; ++x)
+                obj += QStringLiteral("v %1 %2 %3\n").arg(x * 0.1).arg(std::sin(x * 0.3) * 0.2).arg(z * 0.1).toUtf8();
+        for (int z = 0; z < n; ++z) {
+            for (int x = 0; x < n; ++x) {
+                const int a = z * (n + 1) + x + 1, b = a + 1, c = a + n + 1, d = c + 1;
+                obj += QStringLiteral("f %1 %2 %3\nf %2 %4 %3\n").arg(a).arg(c).arg(b).arg(d).toUtf8();
+            }
+        }
+        const Scene scene = importModel(writeFile(dir, "grid.obj", obj));
+        QCOMPARE(int(triangleCount(scene)), 2 * n * n);
+        QVERIFY(scene.meshes.size() >= std::size_t(2 * n * n) / kMeshChunkTriangles);
+        for (const Mesh& mesh : scene.meshes)
+            QVERIFY(mesh.indices.size() / 3 <= kMeshChunkTriangles);
+    }
+
+    void sceneFilePlacesModelsAndSetsKeys()
+    {
+        QTemporaryDir dir;
+        const QString box = model("OBJ/box.obj");
+        const QString path = writeFile(dir, "two.json", QStringLiteral(R"({
+            "models": [ { "file": "%1", "position": [0, 1, 0] },
+                        { "file": "%1", "position": [3, 0.5, 0], "scale": 2, "casts": false } ],
+            "ground": -1.0,
+            "light.position": [1, 8, 2],
+            "filter.mode": "hard"
+        })").arg(box).toUtf8());
+        const Scene scene = buildScene(QFileInfo(path).absoluteFilePath());
+        QCOMPARE(int(triangleCount(scene)), 24);
+        QCOMPARE(scene.groundHeight.value_or(0.0), -1.0);
+        QStringList casting;
+        for (const SceneObject& o : scene.objects)
+            casting << QString("%1 at x %2: %3").arg(o.name).arg(o.model[3][0]).arg(o.castsShadow);
+        const auto nonCasters = std::count_if(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return !o.castsShadow; });
+        QVERIFY2(nonCasters == 1, qPrintable(casting.join("; ")));     // the second box
+        const Settings s = presetSettings(QFileInfo(path).absoluteFilePath());
+        QVERIFY(s.light.position == glm::dvec3(1, 8, 2));
+        QVERIFY(s.filter.mode == FilterMode::Hard);
+
+        const QString bad = writeFile(dir, "bad.json", R"({"models": [{"file": "nothere.obj"}]})");
+        try {
+            buildScene(QFileInfo(bad).absoluteFilePath());
+            QFAIL("a scene file naming a missing model loaded");
+        } catch (const SceneFileError& e) {
+            QVERIFY2(QString::fromUtf8(e.what()).contains("nothere.obj"), e.what());
+        }
+    }
+
+    void receivesFalseKeepsAModelLit_data()
+    {
+        QTest::addColumn<bool>("receives");
+        QTest::newRow("slab receives") << true;
+        QTest::newRow("slab does not receive") << false;
+    }
+
+    // A box over a wide slab, the light above and behind it: the slab shows the box's shadow
+    // unless the scene file says it does not receive, and then it is lit and not measured.
+    void receivesFalseKeepsAModelLit()
+    {
+        QFETCH(bool, receives);
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, "slab.json", QStringLiteral(R"({
+            "models": [ { "file": "%1", "position": [0, 1, 0] },
+                        { "file": "%1", "position": [0, 0, 0], "scale": [6, 0.02, 6], "receives": %2 } ],
+            "ground": false,
+            "light.position": [0.5, 6, -6], "light.target": [0, 0, 0],
+            "camera.position": [0, 6, 4], "camera.target": [0, 0, 0]
+        })").arg(model("OBJ/box.obj"), receives ? "true" : "false").toUtf8());
+        const Settings s = presetSettings(QFileInfo(path).absoluteFilePath());
+        Renderer& renderer = m_headless->renderer();
+        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(160, 90));
+        int notReceiving = 0, shadowed = 0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) == VisibilityBuffer::NotReceiving) {
+                ++notReceiving;
+                QCOMPARE(buffer.visibility(i), 1.0f);
+            }
+            shadowed += buffer.mask(i) == VisibilityBuffer::FacingLight && buffer.visibility(i) < 0.5f;
+        }
+        QCOMPARE(notReceiving > 1000, !receives);
+        QCOMPARE(shadowed > 100, receives);
+        const Agreement a = agreement(renderer, s, QSize(160, 90));
+        QVERIFY(a.falseLight + a.falseShadow <= 0.02 * a.referenceShadowed + 0.004 * a.counted);
+    }
+
+    void referenceCacheKeysOnContent()
+    {
+        QTemporaryDir dir;
+        const QByteArray bytes = readFile(model("PLY/cube.ply"));
+        const QString a = writeFile(dir, "a.ply", bytes);
+        const QString b = writeFile(dir, "renamed copy.ply", bytes);
+        Settings sa = presetSettings(QFileInfo(a).absoluteFilePath());
+        Settings sb = sa;
+        sb.scene = QFileInfo(b).absoluteFilePath();
+        QCOMPARE(referenceKeyFor(sa, QSize(64, 64), 4), referenceKeyFor(sb, QSize(64, 64), 4));
+        QVERIFY(referenceKeyFor(sa, QSize(64, 64), 4).scene.startsWith("sha256:"));
+        // The same name with other content is another scene (the cache notices the new file).
+        const QString c = writeFile(dir, "c.obj", squareObj(1.0));
+        Settings sc = presetSettings(QFileInfo(c).absoluteFilePath());
+        const ReferenceKey before = referenceKeyFor(sc, QSize(64, 64), 4);
+        QTest::qWait(1100);     // a new modification time
+        writeFile(dir, "c.obj", squareObj(2.0));
+        QVERIFY(!(referenceKeyFor(sc, QSize(64, 64), 4) == before));
+        QVERIFY(!(referenceKeyFor(sa, QSize(64, 64), 4) == before));
+    }
+
+    void windowKeepsItsSceneOnABadFile()
+    {
+        MainWindow window(MainWindow::Persistence::None);
+        window.resize(640, 400);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const Settings before = window.settings(MainWindow::Side::A);
+        const QString error = window.openScene(model("invalid/empty.obj"));
+        QVERIFY2(error.contains("empty.obj"), qPrintable(error));
+        QCOMPARE(window.settings(MainWindow::Side::A), before);
+        QVERIFY(window.recentScenes().isEmpty());
+
+        const QString good = model("OBJ/box.obj");
+        QCOMPARE(window.openScene(good), QString());
+        QCOMPARE(window.settings(MainWindow::Side::A).scene, good);
+        QCOMPARE(window.recentScenes(), QStringList{good});
+        QVERIFY(window.action("openSceneAction"));
+        QCOMPARE(window.action("openSceneAction")->shortcut(), QKeySequence(QKeySequence::Open));
+        QTRY_VERIFY(window.sceneView(MainWindow::Side::A)->renderer() && window.sceneView(MainWindow::Side::A)->renderer()->scene()
+                    && window.sceneView(MainWindow::Side::A)->renderer()->scene()->name == good);
+        // A bad file after a good one keeps the good one.
+        QVERIFY(!window.openScene("/nonexistent.glb").isEmpty());
+        QCOMPARE(window.settings(MainWindow::Side::A).scene, good);
+
+        // A file dropped on the scene view opens like File → Open Scene.
+        const QString dropped = model("PLY/cube.ply");
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(dropped)});
+        SceneView* view = window.sceneView(MainWindow::Side::A);
+        const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+        QDragEnterEvent enter(centre.toPoint(), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(centre, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&window, &drop);
+        QCOMPARE(window.settings(MainWindow::Side::A).scene, dropped);
+        QCOMPARE(window.recentScenes(), (QStringList{dropped, good}));
+    }
+
+    void init() { if (!m_headless) m_headless = std::make_unique<HeadlessRenderer>(); }
+    void cleanupTestCase() { m_headless.reset(); }
+
+private:
+    std::unique_ptr<HeadlessRenderer> m_headless;
+};
+
+SHADOWLAB_TEST_MAIN(TestModelImport)
+#include "tst_ModelImport.moc"
