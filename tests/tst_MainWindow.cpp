@@ -25,6 +25,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSplitter>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include <glm/geometric.hpp>
@@ -118,6 +119,7 @@ private slots:
     void idleWindowDrawsNoFrames();
     void settingsPersistAcrossWindows();
     void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
+    void fittedVolumeIsShownReadOnlyAndACutVolumeWarnsAtItsField();
     void orbitNeverGoesBelowTheGround_data();
     void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
@@ -340,6 +342,10 @@ void tst_MainWindow::saveScreenshotWritesPng()
 void tst_MainWindow::impossibleValueIsShownAtTheFieldAndTheImageStays()
 {
     PropertiesDock* dock = m_window->propertiesDock();
+    Settings manual = m_window->settings(Side::A);
+    manual.light.fit = LightFit::Manual;      // near and far are the user's only then
+    m_window->setSettings(Side::A, manual);
+    QVERIFY(settle(*m_window));
     SliderSpinBox* nearField = field(QStringLiteral("light.near"));
     const QImage before = scene();
     const QImage depthBefore = depthMap();
@@ -492,6 +498,39 @@ void tst_MainWindow::orbitKeepsTheDistanceAndZoomNeverReachesTheTarget()
     OrbitCamera panned(start);
     panned.pan(QPointF(100.0, 0.0), QSize(800, 600));
     QVERIFY(glm::length((panned.settings().position - start.position) - (panned.settings().target - start.target)) < 1e-9);
+}
+
+// light.fit=scene: the volume's fields are read-only and show the fitted numbers; a manual
+// volume that cuts what the camera sees says so at the field and in the status bar.
+void tst_MainWindow::fittedVolumeIsShownReadOnlyAndACutVolumeWarnsAtItsField()
+{
+    PropertiesDock* dock = m_window->propertiesDock();
+    Settings s = presetSettings(QStringLiteral("seed"));
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    SliderSpinBox* extent = field(QStringLiteral("light.extent"));
+    SliderSpinBox* farField = field(QStringLiteral("light.far"));
+    QVERIFY(!extent->isEnabled() && !farField->isEnabled());
+    const LightVolume& v = m_window->sceneView(Side::A)->renderer()->lastFit().volume;
+    QCOMPARE_LT(std::abs(extent->value() - 0.5 * std::max(v.width(), v.height())), 0.01);
+    QCOMPARE_LT(extent->value(), s.light.extent);     // the fitted extent, not the 10 as set
+    QVERIFY(dock->warningText(QStringLiteral("light.far")).isEmpty());
+
+    s.light.fit = LightFit::Manual;
+    s.light.farPlane = 4.0;
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    QVERIFY(extent->isEnabled() && farField->isEnabled());
+    QCOMPARE(farField->value(), 4.0);
+    const QString hint = dock->warningText(QStringLiteral("light.extent")) + dock->warningText(QStringLiteral("light.near"))
+                       + dock->warningText(QStringLiteral("light.far"));
+    QVERIFY2(hint.contains(QStringLiteral("lit without a shadow test")), qPrintable(hint));
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("outside the light volume")),
+             qPrintable(m_window->statusBar()->currentMessage()));
+
+    m_window->setSettings(Side::A, presetSettings(QStringLiteral("seed")));
+    QVERIFY(settle(*m_window));
+    QVERIFY(dock->warningText(QStringLiteral("light.extent")).isEmpty() && dock->warningText(QStringLiteral("light.far")).isEmpty());
 }
 
 void tst_MainWindow::orbitNeverGoesBelowTheGround_data()

@@ -94,6 +94,13 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
             if (side != m_selected)
                 return;
             updateStatus();
+            if (const Renderer* renderer = m_views[index(side)]->renderer(); renderer && m_views[index(side)]->renderedSettings()) {
+                const FittedLight& fit = renderer->lastFit();
+                m_dock->showFit(fit, m_views[index(side)]->renderedSettings()->light);
+                if (!fit.warnings.empty() && fit.warnings.front().message != m_lastFitWarning)
+                    statusBar()->showMessage(tr("Warning: %1").arg(fit.warnings.front().message), 10000);
+                m_lastFitWarning = fit.warnings.empty() ? QString() : fit.warnings.front().message;
+            }
             m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
         });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {

@@ -135,6 +135,7 @@ private:
     QAction* m_screenshotAction = nullptr;
     QToolBar* m_toolBar = nullptr;
     QString m_screenshotFolder;
+    QString m_lastFitWarning;   // said once in the status bar, not on every frame
 };
 
 } // namespace shadowlab

@@ -1,5 +1,8 @@
 #include "PropertiesDock.h"
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -45,8 +48,10 @@ const Presentation kPresentations[] = {
     {"light.near", "Near", " wu", 2, -10.0, 20.0},
     {"light.far", "Far", " wu", 2, 0.5, 60.0},
     {"map.size", "Size", " px", 0, 64.0, 8192.0, SliderSpinBox::Scale::Logarithmic},
-    {"bias.slope", "Slope", "", 4, 0.0, 0.1},
-    {"bias.min", "Minimum", "", 4, 0.0, 0.02},
+    {"bias.slope", "Slope", "", 4, 0.0, 0.5},
+    {"bias.min", "Minimum", "", 4, 0.0, 0.1},
+    {"bias.normal", "Normal offset", " texels", 2, 0.0, 8.0},
+    {"light.radius", "Reference radius", " wu", 3, 0.0, 2.0},
     {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
     {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
 };
@@ -117,6 +122,8 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     addVector(light, QStringLiteral("light.position"));
     addVector(light, QStringLiteral("light.target"));
     addChoice(light, QStringLiteral("light.projection"));
+    addChoice(light, QStringLiteral("light.fit"));
+    addBool(light, QStringLiteral("light.stabilize"), tr("Stabilise the fitted volume"));
     addNumber(light, QStringLiteral("light.extent"));
     addNumber(light, QStringLiteral("light.fov"));
     addNumber(light, QStringLiteral("light.near"));
@@ -141,8 +148,10 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     addChoice(map, QStringLiteral("map.format"));
 
     QGridLayout* bias = addGroup(tr("Bias"));
+    addChoice(bias, QStringLiteral("bias.space"));
     addNumber(bias, QStringLiteral("bias.slope"));
     addNumber(bias, QStringLiteral("bias.min"));
+    addNumber(bias, QStringLiteral("bias.normal"));
     addBool(bias, QStringLiteral("bias.cull_front"), tr("Cull front faces in the shadow pass"));
     addNumber(bias, QStringLiteral("bias.polygon_factor"));
     addNumber(bias, QStringLiteral("bias.polygon_units"));
@@ -157,6 +166,7 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     QGridLayout* shading = addGroup(tr("Shading"));
     addChoice(shading, QStringLiteral("shading.model"));
     addBool(shading, QStringLiteral("shadow.enabled"), tr("Shadows"));
+    addNumber(shading, QStringLiteral("light.radius"));
 
     QGridLayout* scene = addGroup(tr("Scene"));
     addChoice(scene, QStringLiteral("scene"));
@@ -338,6 +348,9 @@ void PropertiesDock::setSettings(const Settings& settings)
     m_loading = false;
     clearErrors();
     updateDependentRows();
+    // Settings that render the same frame again draw none: show the last fit at once.
+    if (m_lastFit)
+        showFit(*m_lastFit, settings.light);
 }
 
 void PropertiesDock::setSideName(const QString& name)
@@ -428,6 +441,7 @@ void PropertiesDock::clearErrors()
     for (const Field& field : std::as_const(m_fields)) {
         field.error->setVisible(false);
         field.error->clear();
+        field.error->setProperty("refusal", false);
         for (QWidget* w : field.markable) {
             if (auto* box = qobject_cast<SliderSpinBox*>(w))
                 box->setInvalid(false);
@@ -447,7 +461,10 @@ void PropertiesDock::markError(const QString& key, const QString& message)
     if (text.startsWith(key + QStringLiteral(": ")))
         text = text.mid(key.size() + 2);
     it->error->setText(text);
+    it->error->setStyleSheet(QString());
+    it->error->setProperty("refusal", true);
     it->error->setVisible(true);
+    m_warned.removeAll(key);
     for (QWidget* w : it->markable) {
         if (auto* box = qobject_cast<SliderSpinBox*>(w))
             box->setInvalid(true);
@@ -467,6 +484,77 @@ QString PropertiesDock::errorText(const QString& key) const
 {
     const auto it = m_fields.find(key);
     return it == m_fields.end() ? QString() : it->error->text();
+}
+
+namespace {
+
+// The light-volume keys that light.fit=scene computes instead of reading.
+const char* const kFittedKeys[] = {"light.extent", "light.fov", "light.near", "light.far"};
+
+} // namespace
+
+void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
+{
+    if (!m_lastFit || &fit != &*m_lastFit)
+        m_lastFit = fit;
+    // Last frame's warnings off first; the fields keep their refusals (red) if any.
+    for (const QString& key : std::as_const(m_warned)) {
+        if (auto it = m_fields.find(key); it != m_fields.end() && !it->error->property("refusal").toBool()) {
+            it->error->clear();
+            it->error->setVisible(false);
+        }
+    }
+    m_warned.clear();
+    const bool fitted = light.fit == LightFit::Scene;
+
+    for (const char* key : kFittedKeys) {
+        for (QWidget* w : m_rows.value(QString::fromLatin1(key))) {
+            w->setEnabled(!fitted);
+            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Fit to manual to set it by hand") : QString());
+        }
+    }
+    if (fitted && fit.fitted) {
+        // The fitted volume in the units of the keys: half-size or full angle, and near and
+        // far as distances from the light's position along its direction.
+        Settings shown = m_pending;
+        const LightVolume& v = fit.volume;
+        const double along = glm::dot(v.origin - light.position, v.direction);
+        if (v.perspective)
+            shown.light.fov = glm::degrees(2.0 * std::atan(std::max({-v.left, v.right, -v.bottom, v.top})));
+        else
+            shown.light.extent = 0.5 * std::max(v.width(), v.height());
+        shown.light.nearPlane = v.nearPlane + along;
+        shown.light.farPlane = v.farPlane + along;
+        const bool loading = m_loading;
+        m_loading = true;
+        for (const char* key : kFittedKeys) {
+            if (const auto it = m_fields.find(QString::fromLatin1(key)); it != m_fields.end())
+                it->load(shown);
+        }
+        m_loading = loading;
+    } else if (!fitted) {
+        const bool loading = m_loading;
+        m_loading = true;
+        for (const char* key : kFittedKeys) {
+            if (const auto it = m_fields.find(QString::fromLatin1(key)); it != m_fields.end())
+                it->load(m_pending);
+        }
+        m_loading = loading;
+    }
+    for (const SettingsIssue& issue : fit.warnings) {
+        auto it = m_fields.find(issue.key);
+        if (it == m_fields.end() || it->error->property("refusal").toBool())
+            continue;
+        it->error->setText(issue.message);
+        it->error->setStyleSheet(QStringLiteral("color: #b8860b;"));
+        it->error->setVisible(true);
+        m_warned << issue.key;
+    }
+}
+
+QString PropertiesDock::warningText(const QString& key) const
+{
+    return m_warned.contains(key) ? errorText(key) : QString();
 }
 
 void PropertiesDock::updateDependentRows()

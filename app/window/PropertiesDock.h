@@ -1,5 +1,9 @@
 #pragma once
 
+#include "LightFitting.h"
+
+#include <optional>
+
 #include "Settings.h"
 
 #include <QDockWidget>
@@ -42,6 +46,11 @@ public:
     void showError(const QString& key, const QString& message);
     // The message shown at the field of `key`, empty when it holds an accepted value.
     QString errorText(const QString& key) const;
+    // After a frame: with light.fit=scene the volume's fields show the fitted values, read-only;
+    // the fit's warnings (a manual volume that cuts receivers) show at the fields they name.
+    void showFit(const FittedLight& fit, const LightSettings& light);
+    // The fit warning shown at `key`, empty when there is none.
+    QString warningText(const QString& key) const;
 
     // Shows the light animation state without emitting animationChanged().
     void setAnimation(bool animate, double degreesPerSecond);
@@ -78,6 +87,9 @@ private:
     void clearErrors();
     void markError(const QString& key, const QString& message);
     void updateDependentRows();
+
+    QStringList m_warned;       // keys showing a fit warning
+    std::optional<FittedLight> m_lastFit;   // of the newest frame
 
     Settings m_pending;
     QHash<QString, Field> m_fields;
