@@ -210,7 +210,11 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     std::vector<glm::dmat4> seen;
     if (camera)
         seen.push_back(*camera);
-    const auto percent = [](double share) { return QString::number(share * 100.0, 'g', 2); };
+    // Two significant digits below 10 %, whole percent above ("0.38", "7.2", "100").
+    const auto percent = [](double share) {
+        const double p = share * 100.0;
+        return QString::number(p, 'f', p < 1.0 ? 2 : p < 10.0 ? 1 : 0);
+    };
 
     if (light.fit == LightFit::Manual) {
         const Cut cut = measureCut(objects, seen, computeLightFrame(light, manual).viewProjection);
