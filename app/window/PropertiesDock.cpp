@@ -307,6 +307,8 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
                 }};
     static const QHash<QString, QString> labels{{QStringLiteral("light.projection"), tr("Projection")},
                                                 {QStringLiteral("map.format"), tr("Depth format")},
+                                                {QStringLiteral("light.fit"), tr("Volume")},
+                                                {QStringLiteral("bias.space"), tr("Unit")},
                                                 {QStringLiteral("filter.mode"), tr("Filter")},
                                                 {QStringLiteral("shading.model"), tr("Specular")},
                                                 {QStringLiteral("scene"), tr("Preset")}};
