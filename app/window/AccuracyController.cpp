@@ -114,7 +114,7 @@ void AccuracyController::setAreaSamplesPerAxis(int samples)
 
 bool AccuracyController::isBusy() const
 {
-    return m_pending.has_value() || m_sweeping;
+    return m_pending.has_value() || m_sweeping || m_tuner != nullptr;
 }
 
 bool AccuracyController::measurementIsCurrent() const
@@ -145,7 +145,59 @@ void AccuracyController::cancel()
     if (m_pending)
         m_pending->cancel->store(true);
     m_sweepCancelled = m_sweeping;
+    m_tuneCancelled = m_tuner != nullptr;
     setStatus(tr("Cancelling…"));
+}
+
+void AccuracyController::tuneBias()
+{
+    if (isBusy())
+        return;
+    // A small image: the tuner renders every candidate at every light direction.
+    const QSize size = measureSize().scaled(QSize(320, 320), Qt::KeepAspectRatio).expandedTo(QSize(16, 16));
+    m_tuner = std::make_unique<BiasTuner>(m_settings, size);
+    m_tuneCancelled = false;
+    emit busyChanged(true);
+    emit progressChanged(0, m_tuner->steps());
+    setStatus(tr("Tuning the bias over %1 light directions…").arg(m_tuner->result().placements.size()));
+    QTimer::singleShot(0, this, &AccuracyController::tuneStep);
+}
+
+void AccuracyController::tuneStep()
+{
+    const auto finish = [this](const QString& message, bool error) {
+        m_tuner.reset();
+        emit busyChanged(false);
+        setStatus(message, error);
+    };
+    if (m_tuneCancelled) {
+        finish(tr("Bias tuning cancelled."), false);
+        return;
+    }
+    try {
+        HeadlessRenderer& h = headless();
+        // A few measurements per event: the window stays responsive, the overhead small.
+        for (int i = 0; i < 4 && !m_tuner->done(); ++i)
+            m_tuner->step(h.renderer());
+    } catch (const std::exception& e) {
+        finish(tr("Bias tuning failed: %1").arg(QString::fromUtf8(e.what())), true);
+        return;
+    }
+    emit progressChanged(m_tuner->stepsDone(), m_tuner->steps());
+    if (!m_tuner->done()) {
+        QTimer::singleShot(0, this, &AccuracyController::tuneStep);
+        return;
+    }
+    m_tuning = m_tuner->result();
+    const BiasCandidate& best = m_tuning->candidates[m_tuning->best];
+    finish(tr("Best bias (%1 units): slope %2, min %3 — misclassified %4 %, against %5 % as set.")
+               .arg(toString(m_tuning->space))
+               .arg(best.slope)
+               .arg(best.min)
+               .arg(100.0 * best.misclassified(), 0, 'f', 3)
+               .arg(100.0 * m_tuning->current.misclassified(), 0, 'f', 3),
+           false);
+    emit tuningFinished();
 }
 
 void AccuracyController::startMeasurement(bool thenSweep)

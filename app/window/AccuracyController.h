@@ -1,5 +1,7 @@
 #pragma once
 
+#include "BiasTuner.h"
+
 #include "Settings.h"
 #include "ShadowMetrics.h"
 #include "ShadowReference.h"
@@ -63,7 +65,11 @@ public:
     void compare();
     // The same, then the sweep around the current settings.
     void sweep();
+    // Searches the bias with the fewest misclassified pixels over several light directions
+    // (BiasTuner), between events; tuning() holds the result when it finishes.
+    void tuneBias();
     void cancel();
+    const std::optional<BiasTuning>& tuning() const { return m_tuning; }
 
     const std::optional<Measurement>& measurement() const { return m_measurement; }
     // The measurement is of the current settings at the current measure size.
@@ -85,6 +91,7 @@ signals:
     void measurementChanged();
     void sweepStarted(QSize size);
     void sweepPointsChanged();
+    void tuningFinished();
 
 private:
     // What the worker hands back; exceptions do not cross the thread, their message does.
@@ -108,6 +115,7 @@ private:
     void startSweep();
     void sweepStep();
     void finishSweep(const QString& message);
+    void tuneStep();
     HeadlessRenderer& headless();
     void setStatus(const QString& text, bool error = false);
 
@@ -116,6 +124,9 @@ private:
     int m_areaSamplesPerAxis = 8;   // 64 rays/px: a quarter of `report`'s default, quick enough to wait for
 
     std::unique_ptr<HeadlessRenderer> m_headless;
+    std::unique_ptr<BiasTuner> m_tuner;     // while tuning
+    bool m_tuneCancelled = false;
+    std::optional<BiasTuning> m_tuning;
     std::optional<ReferenceKey> m_referenceKey;
     ReferenceVisibility m_reference;
     double m_lastRaysPerSecond = 0.0;

@@ -8,6 +8,11 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QScatterSeries>
+#include <QtCharts/QValueAxis>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
@@ -48,6 +53,24 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     m_chart = new SweepChartPanel;
     layout->addWidget(m_chart, 1);
 
+    auto* tuneRow = new QHBoxLayout;
+    m_tuneButton = new QPushButton(tr("Tune bias"));
+    m_tuneButton->setObjectName(QStringLiteral("tuneButton"));
+    m_tuneButton->setToolTip(tr("Search bias.slope x bias.min (in the unit of bias.space) for the fewest pixels misclassified against "
+                                "the hard reference, over this view and six light directions around the current one"));
+    m_applyTuningButton = new QPushButton(tr("Apply tuned bias"));
+    m_applyTuningButton->setObjectName(QStringLiteral("applyTuningButton"));
+    m_applyTuningButton->setEnabled(false);
+    tuneRow->addWidget(m_tuneButton);
+    tuneRow->addWidget(m_applyTuningButton);
+    layout->addLayout(tuneRow);
+    m_tuningChart = new QChartView;
+    m_tuningChart->setObjectName(QStringLiteral("tuningChart"));
+    m_tuningChart->setRenderHint(QPainter::Antialiasing);
+    m_tuningChart->setMinimumHeight(180);
+    m_tuningChart->setVisible(false);
+    layout->addWidget(m_tuningChart);
+
     auto* scroll = new QScrollArea;
     scroll->setWidget(content);
     scroll->setWidgetResizable(true);
@@ -57,6 +80,18 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     connect(m_compareButton, &QPushButton::clicked, m_controller, &AccuracyController::compare);
     connect(m_chart->sweepButton(), &QPushButton::clicked, m_controller, &AccuracyController::sweep);
     connect(m_cancelButton, &QPushButton::clicked, m_controller, &AccuracyController::cancel);
+    connect(m_tuneButton, &QPushButton::clicked, m_controller, &AccuracyController::tuneBias);
+    connect(m_controller, &AccuracyController::tuningFinished, this, &AccuracyDock::showTuning);
+    connect(m_applyTuningButton, &QPushButton::clicked, this, [this] {
+        const auto& t = m_controller->tuning();
+        if (!t)
+            return;
+        Settings tuned = m_controller->settings();
+        tuned.bias.space = t->space;
+        tuned.bias.slope = t->candidates[t->best].slope;
+        tuned.bias.min = t->candidates[t->best].min;
+        emit applySettingsRequested(tuned);
+    });
     connect(m_metrics, &AccuracyMetricsPanel::overlayToggled, this, &AccuracyDock::updateOverlay);
     connect(m_chart, &SweepChartPanel::applySettingsRequested, this, &AccuracyDock::applySettingsRequested);
 
@@ -127,9 +162,42 @@ void AccuracyDock::updateOverlay()
     emit errorOverlayChanged(m_overlay);
 }
 
+void AccuracyDock::showTuning()
+{
+    const auto& t = m_controller->tuning();
+    if (!t)
+        return;
+    // The acne-against-leak trade-off: each point a bias no other beats on both.
+    auto* curve = new QLineSeries;
+    curve->setName(tr("trade-off"));
+    curve->setPointsVisible(true);
+    for (const std::size_t i : t->front)
+        curve->append(100.0 * t->candidates[i].falseShadow, 100.0 * t->candidates[i].falseLight);
+    auto* best = new QScatterSeries;
+    best->setName(tr("best"));
+    best->append(100.0 * t->candidates[t->best].falseShadow, 100.0 * t->candidates[t->best].falseLight);
+    auto* current = new QScatterSeries;
+    current->setName(tr("as set"));
+    current->setMarkerShape(QScatterSeries::MarkerShapeRectangle);
+    current->append(100.0 * t->current.falseShadow, 100.0 * t->current.falseLight);
+    auto* chart = new QChart;
+    for (QAbstractSeries* series : std::initializer_list<QAbstractSeries*>{curve, best, current})
+        chart->addSeries(series);
+    chart->createDefaultAxes();
+    chart->axes(Qt::Horizontal).front()->setTitleText(tr("false shadow % (acne)"));
+    chart->axes(Qt::Vertical).front()->setTitleText(tr("false light % (leaks)"));
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    QChart* old = m_tuningChart->chart();
+    m_tuningChart->setChart(chart);
+    delete old;
+    m_tuningChart->setVisible(true);
+    m_applyTuningButton->setEnabled(true);
+}
+
 void AccuracyDock::updateButtons()
 {
     const bool busy = m_controller->isBusy();
+    m_tuneButton->setEnabled(!busy);
     m_compareButton->setEnabled(!busy);
     m_chart->sweepButton()->setEnabled(!busy);
     m_cancelButton->setEnabled(busy);

@@ -9,6 +9,8 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 
+class QChartView;
+
 namespace shadowlab {
 
 class AccuracyController;
@@ -50,6 +52,7 @@ signals:
 private:
     void updateOverlay();
     void updateButtons();
+    void showTuning();
     void setStatus(const QString& text, bool error = false);
 
     AccuracyController* m_controller = nullptr;
@@ -57,6 +60,9 @@ private:
 
     QPushButton* m_compareButton = nullptr;
     QPushButton* m_cancelButton = nullptr;
+    QPushButton* m_tuneButton = nullptr;
+    QPushButton* m_applyTuningButton = nullptr;
+    QChartView* m_tuningChart = nullptr;   // false shadow against false light of the tuned grid
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     AccuracyMetricsPanel* m_metrics = nullptr;
