@@ -5,6 +5,7 @@
 // shadows stay where the ray tracer says they are.
 #include "Application.h"
 #include "HeadlessTestMain.h"
+#include "ReferenceAgreement.h"
 #include "HeadlessRenderer.h"
 #include "RayTracer.h"
 #include "SceneLibrary.h"
@@ -21,41 +22,8 @@ Q_DECLARE_METATYPE(glm::dvec3)
 
 namespace {
 
-// Per placement: the counted pixels (receivers facing the light), the reference's shadowed
-// ones, and the two kinds of misclassified pixel.
-struct Agreement {
-    int counted = 0;
-    int referenceShadowed = 0;
-    int falseShadow = 0;
-    int falseLight = 0;
-    int falseLightUncovered = 0;    // of those, outside the light's volume (lit without a test)
-};
-
-Agreement agreement(Renderer& renderer, const Settings& settings, QSize size)
-{
-    const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
-    const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
-    ReferenceOptions options;
-    options.area = false;
-    const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
-    Agreement a;
-    for (int i = 0; i < buffer.pixelCount(); ++i) {
-        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
-            continue;
-        const float measured = buffer.visibility(i);
-        const float expected = reference.hard[std::size_t(i)];
-        ++a.counted;
-        a.referenceShadowed += expected < 0.5f;
-        a.falseShadow += measured < expected - 0.5f;
-        if (measured > expected + 0.5f) {
-            ++a.falseLight;
-            const glm::dvec4 t = renderer.lightFrame().shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
-            const glm::dvec3 p = glm::dvec3(t) / t.w;
-            a.falseLightUncovered += t.w <= 0.0 || glm::any(glm::lessThan(p, glm::dvec3(0.0))) || glm::any(glm::greaterThan(p, glm::dvec3(1.0)));
-        }
-    }
-    return a;
-}
+using probe::Agreement;
+using probe::agreement;
 
 glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
 {

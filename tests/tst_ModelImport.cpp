@@ -5,6 +5,7 @@
 #include "Application.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
+#include "ReferenceAgreement.h"
 #include "MainWindow.h"
 #include "ModelImporter.h"
 #include "RayTracer.h"
@@ -70,33 +71,8 @@ QByteArray squareObj(double size)
         .toUtf8();
 }
 
-struct Agreement {
-    int counted = 0;
-    int referenceShadowed = 0;
-    int falseShadow = 0;
-    int falseLight = 0;
-};
-
-Agreement agreement(Renderer& renderer, const Settings& settings, QSize size)
-{
-    const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
-    const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
-    ReferenceOptions options;
-    options.area = false;
-    const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
-    Agreement a;
-    for (int i = 0; i < buffer.pixelCount(); ++i) {
-        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
-            continue;
-        const float measured = buffer.visibility(i);
-        const float expected = reference.hard[std::size_t(i)];
-        ++a.counted;
-        a.referenceShadowed += expected < 0.5f;
-        a.falseShadow += measured < expected - 0.5f;
-        a.falseLight += measured > expected + 0.5f;
-    }
-    return a;
-}
+using probe::Agreement;
+using probe::agreement;
 
 } // namespace
 

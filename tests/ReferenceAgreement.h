@@ -1,0 +1,52 @@
+#pragma once
+
+#include "RayTracer.h"
+#include "Renderer.h"
+#include "ShadowReference.h"
+
+#include <glm/glm.hpp>
+
+#include <QSize>
+
+// How a rendered shadow term agrees with the Embree hard reference at exactly the rendered
+// pixels: what GL tests assert when they say "the shadows are where the ray tracer says".
+namespace probe {
+
+// Over the receivers facing the light: the reference's shadowed pixels and both kinds of
+// misclassified pixel.
+struct Agreement {
+    int counted = 0;
+    int referenceShadowed = 0;
+    int falseShadow = 0;
+    int falseLight = 0;
+    int falseLightUncovered = 0;    // of those, outside the light's volume (lit without a test)
+};
+
+inline Agreement agreement(shadowlab::Renderer& renderer, const shadowlab::Settings& settings, QSize size)
+{
+    using namespace shadowlab;
+    const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
+    const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
+    ReferenceOptions options;
+    options.area = false;
+    const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
+    Agreement a;
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        const float measured = buffer.visibility(i);
+        const float expected = reference.hard[std::size_t(i)];
+        ++a.counted;
+        a.referenceShadowed += expected < 0.5f;
+        a.falseShadow += measured < expected - 0.5f;
+        if (measured > expected + 0.5f) {
+            ++a.falseLight;
+            const glm::dvec4 t = renderer.lightFrame().shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
+            const glm::dvec3 p = glm::dvec3(t) / t.w;
+            a.falseLightUncovered += t.w <= 0.0 || glm::any(glm::lessThan(p, glm::dvec3(0.0))) || glm::any(glm::greaterThan(p, glm::dvec3(1.0)));
+        }
+    }
+    return a;
+}
+
+} // namespace probe
