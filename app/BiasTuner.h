@@ -44,6 +44,7 @@ public:
 
     int steps() const { return int(m_grid.size() * m_placements.size()); }
     int stepsDone() const { return m_step; }
+    int placementCount() const { return int(m_placements.size()); }
     bool done() const { return m_step >= steps(); }
     // `renderer`'s context must be current. Throws like Renderer::render().
     void step(Renderer& renderer);

@@ -159,7 +159,7 @@ void AccuracyController::tuneBias()
     m_tuneCancelled = false;
     emit busyChanged(true);
     emit progressChanged(0, m_tuner->steps());
-    setStatus(tr("Tuning the bias over %1 light directions…").arg(m_tuner->result().placements.size()));
+    setStatus(tr("Tuning the bias over %1 light directions…").arg(m_tuner->placementCount()));
     QTimer::singleShot(0, this, &AccuracyController::tuneStep);
 }
 
