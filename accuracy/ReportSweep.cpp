@@ -100,6 +100,22 @@ std::vector<SweepEntry> lightsSweep()
     return s;
 }
 
+// Penumbra-only filtering against every tap, for each technique that can skip its taps: the same
+// image, so the difference is all cost.
+std::vector<SweepEntry> penumbraSweep()
+{
+    std::vector<SweepEntry> s;
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        if (!technique.penumbraOnly)
+            continue;
+        for (const TechniqueVariation& variation : technique.sweep) {
+            s.push_back({variation.label + QStringLiteral(", every tap"), variation.assignments + QStringList{QStringLiteral("filter.early_out=false")}});
+            s.push_back({variation.label + QStringLiteral(", penumbra only"), variation.assignments + QStringList{QStringLiteral("filter.early_out=true")}});
+        }
+    }
+    return s;
+}
+
 std::vector<SweepEntry> defaultSweep()
 {
     std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
@@ -157,7 +173,8 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 
 QStringList builtInSweeps()
 {
-    return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights")};
+    return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
+            QStringLiteral("penumbra")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
@@ -172,6 +189,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
         return biasSweep();
     if (nameOrFile == u"lights")
         return lightsSweep();
+    if (nameOrFile == u"penumbra")
+        return penumbraSweep();
     QByteArray bytes;
     try {
         bytes = readInputFile(nameOrFile, QStringLiteral("sweep file"));

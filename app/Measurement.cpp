@@ -2,6 +2,8 @@
 
 #include "Renderer.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace shadowlab {
 
 AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const Settings& settings, QSize size,
@@ -20,7 +22,12 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
                 h.renderFrame(run.settings, size, TimingMode::Finish);
             if (run.moving)
                 h.renderer().invalidateShadowMap();
-            h.renderFrame(run.settings, size, TimingMode::Finish);
+            Settings settings = run.settings;
+            if (run.cameraOrbitDegrees != 0.0) {
+                const glm::dmat4 orbit = glm::rotate(glm::dmat4(1.0), glm::radians(run.cameraOrbitDegrees * double(i)), glm::dvec3(0.0, 1.0, 0.0));
+                settings.camera.position = settings.camera.target + glm::dvec3(orbit * glm::dvec4(settings.camera.position - settings.camera.target, 0.0));
+            }
+            h.renderFrame(settings, size, TimingMode::Finish);
             if (i < warmup)
                 continue;
             const FrameStats& f = h.renderer().lastFrame();

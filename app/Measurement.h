@@ -33,6 +33,8 @@ struct TimedRun {
     // Render an untimed frame of this configuration before each timed one: needed when runs
     // share a renderer, so the switch from the previous run (a map to reallocate) is not timed.
     bool settleFirst = false;
+    // Degrees the camera orbits its target (about the world's up axis) each frame; 0 keeps it still.
+    double cameraOrbitDegrees = 0.0;
     FrameSamples samples;
 };
 

@@ -76,7 +76,8 @@ std::vector<ShadowTechnique> makeTechniques()
                  },
                  [](const FilterSettings& f) { return QStringLiteral("pcss %1").arg(f.taps); },
                  {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
-                  {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}}});
+                  {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
+                 true});
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (int(t[i].mode) != int(i))
             throw std::logic_error("the technique table must list techniques in FilterMode order");

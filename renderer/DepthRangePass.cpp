@@ -19,32 +19,51 @@ DepthRangePass::DepthRangePass(GlFunctions* gl)
                                                   QStringList{QStringLiteral("FROM_DEPTH")})),
       m_fromRange(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"), QStringList{})),
       m_emptyVertexArray(makeVertexArray(gl)),
-      m_framebuffer(makeFramebuffer(gl))
+      m_framebuffer(makeFramebuffer(gl)),
+      m_atlasFramebuffer(makeFramebuffer(gl))
 {
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     labelGlObject(GlLabelKind::VertexArray, m_emptyVertexArray.id(), QStringLiteral("depth range: no attributes"));
     m_gl->glBindVertexArray(0);
 }
 
+QPoint DepthRangePass::levelOrigin(int levelZeroSize, int level)
+{
+    // Level k >= 1 ends at w0 - (w0 >> k) <= where level k + 1 starts, w0 - 2 (w0 >> (k + 1)).
+    return level == 0 ? QPoint(0, 0) : QPoint(levelZeroSize, levelZeroSize - 2 * levelSize(levelZeroSize, level));
+}
+
 void DepthRangePass::allocate(int mapSize)
 {
-    m_texture = makeTexture(m_gl);
-    m_gl->glBindTexture(GL_TEXTURE_2D, m_texture.id());
     // Level 0 halves the map rounding up, so it covers every map texel; the rest follow GL's
     // rule for a complete mip chain (halving, rounded down), whose odd leftovers the pass folds
-    // into the last texel.
-    int levels = 0;
-    for (int size = (mapSize + 1) / 2; ; size /= 2) {
-        m_gl->glTexImage2D(GL_TEXTURE_2D, levels++, GL_RG32F, size, size, 0, GL_RG, GL_FLOAT, nullptr);
-        if (size == 1)
-            break;
-    }
-    // Read with texelFetch only; nearest filtering keeps every level complete.
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    // into the last texel. Level 0 is drawn straight into the atlas; the chain holds levels 1 and
+    // up (its level j is level j + 1), each drawn from the one before and then copied over.
+    const int levelZero = (mapSize + 1) / 2;
+    int levels = 1;
+    while (levelSize(levelZero, levels - 1) > 1)
+        ++levels;
+
+    m_atlas = makeTexture(m_gl);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_atlas.id());
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, levelZero + levelSize(levelZero, 1), levelZero, 0, GL_RG, GL_FLOAT, nullptr);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, std::max(levels - 1, 0));
-    labelGlObject(GlLabelKind::Texture, m_texture.id(), QStringLiteral("shadow map min/max depth mip"));
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    labelGlObject(GlLabelKind::Texture, m_atlas.id(), QStringLiteral("shadow map min/max depth atlas"));
+
+    m_chain = makeTexture(m_gl);
+    if (levels > 1) {
+        m_gl->glBindTexture(GL_TEXTURE_2D, m_chain.id());
+        for (int level = 1; level < levels; ++level) {
+            const int size = levelSize(levelZero, level);
+            m_gl->glTexImage2D(GL_TEXTURE_2D, level - 1, GL_RG32F, size, size, 0, GL_RG, GL_FLOAT, nullptr);
+        }
+        // Read with texelFetch only; nearest filtering keeps every level complete.
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        labelGlObject(GlLabelKind::Texture, m_chain.id(), QStringLiteral("shadow map min/max depth mip chain"));
+    }
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_mapSize = mapSize;
     m_levels = levels;
@@ -52,7 +71,7 @@ void DepthRangePass::allocate(int mapSize)
 
 void DepthRangePass::build(const ShadowMap& map)
 {
-    if (!m_texture || map.size() != m_mapSize)
+    if (!m_atlas || map.size() != m_mapSize)
         allocate(map.size());
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
@@ -61,9 +80,14 @@ void DepthRangePass::build(const ShadowMap& map)
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     m_gl->glActiveTexture(GL_TEXTURE0 + kSourceUnit);
 
-    for (int level = 0, size = (map.size() + 1) / 2; level < m_levels; ++level, size = std::max(size / 2, 1)) {
-        m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_texture.id(), level);
-        if (level == 0) {
+    const int levelZero = (map.size() + 1) / 2;
+    for (int level = 0; level < m_levels; ++level) {
+        const int size = levelSize(levelZero, level);
+        if (level == 0)
+            m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
+        else
+            m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_chain.id(), level - 1);
+        if (level <= 1) {
             const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
             if (status != GL_FRAMEBUFFER_COMPLETE)
                 throw RenderError(QStringLiteral("the min/max depth mip's framebuffer is incomplete (status 0x%1)").arg(status, 0, 16));
@@ -74,22 +98,37 @@ void DepthRangePass::build(const ShadowMap& map)
         ShaderProgram& program = level == 0 ? *m_fromDepth : *m_fromRange;
         program.bind();
         program.set(program.uniform("uSource"), int(kSourceUnit));
+        program.set(program.uniform("uSourceSize"), level == 0 ? map.size() : levelSize(levelZero, level - 1));
         if (level == 0) {
             m_gl->glBindTexture(GL_TEXTURE_2D, map.texture());
             m_gl->glBindSampler(kSourceUnit, map.sampler(ShadowSampler::RawNearest));
-        } else {
-            // Only the level read is in the texture's range while the next one is drawn: no
-            // feedback loop through the attached level.
-            m_gl->glBindTexture(GL_TEXTURE_2D, m_texture.id());
+        } else if (level == 1) {
+            m_gl->glBindTexture(GL_TEXTURE_2D, m_atlas.id());   // level 0, at the atlas's origin
             m_gl->glBindSampler(kSourceUnit, 0);
-            m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, level - 1);
-            m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, level - 1);
+        } else {
+            // Only the level read is in the chain's range while the next one is drawn: no
+            // feedback loop through the attached level.
+            m_gl->glBindTexture(GL_TEXTURE_2D, m_chain.id());
+            m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, level - 2);
+            m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, level - 2);
         }
         m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    m_gl->glBindTexture(GL_TEXTURE_2D, m_texture.id());
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, m_levels - 1);
+
+    // Levels 1 and up into their places in the atlas.
+    if (m_levels > 1) {
+        m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_atlasFramebuffer.id());
+        labelGlObject(GlLabelKind::Framebuffer, m_atlasFramebuffer.id(), QStringLiteral("depth range atlas"));
+        m_gl->glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
+        m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer.id());
+        for (int level = 1; level < m_levels; ++level) {
+            m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_chain.id(), level - 1);
+            const int size = levelSize(levelZero, level);
+            const QPoint at = levelOrigin(levelZero, level);
+            m_gl->glBlitFramebuffer(0, 0, size, size, at.x(), at.y(), at.x() + size, at.y() + size, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        }
+        m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    }
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_gl->glBindSampler(kSourceUnit, 0);
     m_gl->glBindVertexArray(0);

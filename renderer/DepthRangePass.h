@@ -4,15 +4,24 @@
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
+#include <QPoint>
+
+#include <algorithm>
 #include <memory>
 
 namespace shadowlab {
 
-// The min/max depth mip of a shadow map, for penumbra-only filtering (filter.early_out): an
-// RG32F texture whose level k holds, per texel, the lowest and highest depth of the
-// 2^(k+1) x 2^(k+1) map texels under it, down to 1 x 1. A wide filter reads at most four texels
-// to learn that its whole footprint is lit or shadowed and skips its taps. Rebuilt only when the
-// map changes (after a shadow pass), a pass per level.
+// The min/max depth mip of a shadow map, for penumbra-only filtering (filter.early_out): level k
+// holds, per texel, the lowest and highest depth of the 2^(k+1) x 2^(k+1) map texels under it,
+// down to 1 x 1. A wide filter reads at most four texels to learn that its whole footprint is lit
+// or shadowed and skips its taps. Rebuilt only when the map changes (after a shadow pass), a
+// pass per level into a mip chain, then copied into one single-level RG32F atlas that the lit
+// pass reads: a level chosen per pixel then never depends on the driver fetching a level per
+// pixel (llvmpipe picks one level for each 2 x 2 quad of pixels).
+//
+// Atlas layout, with w0 the size of level 0 (the map's size halved, rounded up) and level k of
+// size w0 >> k: level 0 at (0, 0); level k >= 1 at (w0, w0 - 2 (w0 >> k)), a column to its right
+// (shaders/shadow_filters.glsl, rangeLevelOrigin, reads the same rule).
 class DepthRangePass {
 public:
     explicit DepthRangePass(GlFunctions* gl);
@@ -20,8 +29,13 @@ public:
     // Builds every level from `map`'s depth texture (reallocating when the map size changed).
     void build(const ShadowMap& map);
 
-    GLuint texture() const { return m_texture.id(); }
+    // The atlas: RG32F, (w0 + w0 / 2) x w0, read with texelFetch at level 0.
+    GLuint texture() const { return m_atlas.id(); }
     int levels() const { return m_levels; }
+
+    // Where level `level` starts in the atlas, and its size (square).
+    static QPoint levelOrigin(int levelZeroSize, int level);
+    static int levelSize(int levelZeroSize, int level) { return std::max(levelZeroSize >> level, 1); }
 
 private:
     void allocate(int mapSize);
@@ -31,7 +45,9 @@ private:
     std::unique_ptr<ShaderProgram> m_fromRange;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
     GlFramebuffer m_framebuffer;
-    GlTexture m_texture;
+    GlFramebuffer m_atlasFramebuffer;
+    GlTexture m_chain;  // the mip chain the passes build, level by level
+    GlTexture m_atlas;
     int m_mapSize = 0;
     int m_levels = 0;
 };

@@ -1,9 +1,11 @@
 // One level of the shadow map's min/max depth mip (penumbra-only filtering): each texel holds
 // the lowest and highest depth of the 2 x 2 texels under it one level finer (level 0: of the map
 // itself).
-// The depth map (FROM_DEPTH) or the range texture, whose base level the pass sets to the level
-// below the one drawn: texelFetch's level counts from the base level.
+// The depth map (FROM_DEPTH) or the level below the one drawn: the atlas, whose origin holds
+// level 0, or the mip chain, whose base level the pass sets to that level (texelFetch's level
+// counts from the base level).
 uniform sampler2D uSource;
+uniform int uSourceSize;    // of the level read (the atlas is wider than its level 0)
 
 out vec2 range;
 
@@ -18,7 +20,7 @@ vec2 fetchRange(ivec2 p)
 
 void main()
 {
-    ivec2 last = textureSize(uSource, 0) - 1;
+    ivec2 last = ivec2(uSourceSize - 1);
     ivec2 p = ivec2(gl_FragCoord.xy) * 2;
 #ifdef FROM_DEPTH
     // Level 0 halves the map rounding up: each texel covers its own 2 x 2 (clamped at the edge).

@@ -33,18 +33,10 @@ vec3 directionToLight(vec3 position)
 #endif
 }
 
-float shadowVisibility(vec3 normal, vec3 toLight)
+// Visibility where no lookup is needed, or -1 where it is: outside the light's volume is lit,
+// facing away from the light is unlit anyway.
+float visibilityWithoutLookup(vec3 coord, float facing)
 {
-#ifdef SHADOWS
-    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
-#ifdef RECEIVER_PLANE
-    // The receiver's depth as a plane over the map, from its screen-space derivatives (taken
-    // before any branch, where they are defined): depth change per uv unit. A degenerate
-    // footprint (the plane seen edge-on from the camera) gets a flat plane.
-    vec3 dx = dFdx(coord), dy = dFdy(coord);
-    float det = dx.x * dy.y - dx.y * dy.x;
-    gReceiverSlope = abs(det) > 1e-20 ? vec2(dx.z * dy.y - dx.y * dy.z, dx.x * dy.z - dx.z * dy.x) / det : vec2(0.0);
-#endif
     if (vShadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
 #ifdef REVERSED_Z
@@ -54,8 +46,14 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     if (coord.z > 1.0)
         return 1.0;             // beyond the far plane is lit
 #endif
-    if (dot(normal, toLight) <= 0.0)
-        return 0.0;             // facing away: unlit anyway, so skip the lookups
+    if (facing <= 0.0)
+        return 0.0;
+    // Outside the map's square every tap would read the lit border.
+    return all(greaterThanEqual(coord.xy, vec2(0.0))) && all(lessThanEqual(coord.xy, vec2(1.0))) ? -1.0 : 1.0;
+}
+
+float shadowLookup(vec3 normal, vec3 toLight)
+{
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
     // For the wide filters: a tap d world units away on this receiver's plane lies up to
@@ -66,6 +64,7 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     float depthPerWorld = (alongRay.z * vShadowCoord.w - vShadowCoord.z * alongRay.w) / (vShadowCoord.w * vShadowCoord.w);
     gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
     gShadowW = vShadowCoord.w;
+    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
 #ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
     return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
@@ -81,6 +80,27 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     vec4 moved = vShadowCoord + uShadowWorld * vec4(toLight * bias, 0.0);
     return filterShadow(coord.xy, moved.z / moved.w);
 #endif
+}
+
+float shadowVisibility(vec3 normal, vec3 toLight)
+{
+#ifdef SHADOWS
+    vec3 coord = vShadowCoord.xyz / vShadowCoord.w;
+#ifdef RECEIVER_PLANE
+    // The receiver's depth as a plane over the map, from its screen-space derivatives (taken
+    // before any branch, where they are defined): depth change per uv unit. A degenerate
+    // footprint (the plane seen edge-on from the camera) gets a flat plane.
+    vec3 dx = dFdx(coord), dy = dFdy(coord);
+    float det = dx.x * dy.y - dx.y * dy.x;
+    gReceiverSlope = abs(det) > 1e-20 ? vec2(dx.z * dy.y - dx.y * dy.z, dx.x * dy.z - dx.z * dy.x) / det : vec2(0.0);
+#endif
+    float visibility = visibilityWithoutLookup(coord, dot(normal, toLight));
+    // A loop run once or not at all rather than a branch: a software rasteriser (llvmpipe)
+    // shades a group of pixels together and runs both sides of a branch, but leaves a loop once
+    // no pixel of the group is still in it, so pixels that need no lookup cost nothing here.
+    for (int lookups = visibility < 0.0 ? 1 : 0; lookups > 0; --lookups)
+        visibility = shadowLookup(normal, toLight);
+    return visibility;
 #else
     return 1.0;
 #endif

@@ -107,8 +107,19 @@ const vec2 kPoissonDisk[64] = vec2[64](
     vec2(-0.8808, -0.4735), vec2(0.4879, -0.8452), vec2(-0.1827, -0.7825), vec2(0.2483, -0.6364));
 
 #ifdef EARLY_OUT
-uniform sampler2D uDepthRange;  // level k: min (r) and max (g) depth of 2^(k+1) x 2^(k+1) map texels
+// An atlas of every level (renderer/DepthRangePass.h), read at its level 0: level k holds the
+// min (r) and max (g) depth of 2^(k+1) x 2^(k+1) map texels.
+uniform sampler2D uDepthRange;
 uniform int uDepthRangeLevels;
+
+// Level `level`'s texel `p` (clamped to the level), in the atlas's layout.
+vec2 rangeTexel(int level, ivec2 p)
+{
+    int levelZero = textureSize(uDepthRange, 0).y;
+    int size = max(levelZero >> level, 1);
+    ivec2 origin = level == 0 ? ivec2(0) : ivec2(levelZero, levelZero - 2 * size);
+    return texelFetch(uDepthRange, origin + min(p, ivec2(size - 1)), 0).rg;
+}
 
 // Penumbra-only filtering: 1 when every nearest-texel tap within `radius` (uv, per axis) of
 // `uv` compares lit against any reference in `references` (lowest, highest), 0 when every one
@@ -121,21 +132,17 @@ float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
     ivec2 hi = ivec2(floor((uv + radius) * size)) + 1;
     if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(size))))
         return -1.0;
-    // The level from the radius alone, an upper bound of hi - lo: the same for every pixel of a
-    // fixed-size kernel, as llvmpipe appears to fetch one level for a whole group of pixels
-    // (PCSS, whose footprint differs per pixel, disagreed with its own taps at large levels).
-    int span = int(ceil(2.0 * max(radius.x, radius.y) * size.x)) + 3;
+    int span = max(hi.x - lo.x, hi.y - lo.y);
     int level = 0;
     while ((2 << level) <= span)
         ++level;                // texels of 2^(level + 1) map texels: the footprint spans at most 2 x 2
     if (level >= uDepthRangeLevels)
         return -1.0;
-    ivec2 last = textureSize(uDepthRange, level) - 1;
     ivec2 base = lo >> (level + 1);
-    vec2 a = texelFetch(uDepthRange, min(base, last), level).rg;
-    vec2 b = texelFetch(uDepthRange, min(base + ivec2(1, 0), last), level).rg;
-    vec2 c = texelFetch(uDepthRange, min(base + ivec2(0, 1), last), level).rg;
-    vec2 d = texelFetch(uDepthRange, min(base + ivec2(1, 1), last), level).rg;
+    vec2 a = rangeTexel(level, base);
+    vec2 b = rangeTexel(level, base + ivec2(1, 0));
+    vec2 c = rangeTexel(level, base + ivec2(0, 1));
+    vec2 d = rangeTexel(level, base + ivec2(1, 1));
     float nearest = min(min(a.r, b.r), min(c.r, d.r));
     float farthest = max(max(a.g, b.g), max(c.g, d.g));
     // Clamped as the hardware comparison clamps them, and widened a little: the hardware may

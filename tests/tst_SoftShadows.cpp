@@ -285,13 +285,25 @@ private Q_SLOTS:
         std::vector<float> depth(std::size_t(mapSize) * std::size_t(mapSize));
         gl->glBindTexture(GL_TEXTURE_2D, r.shadowMap().texture());
         gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        // The atlas holds every level side by side (DepthRangePass.h).
         gl->glBindTexture(GL_TEXTURE_2D, r.depthRange()->texture());
+        GLint atlasWidth = 0, levelZero = 0;
+        gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &atlasWidth);
+        gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &levelZero);
+        QCOMPARE(levelZero, (mapSize + 1) / 2);
+        std::vector<glm::vec2> atlas(std::size_t(atlasWidth) * std::size_t(levelZero));
+        gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, atlas.data());
         int bad = 0;
         for (int level = 0; level < r.depthRange()->levels(); ++level) {
-            GLint size = 0;
-            gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &size);
+            const int size = DepthRangePass::levelSize(levelZero, level);
+            const QPoint origin = DepthRangePass::levelOrigin(levelZero, level);
+            QVERIFY(origin.x() + size <= atlasWidth && origin.y() + size <= levelZero);
             std::vector<glm::vec2> range(std::size_t(size) * std::size_t(size));
-            gl->glGetTexImage(GL_TEXTURE_2D, level, GL_RG, GL_FLOAT, range.data());
+            for (int y = 0; y < size; ++y) {
+                for (int x = 0; x < size; ++x)
+                    range[std::size_t(y) * std::size_t(size) + std::size_t(x)] =
+                        atlas[std::size_t(origin.y() + y) * std::size_t(atlasWidth) + std::size_t(origin.x() + x)];
+            }
             const int cover = 2 << level;   // map texels per texel side
             for (int y = 0; y < mapSize; ++y) {
                 for (int x = 0; x < mapSize; ++x) {
@@ -322,6 +334,14 @@ private Q_SLOTS:
             {"poisson 24 r6, 1000 map", {"filter.mode=poisson", "filter.taps=24", "filter.radius=6", "map.size=1000"}},
             {"poisson depth32f", {"filter.mode=poisson", "map.format=depth32f"}},
             {"pcf 5x5 perspective", {"filter.mode=pcf", "filter.kernel=5", "light.projection=perspective"}},
+            // PCSS decides per pixel how wide its footprint is, so pixels side by side read
+            // different levels of the mip.
+            {"pcss 16", {"filter.mode=pcss"}},
+            {"pcss 32, light radius 0.5", {"filter.mode=pcss", "filter.taps=32", "light.radius=0.5"}},
+            {"pcss 16, light radius 0.01", {"filter.mode=pcss", "light.radius=0.01"}},
+            {"pcss 16 receiver plane", {"filter.mode=pcss", "bias.receiver_plane=true"}},
+            {"pcss 24 perspective", {"filter.mode=pcss", "filter.taps=24", "light.projection=perspective"}},
+            {"pcss 16, 777 map", {"filter.mode=pcss", "map.size=777"}},
         };
         for (const QString& scene : kScenes) {
             for (const auto& [name, assignments] : configurations)

@@ -25,6 +25,7 @@ struct Phase {
     QString description;
     Settings settings;
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
+    double cameraOrbitDegrees = 0.0;    // per frame
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     int shadowPassesRun = 0;
@@ -58,7 +59,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
 {
     std::vector<TimedRun> runs;
     for (Phase& p : phases)
-        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}});
+        runs.push_back({p.headless.get(), p.settings, p.moving, false, p.cameraOrbitDegrees, {}});
     timeInterleaved(runs, size, warmup, frames);
     for (std::size_t i = 0; i < phases.size(); ++i) {
         Phase& p = phases[i];
@@ -103,8 +104,8 @@ int runBench(const QStringList& arguments)
                           QStringLiteral("200")});
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
                           QStringLiteral("10")});
-        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-light or both (default both)."), QStringLiteral("name"),
-                          QStringLiteral("both")});
+        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (with and without shadows), moving-light, or all (default all)."),
+                          QStringLiteral("name"), QStringLiteral("all")});
         parser.addOption({QStringLiteral("baseline"),
                           QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
@@ -126,22 +127,33 @@ int runBench(const QStringList& arguments)
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
         const QString phase = parser.value(QStringLiteral("phase"));
-        if (phase != u"both" && phase != u"steady" && phase != u"moving-light")
-            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-light or both").arg(phase));
+        if (phase != u"all" && phase != u"steady" && phase != u"moving-camera" && phase != u"moving-light")
+            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light or all").arg(phase));
 
         std::vector<Phase> phases;
-        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
+        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving, double orbit = 0.0) {
             Phase p;
             p.name = QString::fromLatin1(name);
             p.description = QString::fromLatin1(description);
             p.settings = s;
             p.moving = moving;
+            p.cameraOrbitDegrees = orbit;
             p.headless = std::make_unique<HeadlessRenderer>();
             phases.push_back(std::move(p));
         };
-        if (phase != u"moving-light")
+        const bool all = phase == u"all";
+        if (all || phase == u"steady")
             addPhase("steady", "light and camera still: cached shadow map, lit pass only", settings, false);
-        if (phase != u"steady")
+        // A quarter degree a frame: the fitted volume follows the view, and the map is redrawn
+        // only when it changes.
+        constexpr double kOrbit = 0.25;
+        if (all || phase == u"moving-camera") {
+            addPhase("moving-camera", "the camera orbits a quarter degree a frame, light still", settings, false, kOrbit);
+            Settings withoutShadows = settings;
+            withoutShadows.shadow.enabled = false;
+            addPhase("moving-camera-no-shadows", "the same camera path with shadow.enabled=false", withoutShadows, false, kOrbit);
+        }
+        if (all || phase == u"moving-light")
             addPhase("moving-light", "shadow pass every frame", settings, true);
         if (parser.isSet(QStringLiteral("baseline")))
             addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
@@ -202,7 +214,18 @@ int runBench(const QStringList& arguments)
             const double reference = summarize(phases.back().wall).median;
             out() << "\nframe wall time relative to " << phases.back().name << ":\n";
             for (const Phase& r : phases)
-                out() << "  " << r.name.leftJustified(18) << QString::number(summarize(r.wall).median / reference, 'f', 2) << '\n';
+                out() << "  " << r.name.leftJustified(26) << QString::number(summarize(r.wall).median / reference, 'f', 2) << '\n';
+        }
+        if (all || phase == u"moving-camera") {
+            auto median = [&](const char* name) {
+                for (const Phase& r : phases) {
+                    if (r.name == QLatin1String(name))
+                        return summarize(r.wall).median;
+                }
+                return 0.0;
+            };
+            out() << "shadows on / off with the camera moving: "
+                  << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
         }
         out().flush();
         return kExitOk;

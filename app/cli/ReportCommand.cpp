@@ -31,7 +31,7 @@ int runReport(const QStringList& arguments)
         parser.addHelpOption();
         addSettingsOptions(parser);
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
-        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, or a JSON file (default: default)."),
+        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, penumbra, or a JSON file (default: default)."),
                           QStringLiteral("name|file.json"), QStringLiteral("default")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
         parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration (default 30)."), QStringLiteral("n"),
@@ -81,7 +81,7 @@ int runReport(const QStringList& arguments)
         // previous configuration (a shadow map of another size to allocate) is not timed.
         std::vector<TimedRun> runs;
         for (const Settings& configuration : configurations)
-            runs.push_back({&headless, configuration, true, true, {}});
+            runs.push_back({&headless, configuration, true, true, 0.0, {}});
         timeInterleaved(runs, size, warmup, frames,
                         [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
         for (std::size_t c = 0; c < sweep.size(); ++c) {

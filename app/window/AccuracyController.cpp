@@ -328,7 +328,7 @@ void AccuracyController::sweepStep()
 
         // One untimed frame compiles the lit variant; every frame redraws the shadow map, so
         // the time is what a moving light costs, not the cached-map best case.
-        std::vector<TimedRun> runs{{&h, point.settings, true, false, {}}};
+        std::vector<TimedRun> runs{{&h, point.settings, true, false, 0.0, {}}};
         timeInterleaved(runs, m_sweepSize, 1, kTimedFrames);
         point.frameMs = summarize(runs.front().samples.wall).median;
         m_sweepPoints.push_back(point);

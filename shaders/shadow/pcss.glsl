@@ -34,6 +34,13 @@ float filterShadow(vec2 uv, float reference)
     // Every blocker lies between the near plane and the receiver, so the penumbra filter below
     // stays inside this search region.
     vec2 search = min(max(diskFootprint(receiver, uShadowDepthRange.x), uShadowTexel), vec2(0.5));
+#ifdef EARLY_OUT
+    // Every tap of both loops lies in the search region: where it is all lit there is no blocker
+    // (1), where it is all shadowed every filter tap is too (0).
+    float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference, true));
+    if (verdict >= 0.0)
+        return verdict;
+#endif
     mat2 rotation = tapRotation();
     float blockerSum = 0.0;
     float blockers = 0.0;
