@@ -35,11 +35,11 @@ QPoint DepthRangePass::levelOrigin(int levelZeroSize, int level)
 
 void DepthRangePass::allocate(int mapSize)
 {
-    // Level 0 halves the map rounding up, so it covers every map texel; the rest follow GL's
+    // Level 0 covers 4 x 4 map texels a texel, rounding up, so it covers every map texel; the rest follow GL's
     // rule for a complete mip chain (halving, rounded down), whose odd leftovers the pass folds
     // into the last texel. Level 0 is drawn straight into the atlas; the chain holds levels 1 and
     // up (its level j is level j + 1), each drawn from the one before and then copied over.
-    const int levelZero = (mapSize + 1) / 2;
+    const int levelZero = levelZeroSize(mapSize);
     int levels = 1;
     while (levelSize(levelZero, levels - 1) > 1)
         ++levels;
@@ -80,7 +80,7 @@ void DepthRangePass::build(const ShadowMap& map)
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     m_gl->glActiveTexture(GL_TEXTURE0 + kSourceUnit);
 
-    const int levelZero = (map.size() + 1) / 2;
+    const int levelZero = levelZeroSize(map.size());
     for (int level = 0; level < m_levels; ++level) {
         const int size = levelSize(levelZero, level);
         if (level == 0)

@@ -12,14 +12,14 @@
 namespace shadowlab {
 
 // The min/max depth mip of a shadow map, for penumbra-only filtering (filter.early_out): level k
-// holds, per texel, the lowest and highest depth of the 2^(k+1) x 2^(k+1) map texels under it,
-// down to 1 x 1. A wide filter reads at most four texels to learn that its whole footprint is lit
+// holds, per texel, the lowest and highest depth of the 2^(k+2) x 2^(k+2) map texels under it,
+// down to 1 x 1 (no level of 2 x 2: the narrowest footprint a filter asks about spans 4 texels). A wide filter reads at most four texels to learn that its whole footprint is lit
 // or shadowed and skips its taps. Rebuilt only when the map changes (after a shadow pass), a
 // pass per level into a mip chain, then copied into one single-level RG32F atlas that the lit
 // pass reads: a level chosen per pixel then never depends on the driver fetching a level per
 // pixel (llvmpipe picks one level for each 2 x 2 quad of pixels).
 //
-// Atlas layout, with w0 the size of level 0 (the map's size halved, rounded up) and level k of
+// Atlas layout, with w0 the size of level 0 (the map's size over 4, rounded up) and level k of
 // size w0 >> k: level 0 at (0, 0); level k >= 1 at (w0, w0 - 2 (w0 >> k)), a column to its right
 // (shaders/shadow_filters.glsl, rangeLevelOrigin, reads the same rule).
 class DepthRangePass {
@@ -33,6 +33,8 @@ public:
     GLuint texture() const { return m_atlas.id(); }
     int levels() const { return m_levels; }
 
+    static constexpr int kLevelZeroBlock = 4;   // map texels per side of a level-0 texel
+    static int levelZeroSize(int mapSize) { return (mapSize + kLevelZeroBlock - 1) / kLevelZeroBlock; }
     // Where level `level` starts in the atlas, and its size (square).
     static QPoint levelOrigin(int levelZeroSize, int level);
     static int levelSize(int levelZeroSize, int level) { return std::max(levelZeroSize >> level, 1); }

@@ -1,6 +1,9 @@
 // One level of the shadow map's min/max depth mip (penumbra-only filtering): each texel holds
-// the lowest and highest depth of the 2 x 2 texels under it one level finer (level 0: of the map
-// itself).
+// the lowest and highest depth of the 2 x 2 texels under it one level finer (level 0: of the
+// 4 x 4 map texels under it).
+#ifdef FROM_DEPTH
+#extension GL_ARB_texture_gather : enable
+#endif
 // The depth map (FROM_DEPTH) or the level below the one drawn: the atlas, whose origin holds
 // level 0, or the mip chain, whose base level the pass sets to that level (texelFetch's level
 // counts from the base level).
@@ -23,12 +26,28 @@ void main()
     ivec2 last = ivec2(uSourceSize - 1);
     ivec2 p = ivec2(gl_FragCoord.xy) * 2;
 #ifdef FROM_DEPTH
-    // Level 0 halves the map rounding up: each texel covers its own 2 x 2 (clamped at the edge).
-    vec2 a = fetchRange(min(p, last));
-    vec2 b = fetchRange(min(p + ivec2(1, 0), last));
-    vec2 c = fetchRange(min(p + ivec2(0, 1), last));
-    vec2 d = fetchRange(min(p + ivec2(1, 1), last));
-    range = vec2(min(min(a.x, b.x), min(c.x, d.x)), max(max(a.y, b.y), max(c.y, d.y)));
+    // Level 0: the 4 x 4 map texels from 4 p (a block past the map's edge reads the border,
+    // which only widens its range).
+    p *= 2;
+#ifdef GL_ARB_texture_gather
+    // Four gathers of 2 x 2, each at the corner its four texels share.
+    vec2 texel = 1.0 / vec2(uSourceSize);
+    vec4 a = textureGather(uSource, (vec2(p) + vec2(1.0, 1.0)) * texel);
+    vec4 b = textureGather(uSource, (vec2(p) + vec2(3.0, 1.0)) * texel);
+    vec4 c = textureGather(uSource, (vec2(p) + vec2(1.0, 3.0)) * texel);
+    vec4 d = textureGather(uSource, (vec2(p) + vec2(3.0, 3.0)) * texel);
+    vec4 lowest = min(min(a, b), min(c, d));
+    vec4 highest = max(max(a, b), max(c, d));
+    range = vec2(min(min(lowest.x, lowest.y), min(lowest.z, lowest.w)), max(max(highest.x, highest.y), max(highest.z, highest.w)));
+#else
+    range = vec2(1.0e30, -1.0e30);
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 4; ++x) {
+            vec2 r = fetchRange(min(p + ivec2(x, y), last));
+            range = vec2(min(range.x, r.x), max(range.y, r.y));
+        }
+    }
+#endif
 #else
     // The next levels follow GL's size rule (each half the one below, rounded down), so where
     // the level below has an odd size the last texel here also takes in the one left over.

@@ -108,7 +108,7 @@ const vec2 kPoissonDisk[64] = vec2[64](
 
 #ifdef EARLY_OUT
 // An atlas of every level (renderer/DepthRangePass.h), read at its level 0: level k holds the
-// min (r) and max (g) depth of 2^(k+1) x 2^(k+1) map texels.
+// min (r) and max (g) depth of 2^(k+2) x 2^(k+2) map texels.
 uniform sampler2D uDepthRange;
 uniform int uDepthRangeLevels;
 
@@ -134,11 +134,11 @@ float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
         return -1.0;
     int span = max(hi.x - lo.x, hi.y - lo.y);
     int level = 0;
-    while ((2 << level) <= span)
-        ++level;                // texels of 2^(level + 1) map texels: the footprint spans at most 2 x 2
+    while ((4 << level) <= span)
+        ++level;                // texels of 2^(level + 2) map texels: the footprint spans at most 2 x 2
     if (level >= uDepthRangeLevels)
         return -1.0;
-    ivec2 base = lo >> (level + 1);
+    ivec2 base = lo >> (level + 2);
     vec2 a = rangeTexel(level, base);
     vec2 b = rangeTexel(level, base + ivec2(1, 0));
     vec2 c = rangeTexel(level, base + ivec2(0, 1));

@@ -290,7 +290,7 @@ private Q_SLOTS:
         GLint atlasWidth = 0, levelZero = 0;
         gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &atlasWidth);
         gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &levelZero);
-        QCOMPARE(levelZero, (mapSize + 1) / 2);
+        QCOMPARE(levelZero, (mapSize + 3) / 4);
         std::vector<glm::vec2> atlas(std::size_t(atlasWidth) * std::size_t(levelZero));
         gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, atlas.data());
         int bad = 0;
@@ -304,7 +304,7 @@ private Q_SLOTS:
                     range[std::size_t(y) * std::size_t(size) + std::size_t(x)] =
                         atlas[std::size_t(origin.y() + y) * std::size_t(atlasWidth) + std::size_t(origin.x() + x)];
             }
-            const int cover = 2 << level;   // map texels per texel side
+            const int cover = 4 << level;   // map texels per texel side
             for (int y = 0; y < mapSize; ++y) {
                 for (int x = 0; x < mapSize; ++x) {
                     const int tx = std::min(x / cover, size - 1), ty = std::min(y / cover, size - 1);
