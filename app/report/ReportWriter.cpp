@@ -109,9 +109,10 @@ QString percentText(double v)
 }
 
 // An inline SVG scatter plot of `value(row)` (in percent, on a log axis) against frame time,
-// each light's Pareto front joined in its colour, labels placed where they hide nothing.
+// each light's Pareto front (on time and misclassified share) marked and, when `joinFront`,
+// joined in its colour; labels placed where they hide nothing.
 QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle,
-              const std::function<double(const ReportRow&)>& value)
+              const std::function<double(const ReportRow&)>& value, bool joinFront)
 {
     const double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
     double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
@@ -123,25 +124,38 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
             yHigh = std::max(yHigh, v);
         }
     }
-    xMax = xMax > 0.0 ? xMax * 1.08 : 1.0;
+    // Round ticks: a step of 1, 2 or 5 times a power of ten, about five of them.
+    const double rough = (xMax > 0.0 ? xMax * 1.05 : 1.0) / 5.0;
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
+    const int xTicks = int(std::ceil(xMax * 1.05 / xStep));
+    xMax = xStep * xTicks;
+    const int xDecimals = std::max(0, -int(std::floor(std::log10(xStep))));
     // Whole decades around the values: one outlier at 40 % leaves 0.01 % readable.
     const double yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
     double yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
     if (yMax <= yMin)
         yMax = yMin * 10.0;
-    bool anyZero = false;
+    // 0 % has no place on a log axis: it gets a line of its own below the lowest decade.
+    const bool anyZero = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return value(r) <= 0.0; });
+    const double zeroBand = anyZero ? 22.0 : 0.0;
     auto px = [&](double x) { return left + x / xMax * (w - left - right); };
     auto py = [&](double y) {
-        anyZero = anyZero || y <= 0.0;
+        if (y <= 0.0)
+            return h - bottom;
         const double t = std::log10(std::max(y, yMin) / yMin) / std::log10(yMax / yMin);
-        return h - bottom - t * (h - top - bottom);
+        return h - bottom - zeroBand - t * (h - top - bottom - zeroBand);
     };
 
     QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(w).arg(h);
-    for (int i = 0; i <= 5; ++i) {
-        const double x = xMax * i / 5.0;
+    for (int i = 0; i <= xTicks; ++i) {
+        const double x = xStep * i;
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(px(x)).arg(top).arg(h - bottom);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, 1));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, xDecimals));
+    }
+    if (anyZero) {
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(py(0.0)).arg(w - right);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 %</text>").arg(left - 6).arg(py(0.0) + 4);
     }
     for (double y : logTicks(yMin, yMax)) {
         const bool decade = std::abs(std::log10(y) - std::round(std::log10(y))) < 1e-9;
@@ -168,7 +182,7 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
                 front.push_back(&r);
         }
         std::sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
-        if (front.size() < 2)
+        if (!joinFront || front.size() < 2)
             continue;
         QString points;
         for (const ReportRow* r : front)
@@ -208,22 +222,33 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
     for (const ReportRow* r : labelled) {
         const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
         const double tw = kCharWidth * text.size(), x = px(r->frame.median), y = py(value(*r));
-        const Box candidates[] = {{x + 8, y - 4 - kLabelHeight, x + 8 + tw, y - 4},  {x + 8, y + 4, x + 8 + tw, y + 4 + kLabelHeight},
-                                  {x - 8 - tw, y - 4 - kLabelHeight, x - 8, y - 4},  {x - 8 - tw, y + 4, x - 8, y + 4 + kLabelHeight},
-                                  {x - tw / 2, y - 10 - kLabelHeight, x + tw / 2, y - 10}, {x - tw / 2, y + 10, x + tw / 2, y + 10 + kLabelHeight}};
+        // Beside the point first, then further up or down with a leader line.
+        std::vector<Box> candidates;
+        for (int away = 0; away < 5; ++away) {
+            const double dy = 4 + away * (kLabelHeight + 2);
+            for (double side : {1.0, -1.0}) {
+                const double x0 = side > 0 ? x + 8 : x - 8 - tw;
+                candidates.push_back({x0, y - dy - kLabelHeight, x0 + tw, y - dy});
+                candidates.push_back({x0, y + dy, x0 + tw, y + dy + kLabelHeight});
+            }
+        }
         for (const Box& b : candidates) {
             const bool inside = b.x0 >= left + 2 && b.x1 <= w - right && b.y0 >= top && b.y1 <= h - bottom;
             if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); }))
                 continue;
+            if (b.y1 < y - 4 - kLabelHeight || b.y0 > y + 4 + kLabelHeight) {
+                const double ly = b.y1 < y ? b.y1 : b.y0;
+                svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%4\" class=\"leader\"/>")
+                           .arg(x)
+                           .arg(y)
+                           .arg(b.x0 > x ? b.x0 : b.x1)
+                           .arg(ly);
+            }
             taken.push_back(b);
             svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"label\">%3</text>").arg(b.x0).arg(b.y1 - 3).arg(html(text));
             break;
         }
     }
-    if (anyZero)
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 % is drawn on the lowest line</text>")
-                   .arg(w - right - 4)
-                   .arg(h - bottom - 6);
     return svg + QStringLiteral("</svg>");
 }
 
@@ -391,7 +416,7 @@ h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
 .grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
 .pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.grid.minor{stroke:#f4f4f4}
-.label{font-size:11px;fill:#333}
+.label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
 td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
 .images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}.images img.zoom{image-rendering:pixelated}
@@ -425,9 +450,9 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
     }
     page += QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
     page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"),
-                  [](const ReportRow& r) { return 100.0 * r.accuracy.hard.misclassified; });
+                  [](const ReportRow& r) { return 100.0 * r.accuracy.hard.misclassified; }, true);
     page += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
-    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), [](const ReportRow& r) { return 100.0 * r.accuracy.area.mae; });
+    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), [](const ReportRow& r) { return 100.0 * r.accuracy.area.mae; }, false);
     page += QStringLiteral("<p>Large dots joined by a line: the Pareto front of each light on time and misclassified share. A configuration "
                            "leaves the front only when another is at least as accurate and faster beyond both p10–p90 spreads (the bars), "
                            "or more accurate and not slower beyond them, so timing noise does not move it. Identical configurations "
