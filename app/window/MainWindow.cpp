@@ -323,6 +323,9 @@ void MainWindow::createStatusBar()
     m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
     m_mapLabel->setToolTip(tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow"));
     m_texelLabel->setToolTip(tr("The shadow-map texel under the pointer in the depth-map view: its position, depth and distance from the light"));
+    // Apart enough to read as three facts, not one run-on line.
+    for (QLabel* label : {m_texelLabel, m_timingLabel, m_mapLabel})
+        label->setContentsMargins(12, 0, 0, 0);
     statusBar()->addPermanentWidget(m_texelLabel);
     statusBar()->addPermanentWidget(m_timingLabel);
     statusBar()->addPermanentWidget(m_mapLabel);
