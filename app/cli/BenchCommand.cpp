@@ -59,7 +59,10 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
     std::vector<TimedRun> runs;
     for (Phase& p : phases)
         runs.push_back({p.headless.get(), p.settings, p.moving, false, {}});
-    timeInterleaved(runs, size, warmup, frames);
+    // A bar with the time left on a terminal (stderr), nothing in a pipe.
+    ProgressBar progress;
+    timeInterleaved(runs, size, warmup, frames, [&](double f) { progress.show(f, QStringLiteral("timing")); });
+    progress.done();
     for (std::size_t i = 0; i < phases.size(); ++i) {
         Phase& p = phases[i];
         FrameSamples& s = runs[i].samples;
