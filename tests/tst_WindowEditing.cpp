@@ -127,6 +127,25 @@ private slots:
         QCOMPARE(undo->text(), QStringLiteral("&Undo Set bias.slope"));
     }
 
+    void ctrlZInATypedFieldUndoesTheSetting()
+    {
+        // Type a number, press Enter (applied), then Ctrl+Z: the setting goes back, even though
+        // the field still has the keyboard focus.
+        const Settings original = m_window->settings(Side::A);
+        QDoubleSpinBox* box = field(QStringLiteral("bias.min"))->spinBox();
+        box->setFocus();
+        QVERIFY(box->hasFocus());
+        box->selectAll();
+        QTest::keyClicks(box, QStringLiteral("0.05"));
+        QTest::keyClick(box, Qt::Key_Return);
+        QCOMPARE(m_window->settings(Side::A).bias.min, 0.05);
+        QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(m_window->settings(Side::A).bias.min, original.bias.min);
+        QCOMPARE(box->value(), original.bias.min);
+        QTest::keyClick(box, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(m_window->settings(Side::A).bias.min, 0.05);
+    }
+
     void eachKeyPressIsAStepAndUndoWalksBack()
     {
         const Settings original = m_window->settings(Side::A);

@@ -17,6 +17,7 @@
 #include "ViewPane.h"
 #include "WheelGuard.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -256,12 +257,12 @@ void MainWindow::createMenus()
     quit->setShortcut(QKeySequence::Quit);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = m_undoGroup->createUndoAction(this, tr("&Undo"));
+    QAction* undo = m_undoAction = m_undoGroup->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("undoAction"));
     undo->setShortcut(QKeySequence::Undo);
     undo->setToolTip(tr("Take back the last settings change of this side (Ctrl+Z)"));
     edit->addAction(undo);
-    QAction* redo = m_undoGroup->createRedoAction(this, tr("&Redo"));
+    QAction* redo = m_redoAction = m_undoGroup->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redoAction"));
     redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     redo->setToolTip(tr("Make the change taken back again (Ctrl+Shift+Z)"));
@@ -504,6 +505,20 @@ void MainWindow::showUndoState(const SettingsChange::Sides& target, const Settin
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event)
 {
+    // A number field of a dock would take Ctrl+Z for its own text; its value is applied on
+    // Enter, so what the user means is the window's undo. Left unaccepted, the override lets
+    // the Edit menu's shortcut run.
+    if (event->type() == QEvent::ShortcutOverride && m_undoAction) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        const QKeySequence pressed(key->keyCombination());
+        const bool undoKey = m_undoAction->shortcuts().contains(pressed) || m_redoAction->shortcuts().contains(pressed);
+        auto* widget = qobject_cast<QWidget*>(watched);
+        // The line edit first, then (the override travels up) its spin box, which would hand
+        // it to the line edit again.
+        const bool numberField = widget && (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QAbstractSpinBox*>(widget->parentWidget()));
+        if (undoKey && numberField && (m_dock->isAncestorOf(widget) || m_accuracyDock->isAncestorOf(widget)))
+            return true;
+    }
     // A new press starts a new gesture; a key's auto-repeat continues the one it began.
     if (event->type() == QEvent::MouseButtonPress
         || (event->type() == QEvent::KeyPress && !static_cast<QKeyEvent*>(event)->isAutoRepeat()))

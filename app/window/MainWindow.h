@@ -152,6 +152,8 @@ private:
     QString m_screenshotFolder;
     QString m_lastFitWarning;   // said once in the status bar, not on every frame
     QUndoGroup* m_undoGroup = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
     std::array<QUndoStack*, 2> m_undoStacks{};
     quint64 m_gesture = 0;      // mouse and key presses so far: edits between two presses merge
 };
