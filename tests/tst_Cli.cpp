@@ -95,6 +95,7 @@ private Q_SLOTS:
             const QString name = QString::fromLatin1(command);
             QTest::addRow("%s --help", command) << QStringList{name, "--help"} << "Usage: shadowlab " + name + " [options]";
             QTest::addRow("help %s", command) << QStringList{"help", name} << "Usage: shadowlab " + name + " [options]";
+            QTest::addRow("%s --help-all", command) << QStringList{name, "--help-all"} << "Usage: shadowlab " + name + " [options]";
             QTest::addRow("%s --version", command) << QStringList{name, "--version"} << "shadowlab " SHADOWLAB_VERSION;
         }
     }

@@ -73,7 +73,9 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
         }
         throw UsageError(message + QStringLiteral(" Run `shadowlab %1 --help` for its options.").arg(command));
     }
-    if (parser.isSet(QStringLiteral("help"))) {
+    // --help-all (which Qt adds with --help) would list Qt's own options, none of which a
+    // command takes: the same help.
+    if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("help-all"))) {
         out() << commandHelp(parser, command) << Qt::flush;
         return false;
     }

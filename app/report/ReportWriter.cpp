@@ -387,7 +387,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            {QStringLiteral("machine"), facts.machine},
                            {QStringLiteral("area_samples_per_pixel"), facts.areaSamplesPerPixel},
                            {QStringLiteral("light_radius"), facts.lightRadius},
-                           {QStringLiteral("area_noise_floor"), facts.areaNoiseFloor},
+                           {QStringLiteral("area_noise_floor_pct"), 100 * facts.areaNoiseFloor},
                            {QStringLiteral("rays_per_second"), facts.raysPerSecond},
                            {QStringLiteral("reference_computations"), facts.referenceComputations},
                            {QStringLiteral("seconds"), facts.seconds},
