@@ -11,6 +11,8 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 
+#include <algorithm>
+
 namespace shadowlab {
 
 namespace {
@@ -62,6 +64,8 @@ std::vector<SweepEntry> biasSweep()
     return s;
 }
 
+} // namespace
+
 // The tutorial most learners copy: 3 x 3 PCF on a 1024 map, bias 0.05/0.005 in depth units,
 // front faces, the hand-set volume.
 QStringList tutorialAssignments()
@@ -71,6 +75,8 @@ QStringList tutorialAssignments()
             QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual"),
             QStringLiteral("filter.early_out=false")};
 }
+
+namespace {
 
 // Light placements around the preset's target, from overhead to grazing and from near to very
 // far, each with the defaults and with the tutorial configuration.
@@ -211,6 +217,20 @@ Settings applySweepEntry(const Settings& base, const SweepEntry& entry)
         throw SettingsError(e.key(), QStringLiteral("in sweep entry '%1': %2").arg(displayText(entry.label), QString::fromUtf8(e.what())));
     }
     return s;
+}
+
+std::vector<SweepConfiguration> distinctConfigurations(const Settings& base, const std::vector<SweepEntry>& sweep)
+{
+    std::vector<SweepConfiguration> configurations;
+    for (const SweepEntry& entry : sweep) {
+        const Settings settings = applySweepEntry(base, entry);
+        const auto same = std::find_if(configurations.begin(), configurations.end(), [&](const SweepConfiguration& c) { return c.settings == settings; });
+        if (same == configurations.end())
+            configurations.push_back({entry.label, entry.assignments, settings});
+        else if (!same->label.split(QStringLiteral(" = ")).contains(entry.label))
+            same->label += QStringLiteral(" = ") + entry.label;
+    }
+    return configurations;
 }
 
 } // namespace shadowlab

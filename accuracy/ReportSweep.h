@@ -30,4 +30,18 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 // The settings of one entry; throws SettingsError prefixed with the entry's label.
 Settings applySweepEntry(const Settings& base, const SweepEntry& entry);
 
+// One configuration to measure: entries whose settings come out the same on `base` (the
+// defaults and "bias 0.01/0.002 wu", say) are measured once, their labels joined with " = ".
+struct SweepConfiguration {
+    QString label;
+    QStringList assignments;    // of the first entry
+    Settings settings;
+};
+// Throws SettingsError as applySweepEntry() does; keeps the order of first appearance.
+std::vector<SweepConfiguration> distinctConfigurations(const Settings& base, const std::vector<SweepEntry>& sweep);
+
+// The classic tutorial configuration (3 x 3 PCF on a 1024 map, bias 0.05/0.005 in depth
+// units, front faces drawn, the hand-set volume) as assignments.
+QStringList tutorialAssignments();
+
 } // namespace shadowlab

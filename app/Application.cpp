@@ -7,8 +7,27 @@
 
 namespace shadowlab {
 
+namespace {
+
+QtMessageHandler g_previousHandler = nullptr;
+
+// Qt warns on every start where XDG_RUNTIME_DIR is unset (a container, a CI job, a cron job)
+// and then uses its own fallback folder: nothing for a user to act on, and it would be the
+// first line of every command's output. Every other message passes on.
+void dropRuntimeDirNotice(QtMsgType type, const QMessageLogContext& context, const QString& message)
+{
+    if (type == QtWarningMsg && message.startsWith(QLatin1String("QStandardPaths: XDG_RUNTIME_DIR not set")))
+        return;
+    if (g_previousHandler)
+        g_previousHandler(type, context, message);
+}
+
+} // namespace
+
 void configureApplication()
 {
+    if (!g_previousHandler)
+        g_previousHandler = qInstallMessageHandler(dropRuntimeDirNotice);
     selectPlatformForHeadlessUse();
     QSurfaceFormat format;
     format.setRenderableType(QSurfaceFormat::OpenGL);

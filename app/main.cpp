@@ -83,19 +83,33 @@ int main(int argc, char* argv[])
         QGuiApplication app(argc, argv);
         return shadowlab::cli::runCommand(QGuiApplication::arguments().mid(1));
     }
+    // `shadowlab help` and `shadowlab help <command>`, as git and cmake users expect.
+    if (arguments.value(0) == u"help") {
+        if (arguments.size() > 1) {
+            if (!shadowlab::cli::isCommand(arguments[1])) {
+                QGuiApplication app(argc, argv);
+                return shadowlab::cli::unknownCommand(arguments[1]);
+            }
+            const QStringList help{arguments[1], QStringLiteral("--help")};
+            if (shadowlab::cli::needsWidgets(arguments[1])) {
+                QApplication app(argc, argv);
+                return shadowlab::cli::runCommand(help);
+            }
+            QGuiApplication app(argc, argv);
+            return shadowlab::cli::runCommand(help);
+        }
+        shadowlab::cli::printUsage(shadowlab::cli::out());
+        return shadowlab::cli::kExitOk;
+    }
     if (arguments.contains(QStringLiteral("--help")) || arguments.contains(QStringLiteral("-h"))) {
-        QGuiApplication app(argc, argv);
-        shadowlab::cli::printUsage();
+        shadowlab::cli::printUsage(shadowlab::cli::out());
         return shadowlab::cli::kExitOk;
     }
     if (!arguments.isEmpty()) {
         QGuiApplication app(argc, argv);
         const QStringList left = QGuiApplication::arguments().mid(1); // without Qt's own options
-        if (!left.isEmpty()) {
-            shadowlab::cli::err() << "shadowlab: unknown command '" << shadowlab::displayText(left.first()) << "'\n\n";
-            shadowlab::cli::printUsage();
-            return shadowlab::cli::kExitBadInput;
-        }
+        if (!left.isEmpty())
+            return shadowlab::cli::unknownCommand(left.first());
     }
 
     QApplication app(argc, argv);

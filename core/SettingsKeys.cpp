@@ -204,7 +204,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
             [field, names, k, rangeText](Settings& s, const QString& v) {
                 const int index = names.indexOf(v.trimmed().toLower());
                 if (index < 0)
-                    throw SettingsError(k, QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
+                    throw SettingsError(k, QStringLiteral("'%1' is not allowed%2; choose one of %3").arg(displayText(v), didYouMean(v, names), rangeText));
                 field(s) = Enum(index);
             },
             [](const Settings&) { return std::optional<QString>(); }};
@@ -240,8 +240,8 @@ Entry sceneKey()
                 }
                 const QFileInfo file(v.trimmed());
                 if (!file.isFile())
-                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': no such file, and not a preset (%2); check the path")
-                                                                     .arg(displayText(v), names.join(QStringLiteral(" | "))));
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': no such file, and not a preset (%2)%3; check the path")
+                                                                     .arg(displayText(v), names.join(QStringLiteral(" | ")), didYouMean(v, names)));
                 s.scene = file.absoluteFilePath();
             },
             [names](const Settings& s) -> std::optional<QString> {
@@ -345,7 +345,10 @@ const Entry& entryFor(const QString& key)
         if (e.info.key == key)
             return e;
     }
-    throw SettingsError(key, QStringLiteral("unknown setting; run `shadowlab settings` for the list of keys"));
+    QStringList keys;
+    for (const Entry& e : entries())
+        keys << e.info.key;
+    throw SettingsError(key, QStringLiteral("unknown setting%1; run `shadowlab settings` for the list of keys").arg(didYouMean(key, keys)));
 }
 
 void flattenJson(const QJsonObject& object, const QString& prefix, std::vector<std::pair<QString, QJsonValue>>& out)

@@ -60,7 +60,10 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
     std::vector<TimedRun> runs;
     for (Phase& p : phases)
         runs.push_back({p.headless.get(), p.settings, p.moving, false, p.cameraOrbitDegrees, {}});
-    timeInterleaved(runs, size, warmup, frames);
+    // A bar with the time left on a terminal (stderr), nothing in a pipe.
+    ProgressBar progress;
+    timeInterleaved(runs, size, warmup, frames, [&](double f) { progress.show(f, QStringLiteral("timing")); });
+    progress.done();
     for (std::size_t i = 0; i < phases.size(); ++i) {
         Phase& p = phases[i];
         FrameSamples& s = runs[i].samples;
@@ -76,11 +79,26 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
     }
 }
 
-QString formatStats(const SampleStats& s)
+// One row of the timing table: a label, then median, p10 and p90 in aligned columns.
+constexpr int kLabelWidth = 26;
+constexpr int kNumberWidth = 10;
+
+QString statsRow(const QString& label, const SampleStats& s)
 {
+    QString row = QStringLiteral("  ") + label.leftJustified(kLabelWidth);
     if (s.count == 0)
-        return QStringLiteral("—");
-    return QStringLiteral("%1 ms  [p10 %2, p90 %3]").arg(s.median, 0, 'f', 2).arg(s.p10, 0, 'f', 2).arg(s.p90, 0, 'f', 2);
+        return row + QStringLiteral("—").rightJustified(kNumberWidth);
+    for (double v : {s.median, s.p10, s.p90})
+        row += QString::number(v, 'f', 2).rightJustified(kNumberWidth);
+    return row;
+}
+
+QString statsHeader()
+{
+    QString header = QStringLiteral("  ") + QStringLiteral("ms per frame").leftJustified(kLabelWidth);
+    for (const char* column : {"median", "p10", "p90"})
+        header += QString::fromLatin1(column).rightJustified(kNumberWidth);
+    return header;
 }
 
 QJsonObject statsJson(const SampleStats& s)
@@ -201,20 +219,22 @@ int runBench(const QStringList& arguments)
               << QString::number(loadMs, 'f', 1) << " ms\n";
         for (const Phase& r : phases) {
             out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << warmup << " warm-up\n";
-            out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
+            out() << statsHeader() << '\n';
+            out() << statsRow(QStringLiteral("shadow pass (GPU)"), summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QStringLiteral(", %1 draws").arg(r.shadowDraws)) << '\n';
+            out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << '\n';
+            out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
+            out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
+            out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';
             out() << "  " << formatTexelLine(r.last) << '\n';
             printFitWarnings(r.fit, r.name);
-            out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
-            out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';
-            out() << "  lit pass (wall):   " << formatStats(summarize(r.litWall)) << '\n';
-            out() << "  frame (wall):      " << formatStats(summarize(r.wall)) << '\n';
         }
         if (phases.size() > 1) {
             const double reference = summarize(phases.back().wall).median;
-            out() << "\nframe wall time relative to " << phases.back().name << ":\n";
+            out() << "\nmedian frame wall time relative to " << phases.back().name << ":\n";
             for (const Phase& r : phases)
-                out() << "  " << r.name.leftJustified(26) << QString::number(summarize(r.wall).median / reference, 'f', 2) << '\n';
+                out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth)
+                      << '\n';
         }
         if (all || phase == u"moving-camera") {
             auto median = [&](const char* name) {
@@ -224,7 +244,7 @@ int runBench(const QStringList& arguments)
                 }
                 return 0.0;
             };
-            out() << "shadows on / off with the camera moving: "
+            out() << "median frame wall time, shadows on / off with the camera moving: "
                   << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
         }
         out().flush();

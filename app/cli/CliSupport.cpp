@@ -10,10 +10,12 @@
 #include "SettingsKeys.h"
 #include "TraceError.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <unistd.h>
 
@@ -31,12 +33,54 @@ QTextStream& err()
     return stream;
 }
 
+namespace {
+
+// The long option names `parser` knows, read from its help (QCommandLineParser lists them
+// nowhere else).
+QStringList optionNames(const QCommandLineParser& parser)
+{
+    QStringList names;
+    static const QRegularExpression option(QStringLiteral("--([a-z0-9][a-z0-9-]*)"));
+    for (auto it = option.globalMatch(parser.helpText()); it.hasNext();)
+        names << it.next().captured(1);
+    names.removeDuplicates();
+    return names;
+}
+
+} // namespace
+
+QString commandHelp(const QCommandLineParser& parser, const QString& command)
+{
+    // Qt names the binary as it was started (often a full path); the user types the command.
+    QString text = parser.helpText();
+    const qsizetype end = text.indexOf(QLatin1Char('\n'));
+    QString first = text.left(end);
+    const QString program = QCoreApplication::arguments().value(0);
+    if (!program.isEmpty() && first.contains(program))
+        first.replace(first.indexOf(program), program.size(), QStringLiteral("shadowlab ") + command);
+    return first + text.mid(end);
+}
+
 bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments)
 {
-    if (!parser.parse(QStringList{QStringLiteral("shadowlab ") + command} + arguments))
-        throw UsageError(parser.errorText());
-    if (parser.isSet(QStringLiteral("help"))) {
-        out() << parser.helpText();
+    const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")}, QStringLiteral("Print the version and exit."));
+    parser.addOption(version);
+    if (!parser.parse(QStringList{QStringLiteral("shadowlab ") + command} + arguments)) {
+        QString message = parser.errorText();
+        if (const QStringList unknown = parser.unknownOptionNames(); !unknown.isEmpty()) {
+            if (const QString match = closestMatch(unknown.first(), optionNames(parser)); !match.isEmpty())
+                message += QStringLiteral(" Did you mean --%1?").arg(match);
+        }
+        throw UsageError(message + QStringLiteral(" Run `shadowlab %1 --help` for its options.").arg(command));
+    }
+    // --help-all (which Qt adds with --help) would list Qt's own options, none of which a
+    // command takes: the same help.
+    if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("help-all"))) {
+        out() << commandHelp(parser, command) << Qt::flush;
+        return false;
+    }
+    if (parser.isSet(version)) {
+        out() << "shadowlab " << QCoreApplication::applicationVersion() << Qt::endl;
         return false;
     }
     if (!parser.positionalArguments().isEmpty())

@@ -32,10 +32,13 @@ public:
 QTextStream& out();
 QTextStream& err();
 
-// Parses `arguments` (those after the command's name); throws UsageError for unknown options,
-// options given twice (all but --set and --set-b) or stray positional arguments. Returns false
-// when --help was asked for and printed.
+// Parses `arguments` (those after the command's name); throws UsageError for unknown options
+// (suggesting the nearest known one), options given twice (all but --set and --set-b) or stray
+// positional arguments. Adds -v/--version. Returns false when --help or --version was asked
+// for and printed on stdout.
 bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments);
+// The parser's help with its usage line naming `shadowlab <command>`, not the binary's path.
+QString commandHelp(const QCommandLineParser& parser, const QString& command);
 
 // Adds --scene, --set (repeatable) and --settings to `parser`.
 void addSettingsOptions(QCommandLineParser& parser);

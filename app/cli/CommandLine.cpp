@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 #include "Commands.h"
+#include "MessageText.h"
 
 namespace shadowlab::cli {
 
@@ -42,23 +43,41 @@ bool needsWidgets(const QString& name)
     return false;
 }
 
+QStringList commandNames()
+{
+    QStringList names;
+    for (const Command& c : kCommands)
+        names << QString::fromLatin1(c.name);
+    return names;
+}
+
 int runCommand(const QStringList& arguments)
 {
     for (const Command& c : kCommands) {
         if (arguments.value(0) == QLatin1String(c.name))
             return c.run(arguments.mid(1));
     }
-    printUsage();
+    printUsage(err());
     return kExitBadInput;
 }
 
-void printUsage()
+int unknownCommand(const QString& name)
 {
-    err() << "usage: shadowlab [command] [options]\n\n"
-          << "With no command, opens the explorer window.\n\nCommands:\n";
+    err() << "shadowlab: unknown command '" << displayText(name) << "'" << didYouMean(name, commandNames()) << "\n\n";
+    printUsage(err());
+    return kExitBadInput;
+}
+
+void printUsage(QTextStream& stream)
+{
+    stream << "usage: shadowlab [command] [options]\n\n"
+           << "With no command, opens the explorer window.\n\nCommands:\n";
     for (const Command& c : kCommands)
-        err() << "  " << QString::fromLatin1(c.name).leftJustified(12) << c.summary << '\n';
-    err() << "\nRun `shadowlab <command> --help` for a command's options." << Qt::endl;
+        stream << "  " << QString::fromLatin1(c.name).leftJustified(12) << c.summary << '\n';
+    stream << "\nOptions:\n"
+           << "  -h, --help    Print this help (`shadowlab help <command>` or `shadowlab <command> --help` for a command's options).\n"
+           << "  -v, --version Print the version.\n"
+           << "\nRun `shadowlab <command> --help` for a command's options." << Qt::endl;
 }
 
 } // namespace shadowlab::cli

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QStringList>
+#include <QTextStream>
 
 namespace shadowlab::cli {
 
@@ -18,6 +19,11 @@ bool isCommand(const QString& name);
 // True when the subcommand builds widgets and so needs a QApplication, not a QGuiApplication.
 bool needsWidgets(const QString& name);
 int runCommand(const QStringList& arguments);
-void printUsage();
+QStringList commandNames();
+// The binary's usage (commands and their summaries) on `stream`: stdout when asked for,
+// stderr after a mistake.
+void printUsage(QTextStream& stream);
+// Says `name` is no command (suggesting the nearest one) with the usage on stderr; returns 2.
+int unknownCommand(const QString& name);
 
 } // namespace shadowlab::cli

@@ -15,6 +15,17 @@ namespace {
 // The image, its depth buffer and the read-back take about 16 bytes per pixel: 1 GiB at most.
 const SizeLimits kRenderSize{{1, 1}, {8192, 8192}, QStringLiteral("render keeps about 16 bytes per pixel in memory")};
 
+// Without --out the scene goes to shadowlab-<scene>.png in the current folder; a file of that
+// name is never overwritten: the next free shadowlab-<scene>-2.png, -3, ... is taken instead.
+QString defaultScenePath(const QString& scene)
+{
+    const QString base = QStringLiteral("shadowlab-") + QFileInfo(scene).completeBaseName();
+    QString name = base + QStringLiteral(".png");
+    for (int n = 2; QFileInfo::exists(name); ++n)
+        name = QStringLiteral("%1-%2.png").arg(base).arg(n);
+    return name;
+}
+
 void report(const QString& path, QSize size)
 {
     out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << size.width() << "x" << size.height() << ")" << Qt::endl;
@@ -31,23 +42,25 @@ int runRender(const QStringList& arguments)
         addSettingsOptions(parser);
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 1280x720)."), QStringLiteral("WxH"),
                           QStringLiteral("1280x720")});
-        parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the lit scene."), QStringLiteral("file.png")});
+        parser.addOption({QStringLiteral("out"),
+                          QStringLiteral("PNG of the lit scene (default: shadowlab-<scene>.png in the current folder, numbered -2, -3, ... "
+                                         "rather than overwriting; with only --depth-out, no scene image)."),
+                          QStringLiteral("file.png")});
         parser.addOption({QStringLiteral("depth-out"), QStringLiteral("PNG of the light's shadow map."), QStringLiteral("file.png")});
         if (!parseArguments(parser, QStringLiteral("render"), arguments))
             return kExitOk;
-        if (!parser.isSet(QStringLiteral("out")) && !parser.isSet(QStringLiteral("depth-out")))
-            throw UsageError(QStringLiteral("say where to write: --out scene.png and/or --depth-out depth.png"));
-
-        // Every output is checked before any work, so one that cannot be written leaves the others alone.
-        const QString scenePath = parser.value(QStringLiteral("out"));
-        const QString depthPath = parser.value(QStringLiteral("depth-out"));
-        if (parser.isSet(QStringLiteral("out")))
-            checkOutputFile(scenePath, QStringLiteral("--out"));
-        if (parser.isSet(QStringLiteral("depth-out")))
-            checkOutputFile(depthPath, QStringLiteral("--depth-out"));
         const Settings settings = settingsFromOptions(parser);
+        const bool writeScene = parser.isSet(QStringLiteral("out")) || !parser.isSet(QStringLiteral("depth-out"));
+        const bool writeDepth = parser.isSet(QStringLiteral("depth-out"));
+        // Every output is checked before any work, so one that cannot be written leaves the others alone.
+        const QString scenePath = parser.isSet(QStringLiteral("out")) ? parser.value(QStringLiteral("out")) : defaultScenePath(settings.scene);
+        const QString depthPath = parser.value(QStringLiteral("depth-out"));
+        if (writeScene)
+            checkOutputFile(scenePath, QStringLiteral("--out"));
+        if (writeDepth)
+            checkOutputFile(depthPath, QStringLiteral("--depth-out"));
         const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kRenderSize);
-        if (parser.isSet(QStringLiteral("depth-out")) && !settings.shadow.enabled)
+        if (writeDepth && !settings.shadow.enabled)
             throw UsageError(QStringLiteral("--depth-out needs shadows; drop --set shadow.enabled=false"));
 
         HeadlessRenderer headless;
@@ -58,18 +71,18 @@ int runRender(const QStringList& arguments)
             out() << "headless platform: " << backend << ", " << headless.renderer().rendererString() << Qt::endl;
         QByteArray scenePng, depthPng;
         QSize depthSize;
-        if (parser.isSet(QStringLiteral("out")))
+        if (writeScene)
             scenePng = encodePng(scene);
-        if (parser.isSet(QStringLiteral("depth-out"))) {
+        if (writeDepth) {
             const int side = std::min(settings.map.size, 2048);
             depthSize = QSize(side, side);
             depthPng = encodePng(headless.renderDepthMap(depthSize));
         }
-        if (parser.isSet(QStringLiteral("out"))) {
+        if (writeScene) {
             writeOutputFile(scenePath, scenePng);
             report(scenePath, scene.size());
         }
-        if (parser.isSet(QStringLiteral("depth-out"))) {
+        if (writeDepth) {
             writeOutputFile(depthPath, depthPng);
             report(depthPath, depthSize);
         }

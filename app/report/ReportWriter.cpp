@@ -2,6 +2,7 @@
 
 #include "MessageText.h"
 #include "OutputFile.h"
+#include "SettingsKeys.h"
 
 #include <embree3/rtcore_config.h>
 
@@ -45,9 +46,12 @@ QJsonObject statsJson(const SampleStats& s)
 
 QJsonObject metricsJson(const ErrorMetrics& m)
 {
-    return {{QStringLiteral("pixels"), m.pixels},         {QStringLiteral("misclassified"), m.misclassified},
-            {QStringLiteral("false_shadow"), m.falseShadow}, {QStringLiteral("false_light"), m.falseLight},
-            {QStringLiteral("mae"), m.mae},                 {QStringLiteral("rmse"), m.rmse}};
+    return {{QStringLiteral("pixels"), m.pixels},
+            {QStringLiteral("misclassified_pct"), 100 * m.misclassified},
+            {QStringLiteral("false_shadow_pct"), 100 * m.falseShadow},
+            {QStringLiteral("false_light_pct"), 100 * m.falseLight},
+            {QStringLiteral("mae_pct"), 100 * m.mae},
+            {QStringLiteral("rmse_pct"), 100 * m.rmse}};
 }
 
 QString html(QString text)
@@ -64,72 +68,256 @@ QString pngDataUri(const QImage& image)
     return QStringLiteral("data:image/png;base64,") + QString::fromLatin1(bytes.toBase64());
 }
 
-// An inline SVG scatter plot of `value(row)` against frame time, Pareto front joined.
-QString chart(const std::vector<ReportRow>& rows, const QString& yTitle, const std::function<double(const ReportRow&)>& value)
+constexpr double kCharWidth = 6.4;     // of the 11 px label font, generous, for placing labels
+constexpr double kLabelHeight = 13.0;
+
+// Colours of the lights' fronts and points, in the order the lights first appear.
+const char* const kLightColours[] = {"#e8710a", "#1a73e8", "#188038", "#a142f4", "#d93025", "#12a4af", "#9e6a03", "#5f6368"};
+
+struct Box {
+    double x0, y0, x1, y1;
+    bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// Ticks for a log axis from `lo` to `hi` (powers of ten): 1, 2 and 5 of each decade when
+// there are few decades, the decades alone otherwise.
+std::vector<double> logTicks(double lo, double hi)
 {
-    const double w = 760, h = 420, left = 70, right = 20, top = 20, bottom = 50;
-    double xMax = 0.0, yMax = 0.0;
-    for (const ReportRow& r : rows) {
-        xMax = std::max(xMax, r.frame.median);
-        yMax = std::max(yMax, value(r));
+    std::vector<double> ticks;
+    const int decades = int(std::lround(std::log10(hi / lo)));
+    for (double d = lo; d <= hi * 1.0001; d *= 10.0) {
+        for (double m : {1.0, 2.0, 5.0}) {
+            if ((m == 1.0 || decades <= 3) && d * m <= hi * 1.0001)
+                ticks.push_back(d * m);
+        }
     }
-    xMax = xMax > 0.0 ? xMax * 1.08 : 1.0;
-    yMax = yMax > 0.0 ? yMax * 1.12 : 1.0;
-    // Enough decimals that five ticks up to yMax read as five different numbers.
-    const int yDecimals = std::clamp(2 - int(std::floor(std::log10(yMax / 5.0))), 0, 8);
+    return ticks;
+}
+
+QString percentText(double v)
+{
+    // Enough digits for the value's size, never an exponent: 0.001 %, 0.02 %, 1.5 %, 40 %.
+    const int decimals = v <= 0.0 ? 0 : std::clamp(1 - int(std::floor(std::log10(v))), 0, 4);
+    QString text = QString::number(v, 'f', decimals);
+    if (text.contains(QLatin1Char('.'))) {
+        while (text.endsWith(QLatin1Char('0')))
+            text.chop(1);
+        if (text.endsWith(QLatin1Char('.')))
+            text.chop(1);
+    }
+    return text;
+}
+
+// An inline SVG scatter plot of `value(row)` (in percent, on a log axis) against frame time,
+// each light's Pareto front (on time and misclassified share) marked and, when `joinFront`,
+// joined in its colour; labels placed where they hide nothing.
+QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle,
+              const std::function<double(const ReportRow&)>& value, bool joinFront)
+{
+    const double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
+    double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
+    for (const ReportRow& r : rows) {
+        xMax = std::max(xMax, r.frame.p90);
+        const double v = value(r);
+        if (v > 0.0) {
+            yLow = yLow > 0.0 ? std::min(yLow, v) : v;
+            yHigh = std::max(yHigh, v);
+        }
+    }
+    // Round ticks: a step of 1, 2 or 5 times a power of ten, about five of them.
+    const double rough = (xMax > 0.0 ? xMax * 1.05 : 1.0) / 5.0;
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
+    const int xTicks = int(std::ceil(xMax * 1.05 / xStep));
+    xMax = xStep * xTicks;
+    const int xDecimals = std::max(0, -int(std::floor(std::log10(xStep))));
+    // Whole decades around the values: one outlier at 40 % leaves 0.01 % readable.
+    const double yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
+    double yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
+    if (yMax <= yMin)
+        yMax = yMin * 10.0;
+    // 0 % has no place on a log axis: it gets a line of its own below the lowest decade.
+    const bool anyZero = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return value(r) <= 0.0; });
+    const double zeroBand = anyZero ? 22.0 : 0.0;
     auto px = [&](double x) { return left + x / xMax * (w - left - right); };
-    auto py = [&](double y) { return h - bottom - y / yMax * (h - top - bottom); };
+    auto py = [&](double y) {
+        if (y <= 0.0)
+            return h - bottom;
+        const double t = std::log10(std::max(y, yMin) / yMin) / std::log10(yMax / yMin);
+        return h - bottom - zeroBand - t * (h - top - bottom - zeroBand);
+    };
 
     QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(w).arg(h);
-    for (int i = 0; i <= 5; ++i) {
-        const double x = xMax * i / 5.0, y = yMax * i / 5.0;
+    for (int i = 0; i <= xTicks; ++i) {
+        const double x = xStep * i;
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(px(x)).arg(top).arg(h - bottom);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, 1));
-        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(py(y)).arg(w - right);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3</text>").arg(left - 6).arg(py(y) + 4).arg(number(y, yDecimals));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, xDecimals));
     }
-    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms, median)</text>")
+    if (anyZero) {
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(py(0.0)).arg(w - right);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 %</text>").arg(left - 6).arg(py(0.0) + 4);
+    }
+    for (double y : logTicks(yMin, yMax)) {
+        const bool decade = std::abs(std::log10(y) - std::round(std::log10(y))) < 1e-9;
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"%4\"/>")
+                   .arg(left)
+                   .arg(py(y))
+                   .arg(w - right)
+                   .arg(decade ? QStringLiteral("grid") : QStringLiteral("grid minor"));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(py(y) + 4).arg(percentText(y));
+    }
+    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms; median, bar p10–p90)</text>")
                .arg((left + w - right) / 2)
                .arg(h - 10);
-    svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2</text>")
+    svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2 (log scale)</text>")
                .arg((top + h - bottom) / 2)
                .arg(html(yTitle));
 
-    std::vector<const ReportRow*> front;
-    for (const ReportRow& r : rows) {
-        if (r.paretoFront)
-            front.push_back(&r);
+    auto colour = [&](const ReportRow& r) { return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]); };
+    // Each light's front, from fast to slow.
+    for (const QString& light : lights) {
+        std::vector<const ReportRow*> front;
+        for (const ReportRow& r : rows) {
+            if (r.paretoFront && r.light == light)
+                front.push_back(&r);
+        }
+        std::sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+        if (!joinFront || front.size() < 2)
+            continue;
+        QString points;
+        for (const ReportRow* r : front)
+            points += QStringLiteral("%1,%2 ").arg(px(r->frame.median)).arg(py(value(*r)));
+        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), colour(*front.front()));
     }
-    std::sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
-    QString points;
-    for (const ReportRow* r : front)
-        points += QStringLiteral("%1,%2 ").arg(px(r->frame.median)).arg(py(value(*r)));
-    svg += QStringLiteral("<polyline points=\"%1\" class=\"front\"/>").arg(points);
+    std::vector<Box> taken;
     for (const ReportRow& r : rows) {
-        svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" class=\"%4\"><title>%5: %6 ms, %7</title></circle>")
+        const double x = px(r.frame.median), y = py(value(r));
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
+                   .arg(px(r.frame.p10))
+                   .arg(y)
+                   .arg(px(r.frame.p90))
+                   .arg(colour(r));
+        taken.push_back({x - 6, y - 6, x + 6, y + 6});  // labels keep off the points too
+    }
+    for (const ReportRow& r : rows) {
+        svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7 ms (p10 %8, p90 %9), %10 %</title></circle>")
                    .arg(px(r.frame.median))
                    .arg(py(value(r)))
                    .arg(r.paretoFront ? 6 : 4)
-                   .arg(r.paretoFront ? QStringLiteral("pt onfront") : QStringLiteral("pt"))
-                   .arg(html(r.label))
-                   .arg(number(r.frame.median, 2))
-                   .arg(number(value(r), 4));
-        if (r.paretoFront || r.label == u"defaults")
-            svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"label\">%3</text>").arg(px(r.frame.median) + 8).arg(py(value(r)) - 6).arg(html(r.label));
+                   .arg(colour(r), r.paretoFront ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(value(r)));
+    }
+    // Labels for the front and the two reference configurations, first fit wins: right, left,
+    // above, below the point; a label that fits nowhere is left out (the point's tooltip and
+    // the table still name it).
+    std::vector<const ReportRow*> labelled;
+    for (const ReportRow& r : rows) {
+        if (r.defaults || r.tutorial)
+            labelled.push_back(&r);
+    }
+    for (const ReportRow& r : rows) {
+        if (r.paretoFront && !r.defaults && !r.tutorial)
+            labelled.push_back(&r);
+    }
+    for (const ReportRow* r : labelled) {
+        const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
+        const double tw = kCharWidth * text.size(), x = px(r->frame.median), y = py(value(*r));
+        // Beside the point first, then further up or down with a leader line.
+        std::vector<Box> candidates;
+        for (int away = 0; away < 5; ++away) {
+            const double dy = 4 + away * (kLabelHeight + 2);
+            for (double side : {1.0, -1.0}) {
+                const double x0 = side > 0 ? x + 8 : x - 8 - tw;
+                candidates.push_back({x0, y - dy - kLabelHeight, x0 + tw, y - dy});
+                candidates.push_back({x0, y + dy, x0 + tw, y + dy + kLabelHeight});
+            }
+        }
+        for (const Box& b : candidates) {
+            const bool inside = b.x0 >= left + 2 && b.x1 <= w - right && b.y0 >= top && b.y1 <= h - bottom;
+            if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); }))
+                continue;
+            if (b.y1 < y - 4 - kLabelHeight || b.y0 > y + 4 + kLabelHeight) {
+                const double ly = b.y1 < y ? b.y1 : b.y0;
+                svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%4\" class=\"leader\"/>")
+                           .arg(x)
+                           .arg(y)
+                           .arg(b.x0 > x ? b.x0 : b.x1)
+                           .arg(ly);
+            }
+            taken.push_back(b);
+            svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"label\">%3</text>").arg(b.x0).arg(b.y1 - 3).arg(html(text));
+            break;
+        }
     }
     return svg + QStringLiteral("</svg>");
 }
 
+// A figure with the whole error image and the part where its errors are densest, enlarged.
+QString errorFigure(const QString& title, const ReportRow& row)
+{
+    QString figure = QStringLiteral("<figure><img alt=\"%1\" src=\"%2\"><figcaption>%3: %1 — %4 % misclassified (%5 % false shadow, %6 % false light)</figcaption></figure>")
+                         .arg(html(row.label), pngDataUri(row.accuracy.hardErrors), html(title), percentText(100 * row.accuracy.hard.misclassified),
+                              percentText(100 * row.accuracy.hard.falseShadow), percentText(100 * row.accuracy.hard.falseLight));
+    const QImage zoom = zoomOnErrors(row.accuracy.hardErrors);
+    figure += zoom.isNull() ? QStringLiteral("<figure><figcaption>%1: no misclassified pixels to zoom on</figcaption></figure>").arg(html(title))
+                            : QStringLiteral("<figure><img class=\"zoom\" alt=\"%1, zoomed\" src=\"%2\"><figcaption>%3, where its errors are densest, 4× enlarged</figcaption></figure>")
+                                  .arg(html(row.label), pngDataUri(zoom), html(title));
+    return figure;
+}
+
 } // namespace
+
+QString lightDescription(const Settings& settings)
+{
+    auto vec = [&](const QString& key) { return QStringLiteral("(%1)").arg(settingValue(settings, key).replace(QLatin1Char(','), QStringLiteral(", "))); };
+    return QStringLiteral("%1 light at %2 towards %3")
+        .arg(toString(settings.light.projection), vec(QStringLiteral("light.position")), vec(QStringLiteral("light.target")));
+}
+
+QImage zoomOnErrors(const QImage& errors, int factor)
+{
+    if (errors.isNull() || factor < 1)
+        return {};
+    const QImage image = errors.convertToFormat(QImage::Format_RGB32);
+    const int w = image.width(), h = image.height();
+    // Summed-area table of misclassified pixels (coloured; everything else is grey).
+    std::vector<int> sum(std::size_t(w + 1) * std::size_t(h + 1), 0);
+    auto at = [&](int x, int y) -> int& { return sum[std::size_t(y) * std::size_t(w + 1) + std::size_t(x)]; };
+    for (int y = 0; y < h; ++y) {
+        const auto* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+        for (int x = 0; x < w; ++x) {
+            const bool error = qRed(line[x]) != qGreen(line[x]) || qGreen(line[x]) != qBlue(line[x]);
+            at(x + 1, y + 1) = at(x, y + 1) + at(x + 1, y) - at(x, y) + (error ? 1 : 0);
+        }
+    }
+    if (at(w, h) == 0)
+        return {};
+    const int cw = std::max(1, w / factor), ch = std::max(1, h / factor);
+    const int step = std::max(1, std::min(cw, ch) / 8);
+    int bestX = 0, bestY = 0, best = -1;
+    for (int y = 0; y + ch <= h; y += step) {
+        for (int x = 0; x + cw <= w; x += step) {
+            const int count = at(x + cw, y + ch) - at(x, y + ch) - at(x + cw, y) + at(x, y);
+            if (count > best) {
+                best = count;
+                bestX = x;
+                bestY = y;
+            }
+        }
+    }
+    return image.copy(bestX, bestY, cw, ch).scaled(cw * factor, ch * factor, Qt::IgnoreAspectRatio, Qt::FastTransformation);
+}
 
 void markParetoFront(std::vector<ReportRow>& rows)
 {
+    auto beats = [](const ReportRow& b, const ReportRow& a) {
+        const double eb = b.accuracy.hard.misclassified, ea = a.accuracy.hard.misclassified;
+        const bool clearlyFaster = b.frame.p90 < a.frame.p10;
+        const bool clearlySlower = b.frame.p10 > a.frame.p90;
+        return (eb <= ea && clearlyFaster) || (eb < ea && !clearlySlower);
+    };
     for (ReportRow& a : rows) {
-        a.paretoFront = std::none_of(rows.begin(), rows.end(), [&](const ReportRow& b) {
-            const bool noWorse = b.frame.median <= a.frame.median && b.accuracy.hard.misclassified <= a.accuracy.hard.misclassified;
-            const bool better = b.frame.median < a.frame.median || b.accuracy.hard.misclassified < a.accuracy.hard.misclassified;
-            return &a != &b && noWorse && better;
-        });
+        a.paretoFront = std::none_of(rows.begin(), rows.end(), [&](const ReportRow& b) { return &a != &b && b.light == a.light && beats(b, a); });
     }
 }
 
@@ -164,21 +352,24 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
         throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot create the report folder '%1'").arg(displayText(directory)));
     const QDir dir(directory);
 
-    QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10,shadow_p90,lit_ms,lit_p10,lit_p90,frame_ms,frame_p10,frame_p90,"
-                                 "misclassified,false_shadow,false_light,mae,rmse,area_mae,area_rmse,pareto\n");
+    // Times in ms, errors in percent of the measured pixels (MAE and RMSE in percent of full
+    // visibility), as the page shows them; every column says its unit.
+    QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
+                                 "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light\n");
     QJsonArray jsonRows;
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
-        csv += QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median), number(r.shadowPass.p10),
-                           number(r.shadowPass.p90), number(r.litPass.median), number(r.litPass.p10), number(r.litPass.p90), number(r.frame.median),
-                           number(r.frame.p10), number(r.frame.p90), number(h.misclassified, 6), number(h.falseShadow, 6), number(h.falseLight, 6),
-                           number(h.mae, 6), number(h.rmse, 6), number(a.mae, 6), number(a.rmse, 6),
-                           r.paretoFront ? QStringLiteral("1") : QStringLiteral("0")}
+        csv += QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median),
+                           number(r.shadowPass.p10), number(r.shadowPass.p90), number(r.litPass.median), number(r.litPass.p10), number(r.litPass.p90),
+                           number(r.frame.median), number(r.frame.p10), number(r.frame.p90), number(100 * h.misclassified, 4),
+                           number(100 * h.falseShadow, 4), number(100 * h.falseLight, 4), number(100 * h.mae, 4), number(100 * h.rmse, 4),
+                           number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
                                     {QStringLiteral("settings"), QJsonArray::fromStringList(r.assignments)},
+                                    {QStringLiteral("light"), r.light},
                                     {QStringLiteral("shadow_pass_wall"), statsJson(r.shadowPass)},
                                     {QStringLiteral("lit_pass_wall"), statsJson(r.litPass)},
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
@@ -196,13 +387,19 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            {QStringLiteral("machine"), facts.machine},
                            {QStringLiteral("area_samples_per_pixel"), facts.areaSamplesPerPixel},
                            {QStringLiteral("light_radius"), facts.lightRadius},
-                           {QStringLiteral("area_noise_floor"), facts.areaNoiseFloor},
+                           {QStringLiteral("area_noise_floor_pct"), 100 * facts.areaNoiseFloor},
                            {QStringLiteral("rays_per_second"), facts.raysPerSecond},
                            {QStringLiteral("reference_computations"), facts.referenceComputations},
                            {QStringLiteral("seconds"), facts.seconds},
                            {QStringLiteral("rows"), jsonRows}};
     writeFile(dir.filePath(QStringLiteral("report.json")), QJsonDocument(json).toJson(QJsonDocument::Indented));
 
+    // The lights in order of appearance: each has its own front and colour.
+    QStringList lights;
+    for (const ReportRow& r : rows) {
+        if (!lights.contains(r.light))
+            lights << r.light;
+    }
     const ReportRow* best = nullptr;
     const ReportRow* worst = nullptr;
     for (const ReportRow& r : rows) {
@@ -218,17 +415,18 @@ body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:
 h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
 .grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
-.pt{fill:#6b7a90;opacity:.8}.onfront{fill:#e8710a;opacity:1}.front{fill:none;stroke:#e8710a;stroke-width:2}
-.label{font-size:11px;fill:#333}
+.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.grid.minor{stroke:#f4f4f4}
+.label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
 td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
-.images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}
+.images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}.images img.zoom{image-rendering:pixelated}
+.lights span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle;border-radius:6px}
 .key span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle}
 </style></head><body>
 <h1>Shadow error against run time: %1</h1>
 <p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
 Renderer: %6<br>Machine: %7<br>
-Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10);
+Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10 %);
 %11 Mrays/s; traced %12 time(s) for %13 configurations. Whole run: %14 s.</p>
 )")
                        .arg(html(facts.scene))
@@ -239,39 +437,60 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
                        .arg(html(facts.renderer), html(facts.machine))
                        .arg(facts.areaSamplesPerPixel)
                        .arg(facts.lightRadius)
-                       .arg(number(facts.areaNoiseFloor, 4))
+                       .arg(percentText(100 * facts.areaNoiseFloor))
                        .arg(number(facts.raysPerSecond * 1e-6, 2))
                        .arg(facts.referenceComputations)
                        .arg(rows.size())
                        .arg(number(facts.seconds, 1));
+    if (lights.size() > 1) {
+        page += QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable):");
+        for (qsizetype i = 0; i < lights.size(); ++i)
+            page += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
+        page += QStringLiteral("</p>");
+    }
     page += QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
-    page += chart(rows, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"),
-                  [](const ReportRow& r) { return 100.0 * r.accuracy.hard.misclassified; });
+    page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"),
+                  [](const ReportRow& r) { return 100.0 * r.accuracy.hard.misclassified; }, true);
     page += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
-    page += chart(rows, QStringLiteral("MAE of visibility"), [](const ReportRow& r) { return r.accuracy.area.mae; });
-    page += QStringLiteral("<p>Orange: the Pareto front on time and misclassified share: no other configuration is both faster and more accurate.</p>");
+    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), [](const ReportRow& r) { return 100.0 * r.accuracy.area.mae; }, false);
+    page += QStringLiteral("<p>Large dots joined by a line: the Pareto front of each light on time and misclassified share. A configuration "
+                           "leaves the front only when another is at least as accurate and faster beyond both p10–p90 spreads (the bars), "
+                           "or more accurate and not slower beyond them, so timing noise does not move it. Identical configurations "
+                           "are measured once, their names joined with “=”.</p>");
 
-    page += QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th><th>shadow pass ms</th><th>lit pass ms</th><th>frame ms (p10–p90)</th>"
-                           "<th>misclassified %</th><th>false shadow %</th><th>false light %</th><th>MAE</th><th>RMSE</th><th>area MAE</th><th>area RMSE</th></tr>");
+    page += QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1<th>shadow pass ms</th><th>lit pass ms</th><th>frame ms (p10–p90)</th>"
+                           "<th>misclassified %</th><th>false shadow %</th><th>false light %</th><th>MAE %</th><th>RMSE %</th><th>area MAE %</th><th>area RMSE %</th></tr>")
+                .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString());
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
-        page += QStringLiteral("<tr%1><td title=\"%2\">%3</td><td>%4</td><td>%5</td><td>%6 (%7–%8)</td><td>%9</td><td>%10</td><td>%11</td><td>%12</td><td>%13</td><td>%14</td><td>%15</td></tr>")
+        page += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6</td><td>%7 (%8–%9)</td>")
                     .arg(r.paretoFront ? QStringLiteral(" class=\"front\"") : QString())
-                    .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label))
+                    .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label),
+                         lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(r.light) + 1) : QString())
                     .arg(number(r.shadowPass.median, 2), number(r.litPass.median, 2), number(r.frame.median, 2), number(r.frame.p10, 2),
-                         number(r.frame.p90, 2), number(100 * h.misclassified, 3), number(100 * h.falseShadow, 3))
-                    .arg(number(100 * h.falseLight, 3), number(h.mae, 4), number(h.rmse, 4), number(r.accuracy.area.mae, 4),
-                         number(r.accuracy.area.rmse, 4));
+                         number(r.frame.p90, 2));
+        page += QStringLiteral("<td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td><td>%7</td></tr>")
+                    .arg(number(100 * h.misclassified, 3), number(100 * h.falseShadow, 3), number(100 * h.falseLight, 3), number(100 * h.mae, 3),
+                         number(100 * h.rmse, 3), number(100 * r.accuracy.area.mae, 3), number(100 * r.accuracy.area.rmse, 3));
     }
     page += QStringLiteral("</table>");
     if (best && worst) {
         page += QStringLiteral("<h2>Error images</h2><p class=\"key\">Against the hard reference:<span style=\"background:#eb28c8\"></span>false shadow (acne)"
-                               "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks)</p><div class=\"images\">");
-        for (const auto& [title, row] : {std::pair(QStringLiteral("Best"), best), std::pair(QStringLiteral("Worst"), worst)}) {
-            page += QStringLiteral("<figure><img alt=\"%1\" src=\"%2\"><figcaption>%3: %1 (%4% misclassified)</figcaption></figure>")
-                        .arg(html(row->label), pngDataUri(row->accuracy.hardErrors), title, number(100 * row->accuracy.hard.misclassified, 3));
+                               "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks). Beside each, the part of the frame "
+                               "where its errors are densest, enlarged.</p>");
+        std::vector<std::pair<QString, const ReportRow*>> shown;
+        for (const ReportRow& r : rows) {
+            if (r.defaults)
+                shown.emplace_back(QStringLiteral("Defaults"), &r);
         }
-        page += QStringLiteral("</div>");
+        for (const ReportRow& r : rows) {
+            if (r.tutorial)
+                shown.emplace_back(QStringLiteral("Tutorial configuration"), &r);
+        }
+        shown.emplace_back(QStringLiteral("Most accurate"), best);
+        shown.emplace_back(QStringLiteral("Least accurate"), worst);
+        for (const auto& [title, row] : shown)
+            page += QStringLiteral("<div class=\"images\">") + errorFigure(title, *row) + QStringLiteral("</div>");
     }
     page += QStringLiteral("</body></html>\n");
     writeFile(dir.filePath(QStringLiteral("report.html")), page.toUtf8());

@@ -15,7 +15,9 @@
 #include "SettingsKeys.h"
 #include "SettingsSummary.h"
 #include "ViewPane.h"
+#include "WheelGuard.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -26,6 +28,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -35,9 +38,12 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QUndoGroup>
+#include <QUndoStack>
 
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -127,6 +133,15 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     m_scenePanes[1]->setVisible(false);
     setCentralWidget(m_mainSplitter);
 
+    // One undo history per side; the selected side's is the one Edit > Undo works on.
+    m_undoGroup = new QUndoGroup(this);
+    for (std::size_t i = 0; i < 2; ++i) {
+        m_undoStacks[i] = new QUndoStack(m_undoGroup);
+        m_undoStacks[i]->setObjectName(QStringLiteral("undoStack%1").arg(QLatin1String(kSideNames[i])));
+    }
+    m_undoGroup->setActiveStack(m_undoStacks[0]);
+    qApp->installEventFilter(this);    // counts presses, so one drag is one undo step
+
     m_dock = new PropertiesDock(this);
     addDockWidget(Qt::RightDockWidgetArea, m_dock);
     connect(m_dock, &PropertiesDock::settingsEdited, this, &MainWindow::applyEdit);
@@ -146,15 +161,20 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
             [this](const QImage& image) { m_views[index(m_selected)]->setErrorOverlay(image); });
     connect(m_accuracyDock, &AccuracyDock::applySettingsRequested, this, [this](const Settings& settings) {
         try {
-            setSettings(m_selected, settings);
+            setSettings(m_selected, settings, tr("Apply measured configuration"));
         } catch (const SettingsError& e) {
             statusBar()->showMessage(tr("Cannot apply that configuration: %1").arg(QString::fromUtf8(e.what())), 8000);
         }
     });
-    connect(m_depthView, &DepthMapView::texelHovered, this, [this](const QString& text) { m_texelLabel->setText(text); });
+    connect(m_depthView, &DepthMapView::texelHovered, this,
+            [this](const QString& text) { m_texelLabel->setText(text.isEmpty() ? text : tr("under pointer: %1").arg(text)); });
 
     m_animationTimer.setInterval(kAnimationIntervalMs);
     connect(&m_animationTimer, &QTimer::timeout, this, &MainWindow::animateLight);
+
+    // Over the docks the wheel scrolls; a field takes it once clicked.
+    WheelGuard::guardFields(m_dock);
+    WheelGuard::guardFields(m_accuracyDock);
 
     createActions();
     createToolBar();
@@ -163,7 +183,6 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     resize(1200, 750);
     m_mainSplitter->setSizes({520, 330});
 
-    m_screenshotFolder = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
     if (m_persistence == Persistence::Restore)
         restoreState();
     pushSettings();
@@ -237,10 +256,23 @@ void MainWindow::createMenus()
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_undoAction = m_undoGroup->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setShortcut(QKeySequence::Undo);
+    undo->setToolTip(tr("Take back the last settings change of this side (Ctrl+Z)"));
+    edit->addAction(undo);
+    QAction* redo = m_redoAction = m_undoGroup->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    redo->setToolTip(tr("Make the change taken back again (Ctrl+Shift+Z)"));
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(m_copyAction);
+    edit->addAction(m_swapAction);
+
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_compareAction);
-    view->addAction(m_copyAction);
-    view->addAction(m_swapAction);
     view->addSeparator();
     view->addAction(m_volumeAction);
     view->addAction(m_animateAction);
@@ -286,17 +318,18 @@ void MainWindow::createStatusBar()
     m_texelLabel->setObjectName(QStringLiteral("texelLabel"));
     m_timingLabel = new QLabel;
     m_timingLabel->setObjectName(QStringLiteral("timingLabel"));
-    m_timingLabel->setToolTip(tr("GPU time of the shadow and lit passes (newest finished measurement) and the CPU time of the whole frame"));
+    m_timingLabel->setToolTip(tr("Wall time of the shadow and lit passes and of the whole frame; the shadow pass only runs when the light, "
+                                 "the casters or the map change, and says \"cached\" when the last map was used again"));
     m_mapLabel = new QLabel;
     m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
-    m_mapLabel->setToolTip(tr("Shadow-map size, and how much world one texel covers: the size of the blocks in a hard shadow"));
-    m_passLabel = new QLabel;
-    m_passLabel->setObjectName(QStringLiteral("passLabel"));
-    m_passLabel->setToolTip(tr("The shadow pass only runs when the light, the casters or the map change"));
+    m_mapLabel->setToolTip(tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow"));
+    m_texelLabel->setToolTip(tr("The shadow-map texel under the pointer in the depth-map view: its position, depth and distance from the light"));
+    // Apart enough to read as three facts, not one run-on line.
+    for (QLabel* label : {m_texelLabel, m_timingLabel, m_mapLabel})
+        label->setContentsMargins(12, 0, 0, 0);
     statusBar()->addPermanentWidget(m_texelLabel);
     statusBar()->addPermanentWidget(m_timingLabel);
     statusBar()->addPermanentWidget(m_mapLabel);
-    statusBar()->addPermanentWidget(m_passLabel);
 }
 
 QAction* MainWindow::action(const QString& objectName) const
@@ -316,7 +349,7 @@ QString MainWindow::openScene(const QString& path)
         candidate.camera = loaded.camera;
         candidate.bias = loaded.bias;
         candidate.reference = loaded.reference;
-        setSettings(m_selected, candidate);
+        setSettings(m_selected, candidate, tr("Open %1").arg(QFileInfo(path).fileName()));
     } catch (const SettingsError& e) {
         return QString::fromUtf8(e.what());
     }
@@ -378,20 +411,119 @@ void MainWindow::dropEvent(QDropEvent* event)
     openSceneReporting(urls.first().toLocalFile());
 }
 
-void MainWindow::setSettings(Side side, const Settings& settings)
+void MainWindow::setSettings(Side side, const Settings& settings, const QString& undoText)
 {
     ensureValid(settings);
+    SettingsChange::Sides before;
+    before[index(side)] = m_settings[index(side)];
     m_settings[index(side)] = settings;
     m_settings[1 - index(side)].camera = settings.camera;
     pushSettings();
     m_dock->setSettings(m_settings[index(m_selected)]);
+    recordChange(before, side, undoText);
 }
 
 void MainWindow::applyEdit(const Settings& settings)
 {
+    SettingsChange::Sides before;
+    before[index(m_selected)] = m_settings[index(m_selected)];
     m_settings[index(m_selected)] = settings;
     m_settings[1 - index(m_selected)].camera = settings.camera;
     pushSettings();
+    recordChange(before, m_selected, {}, true);
+}
+
+namespace {
+
+// The keys whose values differ between `a` and `b`, the camera's left out: it is the view's.
+QStringList changedKeys(const Settings& a, const Settings& b)
+{
+    QStringList keys;
+    for (const SettingKey& key : settingKeys()) {
+        if (!key.key.startsWith(u"camera.") && settingValue(a, key.key) != settingValue(b, key.key))
+            keys << key.key;
+    }
+    return keys;
+}
+
+} // namespace
+
+void MainWindow::recordChange(const SettingsChange::Sides& before, Side side, QString text, bool mayMerge)
+{
+    SettingsChange::Sides after;
+    QStringList keys;
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (!before[i])
+            continue;
+        after[i] = m_settings[i];
+        for (const QString& key : changedKeys(*before[i], m_settings[i])) {
+            if (!keys.contains(key))
+                keys << key;
+        }
+    }
+    if (keys.isEmpty())
+        return;     // the camera alone, or nothing at all
+    int mergeKey = -1;
+    if (keys.size() == 1) {
+        if (text.isEmpty())
+            text = tr("Set %1").arg(keys.first());
+        if (mayMerge) {
+            const std::vector<SettingKey>& table = settingKeys();
+            mergeKey = int(std::find_if(table.begin(), table.end(), [&](const SettingKey& k) { return k.key == keys.first(); }) - table.begin());
+        }
+    } else if (text.isEmpty()) {
+        text = tr("Change %1 settings").arg(keys.size());
+    }
+    m_undoStacks[index(side)]->push(new SettingsChange(text, before, after, mergeKey, m_gesture,
+                                                      [this](const SettingsChange::Sides& target, const SettingsChange::Sides& from) {
+                                                          showUndoState(target, from);
+                                                      }));
+}
+
+void MainWindow::showUndoState(const SettingsChange::Sides& target, const SettingsChange::Sides& from)
+{
+    std::array<Settings, 2> next = m_settings;
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (!target[i])
+            continue;
+        Settings s = *target[i];
+        s.camera = m_settings[i].camera;    // the view stays where the user looks from
+        // A light the animation moved since keeps its place unless this step moved it.
+        if (from[i] && from[i]->light.position == s.light.position)
+            s.light.position = m_settings[i].light.position;
+        try {
+            ensureValid(s);
+        } catch (const SettingsError&) {
+            s.light.position = target[i]->light.position;   // the animated position does not fit the restored volume
+        }
+        next[i] = s;
+    }
+    m_settings = next;
+    pushSettings();
+    m_dock->setSettings(m_settings[index(m_selected)]);
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event)
+{
+    // A number field of a dock would take Ctrl+Z for its own text; its value is applied on
+    // Enter, so what the user means is the window's undo. Left unaccepted, the override lets
+    // the Edit menu's shortcut run.
+    if (event->type() == QEvent::ShortcutOverride && m_undoAction) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        const QKeySequence pressed(key->keyCombination());
+        const bool undoKey = m_undoAction->shortcuts().contains(pressed) || m_redoAction->shortcuts().contains(pressed);
+        auto* widget = qobject_cast<QWidget*>(watched);
+        // The line edit first, then (the override travels up) its spin box, which would hand
+        // it to the line edit again.
+        const bool numberField = widget && (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QAbstractSpinBox*>(widget->parentWidget()));
+        if (undoKey && numberField && (m_dock->isAncestorOf(widget) || m_accuracyDock->isAncestorOf(widget)))
+            return true;
+    }
+    // A new press starts a new gesture; a key's auto-repeat continues the one it began.
+    if (event->type() == QEvent::MouseButtonPress
+        || (event->type() == QEvent::KeyPress && !static_cast<QKeyEvent*>(event)->isAutoRepeat()))
+        ++m_gesture;
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::setCamera(const CameraSettings& camera)
@@ -433,17 +565,14 @@ void MainWindow::updateStatus()
     const Settings& shown = *view->renderedSettings();
     // Wall times with glFinish between passes: on a software renderer the GPU timer misses
     // the deferred rasterisation, and a tool that shows what each setting costs must not.
-    const QString shadow = !shown.shadow.enabled      ? tr("—")
-                           : stats.shadowPassRendered ? tr("%1 ms").arg(stats.shadowPassWallMs, 0, 'f', 1)
-                                                      : tr("reused");
-    m_timingLabel->setText(tr("shadow %1 · lit %2 ms · frame %3 ms").arg(shadow).arg(stats.litPassWallMs, 0, 'f', 1).arg(stats.frameWallMs, 0, 'f', 1));
-    const QString texel = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize
-                              ? tr("texel %1 → %2 wu (fitted)").arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3).arg(stats.texelWorldSize, 0, 'g', 3)
-                              : tr("texel %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
-    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), texel) : tr("no shadow map"));
-    m_passLabel->setText(!shown.shadow.enabled      ? tr("shadows off")
-                         : stats.shadowPassRendered ? tr("shadow pass rendered")
-                                                    : tr("shadow map reused"));
+    const QString shadow = !shown.shadow.enabled      ? tr("shadows off")
+                           : stats.shadowPassRendered ? tr("shadow pass %1 ms").arg(stats.shadowPassWallMs, 0, 'f', 1)
+                                                      : tr("shadow pass cached");
+    m_timingLabel->setText(tr("%1 · lit pass %2 ms · frame %3 ms").arg(shadow).arg(stats.litPassWallMs, 0, 'f', 1).arg(stats.frameWallMs, 0, 'f', 1));
+    const QString footprint = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize
+                                  ? tr("texel footprint %1 wu (fitted; %2 as set)").arg(stats.texelWorldSize, 0, 'g', 3).arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3)
+                                  : tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
+    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), footprint) : tr("no shadow map"));
 }
 
 void MainWindow::setCompareMode(bool on)
@@ -479,6 +608,10 @@ void MainWindow::selectSide(Side side)
     m_accuracyDock->setSettings(m_settings[index(side)]);
     m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
     m_dock->setSideName(m_compare ? QLatin1String(kSideNames[index(side)]) : QString());
+    // Tabbed or floating, a dock says whose settings it holds.
+    m_dock->setWindowTitle(m_compare ? tr("Properties — side %1").arg(QLatin1String(kSideNames[index(side)])) : tr("Properties"));
+    m_accuracyDock->setWindowTitle(m_compare ? tr("Accuracy — side %1").arg(QLatin1String(kSideNames[index(side)])) : tr("Accuracy"));
+    m_undoGroup->setActiveStack(m_undoStacks[index(side)]);
     m_depthView->setSource(m_views[index(side)]);
     updateCaptions();
     updateStatus();
@@ -486,16 +619,20 @@ void MainWindow::selectSide(Side side)
 
 void MainWindow::copyAToB()
 {
+    const SettingsChange::Sides before{std::nullopt, m_settings[1]};
     m_settings[1] = m_settings[0];
     pushSettings();
     m_dock->setSettings(m_settings[index(m_selected)]);
+    recordChange(before, m_selected, tr("Copy A → B"));
 }
 
 void MainWindow::swapSides()
 {
+    const SettingsChange::Sides before{m_settings[0], m_settings[1]};
     std::swap(m_settings[0], m_settings[1]);
     pushSettings();
     m_dock->setSettings(m_settings[index(m_selected)]);
+    recordChange(before, m_selected, tr("Swap A ↔ B"));
 }
 
 void MainWindow::setLightAnimation(bool animate, double degreesPerSecond)
@@ -554,10 +691,22 @@ QString MainWindow::saveScreenshot(ScreenshotDialog::Target target, const QStrin
     return QString();
 }
 
+QString MainWindow::screenshotFolder()
+{
+    // The last folder used while it exists; else the pictures folder, made if missing (a
+    // fresh account has none); else the home folder.
+    if (!m_screenshotFolder.isEmpty() && QFileInfo(m_screenshotFolder).isDir())
+        return m_screenshotFolder;
+    const QString pictures = QStandardPaths::writableLocation(QStandardPaths::PicturesLocation);
+    if (!pictures.isEmpty() && QDir().mkpath(pictures) && QFileInfo(pictures).isDir() && QFileInfo(pictures).isWritable())
+        return pictures;
+    return QDir::homePath();
+}
+
 void MainWindow::saveScreenshotInteractively()
 {
     const QString name = screenshotFileName(m_settings[index(m_selected)], QDateTime::currentDateTime());
-    ScreenshotDialog dialog(QDir(m_screenshotFolder).filePath(name), this);
+    ScreenshotDialog dialog(QDir(screenshotFolder()).filePath(name), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     m_screenshotFolder = QFileInfo(dialog.path()).absolutePath();
@@ -581,7 +730,7 @@ QString MainWindow::importSettings(const QString& path)
     try {
         // Keys the file leaves out keep their current values, as with --settings on the CLI.
         const Settings settings = loadSettingsFile(path, m_settings[index(m_selected)]);
-        setSettings(m_selected, settings);
+        setSettings(m_selected, settings, tr("Import %1").arg(QFileInfo(path).fileName()));
     } catch (const SettingsError& e) {
         return QString::fromStdString(e.what());
     }
@@ -592,7 +741,7 @@ QString MainWindow::importSettings(const QString& path)
 void MainWindow::exportSettingsInteractively()
 {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Settings"),
-                                                      QDir(m_screenshotFolder).filePath(QStringLiteral("shadowlab-settings.json")),
+                                                      QDir(screenshotFolder()).filePath(QStringLiteral("shadowlab-settings.json")),
                                                       tr("ShadowLab settings (*.json)"));
     if (path.isEmpty())
         return;
@@ -605,7 +754,7 @@ void MainWindow::exportSettingsInteractively()
 
 void MainWindow::importSettingsInteractively()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import Settings"), m_screenshotFolder, tr("ShadowLab settings (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Settings"), screenshotFolder(), tr("ShadowLab settings (*.json)"));
     if (path.isEmpty())
         return;
     const QString error = importSettings(path);

@@ -2,6 +2,7 @@
 
 #include "ScreenshotDialog.h"
 #include "Settings.h"
+#include "SettingsChange.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
@@ -14,6 +15,8 @@ class QLabel;
 class QMenu;
 class QSplitter;
 class QToolBar;
+class QUndoGroup;
+class QUndoStack;
 
 namespace shadowlab {
 
@@ -42,8 +45,9 @@ public:
 
     const Settings& settings(Side side) const { return m_settings[std::size_t(side)]; }
     // Throws SettingsError when `settings` are not valid; the camera is shared, so setting it
-    // on one side sets it on both.
-    void setSettings(Side side, const Settings& settings);
+    // on one side sets it on both. The change is one step of that side's undo history, named
+    // `undoText` ("Set bias.slope", "Change 5 settings" when empty).
+    void setSettings(Side side, const Settings& settings, const QString& undoText = {});
 
     bool compareMode() const { return m_compare; }
     void setCompareMode(bool on);
@@ -56,6 +60,9 @@ public:
     // Writes a PNG of `target`; returns an empty string or what went wrong. The action's
     // dialog ends here.
     QString saveScreenshot(ScreenshotDialog::Target target, const QString& path);
+    // Where Save Screenshot and the settings files start: the last folder used, else the
+    // pictures folder (created when missing), else the home folder.
+    QString screenshotFolder();
     // Exports or imports the selected side as JSON with the command line's keys; returns an
     // empty string or what went wrong.
     QString exportSettings(const QString& path) const;
@@ -72,8 +79,13 @@ public:
     PropertiesDock* propertiesDock() const { return m_dock; }
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     QAction* action(const QString& objectName) const;
+    // The undo history of each side: every settings change (dock edits, a sweep point or tuned
+    // bias applied, reset, copy and swap, a scene or settings file opened) is a step; the camera
+    // is the view's, not a setting one undoes. Edit > Undo works on the selected side's.
+    QUndoStack* undoStack(Side side) const { return m_undoStacks[std::size_t(side)]; }
 
 protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -87,6 +99,10 @@ private:
     void saveState() const;
 
     void applyEdit(const Settings& settings);
+    // Makes the change from `before` (the sides it holds) to the present settings a step of
+    // `side`'s undo history.
+    void recordChange(const SettingsChange::Sides& before, Side side, QString text = {}, bool mayMerge = false);
+    void showUndoState(const SettingsChange::Sides& target, const SettingsChange::Sides& from);
     void setCamera(const CameraSettings& camera);
     void pushSettings();
     void updateCaptions();
@@ -121,7 +137,6 @@ private:
     QLabel* m_texelLabel = nullptr;
     QLabel* m_timingLabel = nullptr;
     QLabel* m_mapLabel = nullptr;
-    QLabel* m_passLabel = nullptr;
 
     QTimer m_animationTimer;
     QElapsedTimer m_animationClock;
@@ -136,6 +151,11 @@ private:
     QToolBar* m_toolBar = nullptr;
     QString m_screenshotFolder;
     QString m_lastFitWarning;   // said once in the status bar, not on every frame
+    QUndoGroup* m_undoGroup = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    std::array<QUndoStack*, 2> m_undoStacks{};
+    quint64 m_gesture = 0;      // mouse and key presses so far: edits between two presses merge
 };
 
 } // namespace shadowlab

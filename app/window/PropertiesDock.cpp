@@ -109,6 +109,7 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     m_sideLabel = new QLabel;
     m_sideLabel->setObjectName(QStringLiteral("sideLabel"));
     m_sideLabel->setVisible(false);
+    m_sideLabel->setWordWrap(true);     // whole at the dock's narrowest
     column->addWidget(m_sideLabel);
 
     auto* scroll = new QScrollArea;

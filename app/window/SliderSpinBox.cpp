@@ -1,5 +1,7 @@
 #include "SliderSpinBox.h"
 
+#include "WheelGuard.h"
+
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
@@ -20,6 +22,10 @@ SliderSpinBox::SliderSpinBox(double minimum, double maximum, int decimals, QWidg
     m_spinBox->setAccelerated(true);
     m_spinBox->setFixedWidth(112);
     m_spinBox->setAlignment(Qt::AlignRight);
+
+    // The wheel scrolls the dock until the field is clicked or tabbed to.
+    WheelGuard::guard(m_slider);
+    WheelGuard::guard(m_spinBox);
 
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

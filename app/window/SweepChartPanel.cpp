@@ -110,7 +110,9 @@ SweepChartPanel::SweepChartPanel(QWidget* parent) : QGroupBox(parent)
                          .arg(AccuracyController::kTimedFrames));
     view->setFrameShape(QFrame::NoFrame);
     view->setBackgroundBrush(Qt::NoBrush);
-    view->setStyleSheet(QStringLiteral("background: transparent"));
+    // Scoped to the view: a bare "background: transparent" also reaches the tooltips shown
+    // for it, which then draw as black bars where windows cannot be translucent.
+    view->setStyleSheet(QStringLiteral("QChartView { background: transparent; }"));
     layout->addWidget(view, 1);
 
     m_pointInfo = noteLabel(QStringLiteral("pointInfo"));

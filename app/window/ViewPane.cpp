@@ -9,7 +9,9 @@ ViewPane::ViewPane(QWidget* view, QWidget* parent) : QFrame(parent), m_view(view
 {
     m_caption->setTextFormat(Qt::RichText);
     m_caption->setContentsMargins(8, 3, 8, 3);
-    m_caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    // Wrapped, not cut: at the default window size a caption is wider than its view.
+    m_caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_caption->setWordWrap(true);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
