@@ -7,6 +7,7 @@
 #include "HeadlessTestMain.h"
 #include "MainWindow.h"
 #include "PropertiesDock.h"
+#include "SceneLibrary.h"
 #include "SceneView.h"
 #include "SettingsKeys.h"
 #include "SliderSpinBox.h"
@@ -226,6 +227,7 @@ private slots:
         // Reset to defaults from the dock.
         m_window->propertiesDock()->findChild<QPushButton*>(QStringLiteral("resetToDefaults"))->click();
         QVERIFY(m_window->settings(Side::A) == original);
+        QCOMPARE(stack->undoText(), QStringLiteral("Reset to defaults"));
         undo->trigger();
         QVERIFY(m_window->settings(Side::A) == measured);
         undo->trigger();
@@ -255,6 +257,16 @@ private slots:
         // ...and undo leaves the camera where it is.
         m_window->action(QStringLiteral("redoAction"))->trigger();
         QCOMPARE(m_window->settings(Side::A).camera.position.x, camera.position.x);
+
+        // A scene chosen in the dock brings its light and camera; undo takes all of it back.
+        m_window->propertiesDock()->findChild<QComboBox*>(QStringLiteral("scene"))->setCurrentText(QStringLiteral("torus"));
+        QCOMPARE(m_window->settings(Side::A).scene, QStringLiteral("torus"));
+        QCOMPARE(stack->undoText(), QStringLiteral("Choose scene torus"));
+        undo->trigger();
+        QCOMPARE(m_window->settings(Side::A).scene, QStringLiteral("seed"));
+        QVERIFY(m_window->settings(Side::A).camera == camera);
+        m_window->action(QStringLiteral("redoAction"))->trigger();
+        QVERIFY(m_window->settings(Side::A).camera == presetSettings(QStringLiteral("torus")).camera);
     }
 
     void compareSidesHaveTheirOwnHistory()

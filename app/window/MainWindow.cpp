@@ -411,6 +411,21 @@ void MainWindow::dropEvent(QDropEvent* event)
     openSceneReporting(urls.first().toLocalFile());
 }
 
+namespace {
+
+// The keys whose values differ between `a` and `b`, the camera's left out: it is the view's.
+QStringList changedKeys(const Settings& a, const Settings& b)
+{
+    QStringList keys;
+    for (const SettingKey& key : settingKeys()) {
+        if (!key.key.startsWith(u"camera.") && settingValue(a, key.key) != settingValue(b, key.key))
+            keys << key.key;
+    }
+    return keys;
+}
+
+} // namespace
+
 void MainWindow::setSettings(Side side, const Settings& settings, const QString& undoText)
 {
     ensureValid(settings);
@@ -430,23 +445,23 @@ void MainWindow::applyEdit(const Settings& settings)
     m_settings[index(m_selected)] = settings;
     m_settings[1 - index(m_selected)].camera = settings.camera;
     pushSettings();
-    recordChange(before, m_selected, {}, true);
-}
-
-namespace {
-
-// The keys whose values differ between `a` and `b`, the camera's left out: it is the view's.
-QStringList changedKeys(const Settings& a, const Settings& b)
-{
-    QStringList keys;
-    for (const SettingKey& key : settingKeys()) {
-        if (!key.key.startsWith(u"camera.") && settingValue(a, key.key) != settingValue(b, key.key))
-            keys << key.key;
+    // Name the dock's two whole-side edits in the Edit menu; one key names itself ("Set bias.slope").
+    QString text;
+    const bool wholeSide = changedKeys(*before[index(m_selected)], settings).size() > 1;
+    if (wholeSide && settings.scene != before[index(m_selected)]->scene) {
+        text = tr("Choose scene %1").arg(QFileInfo(settings.scene).fileName());
+    } else if (wholeSide) {
+        try {
+            Settings defaults = presetSettings(settings.scene);
+            defaults.camera = settings.camera;
+            if (settings == defaults)
+                text = tr("Reset to defaults");
+        } catch (const SettingsError&) {
+            // a scene file that went away: the generic name will do
+        }
     }
-    return keys;
+    recordChange(before, m_selected, text, true);
 }
-
-} // namespace
 
 void MainWindow::recordChange(const SettingsChange::Sides& before, Side side, QString text, bool mayMerge)
 {
@@ -487,7 +502,10 @@ void MainWindow::showUndoState(const SettingsChange::Sides& target, const Settin
         if (!target[i])
             continue;
         Settings s = *target[i];
-        s.camera = m_settings[i].camera;    // the view stays where the user looks from
+        // The view stays where the user looks from, unless the step changes the scene: the
+        // camera then goes back with it.
+        if (!from[i] || from[i]->scene == s.scene)
+            s.camera = m_settings[i].camera;
         // A light the animation moved since keeps its place unless this step moved it.
         if (from[i] && from[i]->light.position == s.light.position)
             s.light.position = m_settings[i].light.position;
@@ -499,6 +517,7 @@ void MainWindow::showUndoState(const SettingsChange::Sides& target, const Settin
         next[i] = s;
     }
     m_settings = next;
+    m_settings[0].camera = m_settings[1].camera = next[index(m_selected)].camera;  // one camera for both sides
     pushSettings();
     m_dock->setSettings(m_settings[index(m_selected)]);
 }
