@@ -13,10 +13,12 @@ constexpr GLuint kSourceUnit = 0;
 
 } // namespace
 
-DepthRangePass::DepthRangePass(GlFunctions* gl)
+DepthRangePass::DepthRangePass(GlFunctions* gl, Contents contents)
     : m_gl(gl),
+      m_contents(contents),
       m_fromDepth(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"),
-                                                  QStringList{QStringLiteral("FROM_DEPTH")})),
+                                                  contents == Contents::Written ? QStringList{QStringLiteral("FROM_DEPTH"), QStringLiteral("WRITTEN_ONLY")}
+                                                                                : QStringList{QStringLiteral("FROM_DEPTH")})),
       m_fromRange(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"), QStringList{})),
       m_emptyVertexArray(makeVertexArray(gl)),
       m_framebuffer(makeFramebuffer(gl))
@@ -50,7 +52,7 @@ void DepthRangePass::allocate(int mapSize)
     m_levels = levels;
 }
 
-void DepthRangePass::build(const ShadowMap& map)
+void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
 {
     if (!m_texture || map.size() != m_mapSize)
         allocate(map.size());
@@ -74,6 +76,8 @@ void DepthRangePass::build(const ShadowMap& map)
         ShaderProgram& program = level == 0 ? *m_fromDepth : *m_fromRange;
         program.bind();
         program.set(program.uniform("uSource"), int(kSourceUnit));
+        if (level == 0 && m_contents == Contents::Written)
+            program.set(program.uniform("uEmpty"), reversedDepth ? 0.0f : 1.0f);
         if (level == 0) {
             m_gl->glBindTexture(GL_TEXTURE_2D, map.texture());
             m_gl->glBindSampler(kSourceUnit, map.sampler(ShadowSampler::RawNearest));
@@ -94,6 +98,19 @@ void DepthRangePass::build(const ShadowMap& map)
     m_gl->glBindSampler(kSourceUnit, 0);
     m_gl->glBindVertexArray(0);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+}
+
+std::optional<std::pair<float, float>> DepthRangePass::readTotal()
+{
+    if (!m_texture || m_levels < 1)
+        return std::nullopt;
+    float range[2] = {0.0f, 0.0f};
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_texture.id());
+    m_gl->glGetTexImage(GL_TEXTURE_2D, m_levels - 1, GL_RG, GL_FLOAT, range);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    if (!(range[0] <= range[1]))
+        return std::nullopt;    // the neutral (1e30, -1e30): nothing written
+    return std::pair{range[0], range[1]};
 }
 
 } // namespace shadowlab

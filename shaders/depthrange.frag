@@ -4,13 +4,23 @@
 // The depth map (FROM_DEPTH) or the range texture, whose base level the pass sets to the level
 // below the one drawn: texelFetch's level counts from the base level.
 uniform sampler2D uSource;
+#ifdef WRITTEN_ONLY
+// What an empty texel holds (1, or 0 in a reversed map): it counts as no depth at all, so
+// level 0 and up hold the range of the written texels only (min > max where there are none).
+uniform float uEmpty;
+#endif
 
 out vec2 range;
 
 vec2 fetchRange(ivec2 p)
 {
 #ifdef FROM_DEPTH
-    return texelFetch(uSource, p, 0).rr;
+    float depth = texelFetch(uSource, p, 0).r;
+#ifdef WRITTEN_ONLY
+    if (depth == uEmpty)
+        return vec2(1.0e30, -1.0e30);
+#endif
+    return vec2(depth);
 #else
     return texelFetch(uSource, p, 0).rg;
 #endif

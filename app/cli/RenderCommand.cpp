@@ -8,6 +8,8 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace shadowlab::cli {
 
 namespace {
@@ -32,7 +34,7 @@ int runRender(const QStringList& arguments)
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 1280x720)."), QStringLiteral("WxH"),
                           QStringLiteral("1280x720")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the lit scene."), QStringLiteral("file.png")});
-        parser.addOption({QStringLiteral("depth-out"), QStringLiteral("PNG of the light's shadow map."), QStringLiteral("file.png")});
+        parser.addOption({QStringLiteral("depth-out"), QStringLiteral("PNG of the light's shadow map as the explorer shows it: colour ramp, legend, light volume and camera outline."), QStringLiteral("file.png")});
         if (!parseArguments(parser, QStringLiteral("render"), arguments))
             return kExitOk;
         if (!parser.isSet(QStringLiteral("out")) && !parser.isSet(QStringLiteral("depth-out")))
@@ -61,9 +63,9 @@ int runRender(const QStringList& arguments)
         if (parser.isSet(QStringLiteral("out")))
             scenePng = encodePng(scene);
         if (parser.isSet(QStringLiteral("depth-out"))) {
-            const int side = std::min(settings.map.size, 2048);
-            depthSize = QSize(side, side);
-            depthPng = encodePng(headless.renderDepthMap(depthSize));
+            const QImage depth = headless.renderDepthPicture(std::clamp(settings.map.size, 320, 1024));
+            depthSize = depth.size();
+            depthPng = encodePng(depth);
         }
         if (parser.isSet(QStringLiteral("out"))) {
             writeOutputFile(scenePath, scenePng);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FrameTimeHistory.h"
 #include "ScreenshotDialog.h"
 #include "Settings.h"
 
@@ -80,6 +81,11 @@ protected:
 
 private:
     void createActions();
+    void createMeasureActions();
+    void measureFrames(int count);
+    void recordFrame(Side side);
+    QString timingText(Side side) const;
+    QString compareTimingText() const;
     void createMenus();
     void createToolBar();
     void createStatusBar();
@@ -136,6 +142,12 @@ private:
     QToolBar* m_toolBar = nullptr;
     QString m_screenshotFolder;
     QString m_lastFitWarning;   // said once in the status bar, not on every frame
+
+    static constexpr int kMeasuredFrames = 100;
+    std::array<FrameTimeHistory, 2> m_history;  // rolling wall times per side, for the status bar
+    int m_measureLeft = 0;      // frames still to draw for Measure 100 Frames
+    QAction* m_densityAction = nullptr;
+    QAction* m_measureAction = nullptr;
 };
 
 } // namespace shadowlab
