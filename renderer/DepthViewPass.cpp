@@ -109,4 +109,38 @@ void DepthViewPass::renderLegend(const RenderTarget& target, const QRect& viewpo
     m_gl->glBindVertexArray(0);
 }
 
+void DepthViewPass::renderOverlay(const RenderTarget& target, const QImage& image)
+{
+    if (image.isNull() || target.size.isEmpty())
+        return;
+    const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
+    if (!m_overlay) {
+        m_overlay = makeTexture(m_gl);
+        labelGlObject(GlLabelKind::Texture, m_overlay.id(), QStringLiteral("depth view: legend and outlines"));
+    }
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_overlay.id());
+    m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.constBits());
+    Program& p = program({QStringLiteral("OVERLAY")});
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.blend = true;     // premultiplied alpha
+    state.blendDestinationRgb = GL_ONE_MINUS_SRC_ALPHA;
+    state.blendDestinationAlpha = GL_ONE_MINUS_SRC_ALPHA;
+    applyPassState(m_gl, state);
+    p.program.bind();
+    p.program.set(p.depth, 0);
+    p.program.set(p.uvOffset, glm::vec2(0.0f));
+    p.program.set(p.uvScale, glm::vec2(1.0f));
+    m_gl->glBindSampler(0, m_sampler.id());
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindSampler(0, 0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    applyPassState(m_gl, PassState{});
+}
+
 } // namespace shadowlab

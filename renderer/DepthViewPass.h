@@ -6,6 +6,7 @@
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
+#include <QImage>
 #include <QRect>
 #include <QRectF>
 
@@ -45,6 +46,9 @@ public:
                 const std::optional<DepthSpan>& span = std::nullopt);
     // The ramp itself from near (left) to far (right) over `viewport`: the legend's colour bar.
     void renderLegend(const RenderTarget& target, const QRect& viewport);
+    // `image` (premultiplied RGBA, the target's size, top row first) blended over the target:
+    // the picture's text and outlines, painted with QPainter's raster engine.
+    void renderOverlay(const RenderTarget& target, const QImage& image);
 
 private:
     struct Program {
@@ -58,6 +62,7 @@ private:
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
     GlSampler m_sampler;
     std::unique_ptr<DepthRangePass> m_range;    // built on first measure()
+    GlTexture m_overlay;                        // built on first renderOverlay()
     // Variants by their defines (perspective, reversed depth, legend), compiled when first shown.
     std::map<QString, std::unique_ptr<Program>> m_programs;
 };

@@ -2,7 +2,8 @@
 // through a perceptual colour ramp, near the light dark, far pale; a perspective light's depth
 // is linearised first (raw perspective depth is nearly all one value). Texels nothing was drawn
 // into (the far plane) are hatched grey; outside the map is the pane's dark blue.
-// With LEGEND the pass draws the ramp itself across the viewport, for the colour bar.
+// With LEGEND the pass draws the ramp itself across the viewport, for the colour bar; with
+// OVERLAY it draws an image (uDepth holds it, premultiplied, top row first) for blending.
 #include "ramp.glsl"
 
 in vec2 vUv;
@@ -28,8 +29,10 @@ float linear(float depth)
 
 void main()
 {
-#ifdef LEGEND
+#if defined(LEGEND)
     fragColor = vec4(depthRamp(vUv.x), 1.0);
+#elif defined(OVERLAY)
+    fragColor = texture(uDepth, vec2(vUv.x, 1.0 - vUv.y));
 #else
     if (any(lessThan(vUv, vec2(0.0))) || any(greaterThan(vUv, vec2(1.0)))) {
         fragColor = vec4(0.08, 0.09, 0.13, 1.0);

@@ -679,8 +679,10 @@ void tst_MainWindow::everySettingHasADockField()
         } else {
             QWidget* editor = dock->findChild<QWidget*>(key.key);
             QVERIFY2(editor, qPrintable(key.key + QStringLiteral(" has no field in the dock")));
-            // The tooltip is the table's help, so the dock explains what the CLI explains.
-            QVERIFY2(editor->toolTip().contains(key.help.left(30).toHtmlEscaped()), qPrintable(key.key));
+            // The tooltip is the table's help, so the dock explains what the CLI explains (a
+            // fitted, read-only field says instead why it cannot be edited).
+            if (editor->isEnabled())
+                QVERIFY2(editor->toolTip().contains(key.help.left(30).toHtmlEscaped()), qPrintable(key.key));
         }
     }
     // Shown in the dock as the settings hold them.

@@ -127,8 +127,15 @@ void DepthMapView::paintGL()
         m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(), target, visible,
                        picture.glViewport(picture.mapArea(), devicePixelRatio()), m_span);
         m_pass->renderLegend(target, picture.glViewport(picture.legendBar(), devicePixelRatio()));
-        QPainter painter(this);
-        picture.paint(painter, depthMapFacts(renderer, m_span), visible);
+        // Text and outlines through QPainter's raster engine, blended over the map as one image.
+        QImage overlay(target.size, QImage::Format_ARGB32_Premultiplied);
+        overlay.fill(Qt::transparent);
+        overlay.setDevicePixelRatio(devicePixelRatio());
+        {
+            QPainter painter(&overlay);
+            picture.paint(painter, depthMapFacts(renderer, m_span), visible);
+        }
+        m_pass->renderOverlay(target, overlay);
     }
     ++m_frameCount;
     emit frameRendered();

@@ -38,12 +38,12 @@ QString FrameTimeHistory::text(const Summary& s, bool cpuTime)
     if (s.frame.count == 0)
         return QString();
     const QString shadow = s.shadow.count > 0 ? QStringLiteral("%1").arg(s.shadow.median, 0, 'f', 1) : QStringLiteral("reused");
-    return QCoreApplication::translate("FrameTimeHistory", "shadow %1 · lit %2 · frame %3 ms (median of %4%5)")
+    return QCoreApplication::translate("FrameTimeHistory", "shadow %1 · lit %2 · frame %3 ms%4 · median of %5")
         .arg(shadow)
         .arg(s.lit.median, 0, 'f', 1)
         .arg(s.frame.median, 0, 'f', 1)
-        .arg(s.frame.count)
-        .arg(cpuTime ? QCoreApplication::translate("FrameTimeHistory", ", CPU time: software renderer") : QString());
+        .arg(cpuTime ? QCoreApplication::translate("FrameTimeHistory", " CPU time") : QString())
+        .arg(s.frame.count);
 }
 
 bool isSoftwareRenderer(const QString& rendererString)

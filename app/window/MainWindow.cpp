@@ -373,7 +373,7 @@ void MainWindow::createStatusBar()
     m_timingLabel->setObjectName(QStringLiteral("timingLabel"));
     m_timingLabel->setToolTip(tr("Medians over the last frames of the wall time of the shadow pass (over the frames that ran it), the lit "
                                  "pass and the whole frame, each between glFinish calls; on a software renderer (llvmpipe) that is CPU "
-                                 "time. View → Measure 100 Frames times the pass on every frame."));
+                                 "time (\"CPU time\"). View → Measure 100 Frames times the pass on every frame."));
     m_mapLabel = new QLabel;
     m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
     m_mapLabel->setToolTip(tr("Shadow-map size, and how much world one texel covers: the size of the blocks in a hard shadow"));

@@ -593,7 +593,8 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
     for (const char* key : kFittedKeys) {
         for (QWidget* w : m_rows.value(QString::fromLatin1(key))) {
             w->setEnabled(!fitted);
-            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Fit to manual to set it by hand") : QString());
+            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Volume to manual to set it by hand")
+                                 : tooltipFor(keyInfo(QString::fromLatin1(key))));
         }
     }
     if (fitted && fit.fitted) {
