@@ -108,8 +108,16 @@ QImage HeadlessRenderer::renderDepthPicture(int side)
     m_renderer->renderDepthMap(target, visible, picture.glViewport(picture.mapArea(), 1.0));
     m_renderer->renderDepthLegend(target, picture.glViewport(picture.legendBar(), 1.0));
     QImage image = m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);
-    QPainter painter(&image);
-    picture.paint(painter, facts, visible);
+    {
+        QPainter painter(&image);
+        picture.paint(painter, facts, visible);
+    }
+    // What the legend says, also as PNG text for scripts: the map's size and the written range.
+    image.setText(QStringLiteral("map.size"), QString::number(facts.mapSize));
+    if (facts.span) {
+        image.setText(QStringLiteral("depth.nearest"), QString::number(facts.span->nearest, 'g', 9));
+        image.setText(QStringLiteral("depth.farthest"), QString::number(facts.span->farthest, 'g', 9));
+    }
     return image;
 }
 

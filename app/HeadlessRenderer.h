@@ -26,7 +26,8 @@ public:
     // the whole image (linearised for a perspective light).
     QImage renderDepthMap(QSize size);
     // The readable picture of it, as the explorer's pane draws it (DepthMapPicture): the map at
-    // its volume's aspect in a `side` x `side` square, the outlines, and the legend below.
+    // its volume's aspect in a `side` x `side` square, the outlines, and the legend below. The
+    // image's text keys "map.size", "depth.nearest" and "depth.farthest" repeat the legend.
     QImage renderDepthPicture(int side);
 
     Renderer& renderer() { return *m_renderer; }

@@ -3,7 +3,7 @@
 // depthRamp: a perceptual ramp for t in [0, 1] from Green's cubehelix (2011): brightness rises
 // linearly (so equal steps in t read as equal steps, and the order survives a grey print) while
 // the hue turns from deep blue through green to pale yellow. It stops short of black and white,
-// which the depth view keeps for "outside the map" and "empty".
+// which the depth view keeps for outside the map and for empty texels.
 vec3 depthRamp(float t)
 {
     float l = mix(0.12, 0.92, clamp(t, 0.0, 1.0));
