@@ -1,11 +1,13 @@
 #include "HeadlessRenderer.h"
 
+#include "DepthMapPicture.h"
 #include "GlDebug.h"
 #include "Limits.h"
 #include "RenderError.h"
 #include "SettingsError.h"
 
 #include <QGuiApplication>
+#include <QPainter>
 #include <QOpenGLVersionFunctionsFactory>
 
 namespace shadowlab {
@@ -86,6 +88,37 @@ QImage HeadlessRenderer::renderDepthMap(QSize size)
 {
     m_renderer->renderDepthMap(targetOfSize(size));
     return m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+} // namespace shadowlab
+
+namespace shadowlab {
+
+QImage HeadlessRenderer::renderDepthPicture(int side)
+{
+    const QSize size(side, side + DepthMapPicture::kLegendHeight);
+    const RenderTarget target = targetOfSize(size);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    m_gl->glViewport(0, 0, size.width(), size.height());
+    m_gl->glClearColor(0.08f, 0.09f, 0.13f, 1.0f);
+    m_gl->glClear(GL_COLOR_BUFFER_BIT);
+    const DepthMapPicture picture(size);
+    const DepthMapFacts facts = depthMapFacts(*m_renderer, m_renderer->depthMapSpan());
+    const QRectF visible = picture.visible(DepthMapPicture::aspect(facts.light), 1.0, {0.5, 0.5});
+    m_renderer->renderDepthMap(target, visible, picture.glViewport(picture.mapArea(), 1.0));
+    m_renderer->renderDepthLegend(target, picture.glViewport(picture.legendBar(), 1.0));
+    QImage image = m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);
+    {
+        QPainter painter(&image);
+        picture.paint(painter, facts, visible);
+    }
+    // What the legend says, also as PNG text for scripts: the map's size and the written range.
+    image.setText(QStringLiteral("map.size"), QString::number(facts.mapSize));
+    if (facts.span) {
+        image.setText(QStringLiteral("depth.nearest"), QString::number(facts.span->nearest, 'g', 9));
+        image.setText(QStringLiteral("depth.farthest"), QString::number(facts.span->farthest, 'g', 9));
+    }
+    return image;
 }
 
 } // namespace shadowlab

@@ -22,8 +22,13 @@ public:
     QImage renderScene(const Settings& settings, QSize size, TimingMode timing = TimingMode::Finish);
     // Renders the frame without reading it back (for benchmarks).
     void renderFrame(const Settings& settings, QSize size, TimingMode timing = TimingMode::Finish);
-    // The shadow map of the last frame as a grey image (linearised for a perspective light).
+    // The shadow map of the last frame through the depth view's colour ramp, stretched over
+    // the whole image (linearised for a perspective light).
     QImage renderDepthMap(QSize size);
+    // The readable picture of it, as the explorer's pane draws it (DepthMapPicture): the map at
+    // its volume's aspect in a `side` x `side` square, the outlines, and the legend below. The
+    // image's text keys "map.size", "depth.nearest" and "depth.farthest" repeat the legend.
+    QImage renderDepthPicture(int side);
 
     Renderer& renderer() { return *m_renderer; }
     GlFunctions* functions() const { return m_gl; }

@@ -428,4 +428,35 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     return result;
 }
 
+std::vector<glm::dvec2> cameraFootprint(const Bounds& box, const glm::dmat4& cameraViewProjection, const glm::dmat4& shadowMatrix)
+{
+    std::vector<glm::dvec2> points;
+    for (const glm::dvec3& p : clipBoxToFrusta(box, {cameraViewProjection})) {
+        const glm::dvec4 t = shadowMatrix * glm::dvec4(p, 1.0);
+        if (t.w > 1e-12)
+            points.emplace_back(t.x / t.w, t.y / t.w);
+    }
+    if (points.size() < 3)
+        return {};
+    // Andrew's monotone chain.
+    std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    const auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::dvec2> hull(2 * points.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+            --k;
+        hull[k++] = points[i];
+    }
+    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+            --k;
+        hull[k++] = points[i];
+    }
+    hull.resize(k > 0 ? k - 1 : 0);
+    return hull;
+}
+
 } // namespace shadowlab

@@ -5,6 +5,7 @@
 #include "Settings.h"
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -60,5 +61,11 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
 // The vertices of the convex region `box` ∩ each frustum (conventional clip space of each
 // view-projection): empty when they do not overlap. Exposed for tests of the fit.
 std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm::dmat4>& viewProjections);
+
+// The camera's visible region as the light's map sees it: `box` (the scene) clipped to the
+// camera's frustum (`cameraViewProjection`), projected by `shadowMatrix` (world -> map [0, 1]^2)
+// and wrapped in its convex hull, counter-clockwise. Points behind a perspective light are left
+// out. Empty when the camera sees nothing of the box. For the depth-map view's outline.
+std::vector<glm::dvec2> cameraFootprint(const Bounds& box, const glm::dmat4& cameraViewProjection, const glm::dmat4& shadowMatrix);
 
 } // namespace shadowlab

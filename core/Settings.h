@@ -95,6 +95,9 @@ struct ShadowSettings {
 
 struct ShadingSettings {
     ShadingModel model = ShadingModel::BlinnPhong;
+    // Colours the lit scene by how many screen pixels one shadow-map texel covers (aliasing at a
+    // glance); the shadow term and every measurement stay as they are.
+    bool texelDensity = false;
 
     bool operator==(const ShadingSettings&) const = default;
 };

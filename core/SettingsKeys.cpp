@@ -326,6 +326,9 @@ std::vector<Entry> makeEntries()
                         "Shadows on or off: off skips the shadow pass entirely"));
     e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
                                         "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"));
+    e.push_back(boolKey("shading.texel_density", [](auto& s) -> auto& { return s.shading.texelDensity; },
+                        "Tint the scene by screen pixels per shadow-map texel: blue under 1 (the map is finer than the screen), green about 1 to 2, "
+                        "yellow to red from 4 up (blocky edges); shadows and measurements are unchanged"));
     e.push_back(vec3Key("camera.position", [](auto& s) -> auto& { return s.camera.position; }, "Where the viewer is"));
     e.push_back(vec3Key("camera.target", [](auto& s) -> auto& { return s.camera.target; }, "The point the viewer looks at"));
     e.push_back(numberKey("camera.fov", Range{1.0, 170.0}, [](auto& s) -> auto& { return s.camera.fov; },

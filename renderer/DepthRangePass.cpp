@@ -13,10 +13,12 @@ constexpr GLuint kSourceUnit = 0;
 
 } // namespace
 
-DepthRangePass::DepthRangePass(GlFunctions* gl)
+DepthRangePass::DepthRangePass(GlFunctions* gl, Contents contents)
     : m_gl(gl),
+      m_contents(contents),
       m_fromDepth(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"),
-                                                  QStringList{QStringLiteral("FROM_DEPTH")})),
+                                                  contents == Contents::Written ? QStringList{QStringLiteral("FROM_DEPTH"), QStringLiteral("WRITTEN_ONLY")}
+                                                                                : QStringList{QStringLiteral("FROM_DEPTH")})),
       m_fromRange(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"), QStringList{})),
       m_emptyVertexArray(makeVertexArray(gl)),
       m_framebuffer(makeFramebuffer(gl)),
@@ -69,7 +71,7 @@ void DepthRangePass::allocate(int mapSize)
     m_levels = levels;
 }
 
-void DepthRangePass::build(const ShadowMap& map)
+void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
 {
     if (!m_atlas || map.size() != m_mapSize)
         allocate(map.size());
@@ -99,6 +101,8 @@ void DepthRangePass::build(const ShadowMap& map)
         program.bind();
         program.set(program.uniform("uSource"), int(kSourceUnit));
         program.set(program.uniform("uSourceSize"), level == 0 ? map.size() : levelSize(levelZero, level - 1));
+        if (level == 0 && m_contents == Contents::Written)
+            program.set(program.uniform("uEmpty"), reversedDepth ? 0.0f : 1.0f);
         if (level == 0) {
             m_gl->glBindTexture(GL_TEXTURE_2D, map.texture());
             m_gl->glBindSampler(kSourceUnit, map.sampler(ShadowSampler::RawNearest));
@@ -133,6 +137,23 @@ void DepthRangePass::build(const ShadowMap& map)
     m_gl->glBindSampler(kSourceUnit, 0);
     m_gl->glBindVertexArray(0);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+}
+
+std::optional<std::pair<float, float>> DepthRangePass::readTotal()
+{
+    if (!m_atlas || m_levels < 1)
+        return std::nullopt;
+    GLint previous = 0;
+    m_gl->glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_atlasFramebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
+    const QPoint top = levelOrigin((m_mapSize + kLevelZeroBlock - 1) / kLevelZeroBlock, m_levels - 1);
+    float range[2] = {0.0f, 0.0f};
+    m_gl->glReadPixels(top.x(), top.y(), 1, 1, GL_RG, GL_FLOAT, range);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));
+    if (!(range[0] <= range[1]))
+        return std::nullopt;    // the neutral (1e30, -1e30): nothing written
+    return std::pair{range[0], range[1]};
 }
 
 } // namespace shadowlab

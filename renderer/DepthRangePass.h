@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace shadowlab {
 
@@ -21,13 +23,22 @@ namespace shadowlab {
 //
 // Atlas layout, with w0 the size of level 0 (the map's size over 4, rounded up) and level k of
 // size w0 >> k: level 0 at (0, 0); level k >= 1 at (w0, w0 - 2 (w0 >> k)), a column to its right
-// (shaders/shadow_filters.glsl, rangeLevelOrigin, reads the same rule).
+// (shaders/shadow_filters.glsl, rangeTexel, reads the same rule).
+//
+// With Contents::Written texels nothing was drawn into (the far plane, or 0 in a reversed map)
+// take no part, and readTotal() gives the nearest and farthest depth the map really holds: what
+// the depth-map view stretches its colour ramp over.
 class DepthRangePass {
 public:
-    explicit DepthRangePass(GlFunctions* gl);
+    enum class Contents { All, Written };
+    explicit DepthRangePass(GlFunctions* gl, Contents contents = Contents::All);
 
     // Builds every level from `map`'s depth texture (reallocating when the map size changed).
-    void build(const ShadowMap& map);
+    // `reversedDepth`: the map stores 1 - depth (empty texels hold 0); only Written reads it.
+    void build(const ShadowMap& map, bool reversedDepth = false);
+    // The 1 x 1 level read back, as stored (raw depth): {min, max}, or nullopt when no texel
+    // was written. Stalls until the build is done; for a view, once per shadow pass.
+    std::optional<std::pair<float, float>> readTotal();
 
     // The atlas: RG32F, (w0 + w0 / 2) x w0, read with texelFetch at level 0.
     GLuint texture() const { return m_atlas.id(); }
@@ -43,6 +54,7 @@ private:
     void allocate(int mapSize);
 
     GlFunctions* m_gl;
+    Contents m_contents;
     std::unique_ptr<ShaderProgram> m_fromDepth;
     std::unique_ptr<ShaderProgram> m_fromRange;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO

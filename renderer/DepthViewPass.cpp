@@ -2,6 +2,8 @@
 
 #include "PassState.h"
 
+#include <algorithm>
+
 namespace shadowlab {
 
 DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
@@ -10,7 +12,8 @@ DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       nearPlane(program.uniform("uNear")),
       farPlane(program.uniform("uFar")),
       uvOffset(program.uniform("uUvOffset")),
-      uvScale(program.uniform("uUvScale"))
+      uvScale(program.uniform("uUvScale")),
+      span(program.uniform("uSpan"))
 {
 }
 
@@ -31,22 +34,44 @@ DepthViewPass::DepthViewPass(GlFunctions* gl)
     m_gl->glBindVertexArray(0);
 }
 
-void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible)
+DepthViewPass::~DepthViewPass() = default;
+
+DepthViewPass::Program& DepthViewPass::program(const QStringList& defines)
 {
-    std::unique_ptr<Program>& variant = m_programs[{light.perspective, light.reversedDepth}];
-    if (!variant) {
-        QStringList defines;
-        if (light.perspective)
-            defines << QStringLiteral("LINEARIZE");
-        if (light.reversedDepth)
-            defines << QStringLiteral("REVERSED_Z");
+    std::unique_ptr<Program>& variant = m_programs[defines.join(QLatin1Char(';'))];
+    if (!variant)
         variant = std::make_unique<Program>(m_gl, defines);
-    }
-    Program& p = *variant;
+    return *variant;
+}
+
+std::optional<DepthSpan> DepthViewPass::measure(const ShadowMap& map, const LightFrame& light)
+{
+    if (!map.texture())
+        return std::nullopt;
+    if (!m_range)
+        m_range = std::make_unique<DepthRangePass>(m_gl, DepthRangePass::Contents::Written);
+    m_range->build(map, light.reversedDepth);
+    const auto raw = m_range->readTotal();
+    if (!raw)
+        return std::nullopt;
+    if (light.reversedDepth)
+        return DepthSpan{1.0 - raw->second, 1.0 - raw->first};
+    return DepthSpan{raw->first, raw->second};
+}
+
+void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible,
+                           const QRect& viewport, const std::optional<DepthSpan>& span)
+{
+    QStringList defines;
+    if (light.perspective)
+        defines << QStringLiteral("LINEARIZE");
+    if (light.reversedDepth)
+        defines << QStringLiteral("REVERSED_Z");
+    Program& p = program(defines);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     PassState state;
-    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.viewport = viewport.isEmpty() ? QRect(QPoint(0, 0), target.size) : viewport;
     applyPassState(m_gl, state);
 
     p.program.bind();
@@ -55,6 +80,8 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
     p.program.set(p.farPlane, float(light.farPlane));
     p.program.set(p.uvOffset, glm::vec2(float(visible.x()), float(visible.y())));
     p.program.set(p.uvScale, glm::vec2(float(visible.width()), float(visible.height())));
+    const DepthSpan shown = span.value_or(DepthSpan{});
+    p.program.set(p.span, glm::vec2(float(shown.nearest), float(shown.farthest)));
     m_gl->glActiveTexture(GL_TEXTURE0);
     m_gl->glBindTexture(GL_TEXTURE_2D, depthTexture);
     m_gl->glBindSampler(0, m_sampler.id());
@@ -63,6 +90,57 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
     m_gl->glBindVertexArray(0);
     m_gl->glBindSampler(0, 0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void DepthViewPass::renderLegend(const RenderTarget& target, const QRect& viewport)
+{
+    if (viewport.isEmpty())
+        return;
+    Program& p = program({QStringLiteral("LEGEND")});
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    PassState state;
+    state.viewport = viewport;
+    applyPassState(m_gl, state);
+    p.program.bind();
+    p.program.set(p.uvOffset, glm::vec2(0.0f));
+    p.program.set(p.uvScale, glm::vec2(1.0f));
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl->glBindVertexArray(0);
+}
+
+void DepthViewPass::renderOverlay(const RenderTarget& target, const QImage& image)
+{
+    if (image.isNull() || target.size.isEmpty())
+        return;
+    const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
+    if (!m_overlay) {
+        m_overlay = makeTexture(m_gl);
+        labelGlObject(GlLabelKind::Texture, m_overlay.id(), QStringLiteral("depth view: legend and outlines"));
+    }
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_overlay.id());
+    m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.constBits());
+    Program& p = program({QStringLiteral("OVERLAY")});
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.blend = true;     // premultiplied alpha
+    state.blendDestinationRgb = GL_ONE_MINUS_SRC_ALPHA;
+    state.blendDestinationAlpha = GL_ONE_MINUS_SRC_ALPHA;
+    applyPassState(m_gl, state);
+    p.program.bind();
+    p.program.set(p.depth, 0);
+    p.program.set(p.uvOffset, glm::vec2(0.0f));
+    p.program.set(p.uvScale, glm::vec2(1.0f));
+    m_gl->glBindSampler(0, m_sampler.id());
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindSampler(0, 0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    applyPassState(m_gl, PassState{});
 }
 
 } // namespace shadowlab

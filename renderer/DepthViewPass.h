@@ -1,41 +1,70 @@
 #pragma once
 
+#include "DepthRangePass.h"
 #include "LightMath.h"
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
+#include "ShadowMap.h"
 
+#include <QImage>
+#include <QRect>
 #include <QRectF>
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace shadowlab {
 
-// Draws a shadow map as a grey image: raw depth for an ortho light, linearised between near
-// and far for a perspective one; a reversed-depth map is flipped back first, so it looks the same. Usable from any context that shares the map's texture, so
-// the depth-map widget samples the renderer's map directly.
+// The depths a shadow map really holds: its nearest and farthest written texel, in conventional
+// [0, 1] depth (0 at the light's near plane), whatever the map's storage.
+struct DepthSpan {
+    double nearest = 0.0;
+    double farthest = 1.0;
+};
+
+// Draws a shadow map through a perceptual colour ramp (shaders/ramp.glsl) stretched to the
+// depths its texels hold: raw depth for an ortho light, linearised between near and far for a
+// perspective one; a reversed-depth map is flipped back first, so it looks the same. Empty
+// texels (the far plane) are hatched grey. Usable from any context that shares the map's
+// texture, so the depth-map widget samples the renderer's map directly.
 class DepthViewPass {
 public:
     explicit DepthViewPass(GlFunctions* gl);
+    ~DepthViewPass();
+
+    // The written range of `map` (nullopt when nothing was drawn into it). Reads back one texel
+    // of a min/max reduction: call it once per shadow pass, not per frame.
+    std::optional<DepthSpan> measure(const ShadowMap& map, const LightFrame& light);
 
     // `visible` is the part of the map shown, in map coordinates ([0, 1]^2 is the whole map,
-    // y up); it is stretched over the whole target.
+    // y up); it is stretched over `viewport` (GL pixels, y up; empty: the whole target).
+    // `span` stretches the ramp (nullopt: the whole [0, 1]).
     void render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target,
-                const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
+                const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0), const QRect& viewport = QRect(),
+                const std::optional<DepthSpan>& span = std::nullopt);
+    // The ramp itself from near (left) to far (right) over `viewport`: the legend's colour bar.
+    void renderLegend(const RenderTarget& target, const QRect& viewport);
+    // `image` (premultiplied RGBA, the target's size, top row first) blended over the target:
+    // the picture's text and outlines, painted with QPainter's raster engine.
+    void renderOverlay(const RenderTarget& target, const QImage& image);
 
 private:
     struct Program {
         Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
-        GLint depth, nearPlane, farPlane, uvOffset, uvScale;
+        GLint depth, nearPlane, farPlane, uvOffset, uvScale, span;
     };
+    Program& program(const QStringList& defines);
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
     GlSampler m_sampler;
-    // Variants by (perspective, reversed depth), compiled when first shown.
-    std::map<std::pair<bool, bool>, std::unique_ptr<Program>> m_programs;
+    std::unique_ptr<DepthRangePass> m_range;    // built on first measure()
+    GlTexture m_overlay;                        // built on first renderOverlay()
+    // Variants by their defines (perspective, reversed depth, legend), compiled when first shown.
+    std::map<QString, std::unique_ptr<Program>> m_programs;
 };
 
 } // namespace shadowlab

@@ -79,6 +79,8 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("SHADING_PHONG");
     if (measure)
         defines << QStringLiteral("MEASURE");
+    else if (settings.shading.texelDensity && settings.shadow.enabled)
+        defines << QStringLiteral("TEXEL_DENSITY");   // a view only: never in what is measured
     return defines;
 }
 

@@ -160,13 +160,32 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     return m_measureTarget->read(m_camera.position);
 }
 
-void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible)
+std::optional<DepthSpan> Renderer::depthMapSpan()
+{
+    if (!m_shadowMap.texture())
+        return std::nullopt;
+    if (!m_depthView)
+        m_depthView = std::make_unique<DepthViewPass>(m_gl);
+    if (m_spanGeneration != m_mapGeneration) {
+        m_span = m_depthView->measure(m_shadowMap, m_light);
+        m_spanGeneration = m_mapGeneration;
+    }
+    return m_span;
+}
+
+void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible, const QRect& viewport)
 {
     if (!m_shadowMap.texture() || target.size.isEmpty())
         return;
+    const std::optional<DepthSpan> span = depthMapSpan();
+    m_depthView->render(m_shadowMap.texture(), m_light, target, visible, viewport, span);
+}
+
+void Renderer::renderDepthLegend(const RenderTarget& target, const QRect& viewport)
+{
     if (!m_depthView)
         m_depthView = std::make_unique<DepthViewPass>(m_gl);
-    m_depthView->render(m_shadowMap.texture(), m_light, target, visible);
+    m_depthView->renderLegend(target, viewport);
 }
 
 QString Renderer::rendererString() const

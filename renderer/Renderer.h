@@ -39,8 +39,14 @@ public:
     // Uses (and fills) the same shadow-map cache as render(). Throws like render().
     VisibilityBuffer renderVisibility(const Settings& settings, QSize size);
 
-    // Draws the current shadow map (from the last render()) into `target`.
-    void renderDepthMap(const RenderTarget& target, const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
+    // Draws the current shadow map (from the last render()) into `target` (over `viewport`, GL
+    // pixels; empty: all of it), its colour ramp stretched to depthMapSpan().
+    void renderDepthMap(const RenderTarget& target, const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0), const QRect& viewport = QRect());
+    // The depth-map view's colour bar over `viewport`.
+    void renderDepthLegend(const RenderTarget& target, const QRect& viewport);
+    // The nearest and farthest depth written into the current map (nullopt: none), measured
+    // once per shadow pass.
+    std::optional<DepthSpan> depthMapSpan();
 
     const FrameStats& lastFrame() const { return m_stats; }
     const LightFrame& lightFrame() const { return m_light; }
@@ -94,6 +100,8 @@ private:
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from
+    int m_spanGeneration = -1;          // ... and the written span
+    std::optional<DepthSpan> m_span;
     std::unique_ptr<GpuScene> m_scene;
     std::unique_ptr<MeasureTarget> m_measureTarget;   // built on first measurement
     GpuTimer m_shadowTimer;

@@ -9,13 +9,23 @@
 // counts from the base level).
 uniform sampler2D uSource;
 uniform int uSourceSize;    // of the level read (the atlas is wider than its level 0)
+#ifdef WRITTEN_ONLY
+// What an empty texel holds (1, or 0 in a reversed map): it counts as no depth at all, so
+// level 0 and up hold the range of the written texels only (min > max where there are none).
+uniform float uEmpty;
+#endif
 
 out vec2 range;
 
 vec2 fetchRange(ivec2 p)
 {
 #ifdef FROM_DEPTH
-    return texelFetch(uSource, p, 0).rr;
+    float depth = texelFetch(uSource, p, 0).r;
+#ifdef WRITTEN_ONLY
+    if (depth == uEmpty)
+        return vec2(1.0e30, -1.0e30);
+#endif
+    return vec2(depth);
 #else
     return texelFetch(uSource, p, 0).rg;
 #endif
@@ -38,6 +48,14 @@ void main()
     vec4 d = textureGather(uSource, (vec2(p) + vec2(3.0, 3.0)) * texel);
     vec4 lowest = min(min(a, b), min(c, d));
     vec4 highest = max(max(a, b), max(c, d));
+#ifdef WRITTEN_ONLY
+    // Empty texels out of both: a gathered value is empty only if all four of its sources
+    // are, so take each source's range with its empties set aside.
+    lowest = min(min(mix(a, vec4(1.0e30), equal(a, vec4(uEmpty))), mix(b, vec4(1.0e30), equal(b, vec4(uEmpty)))),
+                 min(mix(c, vec4(1.0e30), equal(c, vec4(uEmpty))), mix(d, vec4(1.0e30), equal(d, vec4(uEmpty)))));
+    highest = max(max(mix(a, vec4(-1.0e30), equal(a, vec4(uEmpty))), mix(b, vec4(-1.0e30), equal(b, vec4(uEmpty)))),
+                  max(mix(c, vec4(-1.0e30), equal(c, vec4(uEmpty))), mix(d, vec4(-1.0e30), equal(d, vec4(uEmpty)))));
+#endif
     range = vec2(min(min(lowest.x, lowest.y), min(lowest.z, lowest.w)), max(max(highest.x, highest.y), max(highest.z, highest.w)));
 #else
     range = vec2(1.0e30, -1.0e30);

@@ -1,15 +1,39 @@
-// Depth-map view: raw depth for an ortho light, linear distance between near and far for a
-// perspective one (raw perspective depth is nearly all white). Outside the map: dark blue.
+// Depth-map view: the map stretched to the depths its texels actually hold (uSpan) and drawn
+// through a perceptual colour ramp, near the light dark, far pale; a perspective light's depth
+// is linearised first (raw perspective depth is nearly all one value). Texels nothing was drawn
+// into (the far plane) are hatched grey; outside the map is the pane's dark blue.
+// With LEGEND the pass draws the ramp itself across the viewport, for the colour bar; with
+// OVERLAY it draws an image (uDepth holds it, premultiplied, top row first) for blending.
+#include "ramp.glsl"
+
 in vec2 vUv;
 
 uniform sampler2D uDepth;
 uniform float uNear;
 uniform float uFar;
+uniform vec2 uSpan;     // nearest and farthest written depth (conventional [0, 1] depth)
 
 out vec4 fragColor;
 
+// Conventional depth -> a value that is linear in distance from the light (log for huge far/near).
+float linear(float depth)
+{
+#ifdef LINEARIZE
+    float ndc = depth * 2.0 - 1.0;
+    float distance = 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
+    return uFar > 1000.0 * uNear ? log(distance / uNear) / log(uFar / uNear) : (distance - uNear) / (uFar - uNear);
+#else
+    return depth;
+#endif
+}
+
 void main()
 {
+#if defined(LEGEND)
+    fragColor = vec4(depthRamp(vUv.x), 1.0);
+#elif defined(OVERLAY)
+    fragColor = texture(uDepth, vec2(vUv.x, 1.0 - vUv.y));
+#else
     if (any(lessThan(vUv, vec2(0.0))) || any(greaterThan(vUv, vec2(1.0)))) {
         fragColor = vec4(0.08, 0.09, 0.13, 1.0);
         return;
@@ -18,11 +42,13 @@ void main()
 #ifdef REVERSED_Z
     depth = 1.0 - depth;        // reversed maps store 1 - the conventional depth
 #endif
-#ifdef LINEARIZE
-    float ndc = depth * 2.0 - 1.0;
-    float distance = 2.0 * uNear * uFar / (uFar + uNear - ndc * (uFar - uNear));
-    // A huge far/near ratio puts everything near black on a linear scale: go logarithmic.
-    depth = uFar > 1000.0 * uNear ? log(distance / uNear) / log(uFar / uNear) : (distance - uNear) / (uFar - uNear);
+    if (depth >= 1.0) {
+        float stripe = mod(floor((gl_FragCoord.x + gl_FragCoord.y) / 6.0), 2.0);
+        fragColor = vec4(vec3(0.30 + 0.05 * stripe), 1.0);
+        return;
+    }
+    float lo = linear(uSpan.x), hi = linear(uSpan.y);
+    float t = hi > lo ? (linear(depth) - lo) / (hi - lo) : 0.5;
+    fragColor = vec4(depthRamp(t), 1.0);
 #endif
-    fragColor = vec4(vec3(depth), 1.0);
 }

@@ -2,7 +2,12 @@
 // shadow visibility from the filter in shadow_filters.glsl. Ambient stays in shadow.
 // With MEASURE the same shadow term also goes to two float targets for the accuracy
 // measurement, so what is measured is exactly what is shaded.
+// With TEXEL_DENSITY receivers inside the light's volume are tinted by how many screen pixels
+// one shadow texel covers (densityRamp), from the screen-space derivatives of the map position.
 #include "shadow_filters.glsl"
+#ifdef TEXEL_DENSITY
+#include "ramp.glsl"
+#endif
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -108,6 +113,14 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 
 void main()
 {
+#ifdef TEXEL_DENSITY
+    // Derivatives before any branch, where they are defined.
+    vec3 mapCoord = vShadowCoord.xyz / vShadowCoord.w;
+    vec2 texel = mapCoord.xy / uShadowTexel;
+    vec2 tx = dFdx(texel), ty = dFdy(texel);
+    float texelsPerPixel = sqrt(abs(tx.x * ty.y - tx.y * ty.x));
+    bool inMap = vShadowCoord.w > 0.0 && all(greaterThanEqual(mapCoord.xy, vec2(0.0))) && all(lessThanEqual(mapCoord.xy, vec2(1.0)));
+#endif
     vec3 albedo = texture(uDiffuse, vUv).rgb * uBaseColour;
     vec3 normal = normalize(vNormal);
     vec3 toLight = directionToLight(vPosition);
@@ -126,6 +139,10 @@ void main()
     vec3 ambient = 0.3 * albedo;
     vec3 direct = diffuse * albedo + specular * vec3(0.3);
     fragColor = vec4(ambient + visibility * direct, 1.0);
+#ifdef TEXEL_DENSITY
+    if (uReceives && inMap)
+        fragColor.rgb = mix(fragColor.rgb, densityRamp(1.0 / max(texelsPerPixel, 1e-6)), 0.6);
+#endif
 #ifdef MEASURE
     vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));
     if (dot(geometric, normal) < 0.0)

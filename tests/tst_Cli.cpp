@@ -41,6 +41,27 @@ private:
     QTemporaryDir m_dir;
 
 private Q_SLOTS:
+    void presetOptionStartsFromAnArtifactPreset()
+    {
+        const Run unknown = shadowlab({"render", "--preset", "acme", "--size", "64x64", "--out", m_dir.filePath("p.png")});
+        QCOMPARE(unknown.exitCode, 2);
+        for (const char* name : {"acne", "peter-panning", "light-leak", "blocky-aliasing", "depth-precision", "volume-clipping"})
+            QVERIFY2(unknown.err.contains(name), qPrintable(unknown.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("p.png")));
+        // The preset's scene and keys, with --set on top; the depth-precision preset warns as
+        // its settings would.
+        const Run precision = shadowlab({"render", "--preset", "depth-precision", "--size", "64x64", "--out", m_dir.filePath("p.png")});
+        QVERIFY2(precision.exitCode == 0, qPrintable(precision.err));
+        QVERIFY2(precision.err.contains("far/near"), qPrintable(precision.err));
+        const Run fixed = shadowlab({"render", "--preset", "depth-precision", "--set", "light.near=1", "--size", "64x64", "--out",
+                                     m_dir.filePath("p.png")});
+        QVERIFY2(fixed.exitCode == 0 && !fixed.err.contains("far/near"), qPrintable(fixed.err));
+        for (const char* command : {"bench", "report", "tune", "screenshot"}) {
+            const Run help = shadowlab({command, "--help"});
+            QVERIFY2(help.out.contains("--preset"), command);
+        }
+    }
+
     void renderWritesTheSceneAndTheDepthMap()
     {
         const QString scene = m_dir.filePath("scene.png");
@@ -51,7 +72,13 @@ private Q_SLOTS:
         QVERIFY(r.out.contains("scene.png"));
         const QImage image(scene);
         QCOMPARE(image.size(), QSize(320, 200));
-        QCOMPARE(QImage(depth).size(), QSize(512, 512));
+        // The depth picture: the map in a square as wide as the map (at least 320, at most 1024
+        // pixels), the 58-pixel legend under it.
+        const QImage depthImage(depth);
+        QCOMPARE(depthImage.size(), QSize(512, 512 + 58));
+        // The legend's colour bar runs from dark (near the light) to pale (far).
+        const int barRow = 512 + 22 + 6;
+        QVERIFY(qGray(depthImage.pixel(12, barRow)) + 100 < qGray(depthImage.pixel(512 - 12, barRow)));
         QSet<QRgb> colours;
         for (int y = 0; y < image.height(); y += 10)
             for (int x = 0; x < image.width(); x += 10)
@@ -163,7 +190,7 @@ private Q_SLOTS:
         const Run r = shadowlab({"render", "--settings", file, "--set", "map.size=128", "--size", "64x64", "--out",
                                  m_dir.filePath("combined.png"), "--depth-out", m_dir.filePath("combined-depth.png")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QCOMPARE(QImage(m_dir.filePath("combined-depth.png")).size(), QSize(128, 128)); // --set wins over the file
+        QCOMPARE(QImage(m_dir.filePath("combined-depth.png")).text("map.size"), QStringLiteral("128")); // --set wins over the file
     }
 
     void badInputExitsWithTwoAndNamesTheProblem_data()

@@ -94,6 +94,49 @@ class TestLightMath : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void cameraFootprintIsWhatTheCameraSeesAsTheLightSeesIt()
+    {
+        // A light straight down over a flat 20 x 20 ground box, covering [-10, 10]^2: map
+        // coordinates are the ground's x and z scaled to [0, 1].
+        LightSettings light;
+        light.position = {0.0, 10.0, 0.0};
+        light.target = {0.0, 0.0, 0.0};
+        light.extent = 10.0;
+        light.nearPlane = 1.0;
+        light.farPlane = 20.0;
+        light.fit = LightFit::Manual;
+        const LightFrame frame = computeLightFrame(light);
+        Bounds ground;
+        ground.extend(glm::dvec3(-10.0, -0.1, -10.0));
+        ground.extend(glm::dvec3(10.0, 0.0, 10.0));
+        // A camera straight above (0, 0, 3), looking down with a 40° field of view from height 5:
+        // it sees about 2 * 5 * tan(20°) = 3.6 units of ground around that point.
+        CameraSettings camera;
+        camera.position = {0.0, 5.0, 3.0};
+        camera.target = {0.0, 0.0, 3.001};
+        camera.fov = 40.0;
+        const CameraFrame view = computeCameraFrame(camera, 1.0, ground);
+        const std::vector<glm::dvec2> footprint = cameraFootprint(ground, view.viewProjection, frame.shadowMatrix);
+        QVERIFY(footprint.size() >= 4);
+        glm::dvec2 lo(1e9), hi(-1e9);
+        double area = 0.0;
+        for (std::size_t i = 0; i < footprint.size(); ++i) {
+            const glm::dvec2 a = footprint[i], b = footprint[(i + 1) % footprint.size()];
+            area += a.x * b.y - a.y * b.x;
+            lo = glm::min(lo, a);
+            hi = glm::max(hi, a);
+        }
+        QVERIFY2(area > 0.0, "counter-clockwise");
+        const glm::dvec4 centre = frame.shadowMatrix * glm::dvec4(0.0, 0.0, 3.0, 1.0);
+        QVERIFY(lo.x < centre.x && centre.x < hi.x && lo.y < centre.y && centre.y < hi.y);
+        const double side = 2.0 * 5.0 * std::tan(glm::radians(20.0)) / 20.0;    // in map units
+        QVERIFY2(std::abs((hi.x - lo.x) - side) < 0.02 && std::abs((hi.y - lo.y) - side) < 0.02,
+                 qPrintable(QString("footprint %1 x %2, expected about %3").arg(hi.x - lo.x).arg(hi.y - lo.y).arg(side)));
+        // Looking away from the ground: nothing seen, no footprint.
+        camera.target = {0.0, 10.0, 3.001};
+        QVERIFY(cameraFootprint(ground, computeCameraFrame(camera, 1.0, ground).viewProjection, frame.shadowMatrix).empty());
+    }
+
     void frameIsFiniteAndOrthonormal_data()
     {
         QTest::addColumn<glm::dvec3>("position");

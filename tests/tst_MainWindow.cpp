@@ -3,6 +3,8 @@
 // assertions are what that person would check: the picture changed, the two sides match or
 // differ, the refused value is marked and the picture stayed, nothing draws while idle.
 #include "Application.h"
+#include "ArtifactPresets.h"
+#include "DepthMapPicture.h"
 #include "DepthMapView.h"
 #include "AccuracyDock.h"
 #include "HeadlessTestMain.h"
@@ -124,6 +126,13 @@ private slots:
     void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
+    void presetButtonShowsTheArtifactAndTheFix_data();
+    void presetButtonShowsTheArtifactAndTheFix();
+    void everySettingHasADockField();
+    void cameraFieldsMoveTheSharedCamera();
+    void depthLegendSpansTheDepthsInTheMap_data();
+    void depthLegendSpansTheDepthsInTheMap();
+    void statusBarShowsMediansAndMeasuresFrames();
 
 private:
     SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
@@ -622,6 +631,143 @@ void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
     emit dock->applySettingsRequested(chosen);
     QCOMPARE(applied.count(), 1);
     QVERIFY(m_window->settings(Side::A).filter.mode == FilterMode::Pcf64);
+}
+
+void tst_MainWindow::presetButtonShowsTheArtifactAndTheFix_data()
+{
+    QTest::addColumn<QString>("name");
+    for (const QString& name : artifactPresetNames())
+        QTest::newRow(qPrintable(name)) << name;
+}
+
+void tst_MainWindow::presetButtonShowsTheArtifactAndTheFix()
+{
+    QFETCH(QString, name);
+    const ArtifactPreset& preset = artifactPreset(name);
+    auto* dock = m_window->propertiesDock();
+    auto* button = dock->findChild<QPushButton*>(QStringLiteral("preset.") + name);
+    QVERIFY2(button, "every preset has a button in the dock");
+    QVERIFY(button->toolTip().contains(QStringLiteral("--preset ") + name));
+    const QImage before = scene();
+    QTest::mouseClick(button, Qt::LeftButton);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A), artifactPresetSettings(preset));
+    auto* note = dock->findChild<QLabel*>(QStringLiteral("presetNote"));
+    QVERIFY(note->isVisibleTo(dock));
+    QVERIFY2(note->text().contains(preset.lookFor.toHtmlEscaped().left(30)), qPrintable(note->text()));
+    QVERIFY2(differingPixels(before, scene()) > 100, "the preset changes the picture");
+    // The dock's fields show the preset's values.
+    for (auto it = preset.settings.begin(); it != preset.settings.end(); ++it) {
+        if (auto* box = field(it.key()); box && it.value().isDouble() && it.key() != u"light.near")
+            QCOMPARE(box->value(), it.value().toDouble());
+    }
+    auto* fix = dock->findChild<QPushButton*>(QStringLiteral("presetFix"));
+    QVERIFY(fix->isVisibleTo(dock) && fix->isEnabled());
+    QTest::mouseClick(fix, Qt::LeftButton);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A), artifactPresetFixed(preset));
+    QVERIFY(!fix->isEnabled());
+}
+
+void tst_MainWindow::everySettingHasADockField()
+{
+    auto* dock = m_window->propertiesDock();
+    for (const SettingKey& key : settingKeys()) {
+        if (key.type == u"vec3") {
+            for (const char* axis : {".x", ".y", ".z"})
+                QVERIFY2(dock->findChild<SliderSpinBox*>(key.key + QLatin1String(axis)), qPrintable(key.key + QLatin1String(axis)));
+        } else {
+            QWidget* editor = dock->findChild<QWidget*>(key.key);
+            QVERIFY2(editor, qPrintable(key.key + QStringLiteral(" has no field in the dock")));
+            // The tooltip is the table's help, so the dock explains what the CLI explains (a
+            // fitted, read-only field says instead why it cannot be edited).
+            if (editor->isEnabled())
+                QVERIFY2(editor->toolTip().contains(key.help.left(30).toHtmlEscaped()), qPrintable(key.key));
+        }
+    }
+    // Shown in the dock as the settings hold them.
+    for (const QString& key : {QStringLiteral("light.radius"), QStringLiteral("bias.normal"), QStringLiteral("camera.fov")})
+        QCOMPARE(field(key)->value(), settingValue(m_window->settings(Side::A), key).toDouble());
+    QCOMPARE(dock->findChild<QComboBox*>(QStringLiteral("light.fit"))->currentText(), settingValue(m_window->settings(Side::A), "light.fit"));
+    QCOMPARE(dock->findChild<QCheckBox*>(QStringLiteral("light.stabilize"))->isChecked(), m_window->settings(Side::A).light.stabilize);
+}
+
+void tst_MainWindow::cameraFieldsMoveTheSharedCamera()
+{
+    m_window->setCompareMode(true);
+    QVERIFY(settle(*m_window));
+    const QImage before = scene();
+    SliderSpinBox* x = field(QStringLiteral("camera.position.x"));
+    QVERIFY(x);
+    x->spinBox()->setValue(x->value() - 3.0);
+    x->spinBox()->editingFinished();
+    QVERIFY(settle(*m_window));
+    const double expected = presetSettings(QStringLiteral("seed")).camera.position.x - 3.0;
+    QCOMPARE(m_window->settings(Side::A).camera.position.x, expected);
+    QCOMPARE(m_window->settings(Side::B).camera.position.x, expected);  // one camera for both sides
+    QVERIFY2(differingPixels(before, scene()) > 100, "the view moved");
+    // Orbiting the view writes back into the fields.
+    QTest::keyClick(m_window->sceneView(Side::A), Qt::Key_R);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(x->value(), presetSettings(QStringLiteral("seed")).camera.position.x);
+}
+
+void tst_MainWindow::depthLegendSpansTheDepthsInTheMap_data()
+{
+    QTest::addColumn<QStringList>("assignments");
+    QTest::addColumn<double>("nearest");    // distances from the light, world units
+    QTest::addColumn<double>("farthest");
+    // The occluder scene's light is 6 above the ground, straight down; the board's top is at 1.02,
+    // its bottom at 0.98. With back faces only (front faces culled) the ground is not in the map.
+    QTest::newRow("ortho, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false"} << 4.98 << 6.0;
+    QTest::newRow("ortho, back faces only") << QStringList{"light.fit=manual", "bias.cull_front=true"} << 5.02 << 5.02;
+    QTest::newRow("perspective, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false", "light.projection=perspective", "light.fov=60"}
+                                             << 4.98 << 6.0;
+}
+
+void tst_MainWindow::depthLegendSpansTheDepthsInTheMap()
+{
+    QFETCH(QStringList, assignments);
+    QFETCH(double, nearest);
+    QFETCH(double, farthest);
+    Settings s = presetSettings(QStringLiteral("occluder"));
+    for (const QString& a : assignments)
+        applyAssignment(s, a);
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    const std::optional<DepthSpan> span = m_window->depthMapView()->shownSpan();
+    QVERIFY2(span, "the legend has a range");
+    const LightFrame& light = m_window->sceneView(Side::A)->renderer()->lightFrame();
+    // Depth is the distance along the light's axis for ortho and perspective lights alike, so the
+    // horizontal board and ground each have one depth.
+    const double slack = 0.02;
+    QVERIFY2(std::abs(depthToDistance(light, span->nearest) - nearest) <= slack,
+             qPrintable(QString("nearest %1 wu, expected %2").arg(depthToDistance(light, span->nearest)).arg(nearest)));
+    QVERIFY2(std::abs(depthToDistance(light, span->farthest) - farthest) <= slack,
+             qPrintable(QString("farthest %1 wu, expected %2").arg(depthToDistance(light, span->farthest)).arg(farthest)));
+    // The picture uses the ramp's whole range: dark near, pale far, and the empty hatching.
+    const QImage picture = depthMap();
+    QVERIFY2(distinctLevels(picture) > 20, "a legend and a map, not a flat pane");
+}
+
+void tst_MainWindow::statusBarShowsMediansAndMeasuresFrames()
+{
+    auto* timing = m_window->findChild<QLabel*>(QStringLiteral("timingLabel"));
+    QVERIFY2(timing->text().contains(QStringLiteral("median of")), qPrintable(timing->text()));
+    const bool software = m_window->sceneView(Side::A)->renderer()->rendererString().contains(QStringLiteral("llvmpipe"));
+    QCOMPARE(timing->text().contains(QStringLiteral("CPU time")), software);
+    const int before = m_window->sceneView(Side::A)->frameCount();
+    const int shadowPasses = m_window->sceneView(Side::A)->renderer()->shadowPassCount();
+    m_window->action(QStringLiteral("measureAction"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->action(QStringLiteral("measureAction"))->isEnabled(), 120000);
+    QVERIFY(m_window->sceneView(Side::A)->frameCount() >= before + 100);
+    QVERIFY2(m_window->sceneView(Side::A)->renderer()->shadowPassCount() >= shadowPasses + 100, "every measured frame ran the shadow pass");
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("100 frames")), qPrintable(m_window->statusBar()->currentMessage()));
+    QVERIFY2(timing->text().contains(QStringLiteral("median of 100")), qPrintable(timing->text()));
+    // Compare mode: both sides' cost and the difference.
+    m_window->setCompareMode(true);
+    QVERIFY(settle(*m_window));
+    QVERIFY2(timing->text().contains(QStringLiteral("A: ")) && timing->text().contains(QStringLiteral("B − A")), qPrintable(timing->text()));
 }
 
 SHADOWLAB_TEST_MAIN(tst_MainWindow)

@@ -194,13 +194,15 @@ private slots:
         QVERIFY(m_window->settings(Side::A).bias.slope != original.bias.slope);
         QCOMPARE(m_window->undoStack(Side::A)->count(), 1);
 
-        // A second drag of the same slider is a step of its own.
+        // A second drag of the same slider (back, so it moves even if the first reached the
+        // end) is a step of its own.
         const double afterFirst = m_window->settings(Side::A).bias.slope;
         const QPoint second = handleCentre(slider);
         QTest::mousePress(slider, Qt::LeftButton, {}, second);
         for (int dx = 4; dx <= 40; dx += 4)
-            QTest::mouseMove(slider, second + QPoint(dx, 0));
-        QTest::mouseRelease(slider, Qt::LeftButton, {}, second + QPoint(40, 0));
+            QTest::mouseMove(slider, second - QPoint(dx, 0));
+        QTest::mouseRelease(slider, Qt::LeftButton, {}, second - QPoint(40, 0));
+        QVERIFY(m_window->settings(Side::A).bias.slope != afterFirst);
         QCOMPARE(m_window->undoStack(Side::A)->count(), 2);
 
         m_window->action(QStringLiteral("undoAction"))->trigger();

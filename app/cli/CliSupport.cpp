@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 
+#include "ArtifactPresets.h"
 #include "IoError.h"
 #include "Limits.h"
 #include "OutputFile.h"
@@ -104,6 +105,10 @@ void addSettingsOptions(QCommandLineParser& parser)
                       QStringLiteral("key=value")});
     parser.addOption({QStringLiteral("settings"), QStringLiteral("Read settings from a JSON file of key: value pairs."),
                       QStringLiteral("file.json")});
+    parser.addOption({QStringLiteral("preset"),
+                      QStringLiteral("Start from an artifact preset (%1): its scene and the settings that show the artifact.")
+                          .arg(artifactPresetNames().join(QStringLiteral(", "))),
+                      QStringLiteral("name")});
 }
 
 Settings settingsFromOptions(const QCommandLineParser& parser)
@@ -113,7 +118,10 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
 
     // Read once: the file may be a pipe.
     const QJsonObject fileObject = file.isEmpty() ? QJsonObject() : readSettingsObject(file);
+    const ArtifactPreset* preset = parser.isSet(QStringLiteral("preset")) ? &artifactPreset(parser.value(QStringLiteral("preset"))) : nullptr;
     QString scene = QStringLiteral("seed");
+    if (preset && preset->settings.contains(QStringLiteral("scene")))
+        scene = preset->settings.value(QStringLiteral("scene")).toString();
     if (const QString fileScene = fileObject.value(QStringLiteral("scene")).toString(); !fileScene.isEmpty())
         scene = fileScene;
     if (parser.isSet(QStringLiteral("scene")))
@@ -129,6 +137,11 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     if (!sceneNames().contains(probe.scene)) {
         for (const QString& warning : loadSceneFile(probe.scene)->warnings)
             err() << "warning: " << QFileInfo(probe.scene).fileName() << ": " << warning << Qt::endl;
+    }
+    if (preset) {
+        QJsonObject keys = preset->settings;
+        keys.remove(QStringLiteral("scene"));   // an explicit --scene wins over the preset's
+        settings = settingsFromJson(keys, settings);
     }
     if (!file.isEmpty())
         settings = settingsFromFileObject(file, fileObject, settings);

@@ -40,11 +40,12 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
 // The parser's help with its usage line naming `shadowlab <command>`, not the binary's path.
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
 
-// Adds --scene, --set (repeatable) and --settings to `parser`.
+// Adds --scene, --set (repeatable), --settings and --preset to `parser`.
 void addSettingsOptions(QCommandLineParser& parser);
 
 // The settings those options describe: the scene's preset (from --set scene=..., --scene, the
-// file's "scene", or "seed", in that order), then the JSON file, then every --set in order.
+// file's "scene", the artifact preset's scene, or "seed", in that order), then the artifact
+// preset's keys, then the JSON file, then every --set in order.
 // Throws SettingsError; warnings of validate() are printed to stderr.
 Settings settingsFromOptions(const QCommandLineParser& parser);
 

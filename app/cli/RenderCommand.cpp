@@ -8,6 +8,8 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+
 namespace shadowlab::cli {
 
 namespace {
@@ -46,7 +48,9 @@ int runRender(const QStringList& arguments)
                           QStringLiteral("PNG of the lit scene (default: shadowlab-<scene>.png in the current folder, numbered -2, -3, ... "
                                          "rather than overwriting; with only --depth-out, no scene image)."),
                           QStringLiteral("file.png")});
-        parser.addOption({QStringLiteral("depth-out"), QStringLiteral("PNG of the light's shadow map."), QStringLiteral("file.png")});
+        parser.addOption({QStringLiteral("depth-out"),
+                          QStringLiteral("PNG of the light's shadow map as the explorer shows it: colour ramp, legend, light volume and camera outline."),
+                          QStringLiteral("file.png")});
         if (!parseArguments(parser, QStringLiteral("render"), arguments))
             return kExitOk;
         const Settings settings = settingsFromOptions(parser);
@@ -74,9 +78,9 @@ int runRender(const QStringList& arguments)
         if (writeScene)
             scenePng = encodePng(scene);
         if (writeDepth) {
-            const int side = std::min(settings.map.size, 2048);
-            depthSize = QSize(side, side);
-            depthPng = encodePng(headless.renderDepthMap(depthSize));
+            const QImage depth = headless.renderDepthPicture(std::clamp(settings.map.size, 320, 1024));
+            depthSize = depth.size();
+            depthPng = encodePng(depth);
         }
         if (writeScene) {
             writeOutputFile(scenePath, scenePng);

@@ -1,5 +1,6 @@
 #include "ArtifactsHelp.h"
 
+#include "ArtifactPresets.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
@@ -47,10 +48,19 @@ or a filter (<i>Filtering → Filter</i>):</p>
 <i>Near</i> out, pull <i>Far</i> in, or use the <i>depth32f</i> format.</p>
 
 <h3>Reading the depth map</h3>
-<p>The pane beside the scene is the light's view: dark is near the light, white is far (or
-empty). A perspective light's depth is shown linearised between near and far. Hover a texel to
-read its coordinates and depth in the status bar; the status bar also shows how much world one
-texel covers, the number that decides how blocky the shadow is.</p>
+<p>The pane beside the scene is the light's view. Its colours run from dark blue (nearest the
+light) through green to pale yellow (farthest), stretched to the depths the map really holds;
+the legend under it gives those depths and their distance from the light in world units. Hatched
+grey is <i>empty (far plane)</i>: nothing was drawn there, so whatever lies there is lit. (With
+front faces culled a single-sided ground is not drawn either: it cannot shadow anything.) A
+perspective light's depth is shown linearised between near and far. The dashed frame is the
+light's volume, drawn at its real aspect; with <i>Volume: scene</i> it is fitted to what the
+camera sees, which is why the map moves as the camera does. The orange outline is the camera's
+visible region seen from the light. Hover a texel to read its coordinates and depth in the
+status bar; the status bar also shows how much world one texel covers, the number that decides
+how blocky the shadow is. <i>View → Texel Density Overlay</i> colours the scene by how many
+screen pixels one texel covers: blue under one, green one to two, yellow four, red eight and
+more (blocky).</p>
 )html";
 
 } // namespace
@@ -61,6 +71,12 @@ ArtifactsHelp::ArtifactsHelp(QWidget* parent) : QDialog(parent)
     auto* browser = new QTextBrowser;
     browser->setHtml(html());
     browser->setOpenExternalLinks(false);
+    browser->setOpenLinks(false);
+    // "preset:NAME" links show the artifact in the explorer.
+    connect(browser, &QTextBrowser::anchorClicked, this, [this](const QUrl& url) {
+        if (url.scheme() == u"preset")
+            emit presetRequested(url.path());
+    });
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
     auto* layout = new QVBoxLayout(this);
@@ -82,7 +98,15 @@ QString ArtifactsHelp::html()
     for (const ShadowTechnique& t : shadowTechniques())
         filters += QStringLiteral("<li><i>%1</i> — %2</li>").arg(t.label.toHtmlEscaped(), t.help.toHtmlEscaped());
     filters += QStringLiteral("</ul>");
-    return QString::fromUtf8(kArtifacts).replace(QStringLiteral("%FILTERS%"), filters) + table;
+    QString presets = QStringLiteral("<h3>See each artifact in one click</h3><p>Each link sets the selected side to an artifact "
+                                     "preset (also in the Properties dock, and <tt>--preset NAME</tt> on the command line):</p><ul>");
+    for (const ArtifactPreset& p : artifactPresets())
+        presets += QStringLiteral("<li><a href='preset:%1'><b>%2</b></a> (<tt>%1</tt>) — %3 <i>Fix:</i> %4</li>")
+                       .arg(p.name, p.title.toHtmlEscaped(), p.lookFor.toHtmlEscaped(), p.fix.toHtmlEscaped());
+    presets += QStringLiteral("</ul>");
+    QString text = QString::fromUtf8(kArtifacts).replace(QStringLiteral("%FILTERS%"), filters);
+    // Right after the introduction, before the artifacts one by one.
+    return text.replace(QStringLiteral("<h3>Shadow acne</h3>"), presets + QStringLiteral("<h3>Shadow acne</h3>")) + table;
 }
 
 } // namespace shadowlab

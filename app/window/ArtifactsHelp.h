@@ -4,8 +4,8 @@
 
 namespace shadowlab {
 
-// Help → Shadow Artifacts: what each artifact looks like, why it happens and which settings
-// trade it against which; then every setting with its range and help, read from settingKeys()
+// Help → Shadow Artifacts: one link per artifact preset, what each artifact looks like, why it
+// happens and which settings trade it against which; then every setting with its range and help, read from settingKeys()
 // so the page cannot drift from the dock and the command line.
 class ArtifactsHelp : public QDialog {
     Q_OBJECT
@@ -14,6 +14,10 @@ public:
     explicit ArtifactsHelp(QWidget* parent = nullptr);
 
     static QString html();
+
+signals:
+    // A preset link was clicked: show that artifact.
+    void presetRequested(const QString& name);
 };
 
 } // namespace shadowlab

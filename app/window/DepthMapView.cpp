@@ -1,5 +1,6 @@
 #include "DepthMapView.h"
 
+#include "DepthMapPicture.h"
 #include "DepthViewPass.h"
 #include "GlDebug.h"
 #include "RenderError.h"
@@ -9,6 +10,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QWheelEvent>
 
@@ -50,19 +52,22 @@ void DepthMapView::setSource(SceneView* source)
     if (source)
         m_sourceConnection = connect(source, &SceneView::frameRendered, this, &DepthMapView::onSourceFrame);
     m_seenShadowPasses = -1;
+    m_spanShadowPass = -1;
     update();
 }
 
 void DepthMapView::onSourceFrame()
 {
-    // Only a new shadow pass changes the map: a camera move redraws the scene, not this view.
+    // A new shadow pass changes the map, a camera move the outline of what the camera sees.
     const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
     const int passes = renderer ? renderer->shadowPassCount() : -1;
     const bool enabled = m_source && m_source->renderedSettings() && m_source->renderedSettings()->shadow.enabled;
-    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled)
+    const std::optional<glm::dmat4> camera = renderer ? std::optional(renderer->cameraFrame().viewProjection) : std::nullopt;
+    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled && camera == m_seenCamera)
         return;
     m_seenShadowPasses = passes;
     m_seenShadowsEnabled = enabled;
+    m_seenCamera = camera;
     update();
 }
 
@@ -111,8 +116,26 @@ void DepthMapView::paintGL()
     m_gl->glClear(GL_COLOR_BUFFER_BIT);
     if (m_pass && hasMap()) {
         const Renderer& renderer = *m_source->renderer();
-        m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(),
-                       {defaultFramebufferObject(), size() * devicePixelRatio()}, visibleRect());
+        // The stretch is measured here, in this context, once per shadow pass.
+        if (m_spanShadowPass != renderer.shadowPassCount()) {
+            m_span = m_pass->measure(renderer.shadowMap(), renderer.lightFrame());
+            m_spanShadowPass = renderer.shadowPassCount();
+        }
+        const DepthMapPicture picture(size());
+        const RenderTarget target{defaultFramebufferObject(), size() * devicePixelRatio()};
+        const QRectF visible = visibleRect();
+        m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(), target, visible,
+                       picture.glViewport(picture.mapArea(), devicePixelRatio()), m_span);
+        m_pass->renderLegend(target, picture.glViewport(picture.legendBar(), devicePixelRatio()));
+        // Text and outlines through QPainter's raster engine, blended over the map as one image.
+        QImage overlay(target.size, QImage::Format_ARGB32_Premultiplied);
+        overlay.fill(Qt::transparent);
+        overlay.setDevicePixelRatio(devicePixelRatio());
+        {
+            QPainter painter(&overlay);
+            picture.paint(painter, depthMapFacts(renderer, m_span), visible);
+        }
+        m_pass->renderOverlay(target, overlay);
     }
     ++m_frameCount;
     emit frameRendered();
@@ -120,17 +143,19 @@ void DepthMapView::paintGL()
 
 QRectF DepthMapView::visibleRect() const
 {
-    const double side = std::max(1, std::min(width(), height()));
-    const double perPixel = 1.0 / (side * m_zoom);
-    const QSizeF extent(width() * perPixel, height() * perPixel);
-    return {m_center - QPointF(extent.width(), extent.height()) * 0.5, extent};
+    const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
+    const double aspect = renderer ? DepthMapPicture::aspect(renderer->lightFrame()) : 1.0;
+    return DepthMapPicture(size()).visible(aspect, m_zoom, m_center);
 }
 
 QPointF DepthMapView::mapPoint(QPointF p) const
 {
-    const QRectF visible = visibleRect();
-    return {visible.x() + p.x() / std::max(1, width()) * visible.width(),
-            visible.y() + (1.0 - p.y() / std::max(1, height())) * visible.height()};
+    return DepthMapPicture(size()).toMap(p, visibleRect());
+}
+
+std::optional<DepthSpan> DepthMapView::shownSpan() const
+{
+    return m_span;
 }
 
 void DepthMapView::resetZoom()
@@ -186,8 +211,8 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
     // Distance from the light along its axis: depth is linear for an ortho light, and the
     // perspective depth curve inverted for a perspective one.
     const LightFrame& light = renderer.lightFrame();
-    const double n = light.nearPlane, f = light.farPlane, d = *depth;
-    const double distance = light.perspective ? 2.0 * n * f / (f + n - (d * 2.0 - 1.0) * (f - n)) : n + d * (f - n);
+    const double d = *depth;
+    const double distance = depthToDistance(light, d);
     const QString where = d >= 1.0 ? QStringLiteral("empty (far plane)")
                                    : QStringLiteral("%1 from the light").arg(distance, 0, 'f', 3);
     emit texelHovered(QStringLiteral("texel %1, %2 · depth %3 · %4").arg(x).arg(y).arg(d, 0, 'f', 5).arg(where));
@@ -204,7 +229,7 @@ void DepthMapView::mouseMoveEvent(QMouseEvent* event)
     const QPointF position = event->position();
     if (event->buttons() != Qt::NoButton) {
         const QPointF delta = position - m_lastMouse;
-        const double perPixel = visibleRect().width() / std::max(1, width());
+        const double perPixel = visibleRect().height() / std::max(1, DepthMapPicture(size()).mapArea().height());
         m_center += QPointF(-delta.x() * perPixel, delta.y() * perPixel);
         update();
     }

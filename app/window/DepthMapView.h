@@ -1,6 +1,9 @@
 #pragma once
 
+#include "DepthViewPass.h"
 #include "GlObject.h"
+
+#include <glm/mat4x4.hpp>
 
 #include <QOpenGLWidget>
 #include <QPointF>
@@ -12,13 +15,14 @@
 
 namespace shadowlab {
 
-class DepthViewPass;
 class SceneView;
 
 // The light's shadow map in its own QOpenGLWidget. Its context shares textures with the scene
 // views' (Qt::AA_ShareOpenGLContexts), so it samples the source view's map directly, with its
-// own DepthViewPass. The map is fitted to the pane; wheel zooms around the cursor, drag pans,
-// double-click or Home fits again. Hovering reports the texel under the cursor.
+// own DepthViewPass, and draws it as DepthMapPicture lays it out: a colour ramp stretched to
+// the depths the map holds, at the light volume's aspect, with the volume's and the camera's
+// outlines and a legend. The map is fitted to the pane; wheel zooms around the cursor, drag
+// pans, double-click or Home fits again. Hovering reports the texel under the cursor.
 class DepthMapView : public QOpenGLWidget {
     Q_OBJECT
 
@@ -35,6 +39,8 @@ public:
     // The part of the map shown, in map coordinates ([0, 1]^2 is the whole map, y up).
     QRectF visibleRect() const;
     int frameCount() const { return m_frameCount; }
+    // The depths the colour ramp is stretched over, as the legend says (nullopt: none drawn).
+    std::optional<DepthSpan> shownSpan() const;
 
     QSize minimumSizeHint() const override { return {0, 0}; }
     QSize sizeHint() const override { return {400, 400}; }
@@ -68,6 +74,9 @@ private:
     std::unique_ptr<DepthViewPass> m_pass;
     GlFramebuffer m_readFramebuffer;     // the shared map attached, for reading one texel
     int m_seenShadowPasses = -1;
+    std::optional<glm::dmat4> m_seenCamera;
+    int m_spanShadowPass = -1;           // the shadow pass m_span was measured after
+    std::optional<DepthSpan> m_span;
     bool m_seenShadowsEnabled = false;
     double m_zoom = 1.0;                 // 1: the whole map fits the pane
     QPointF m_center{0.5, 0.5};          // map coordinates at the pane's centre

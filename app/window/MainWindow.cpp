@@ -3,6 +3,7 @@
 #include "AccuracyDock.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
+#include "FrameTimeHistory.h"
 #include "ImageFile.h"
 #include "OutputFile.h"
 #include "PropertiesDock.h"
@@ -36,6 +37,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoGroup>
@@ -97,6 +99,7 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         connect(m_views[i], &SceneView::cameraEdited, this, &MainWindow::setCamera);
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
+            recordFrame(side);
             if (side != m_selected)
                 return;
             updateStatus();
@@ -177,6 +180,7 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     WheelGuard::guardFields(m_accuracyDock);
 
     createActions();
+    createMeasureActions();
     createToolBar();
     createMenus();
     createStatusBar();
@@ -285,6 +289,8 @@ void MainWindow::createMenus()
     });
     resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
     view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
+    view->addAction(m_densityAction);
+    view->addAction(m_measureAction);
     view->addSeparator();
     view->addAction(m_dock->toggleViewAction());
     view->addAction(m_accuracyDock->toggleViewAction());
@@ -294,6 +300,87 @@ void MainWindow::createMenus()
     QAction* artifacts = help->addAction(tr("Shadow &Artifacts"), this, &MainWindow::showArtifactsHelp);
     artifacts->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About ShadowLab"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::createMeasureActions()
+{
+    m_densityAction = new QAction(tr("&Texel Density Overlay"), this);
+    m_densityAction->setObjectName(QStringLiteral("texelDensityAction"));
+    m_densityAction->setCheckable(true);
+    m_densityAction->setToolTip(tr("Tint the scene by screen pixels per shadow texel: blue under 1, green 1–2, yellow 4, red 8 and up (blocky); "
+                                   "the setting shading.texel_density"));
+    connect(m_densityAction, &QAction::toggled, this, [this](bool on) {
+        for (Settings& s : m_settings)
+            s.shading.texelDensity = on;
+        pushSettings();
+        m_dock->setSettings(m_settings[index(m_selected)]);
+    });
+    m_measureAction = new QAction(tr("&Measure 100 Frames"), this);
+    m_measureAction->setObjectName(QStringLiteral("measureAction"));
+    m_measureAction->setToolTip(tr("Render the selected side 100 times, the shadow pass included, and show the medians and spread"));
+    connect(m_measureAction, &QAction::triggered, this, [this] { measureFrames(kMeasuredFrames); });
+}
+
+void MainWindow::measureFrames(int count)
+{
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (i == index(m_selected) || m_compare) {
+            m_history[i].clear();
+            m_history[i].setCapacity(count);
+        }
+    }
+    m_measureLeft = count;
+    m_measureAction->setEnabled(false);
+    statusBar()->showMessage(tr("Measuring %1 frames…").arg(count));
+    m_views[index(m_selected)]->redrawForMeasurement();
+    if (m_compare)
+        m_views[1 - index(m_selected)]->redrawForMeasurement();
+}
+
+void MainWindow::recordFrame(Side side)
+{
+    const Renderer* renderer = m_views[index(side)]->renderer();
+    if (!renderer)
+        return;
+    m_history[index(side)].add(renderer->lastFrame());
+    if (m_measureLeft > 0) {
+        // Each side redraws itself (shadow pass included) until the selected one has its frames.
+        if (side == m_selected && --m_measureLeft == 0) {
+            m_measureAction->setEnabled(true);
+            const FrameTimeHistory::Summary s = m_history[index(side)].summary();
+            statusBar()->showMessage(tr("%1 frames: frame %2 ms median, p10–p90 %3–%4 ms; shadow pass %5 ms; lit pass %6 ms")
+                                         .arg(s.frame.count)
+                                         .arg(s.frame.median, 0, 'f', 2)
+                                         .arg(s.frame.p10, 0, 'f', 2)
+                                         .arg(s.frame.p90, 0, 'f', 2)
+                                         .arg(s.shadow.median, 0, 'f', 2)
+                                         .arg(s.lit.median, 0, 'f', 2));
+        } else if (side == m_selected || m_compare) {
+            m_views[index(side)]->redrawForMeasurement();
+        }
+    }
+}
+
+QString MainWindow::timingText(Side side) const
+{
+    const Renderer* renderer = m_views[index(side)]->renderer();
+    if (!renderer)
+        return QString();
+    const std::optional<Settings>& shown = m_views[index(side)]->renderedSettings();
+    return FrameTimeHistory::text(m_history[index(side)].summary(), isSoftwareRenderer(renderer->rendererString()),
+                                  !shown || shown->shadow.enabled);
+}
+
+QString MainWindow::compareTimingText() const
+{
+    if (!m_compare)
+        return timingText(m_selected);
+    // Both sides' cost side by side, and what B costs more (or less) than A.
+    const FrameTimeHistory::Summary a = m_history[0].summary(), b = m_history[1].summary();
+    QString text = tr("A: %1 | B: %2").arg(timingText(Side::A), timingText(Side::B));
+    if (a.frame.count > 0 && b.frame.count > 0)
+        text += tr(" | B − A: frame %1 ms").arg(b.frame.median - a.frame.median, 0, 'f', 1);
+    return text;
 }
 
 void MainWindow::createToolBar()
@@ -318,8 +405,10 @@ void MainWindow::createStatusBar()
     m_texelLabel->setObjectName(QStringLiteral("texelLabel"));
     m_timingLabel = new QLabel;
     m_timingLabel->setObjectName(QStringLiteral("timingLabel"));
-    m_timingLabel->setToolTip(tr("Wall time of the shadow and lit passes and of the whole frame; the shadow pass only runs when the light, "
-                                 "the casters or the map change, and says \"cached\" when the last map was used again"));
+    m_timingLabel->setToolTip(tr("Medians over the last frames of the wall time of the shadow pass (over the frames that ran it; \"cached\" "
+                                 "when the light, the casters and the map did not change), the lit pass and the whole frame, each between "
+                                 "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU time\"). View → Measure 100 "
+                                 "Frames times the pass on every frame."));
     m_mapLabel = new QLabel;
     m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
     m_mapLabel->setToolTip(tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow"));
@@ -555,6 +644,10 @@ void MainWindow::setCamera(const CameraSettings& camera)
 
 void MainWindow::pushSettings()
 {
+    if (m_densityAction) {
+        const QSignalBlocker block(m_densityAction);
+        m_densityAction->setChecked(m_settings[index(m_selected)].shading.texelDensity);
+    }
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_settings[i]);
     m_accuracyDock->setSettings(m_settings[index(m_selected)]);
@@ -582,12 +675,9 @@ void MainWindow::updateStatus()
         return;
     const FrameStats& stats = renderer->lastFrame();
     const Settings& shown = *view->renderedSettings();
-    // Wall times with glFinish between passes: on a software renderer the GPU timer misses
-    // the deferred rasterisation, and a tool that shows what each setting costs must not.
-    const QString shadow = !shown.shadow.enabled      ? tr("shadows off")
-                           : stats.shadowPassRendered ? tr("shadow pass %1 ms").arg(stats.shadowPassWallMs, 0, 'f', 1)
-                                                      : tr("shadow pass cached");
-    m_timingLabel->setText(tr("%1 · lit pass %2 ms · frame %3 ms").arg(shadow).arg(stats.litPassWallMs, 0, 'f', 1).arg(stats.frameWallMs, 0, 'f', 1));
+    // Wall times with glFinish between passes (the GPU timer misses a software renderer's
+    // deferred rasterisation), as medians over the last frames: single frames jump under load.
+    m_timingLabel->setText(compareTimingText());
     const QString footprint = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize
                                   ? tr("texel footprint %1 wu (fitted; %2 as set)").arg(stats.texelWorldSize, 0, 'g', 3).arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3)
                                   : tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
@@ -784,8 +874,10 @@ void MainWindow::importSettingsInteractively()
 void MainWindow::showArtifactsHelp()
 {
     auto* help = findChild<ArtifactsHelp*>();
-    if (!help)
+    if (!help) {
         help = new ArtifactsHelp(this);
+        connect(help, &ArtifactsHelp::presetRequested, m_dock, &PropertiesDock::applyPreset);
+    }
     help->show();
     help->raise();
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FrameTimeHistory.h"
 #include "ScreenshotDialog.h"
 #include "Settings.h"
 #include "SettingsChange.h"
@@ -92,6 +93,11 @@ protected:
 
 private:
     void createActions();
+    void createMeasureActions();
+    void measureFrames(int count);
+    void recordFrame(Side side);
+    QString timingText(Side side) const;
+    QString compareTimingText() const;
     void createMenus();
     void createToolBar();
     void createStatusBar();
@@ -156,6 +162,12 @@ private:
     QAction* m_redoAction = nullptr;
     std::array<QUndoStack*, 2> m_undoStacks{};
     quint64 m_gesture = 0;      // mouse and key presses so far: edits between two presses merge
+
+    static constexpr int kMeasuredFrames = 100;
+    std::array<FrameTimeHistory, 2> m_history;  // rolling wall times per side, for the status bar
+    int m_measureLeft = 0;      // frames still to draw for Measure 100 Frames
+    QAction* m_densityAction = nullptr;
+    QAction* m_measureAction = nullptr;
 };
 
 } // namespace shadowlab

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "ArtifactPresets.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace shadowlab {
 
@@ -41,20 +43,54 @@ struct Presentation {
 };
 
 const Presentation kPresentations[] = {
+    {"scene", "Preset", "", 0, 0.0, 0.0},
     {"light.position", "Position", " wu", 2, -10.0, 10.0},
     {"light.target", "Target", " wu", 2, -5.0, 5.0},
+    {"light.projection", "Projection", "", 0, 0.0, 0.0},
     {"light.extent", "Extent", " wu", 2, 0.5, 30.0},
     {"light.fov", "Field of view", "°", 1, 10.0, 170.0},
     {"light.near", "Near", " wu", 2, -10.0, 20.0},
     {"light.far", "Far", " wu", 2, 0.5, 60.0},
+    {"light.radius", "Light radius", " wu", 3, 0.0, 2.0},
+    {"light.fit", "Volume", "", 0, 0.0, 0.0},
+    {"light.stabilize", "Stabilise the fitted volume", "", 0, 0.0, 0.0},
     {"map.size", "Size", " px", 0, 64.0, 8192.0, SliderSpinBox::Scale::Logarithmic},
+    {"map.format", "Depth format", "", 0, 0.0, 0.0},
+    {"bias.space", "Unit", "", 0, 0.0, 0.0},
     {"bias.slope", "Slope", "", 4, 0.0, 0.5},
     {"bias.min", "Minimum", "", 4, 0.0, 0.1},
     {"bias.normal", "Normal offset", " texels", 2, 0.0, 8.0},
-    {"light.radius", "Reference radius", " wu", 3, 0.0, 2.0},
+    {"bias.cull_front", "Cull front faces in the shadow pass", "", 0, 0.0, 0.0},
     {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
     {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
+    {"bias.receiver_plane", "Receiver-plane depth for wide filters", "", 0, 0.0, 0.0},
+    {"filter.mode", "Filter", "", 0, 0.0, 0.0},
+    {"filter.early_out", "Filter only penumbrae", "", 0, 0.0, 0.0},
+    {"shadow.enabled", "Shadows", "", 0, 0.0, 0.0},
+    {"shading.model", "Specular", "", 0, 0.0, 0.0},
+    {"shading.texel_density", "Texel density overlay", "", 0, 0.0, 0.0},
+    {"camera.position", "Position", " wu", 2, -20.0, 20.0},
+    {"camera.target", "Target", " wu", 2, -5.0, 5.0},
+    {"camera.fov", "Field of view", "°", 1, 10.0, 120.0},
 };
+
+// The dock's groups, in order; groupOf() puts each key in one.
+const char* const kGroupOrder[] = {"Light", "Shadow map", "Bias", "Filtering", "Shading", "Reference", "Camera", "Scene"};
+
+QString groupOf(const QString& key)
+{
+    if (key == u"light.radius")
+        return QStringLiteral("Reference");     // only the ray-traced reference reads it
+    const QString prefix = key.section(QLatin1Char('.'), 0, 0);
+    static const QHash<QString, QString> byPrefix{{QStringLiteral("light"), QStringLiteral("Light")},
+                                                  {QStringLiteral("map"), QStringLiteral("Shadow map")},
+                                                  {QStringLiteral("bias"), QStringLiteral("Bias")},
+                                                  {QStringLiteral("filter"), QStringLiteral("Filtering")},
+                                                  {QStringLiteral("shadow"), QStringLiteral("Shading")},
+                                                  {QStringLiteral("shading"), QStringLiteral("Shading")},
+                                                  {QStringLiteral("camera"), QStringLiteral("Camera")}};
+    return byPrefix.value(prefix, QStringLiteral("Scene"));
+}
 
 // A Presentation for people: from the list above, or from the technique table for the
 // parameters of shadow filters (their whole range on the slider).
@@ -77,7 +113,10 @@ Look presentation(const QString& key)
         if (key == p.key)
             return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : 2, p.minimum, p.maximum};
     }
-    throw SettingsError(key, QStringLiteral("has no field in the properties dock"));
+    // A key added to the table without a presentation still gets a field: named by its key,
+    // its whole range on the slider.
+    const SettingKey* info = findSettingKey(key);
+    return {key, QString(), 3, info ? std::max(info->minimum, -1e3) : 0.0, info ? std::min(info->maximum, 1e3) : 1.0};
 }
 
 const SettingKey& keyInfo(const QString& key)
@@ -119,16 +158,25 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     scroll->setWidget(content);
     setWidget(scroll);
 
-    QGridLayout* light = addGroup(tr("Light"));
-    addVector(light, QStringLiteral("light.position"));
-    addVector(light, QStringLiteral("light.target"));
-    addChoice(light, QStringLiteral("light.projection"));
-    addChoice(light, QStringLiteral("light.fit"));
-    addBool(light, QStringLiteral("light.stabilize"), tr("Stabilise the fitted volume"));
-    addNumber(light, QStringLiteral("light.extent"));
-    addNumber(light, QStringLiteral("light.fov"));
-    addNumber(light, QStringLiteral("light.near"));
-    addNumber(light, QStringLiteral("light.far"));
+    addPresetButtons();
+
+    // Every key of the table gets a field, in the table's order, in its group.
+    std::map<QString, QGridLayout*> groups;
+    for (const char* title : kGroupOrder)
+        groups[QString::fromUtf8(title)] = addGroup(tr(title));
+    for (const SettingKey& info : settingKeys()) {
+        QGridLayout* grid = groups.at(groupOf(info.key));
+        if (info.type == u"vec3")
+            addVector(grid, info.key);
+        else if (info.type == u"choice")
+            addChoice(grid, info.key);
+        else if (info.type == u"bool")
+            addBool(grid, info.key, presentation(info.key).label);
+        else
+            addNumber(grid, info.key);
+    }
+
+    QGridLayout* light = groups.at(QStringLiteral("Light"));
     m_animate = new QCheckBox(tr("Animate around the target"));
     m_animate->setObjectName(QStringLiteral("animateLight"));
     m_animate->setToolTip(tr("Circles the light around its target: watch acne crawl and shadows swing as the angle changes"));
@@ -144,33 +192,7 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     connect(m_animate, &QCheckBox::toggled, this, [this](bool on) { emit animationChanged(on, m_speed->value()); });
     connect(m_speed, &SliderSpinBox::valueEdited, this, [this](double v) { emit animationChanged(m_animate->isChecked(), v); });
 
-    QGridLayout* map = addGroup(tr("Shadow map"));
-    addNumber(map, QStringLiteral("map.size"));
-    addChoice(map, QStringLiteral("map.format"));
-
-    QGridLayout* bias = addGroup(tr("Bias"));
-    addChoice(bias, QStringLiteral("bias.space"));
-    addNumber(bias, QStringLiteral("bias.slope"));
-    addNumber(bias, QStringLiteral("bias.min"));
-    addNumber(bias, QStringLiteral("bias.normal"));
-    addBool(bias, QStringLiteral("bias.cull_front"), tr("Cull front faces in the shadow pass"));
-    addNumber(bias, QStringLiteral("bias.polygon_factor"));
-    addNumber(bias, QStringLiteral("bias.polygon_units"));
-    addBool(bias, QStringLiteral("bias.receiver_plane"), tr("Receiver-plane depth for wide filters"));
-
-    QGridLayout* filter = addGroup(tr("Filtering"));
-    addChoice(filter, QStringLiteral("filter.mode"));
-    for (const TechniqueParameter& parameter : techniqueParameters())
-        addNumber(filter, parameter.key);
-    addBool(filter, QStringLiteral("filter.early_out"), tr("Filter only penumbrae"));
-
-    QGridLayout* shading = addGroup(tr("Shading"));
-    addChoice(shading, QStringLiteral("shading.model"));
-    addBool(shading, QStringLiteral("shadow.enabled"), tr("Shadows"));
-    addNumber(shading, QStringLiteral("light.radius"));
-
-    QGridLayout* scene = addGroup(tr("Scene"));
-    addChoice(scene, QStringLiteral("scene"));
+    QGridLayout* scene = groups.at(QStringLiteral("Scene"));
     auto* reset = new QPushButton(tr("Reset to Defaults"));
     reset->setObjectName(QStringLiteral("resetToDefaults"));
     reset->setToolTip(tr("Every setting of this side back to the scene preset's; the camera stays"));
@@ -180,6 +202,72 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     column->addStretch(1);
     content->setMinimumWidth(320);
     setSettings(m_pending);
+}
+
+void PropertiesDock::addPresetButtons()
+{
+    // One click per artifact: the preset's settings on this side, and what to look for.
+    auto* box = new QGroupBox(tr("Show an artifact"));
+    box->setObjectName(QStringLiteral("artifactPresets"));
+    auto* grid = new QGridLayout(box);
+    grid->setHorizontalSpacing(6);
+    grid->setVerticalSpacing(4);
+    int i = 0;
+    for (const ArtifactPreset& preset : artifactPresets()) {
+        auto* button = new QPushButton(preset.title);
+        button->setObjectName(QStringLiteral("preset.") + preset.name);
+        button->setToolTip(QStringLiteral("<p><b>%1</b> (--preset %2)</p><p>%3</p><p><i>Fix:</i> %4</p>")
+                               .arg(preset.title.toHtmlEscaped(), preset.name, preset.lookFor.toHtmlEscaped(), preset.fix.toHtmlEscaped()));
+        connect(button, &QPushButton::clicked, this, [this, name = preset.name] { applyPreset(name); });
+        grid->addWidget(button, i / 2, i % 2);
+        ++i;
+    }
+    m_presetNote = new QLabel;
+    m_presetNote->setObjectName(QStringLiteral("presetNote"));
+    m_presetNote->setWordWrap(true);
+    m_presetNote->setVisible(false);
+    grid->addWidget(m_presetNote, (i + 1) / 2, 0, 1, 2);
+    m_fixButton = new QPushButton(tr("Apply the Fix"));
+    m_fixButton->setObjectName(QStringLiteral("presetFix"));
+    m_fixButton->setVisible(false);
+    connect(m_fixButton, &QPushButton::clicked, this, &PropertiesDock::applyPresetFix);
+    grid->addWidget(m_fixButton, (i + 1) / 2 + 1, 0, 1, 2, Qt::AlignRight);
+    auto* column = static_cast<QVBoxLayout*>(static_cast<QScrollArea*>(widget())->widget()->layout());
+    column->addWidget(box);
+}
+
+void PropertiesDock::applyPreset(const QString& name)
+{
+    Settings candidate;
+    try {
+        const ArtifactPreset& preset = artifactPreset(name);
+        candidate = applyArtifactPreset(preset, m_pending);
+        m_presetNote->setText(tr("<b>%1.</b> %2<br><i>Fix:</i> %3").arg(preset.title.toHtmlEscaped(), preset.lookFor.toHtmlEscaped(),
+                                                                         preset.fix.toHtmlEscaped()));
+        m_presetNote->setVisible(true);
+        m_fixButton->setVisible(true);
+        m_fixButton->setEnabled(true);
+        m_lastPreset = preset.name;
+    } catch (const SettingsError& e) {
+        markError(QStringLiteral("scene"), QString::fromStdString(e.what()));
+        return;
+    }
+    setSettings(candidate);
+    accept(candidate, QString());
+}
+
+void PropertiesDock::applyPresetFix()
+{
+    Settings candidate = m_pending;
+    try {
+        candidate = settingsFromJson(artifactPreset(m_lastPreset).fixSettings, m_pending);
+    } catch (const SettingsError& e) {
+        markError(e.key(), QString::fromStdString(e.what()));
+        return;
+    }
+    m_fixButton->setEnabled(false);
+    setSettings(candidate);
+    accept(candidate, QString());
 }
 
 QGridLayout* PropertiesDock::addGroup(const QString& title)
@@ -306,14 +394,7 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
                         combo->addItem(value);
                     combo->setCurrentText(value);
                 }};
-    static const QHash<QString, QString> labels{{QStringLiteral("light.projection"), tr("Projection")},
-                                                {QStringLiteral("map.format"), tr("Depth format")},
-                                                {QStringLiteral("light.fit"), tr("Volume")},
-                                                {QStringLiteral("bias.space"), tr("Unit")},
-                                                {QStringLiteral("filter.mode"), tr("Filter")},
-                                                {QStringLiteral("shading.model"), tr("Specular")},
-                                                {QStringLiteral("scene"), tr("Preset")}};
-    addRow(grid, labels.value(key, key), QString(), combo, std::move(field));
+    addRow(grid, presentation(key).label, QString(), combo, std::move(field));
 }
 
 void PropertiesDock::addBool(QGridLayout* grid, const QString& key, const QString& text)
@@ -513,7 +594,8 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
     for (const char* key : kFittedKeys) {
         for (QWidget* w : m_rows.value(QString::fromLatin1(key))) {
             w->setEnabled(!fitted);
-            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Fit to manual to set it by hand") : QString());
+            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Volume to manual to set it by hand")
+                                 : tooltipFor(keyInfo(QString::fromLatin1(key))));
         }
     }
     if (fitted && fit.fitted) {
@@ -586,6 +668,10 @@ void PropertiesDock::updateFrom(const Settings& applied, const QStringList& keys
 {
     m_pending.camera = applied.camera;
     m_loading = true;
+    for (const QString& key : {QStringLiteral("camera.position"), QStringLiteral("camera.target"), QStringLiteral("camera.fov")}) {
+        if (const auto it = m_fields.find(key); it != m_fields.end())
+            it->load(m_pending);
+    }
     for (const QString& key : keys) {
         applySetting(m_pending, key, settingValue(applied, key));
         if (const auto it = m_fields.find(key); it != m_fields.end())

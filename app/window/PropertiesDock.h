@@ -15,17 +15,18 @@
 class QCheckBox;
 class QGridLayout;
 class QLabel;
+class QPushButton;
 
 namespace shadowlab {
 
 class SliderSpinBox;
 
-// The settings of one side (A or B), grouped as a shadow-mapping person thinks of them:
-// Light, Shadow map, Bias, Filtering, Shading, Scene (the camera is the scene view's; light.fit,
-// light.stabilize, light.radius and bias.normal are set from the command line or a settings
-// file). Built from settingKeys() and, for the filter's parameters, the technique table: the
-// spin boxes take their ranges from them and the tooltips their help, so the dock and the CLI
-// never disagree.
+// The settings of one side (A or B): first one button per artifact preset (ArtifactPresets.h)
+// with what to look for and the fix, then every key of settingKeys(), generated from the table
+// and grouped as a shadow-mapping person thinks of them: Light, Shadow map, Bias, Filtering,
+// Shading, Reference, Camera, Scene. The spin boxes take their ranges from the table (and the
+// technique table for the filter's parameters) and the tooltips their help, so the dock and
+// the CLI never disagree; a key added to the table gets a field without touching the dock.
 // Each edit goes through applySetting() and validate(); an edit that makes the settings
 // impossible (near >= far) is kept in its field, marked there with the reason, and not
 // emitted, so the views keep the last valid image.
@@ -58,6 +59,10 @@ public:
     // so a moving light or camera does not undo an edit still being corrected.
     void updateFrom(const Settings& applied, const QStringList& keys);
     bool animateLight() const;
+    // Applies the artifact preset `name` to this side (its scene, light and camera included)
+    // and shows what to look for and a button that applies the fix.
+    void applyPreset(const QString& name);
+    void applyPresetFix();
     double animationSpeed() const;     // degrees per second around the target
 
 signals:
@@ -74,6 +79,7 @@ private:
     };
 
     QGridLayout* addGroup(const QString& title);
+    void addPresetButtons();
     void addNumber(QGridLayout* grid, const QString& key);
     void addVector(QGridLayout* grid, const QString& key);
     void addChoice(QGridLayout* grid, const QString& key);
@@ -98,6 +104,9 @@ private:
     QCheckBox* m_animate = nullptr;
     SliderSpinBox* m_speed = nullptr;
     bool m_loading = false;
+    QLabel* m_presetNote = nullptr;
+    QPushButton* m_fixButton = nullptr;
+    QString m_lastPreset;
 };
 
 } // namespace shadowlab

@@ -185,4 +185,11 @@ void SceneView::keyPressEvent(QKeyEvent* event)
     QOpenGLWidget::keyPressEvent(event);
 }
 
+void SceneView::redrawForMeasurement()
+{
+    if (m_renderer)
+        m_renderer->invalidateShadowMap();
+    update();
+}
+
 } // namespace shadowlab

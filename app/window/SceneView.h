@@ -43,6 +43,8 @@ public:
     // The settings of the image on screen (the last ones that rendered).
     const std::optional<Settings>& renderedSettings() const { return m_rendered; }
     int frameCount() const { return m_frameCount; }
+    // Draws the frame again with the shadow map redrawn too, so the shadow pass is timed.
+    void redrawForMeasurement();
     double lastFrameMs() const { return m_lastFrameMs; }
 
     QSize minimumSizeHint() const override { return {0, 0}; }

@@ -1,0 +1,170 @@
+#include "DepthMapPicture.h"
+
+#include "Renderer.h"
+
+#include <QPainter>
+#include <QPainterPath>
+#include <QPolygonF>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+const QColor kTextColour(225, 228, 235);
+const QColor kFootprintColour(255, 150, 40);
+const QColor kVolumeColour(235, 235, 235);
+constexpr int kMargin = 8;
+
+} // namespace
+
+DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span)
+{
+    DepthMapFacts facts;
+    facts.light = renderer.lightFrame();
+    facts.span = span;
+    facts.fitted = renderer.lastFit().fitted;
+    facts.mapSize = renderer.shadowMap().size();
+    if (const Scene* scene = renderer.scene())
+        facts.footprint = cameraFootprint(scene->bounds(), renderer.cameraFrame().viewProjection, facts.light.shadowMatrix);
+    return facts;
+}
+
+double depthToDistance(const LightFrame& light, double depth)
+{
+    const double n = light.nearPlane, f = light.farPlane;
+    const double along = light.perspective ? 2.0 * n * f / (f + n - (depth * 2.0 - 1.0) * (f - n)) : n + depth * (f - n);
+    // A fitted ortho volume's near and far count from a point on its axis, not from the light.
+    return along + glm::dot(light.volume.origin - light.position, light.volume.direction);
+}
+
+QRect DepthMapPicture::mapArea() const
+{
+    return {0, 0, m_size.width(), std::max(0, m_size.height() - kLegendHeight)};
+}
+
+QRect DepthMapPicture::legendBar() const
+{
+    const int top = mapArea().bottom() + 1 + 22;
+    return {kMargin, top, std::max(0, m_size.width() - 2 * kMargin), 12};
+}
+
+double DepthMapPicture::aspect(const LightFrame& light)
+{
+    const double w = light.volume.width(), h = light.volume.height();
+    return w > 0.0 && h > 0.0 && std::isfinite(w / h) ? std::clamp(w / h, 1e-3, 1e3) : 1.0;
+}
+
+QRectF DepthMapPicture::visible(double aspect, double zoom, QPointF centre) const
+{
+    const QRect area = mapArea();
+    const double w = std::max(1, area.width()), h = std::max(1, area.height());
+    // Pixels per unit of map height at this zoom; a unit of map width is `aspect` times as wide.
+    const double scale = std::min(w / aspect, h) * zoom;
+    const QSizeF extent(w / (aspect * scale), h / scale);
+    return {centre - QPointF(extent.width(), extent.height()) * 0.5, extent};
+}
+
+QPointF DepthMapPicture::toPixel(QPointF p, const QRectF& visible) const
+{
+    const QRect area = mapArea();
+    return {area.x() + (p.x() - visible.x()) / visible.width() * area.width(),
+            area.y() + (1.0 - (p.y() - visible.y()) / visible.height()) * area.height()};
+}
+
+QPointF DepthMapPicture::toMap(QPointF pixel, const QRectF& visible) const
+{
+    const QRect area = mapArea();
+    return {visible.x() + (pixel.x() - area.x()) / std::max(1, area.width()) * visible.width(),
+            visible.y() + (1.0 - (pixel.y() - area.y()) / std::max(1, area.height())) * visible.height()};
+}
+
+QRect DepthMapPicture::glViewport(const QRect& rect, double dpr) const
+{
+    return {int(std::lround(rect.x() * dpr)), int(std::lround((m_size.height() - rect.y() - rect.height()) * dpr)),
+            int(std::lround(rect.width() * dpr)), int(std::lround(rect.height() * dpr))};
+}
+
+QString DepthMapPicture::depthText(const LightFrame& light, double depth)
+{
+    return QStringLiteral("%1 · %2 wu").arg(depth, 0, 'f', 4).arg(depthToDistance(light, depth), 0, 'f', 2);
+}
+
+void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const QRectF& visible) const
+{
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPixelSize(11);
+    painter.setFont(font);
+    const QFontMetrics metrics(font);
+    const QRect area = mapArea();
+
+    // Over the map: the light volume (the map's border) and the camera's visible region.
+    painter.setClipRect(area);
+    const QRectF border = QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible));
+    painter.setPen(QPen(kVolumeColour, 1.0, Qt::DashLine));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(border);
+    const LightVolume& v = facts.light.volume;
+    const QString size = v.perspective ? QStringLiteral("%1° × %2°")
+                                             .arg(glm::degrees(std::atan(v.right) - std::atan(v.left)), 0, 'f', 0)
+                                             .arg(glm::degrees(std::atan(v.top) - std::atan(v.bottom)), 0, 'f', 0)
+                                       : QStringLiteral("%1 × %2 wu").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2);
+    const QString volumeText = QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size)
+                                   .arg(facts.mapSize);
+    const QPointF volumeLabel(std::max(border.left(), double(area.left())) + 4, std::max(border.top(), double(area.top())) + 4 + metrics.ascent());
+    painter.setPen(QColor(0, 0, 0, 160));
+    painter.drawText(volumeLabel + QPointF(1, 1), volumeText);
+    painter.setPen(kVolumeColour);
+    painter.drawText(volumeLabel, volumeText);
+    if (facts.footprint.size() >= 3) {
+        QPolygonF polygon;
+        for (const glm::dvec2& p : facts.footprint)
+            polygon << toPixel({p.x, p.y}, visible);
+        painter.setPen(QPen(kFootprintColour, 2.0));
+        painter.drawPolygon(polygon);
+        // The label at the polygon's lowest point on screen, kept inside the pane.
+        const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
+        const QString text = QStringLiteral("what the camera sees");
+        const double x = std::clamp(anchor.x() - metrics.horizontalAdvance(text) / 2.0, double(area.left() + 4),
+                                    double(area.right() - 4 - metrics.horizontalAdvance(text)));
+        const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
+        painter.setPen(QColor(0, 0, 0, 160));
+        painter.drawText(QPointF(x + 1, y + 1), text);
+        painter.setPen(kFootprintColour);
+        painter.drawText(QPointF(x, y), text);
+    }
+    painter.setClipping(false);
+
+    // The legend, on the pane's clear colour: title and the empty swatch, the colour bar (drawn
+    // by GL), near and far.
+    const QRect legend(0, area.bottom() + 1, m_size.width(), kLegendHeight);
+    const int titleBaseline = legend.top() + 6 + metrics.ascent();
+    const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(QStringLiteral("empty: far plane, lit")) - 18,
+                       legend.top() + 6, 14, metrics.height() - 2);
+    painter.setPen(kTextColour);
+    const QString title = facts.span ? QStringLiteral("depth from the light · stretched to the map's contents")
+                                     : QStringLiteral("nothing drawn into the map");
+    painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, swatch.left() - kMargin - 6, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                     metrics.elidedText(title, Qt::ElideRight, swatch.left() - kMargin - 6));
+    painter.fillRect(swatch, QColor(77, 77, 77));
+    painter.fillRect(swatch, QBrush(QColor(90, 90, 90), Qt::BDiagPattern));
+    painter.drawText(QPointF(swatch.right() + 5, titleBaseline), QStringLiteral("empty: far plane, lit"));
+    painter.setPen(QPen(kTextColour, 1.0));
+    painter.drawRect(QRectF(legendBar()).adjusted(-0.5, -0.5, 0.5, 0.5));
+    const DepthSpan span = facts.span.value_or(DepthSpan{});
+    const int rowBaseline = legendBar().bottom() + 3 + metrics.ascent();
+    const QString nearText = QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
+    const QString farText = QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
+    painter.drawText(QPointF(legendBar().left(), rowBaseline), nearText);
+    painter.drawText(QPointF(legendBar().right() - metrics.horizontalAdvance(farText), rowBaseline), farText);
+    painter.restore();
+}
+
+} // namespace shadowlab

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "DepthViewPass.h"
+#include "LightMath.h"
+
+#include <glm/vec2.hpp>
+
+#include <QPointF>
+#include <QRect>
+#include <QRectF>
+#include <QSize>
+
+#include <optional>
+#include <vector>
+
+class QPainter;
+
+namespace shadowlab {
+
+class Renderer;
+
+// What the depth-map picture says besides the map itself.
+struct DepthMapFacts {
+    LightFrame light;
+    std::optional<DepthSpan> span;          // the written depths the ramp is stretched over
+    bool fitted = false;                    // light.fit=scene shaped the volume
+    std::vector<glm::dvec2> footprint;      // the camera's visible region, map coordinates
+    int mapSize = 0;
+};
+
+// The facts of `renderer`'s last frame, with `span` measured by whoever draws.
+DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span);
+
+// Distance from the light along its axis of a conventional [0, 1] depth: linear for an ortho
+// light, the perspective depth curve inverted for a perspective one.
+double depthToDistance(const LightFrame& light, double depth);
+
+// The readable depth map, one layout for the explorer's pane and for `render --depth-out`: the
+// map at the light volume's real aspect over the map area, and below it a legend (the colour
+// bar from near to far in depth and in world distance from the light, and the hatching that
+// means "empty: far plane"). Over the map: the light volume's outline with its size, and the
+// camera's visible region. The GL side (map, colour bar) is DepthViewPass's; paint() writes
+// the rest with QPainter, in logical pixels, y down.
+class DepthMapPicture {
+public:
+    static constexpr int kLegendHeight = 58;
+
+    explicit DepthMapPicture(QSize size) : m_size(size) {}
+
+    QRect mapArea() const;
+    QRect legendBar() const;
+    // Width over height of the light volume (ortho: world units; perspective: tangents).
+    static double aspect(const LightFrame& light);
+    // The part of the map shown over mapArea() at `zoom` (1: the whole map fits) around `centre`.
+    QRectF visible(double aspect, double zoom, QPointF centre) const;
+    QPointF toPixel(QPointF mapPoint, const QRectF& visible) const;
+    QPointF toMap(QPointF pixel, const QRectF& visible) const;
+    // `rect` in GL viewport pixels (y up) of a framebuffer `devicePixelRatio` times this size.
+    QRect glViewport(const QRect& rect, double devicePixelRatio) const;
+
+    void paint(QPainter& painter, const DepthMapFacts& facts, const QRectF& visible) const;
+
+    // "0.1234 · 3.21 wu": a depth and its distance from the light, as the legend writes them.
+    static QString depthText(const LightFrame& light, double depth);
+
+private:
+    QSize m_size;
+};
+
+} // namespace shadowlab

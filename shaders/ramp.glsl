@@ -1,0 +1,25 @@
+// Colour ramps for the debug views, analytic so the shader needs no table.
+//
+// depthRamp: a perceptual ramp for t in [0, 1] from Green's cubehelix (2011): brightness rises
+// linearly (so equal steps in t read as equal steps, and the order survives a grey print) while
+// the hue turns from deep blue through green to pale yellow. It stops short of black and white,
+// which the depth view keeps for outside the map and for empty texels.
+vec3 depthRamp(float t)
+{
+    float l = mix(0.12, 0.92, clamp(t, 0.0, 1.0));
+    float angle = 6.2831853 * (3.0 / 3.0 - 0.7 * l);   // start 3.0, -0.7 rotations
+    float amplitude = 1.8 * l * (1.0 - l) / 2.0;
+    float c = cos(angle), s = sin(angle);
+    return clamp(l + amplitude * vec3(-0.14861 * c + 1.78277 * s, -0.29227 * c - 0.90649 * s, 1.97294 * c), 0.0, 1.0);
+}
+
+// densityRamp: screen pixels per shadow texel on a log scale: blue under 1 (the map is finer
+// than the screen), green 1 to 2, yellow about 4, red from 8 up (blocky edges).
+vec3 densityRamp(float pixelsPerTexel)
+{
+    float k = clamp(log2(max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);   // -1: 1/8, 0: 1, 1: 8 pixels
+    vec3 blue = vec3(0.15, 0.35, 0.95), green = vec3(0.1, 0.8, 0.25), yellow = vec3(0.95, 0.85, 0.1), red = vec3(0.95, 0.15, 0.1);
+    if (k < 0.0)
+        return mix(green, blue, clamp(-k * 3.0, 0.0, 1.0));
+    return k < 0.5 ? mix(green, yellow, (k - 0.1) / 0.4 * step(0.1, k)) : mix(yellow, red, (k - 0.5) * 2.0);
+}
