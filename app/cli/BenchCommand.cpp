@@ -25,12 +25,16 @@ struct Phase {
     QString description;
     Settings settings;
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
+    std::vector<CameraSettings> cameraPath;     // a moving camera (empty: still)
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
     FittedLight fit;        // of the last frame
+    std::vector<std::vector<double>> viewWall;  // cascades or cube faces: wall ms of the frames that drew each
+    std::vector<int> viewPassesRun;
+    std::vector<int> viewDraws;
 };
 
 // The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
@@ -58,7 +62,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
 {
     std::vector<TimedRun> runs;
     for (Phase& p : phases)
-        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}});
+        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}, p.cameraPath});
     timeInterleaved(runs, size, warmup, frames);
     for (std::size_t i = 0; i < phases.size(); ++i) {
         Phase& p = phases[i];
@@ -72,6 +76,9 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.shadowDraws = s.shadowDraws;
         p.last = s.last;
         p.fit = p.headless->renderer().lastFit();
+        p.viewWall = std::move(s.viewWall);
+        p.viewPassesRun = std::move(s.viewPassesRun);
+        p.viewDraws = std::move(s.viewDraws);
     }
 }
 
@@ -86,6 +93,17 @@ QJsonObject statsJson(const SampleStats& s)
 {
     return {{QStringLiteral("count"), s.count}, {QStringLiteral("median_ms"), s.median}, {QStringLiteral("p10_ms"), s.p10},
             {QStringLiteral("p90_ms"), s.p90},   {QStringLiteral("min_ms"), s.min},       {QStringLiteral("max_ms"), s.max}};
+}
+
+// Per cascade or cube face: how often it was drawn and its wall time when it was.
+QJsonArray viewsJson(const Phase& p)
+{
+    QJsonArray views;
+    for (std::size_t v = 0; v < p.viewWall.size(); ++v)
+        views.append(QJsonObject{{QStringLiteral("passes_run"), p.viewPassesRun[v]},
+                                 {QStringLiteral("draws"), p.viewDraws[v]},
+                                 {QStringLiteral("wall"), statsJson(summarize(p.viewWall[v]))}});
+    return views;
 }
 
 } // namespace
@@ -103,7 +121,10 @@ int runBench(const QStringList& arguments)
                           QStringLiteral("200")});
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
                           QStringLiteral("10")});
-        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-light or both (default both)."), QStringLiteral("name"),
+        parser.addOption({QStringLiteral("phase"),
+                          QStringLiteral("steady, moving-light, moving-camera (the scene's camera path, light fitted to it every frame), "
+                                         "all, or both (steady and moving-light; the default)."),
+                          QStringLiteral("name"),
                           QStringLiteral("both")});
         parser.addOption({QStringLiteral("baseline"),
                           QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
@@ -126,8 +147,8 @@ int runBench(const QStringList& arguments)
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
         const QString phase = parser.value(QStringLiteral("phase"));
-        if (phase != u"both" && phase != u"steady" && phase != u"moving-light")
-            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-light or both").arg(phase));
+        if (phase != u"both" && phase != u"all" && phase != u"steady" && phase != u"moving-light" && phase != u"moving-camera")
+            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-light, moving-camera, all or both").arg(phase));
 
         std::vector<Phase> phases;
         auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
@@ -139,10 +160,17 @@ int runBench(const QStringList& arguments)
             p.headless = std::make_unique<HeadlessRenderer>();
             phases.push_back(std::move(p));
         };
-        if (phase != u"moving-light")
+        const bool all = phase == u"all";
+        if (all || phase == u"both" || phase == u"steady")
             addPhase("steady", "light and camera still: cached shadow map, lit pass only", settings, false);
-        if (phase != u"steady")
+        if (all || phase == u"both" || phase == u"moving-light")
             addPhase("moving-light", "shadow pass every frame", settings, true);
+        if (all || phase == u"moving-camera") {
+            // A walk of 0.05 world units per frame: maps (cascades) are redrawn only when their
+            // fitted volume changes.
+            addPhase("moving-camera", "camera walking 0.05 units a frame, maps refitted and redrawn when they change", settings, false);
+            phases.back().cameraPath = cameraPath(settings.camera, 64, 0.05);
+        }
         if (parser.isSet(QStringLiteral("baseline")))
             addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
                      tutorialSettings(settings), true);
@@ -172,7 +200,8 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
                                               {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
                                               {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
-                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))}});
+                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
+                                              {QStringLiteral("views"), viewsJson(r)}});
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                                {QStringLiteral("configuration"), summary},
@@ -192,6 +221,11 @@ int runBench(const QStringList& arguments)
             out() << "  shadow pass (GPU): " << formatStats(summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QStringLiteral(", %1 draws").arg(r.shadowDraws)) << '\n';
             out() << "  " << formatTexelLine(r.last) << '\n';
+            for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
+                const bool cube = r.settings.light.type == LightType::Point;
+                out() << "    " << (cube ? "face " : "cascade ") << v << ": " << formatStats(summarize(r.viewWall[v])) << " wall, drawn in "
+                      << r.viewPassesRun[v] << "/" << frames << " frames, " << r.viewDraws[v] << " draws\n";
+            }
             printFitWarnings(r.fit, r.name);
             out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
             out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';

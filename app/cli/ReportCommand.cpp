@@ -31,7 +31,7 @@ int runReport(const QStringList& arguments)
         parser.addHelpOption();
         addSettingsOptions(parser);
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
-        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, or a JSON file (default: default)."),
+        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, cascades (1-4 at equal texels, stabilised or not), or a JSON file (default: default)."),
                           QStringLiteral("name|file.json"), QStringLiteral("default")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
         parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration (default 30)."), QStringLiteral("n"),
@@ -39,6 +39,9 @@ int runReport(const QStringList& arguments)
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
         parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
                           QStringLiteral("n"), QStringLiteral("16")});
+        parser.addOption({QStringLiteral("flicker-frames"),
+                          QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
+                          QStringLiteral("n"), QString::number(kFlickerFrames)});
         if (!parseArguments(parser, QStringLiteral("report"), arguments))
             return kExitOk;
         if (!parser.isSet(QStringLiteral("out")))
@@ -50,6 +53,7 @@ int runReport(const QStringList& arguments)
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
         const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
+        const int flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
         const std::vector<SweepEntry> sweep = loadSweep(parser.value(QStringLiteral("sweep")));
         std::vector<Settings> configurations;
         for (const SweepEntry& entry : sweep)
@@ -66,9 +70,14 @@ int runReport(const QStringList& arguments)
         const double accuracyShare = 0.5;
         for (std::size_t c = 0; c < sweep.size(); ++c) {
             const double start = accuracyShare * double(c) / sweep.size(), step = accuracyShare / sweep.size();
-            ReportRow row{sweep[c].label, sweep[c].assignments, {}, {}, {}, {}, false};
+            ReportRow row{sweep[c].label, sweep[c].assignments, {}, {}, {}, {}, {}, false};
             row.accuracy = measureAccuracy(meter, headless.renderer(), configurations[c], size,
                                          [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
+            if (flickerFrames > 1) {
+                progress.show(start + step, sweep[c].label + QStringLiteral(": flicker"));
+                row.flicker = measureFlicker(headless.renderer(), configurations[c],
+                                             subTexelPath(headless.renderer(), configurations[c], size, flickerFrames, kFlickerStepTexels), size);
+            }
             printFitWarnings(headless.renderer().lastFit(), sweep[c].label);
             if (row.accuracy.raysPerSecond > 0.0)
                 raysPerSecond = row.accuracy.raysPerSecond;
@@ -81,7 +90,7 @@ int runReport(const QStringList& arguments)
         // previous configuration (a shadow map of another size to allocate) is not timed.
         std::vector<TimedRun> runs;
         for (const Settings& configuration : configurations)
-            runs.push_back({&headless, configuration, true, true, {}});
+            runs.push_back({&headless, configuration, true, true, {}, {}});
         timeInterleaved(runs, size, warmup, frames,
                         [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
         for (std::size_t c = 0; c < sweep.size(); ++c) {
@@ -109,6 +118,11 @@ int runReport(const QStringList& arguments)
 
         out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
               << QString::number(raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
+        if (flickerFrames > 1) {
+            out() << "flicker (receiver pixels flipping per frame, camera walking " << kFlickerStepTexels << " texel a frame):\n";
+            for (const ReportRow& r : rows)
+                out() << "  " << r.label.leftJustified(36) << QString::number(100 * r.flicker.flicker, 'f', 3).rightJustified(8) << " %\n";
+        }
         out() << "Pareto front (frame ms, misclassified % against the hard reference):\n";
         for (const ReportRow& r : rows) {
             if (r.paretoFront)

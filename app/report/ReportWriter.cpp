@@ -165,7 +165,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     const QDir dir(directory);
 
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10,shadow_p90,lit_ms,lit_p10,lit_p90,frame_ms,frame_p10,frame_p90,"
-                                 "misclassified,false_shadow,false_light,mae,rmse,area_mae,area_rmse,pareto\n");
+                                 "misclassified,false_shadow,false_light,mae,rmse,area_mae,area_rmse,pareto,flicker,flicker_change\n");
     QJsonArray jsonRows;
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
@@ -174,7 +174,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            number(r.shadowPass.p90), number(r.litPass.median), number(r.litPass.p10), number(r.litPass.p90), number(r.frame.median),
                            number(r.frame.p10), number(r.frame.p90), number(h.misclassified, 6), number(h.falseShadow, 6), number(h.falseLight, 6),
                            number(h.mae, 6), number(h.rmse, 6), number(a.mae, 6), number(a.rmse, 6),
-                           r.paretoFront ? QStringLiteral("1") : QStringLiteral("0")}
+                           r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), number(r.flicker.flicker, 6), number(r.flicker.meanChange, 6)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
@@ -184,7 +184,11 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
-                                    {QStringLiteral("pareto_front"), r.paretoFront}});
+                                    {QStringLiteral("pareto_front"), r.paretoFront},
+                                    {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips"), r.flicker.flicker},
+                                                                            {QStringLiteral("worst_pair"), r.flicker.worstPair},
+                                                                            {QStringLiteral("mean_change"), r.flicker.meanChange},
+                                                                            {QStringLiteral("frames"), r.flicker.frames}}}});
     }
     writeFile(dir.filePath(QStringLiteral("report.csv")), csv.toUtf8());
 
@@ -262,6 +266,15 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
                          number(r.frame.p90, 2), number(100 * h.misclassified, 3), number(100 * h.falseShadow, 3))
                     .arg(number(100 * h.falseLight, 3), number(h.mae, 4), number(h.rmse, 4), number(r.accuracy.area.mae, 4),
                          number(r.accuracy.area.rmse, 4));
+    }
+    page += QStringLiteral("</table>");
+    page += QStringLiteral("<h2>Flicker</h2><p>The camera the light is fitted to walks in sub-texel steps while the measured pixels stay put: "
+                           "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.</p>"
+                           "<table><tr><th>configuration</th><th>flips %</th><th>worst pair %</th><th>mean change</th><th>frames</th></tr>");
+    for (const ReportRow& r : rows) {
+        page += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
+                    .arg(html(r.label), number(100 * r.flicker.flicker, 3), number(100 * r.flicker.worstPair, 3), number(r.flicker.meanChange, 5))
+                    .arg(r.flicker.frames);
     }
     page += QStringLiteral("</table>");
     if (best && worst) {

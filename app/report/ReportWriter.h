@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AccuracyMeter.h"
+#include "Flicker.h"
 #include "SampleStats.h"
 
 #include <QString>
@@ -17,6 +18,7 @@ struct ReportRow {
     SampleStats litPass;
     SampleStats frame;
     AccuracyResult accuracy;
+    FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
     bool paretoFront = false;   // no other row is both faster and more accurate (hard reference)
 };
 

@@ -1,0 +1,248 @@
+// Every light type shadows what the Embree reference says, pixel by pixel: directional, spot
+// (unlit outside its cone) and point (six cube faces), on every preset and from several
+// placements; a point light shadows in all six directions; a light inside a caster or on a
+// receiver gives a clear, finite result.
+#include "Application.h"
+#include "HeadlessRenderer.h"
+#include "HeadlessTestMain.h"
+#include "ReferenceAgreement.h"
+#include "SceneLibrary.h"
+#include "SceneNames.h"
+#include "SettingsKeys.h"
+#include "ShadowViews.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace shadowlab;
+
+Q_DECLARE_METATYPE(glm::dvec3)
+
+namespace {
+
+using probe::Agreement;
+using probe::agreement;
+
+glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
+{
+    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
+    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
+}
+
+QString describe(const Agreement& a)
+{
+    return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
+        .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
+}
+
+// A closed room (six inward-facing walls that receive) around a point light, with a small cube
+// between the light and the middle of each wall.
+Scene roomScene()
+{
+    Scene s;
+    s.name = QStringLiteral("room");
+    s.meshes.push_back(meshes::plane(4.0f, 4.0f));
+    s.meshes.push_back(meshes::cube());
+    for (const glm::dvec3& axis : cubeFaceAxes()) {
+        // The plane's normal +y turned to face the room's centre (-axis).
+        glm::dmat4 wall = glm::translate(glm::dmat4(1.0), axis * 4.0);
+        const glm::dvec3 inward = -axis;
+        const glm::dvec3 turn = glm::cross(glm::dvec3(0, 1, 0), inward);
+        if (glm::length(turn) > 0.5)
+            wall = glm::rotate(wall, glm::radians(90.0), turn);
+        else if (inward.y < 0.0)
+            wall = glm::rotate(wall, glm::radians(180.0), glm::dvec3(1, 0, 0));
+        s.objects.push_back({QStringLiteral("wall"), 0, wall, TextureKind::Checker, false, true});
+        const glm::dmat4 block = glm::scale(glm::translate(glm::dmat4(1.0), axis * 1.5), glm::dvec3(0.3));
+        s.objects.push_back({QStringLiteral("block"), 1, block, TextureKind::Wood, true, true});
+    }
+    return s;
+}
+
+} // namespace
+
+class TestLightTypes : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private Q_SLOTS:
+    void initTestCase() { m_headless = std::make_unique<HeadlessRenderer>(); }
+    void cleanupTestCase() { m_headless.reset(); }
+
+    void eachTypeAgreesWithTheReference_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("type");
+        QTest::addColumn<glm::dvec3>("direction");   // from the target toward the light
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<QString>("filter");
+        const struct {
+            double azimuth, elevation;
+        } placements[] = {{30, 75}, {200, 50}, {300, 35}};
+        const QStringList filters{"hard", "hw-bilinear", "pcf"};
+        for (const QString& scene : sceneNames()) {
+            int k = 0;
+            for (const QString type : {"directional", "spot", "point"}) {
+                for (const auto& p : placements) {
+                    // Point lights sit among the objects, spots a little farther out.
+                    const double distance = type == "point" ? 3.5 + k % 2 : type == "spot" ? 7.0 : 1e3;
+                    QTest::newRow(qPrintable(QString("%1 %2 az %3 el %4").arg(scene, type).arg(p.azimuth).arg(p.elevation)))
+                        << scene << QString(type) << fromAngles(p.azimuth, p.elevation) << distance << filters[k % 3];
+                    ++k;
+                }
+            }
+        }
+    }
+
+    void eachTypeAgreesWithTheReference()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QString, type);
+        QFETCH(glm::dvec3, direction);
+        QFETCH(double, distance);
+        QFETCH(QString, filter);
+        Settings s = presetSettings(scene);
+        applySetting(s, "light.type", type);
+        applySetting(s, "filter.mode", filter);
+        s.light.fov = 100.0;
+        s.light.position = s.light.target + direction * distance;
+        // A street-level view of a kilometre of city needs cascades (one map has texels of
+        // half a metre there); the last reaches the camera's far plane, so all of it is tested.
+        if (cityBuildingCount(scene) > 0 && type == "directional") {
+            s.shadow.cascades = 4;
+            s.shadow.distance = 1e5;
+        }
+        m_headless->renderer().setScene(std::nullopt);
+        const QSize size(240, 135);
+        const Agreement a = agreement(m_headless->renderer(), s, size);
+        const QString numbers = describe(a);
+        QVERIFY2(a.counted > 300, qPrintable(numbers));
+        QVERIFY2(a.referenceShadowed > 0.005 * a.counted, qPrintable(numbers));
+        // Shadows kept (at most 2 % of the reference's shadow lost at edges) and no acne.
+        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        if (type == "spot") {
+            // The cone leaves part of the view unlit, and the renderer agrees there (above).
+            const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, size);
+            const LightFrame& light = m_headless->renderer().lightFrame();
+            int outside = 0;
+            for (int i = 0; i < buffer.pixelCount(); ++i) {
+                if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                    continue;
+                const glm::dvec3 d = glm::normalize(buffer.worldPosition(i) - light.position);
+                if (glm::dot(d, light.direction) < light.spotCosine - 1e-3) {
+                    ++outside;
+                    QCOMPARE(buffer.visibility(i), 0.0f);
+                }
+            }
+            qInfo().noquote() << outside << "pixels outside the cone";
+        }
+        if (type == "point") {
+            const ShadowViewFrames& views = m_headless->renderer().shadowViews();
+            QCOMPARE(int(views.frames.size()), 6);
+        }
+        qInfo().noquote() << numbers;
+    }
+
+    // A point light in the middle of a room, a block before each wall: every wall has the
+    // block's shadow where the reference puts it.
+    void pointLightShadowsInAllSixDirections_data()
+    {
+        QTest::addColumn<int>("face");
+        QTest::addColumn<QString>("filter");
+        for (int face = 0; face < 6; ++face) {
+            for (const QString filter : {"hard", "pcf"})
+                QTest::newRow(qPrintable(QString("face %1 %2").arg(face).arg(filter))) << face << QString(filter);
+        }
+    }
+
+    void pointLightShadowsInAllSixDirections()
+    {
+        QFETCH(int, face);
+        QFETCH(QString, filter);
+        m_headless->renderer().setScene(roomScene());
+        Settings s;
+        applySetting(s, "light.type", "point");
+        applySetting(s, "filter.mode", filter);
+        s.light.position = {0.12, 0.2, -0.07};
+        s.light.target = {0.0, -1.0, 0.0};
+        const glm::dvec3 axis = cubeFaceAxes()[std::size_t(face)];
+        const glm::dvec3 side = std::abs(axis.y) > 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        // From beside the light, looking at the wall's middle, so the block does not hide its shadow.
+        s.camera.position = -axis * 1.0 + side * 3.0 + glm::cross(axis, side) * 0.5;
+        s.camera.target = axis * 4.0;
+        s.camera.fov = 60.0;
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(200, 150));
+        const QString numbers = describe(a);
+        const FrameStats& stats = m_headless->renderer().lastFrame();
+        m_headless->renderer().setScene(std::nullopt);
+        QVERIFY2(a.counted > 1000, qPrintable(numbers));
+        // The block's shadow on the wall is in view...
+        QVERIFY2(a.referenceShadowed > 0.02 * a.counted, qPrintable(numbers));
+        // ... and rendered where the reference has it.
+        QVERIFY2(a.falseLight <= 0.03 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        // Faces that see no visible receiver are not drawn.
+        QCOMPARE(int(stats.viewDraws.size()), 6);
+        qInfo().noquote() << numbers;
+    }
+
+    // A light inside a caster: everything it could light is behind the caster's walls.
+    // A light on a receiver: grazing everything, still finite. Neither gives NaN.
+    void degenerateLightPlacementsAreClear_data()
+    {
+        QTest::addColumn<QString>("type");
+        QTest::addColumn<glm::dvec3>("position");
+        QTest::addColumn<bool>("allDark");
+        QTest::addColumn<bool>("agrees");
+        for (const QString type : {"spot", "point"}) {
+            QTest::newRow(qPrintable(type + " inside the high cube")) << QString(type) << glm::dvec3(0.05, 1.5, -0.03) << true << true;
+            QTest::newRow(qPrintable(type + " resting on the ground")) << QString(type) << glm::dvec3(0.8, -0.499, 0.4) << false << true;
+            // Exactly in the ground's plane the ground is lit edge-on (N.L = 0): which side of
+            // zero it falls is rounding, in the reference too; only finiteness is asserted.
+            QTest::newRow(qPrintable(type + " in the ground's plane")) << QString(type) << glm::dvec3(0.8, -0.5, 0.4) << false << false;
+        }
+    }
+
+    void degenerateLightPlacementsAreClear()
+    {
+        QFETCH(QString, type);
+        QFETCH(glm::dvec3, position);
+        QFETCH(bool, allDark);
+        QFETCH(bool, agrees);
+        Settings s = presetSettings("seed");
+        applySetting(s, "light.type", type);
+        s.light.fov = 120.0;
+        s.light.position = position;
+        s.light.target = position + glm::dvec3(0.3, -1.0, 0.2);
+        m_headless->renderer().setScene(std::nullopt);
+        const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, QSize(160, 90));
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) == VisibilityBuffer::Background)
+                continue;
+            const float v = buffer.visibility(i);
+            QVERIFY2(std::isfinite(v) && v >= 0.0f && v <= 1.0f, qPrintable(QString("pixel %1: visibility %2").arg(i).arg(v)));
+        }
+        if (!agrees)
+            return;
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(160, 90));
+        const QString numbers = describe(a);
+        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted + 2, qPrintable(numbers));
+        if (allDark)
+            QVERIFY2(a.referenceShadowed == a.counted, qPrintable(numbers));
+        qInfo().noquote() << numbers;
+    }
+
+private:
+    std::unique_ptr<HeadlessRenderer> m_headless;
+};
+
+SHADOWLAB_TEST_MAIN(TestLightTypes)
+#include "tst_LightTypes.moc"
