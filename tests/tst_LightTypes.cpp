@@ -10,6 +10,8 @@
 #include "SceneNames.h"
 #include "SettingsKeys.h"
 #include "ShadowViews.h"
+#include "RayTracer.h"
+#include "ShadowReference.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
@@ -190,6 +192,97 @@ private Q_SLOTS:
         QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
         // Faces that see no visible receiver are not drawn.
         QCOMPARE(int(stats.viewDraws.size()), 6);
+        qInfo().noquote() << numbers;
+    }
+
+    // Cascades cover the whole shadow distance: the pixels within it agree with the reference,
+    // and so do those next to each seam (within 5 % of a split), blended or not, stabilised
+    // or not; pixels beyond the distance are lit, as the setting says.
+    void cascadesAgreeAcrossTheSeams_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("cascades");
+        QTest::addColumn<double>("blend");
+        QTest::addColumn<bool>("stabilize");
+        QTest::addColumn<QString>("split");
+        // (Logarithmic splits put every seam within a metre of a camera whose near plane is a
+        // few centimetres, out of these views; tst_LightRig checks their coverage.)
+        const QStringList splits{"uniform", "practical"};
+        int k = 0;
+        for (const QString scene : {"seed", "cubes", "city"}) {
+            // (Two cascades' one seam sits behind the near buildings or objects of these views.)
+            for (int cascades : {3, 4}) {
+                for (double blend : {0.0, 0.2}) {
+                    const bool stabilize = (k % 2) == 0;
+                    QTest::newRow(qPrintable(QString("%1 %2 cascades blend %3 %4 %5").arg(scene).arg(cascades).arg(blend).arg(stabilize ? "stabilised" : "tight", splits[(k / 2) % 2])))
+                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2];
+                    ++k;
+                }
+            }
+        }
+    }
+
+    void cascadesAgreeAcrossTheSeams()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, cascades);
+        QFETCH(double, blend);
+        QFETCH(bool, stabilize);
+        QFETCH(QString, split);
+        Settings s = presetSettings(scene);
+        s.shadow.cascades = cascades;
+        s.shadow.blend = blend;
+        s.light.stabilize = stabilize;
+        applySetting(s, "shadow.split", split);
+        s.map.size = 1024;
+        // The distance ends inside the view, so pixels beyond it are there to check too.
+        const double viewDistance = glm::length(s.camera.target - s.camera.position);
+        s.shadow.distance = cityBuildingCount(scene) > 0 ? 100.0 : viewDistance * 1.3;
+        m_headless->renderer().setScene(std::nullopt);
+        Renderer& renderer = m_headless->renderer();
+        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(320, 180));
+        const ShadowViewFrames& views = renderer.shadowViews();
+        QCOMPARE(int(views.set.views.size()), cascades);
+        const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
+        ReferenceOptions options;
+        options.area = false;
+        const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
+        const glm::dvec3 forward = -glm::dvec3(views.camera.view[0][2], views.camera.view[1][2], views.camera.view[2][2]);
+        int counted = 0, shadowed = 0, falseShadow = 0, falseLight = 0, seamCounted = 0, seamWrong = 0, beyond = 0, beyondShadowed = 0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                continue;
+            const double depth = glm::dot(buffer.worldPosition(i) - views.camera.position, forward);
+            const float measured = buffer.visibility(i), expected = reference.hard[std::size_t(i)];
+            if (depth > s.shadow.distance * 1.001) {
+                ++beyond;
+                beyondShadowed += measured < 0.5f;
+                continue;
+            }
+            if (depth > s.shadow.distance * 0.999)
+                continue;
+            ++counted;
+            shadowed += expected < 0.5f;
+            const bool wrong = std::abs(measured - expected) > 0.5f;
+            falseShadow += measured < expected - 0.5f;
+            falseLight += measured > expected + 0.5f;
+            for (int c = 0; c + 1 < cascades; ++c) {
+                const double seam = views.set.views[std::size_t(c)].splitFar;
+                if (std::abs(depth - seam) < 0.05 * seam) {
+                    ++seamCounted;
+                    seamWrong += wrong;
+                }
+            }
+        }
+        const QString numbers = QString("%1 counted within the distance, %2 shadowed, %3 false shadow, %4 false light; %5 next to a seam, "
+                                        "%6 wrong there; %7 beyond, %8 of them shadowed")
+                                    .arg(counted).arg(shadowed).arg(falseShadow).arg(falseLight).arg(seamCounted).arg(seamWrong).arg(beyond).arg(beyondShadowed);
+        QVERIFY2(counted > 2000 && shadowed > 0.01 * counted, qPrintable(numbers));
+        QVERIFY2(falseLight <= 0.02 * shadowed + 0.002 * counted, qPrintable(numbers));
+        QVERIFY2(falseShadow <= 0.003 * counted, qPrintable(numbers));
+        QVERIFY2(seamCounted > 50, qPrintable(numbers));
+        QVERIFY2(seamWrong <= 0.01 * seamCounted + 2, qPrintable(numbers));
+        QCOMPARE(beyondShadowed, 0);
         qInfo().noquote() << numbers;
     }
 
