@@ -108,14 +108,14 @@ std::vector<SweepEntry> cascadesSweep()
     const int sizes[] = {2048, 1448, 1182, 1024};   // 2048² / count, per cascade
     for (int count = 1; count <= 4; ++count) {
         for (bool stabilize : {true, false}) {
-            s.push_back({QStringLiteral("%1 cascade%2 of %3², %4").arg(count).arg(count > 1 ? "s" : "").arg(sizes[count - 1])
+            s.push_back({QStringLiteral("%1 cascade%2 of %3 x %3, %4").arg(count).arg(count > 1 ? "s" : "").arg(sizes[count - 1])
                              .arg(stabilize ? QStringLiteral("stabilised") : QStringLiteral("unstabilised")),
                          {QStringLiteral("shadow.cascades=%1").arg(count), QStringLiteral("map.size=%1").arg(sizes[count - 1]),
                           QStringLiteral("light.stabilize=%1").arg(stabilize ? "true" : "false")}});
         }
     }
     for (const char* split : {"uniform", "logarithmic"})
-        s.push_back({QStringLiteral("4 cascades of 1024², %1 split").arg(QLatin1String(split)),
+        s.push_back({QStringLiteral("4 cascades of 1024 x 1024, %1 split").arg(QLatin1String(split)),
                      {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("shadow.split=%1").arg(QLatin1String(split))}});
     return s;
 }

@@ -76,7 +76,7 @@ void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
     const int width = size * columns, height = size * rows;
     if (width > maxSize || height > maxSize)
         throw SettingsError(QStringLiteral("map.size"),
-                            QStringLiteral("%1 x %2 maps of %3² do not fit in one %4 x %5 texture (this driver allows %6 per side); "
+                            QStringLiteral("%1 x %2 maps of %3 texels do not fit in one %4 x %5 texture (this driver allows %6 per side); "
                                            "choose map.size <= %7")
                                 .arg(columns).arg(rows).arg(size).arg(width).arg(height).arg(maxSize).arg(maxSize / std::max(columns, rows)));
 
