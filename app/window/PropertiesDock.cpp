@@ -121,7 +121,9 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     QGridLayout* light = addGroup(tr("Light"));
     addVector(light, QStringLiteral("light.position"));
     addVector(light, QStringLiteral("light.target"));
+    addChoice(light, QStringLiteral("light.type"));
     addChoice(light, QStringLiteral("light.projection"));
+    addNumber(light, QStringLiteral("light.falloff"));
     addChoice(light, QStringLiteral("light.fit"));
     addBool(light, QStringLiteral("light.stabilize"), tr("Stabilise the fitted volume"));
     addNumber(light, QStringLiteral("light.extent"));
@@ -146,6 +148,12 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     QGridLayout* map = addGroup(tr("Shadow map"));
     addNumber(map, QStringLiteral("map.size"));
     addChoice(map, QStringLiteral("map.format"));
+    addNumber(map, QStringLiteral("shadow.cascades"));
+    addChoice(map, QStringLiteral("shadow.split"));
+    addNumber(map, QStringLiteral("shadow.split_lambda"));
+    addNumber(map, QStringLiteral("shadow.distance"));
+    addNumber(map, QStringLiteral("shadow.blend"));
+    addBool(map, QStringLiteral("shadow.show_cascades"), tr("Tint by cascade or cube face"));
 
     QGridLayout* bias = addGroup(tr("Bias"));
     addChoice(bias, QStringLiteral("bias.space"));
@@ -306,6 +314,8 @@ void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
                     combo->setCurrentText(value);
                 }};
     static const QHash<QString, QString> labels{{QStringLiteral("light.projection"), tr("Projection")},
+                                                {QStringLiteral("light.type"), tr("Type")},
+                                                {QStringLiteral("shadow.split"), tr("Cascade split")},
                                                 {QStringLiteral("map.format"), tr("Depth format")},
                                                 {QStringLiteral("light.fit"), tr("Volume")},
                                                 {QStringLiteral("bias.space"), tr("Unit")},
@@ -409,6 +419,11 @@ void PropertiesDock::resetToDefaults()
 void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
 {
     m_pending = candidate;
+    // light.type and light.projection set each other: both fields show the result.
+    for (const QString linked : {"light.type", "light.projection"}) {
+        if (const auto it = m_fields.find(linked); it != m_fields.end())
+            it->load(m_pending);
+    }
     clearErrors();
     updateDependentRows();
     QStringList warnings;
@@ -571,6 +586,17 @@ void PropertiesDock::updateDependentRows()
     for (const TechniqueParameter& parameter : techniqueParameters()) {
         for (QWidget* w : m_rows.value(parameter.key))
             w->setEnabled(usesParameter(m_pending.filter, parameter.key));
+    }
+    // The cone's falloff for a spot light; cascades for a directional one, and their split
+    // settings once there are several.
+    for (QWidget* w : m_rows.value(QStringLiteral("light.falloff")))
+        w->setVisible(m_pending.light.type == LightType::Spot);
+    const bool directional = m_pending.light.type == LightType::Directional;
+    for (QWidget* w : m_rows.value(QStringLiteral("shadow.cascades")))
+        w->setEnabled(directional);
+    for (const QString key : {"shadow.split", "shadow.split_lambda", "shadow.distance", "shadow.blend"}) {
+        for (QWidget* w : m_rows.value(key))
+            w->setEnabled(directional && m_pending.shadow.cascades > 1);
     }
 }
 
