@@ -54,6 +54,11 @@ const Presentation kPresentations[] = {
     {"light.radius", "Reference radius", " wu", 3, 0.0, 2.0},
     {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
     {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
+    {"light.falloff", "Cone falloff", "", 2, 0.0, 1.0},
+    {"shadow.cascades", "Cascades", "", 0, 1.0, 4.0},
+    {"shadow.split_lambda", "Split λ", "", 2, 0.0, 1.0},
+    {"shadow.distance", "Shadow distance", " wu", 1, 1.0, 2000.0, SliderSpinBox::Scale::Logarithmic},
+    {"shadow.blend", "Cascade blend", "", 2, 0.0, 0.5},
 };
 
 // A Presentation for people: from the list above, or from the technique table for the
