@@ -218,6 +218,61 @@ private Q_SLOTS:
         }
     }
 
+    // The city: the asked-for number of buildings, of varied size, over more than a square
+    // kilometre, the same on every build; bad counts are refused with the key named.
+    void cityIsSeededAndSized_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("buildings");
+        QTest::newRow("city") << "city" << 2000;
+        QTest::newRow("city:500") << "city:500" << 500;
+        QTest::newRow("city:8000") << "city:8000" << 8000;
+    }
+
+    void cityIsSeededAndSized()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, buildings);
+        const Scene city = buildScene(name);
+        QCOMPARE(int(city.objects.size()), buildings + 1);  // and the ground
+        Bounds all;
+        double lowest = 1e9, highest = 0.0, narrowest = 1e9, widest = 0.0;
+        for (std::size_t i = 1; i < city.objects.size(); ++i) {
+            const Bounds b = city.worldBounds(city.objects[i]);
+            all.extend(b);
+            lowest = std::min(lowest, b.max.y - b.min.y);
+            highest = std::max(highest, b.max.y - b.min.y);
+            narrowest = std::min(narrowest, b.max.x - b.min.x);
+            widest = std::max(widest, b.max.x - b.min.x);
+            QVERIFY(b.min.y >= -1e-9);
+        }
+        QVERIFY2((all.max.x - all.min.x) * (all.max.z - all.min.z) >= 1e6, "the buildings cover at least a square kilometre");
+        QVERIFY(highest > 5.0 * lowest);
+        QVERIFY(widest > 1.3 * narrowest);
+        // Seeded: the same city again.
+        const Scene again = buildScene(name);
+        for (std::size_t i = 0; i < city.objects.size(); ++i)
+            QVERIFY(city.objects[i].model == again.objects[i].model);
+        // The street-level camera stands on the ground, in a street, and sees buildings.
+        const Settings s = presetSettings(name);
+        QVERIFY(validate(s).empty());
+        QVERIFY(s.camera.position.y > 1.0 && s.camera.position.y < 3.0);
+        for (std::size_t i = 1; i < city.objects.size(); ++i) {
+            const Bounds b = city.worldBounds(city.objects[i]);
+            const glm::dvec3 p = s.camera.position;
+            QVERIFY(!(p.x > b.min.x && p.x < b.max.x && p.z > b.min.z && p.z < b.max.z));
+        }
+    }
+
+    void cityCountsAreChecked()
+    {
+        Settings s;
+        for (const char* bad : {"city:0", "city:-3", "city:20001", "city:many", "city:"})
+            QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(s, "scene", bad));
+        applySetting(s, "scene", "city:123");
+        QCOMPARE(s.scene, QString("city:123"));
+    }
+
     // A point light's six faces, each a little over 90°, leave no direction uncovered.
     void cubeFacesCoverEveryDirection()
     {
