@@ -122,6 +122,26 @@ std::vector<SweepEntry> penumbraSweep()
     return s;
 }
 
+// 1-4 cascades at (about) equal total texels, each stabilised and not, and the split schemes:
+// what cascades buy at the same memory, and what stabilisation does to flicker.
+std::vector<SweepEntry> cascadesSweep()
+{
+    std::vector<SweepEntry> s;
+    const int sizes[] = {2048, 1448, 1182, 1024};   // 2048² / count, per cascade
+    for (int count = 1; count <= 4; ++count) {
+        for (bool stabilize : {true, false}) {
+            s.push_back({QStringLiteral("%1 cascade%2 of %3 x %3, %4").arg(count).arg(count > 1 ? "s" : "").arg(sizes[count - 1])
+                             .arg(stabilize ? QStringLiteral("stabilised") : QStringLiteral("unstabilised")),
+                         {QStringLiteral("shadow.cascades=%1").arg(count), QStringLiteral("map.size=%1").arg(sizes[count - 1]),
+                          QStringLiteral("light.stabilize=%1").arg(stabilize ? "true" : "false")}});
+        }
+    }
+    for (const char* split : {"uniform", "logarithmic"})
+        s.push_back({QStringLiteral("4 cascades of 1024 x 1024, %1 split").arg(QLatin1String(split)),
+                     {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("shadow.split=%1").arg(QLatin1String(split))}});
+    return s;
+}
+
 std::vector<SweepEntry> defaultSweep()
 {
     std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
@@ -180,7 +200,7 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
@@ -197,6 +217,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
         return lightsSweep();
     if (nameOrFile == u"penumbra")
         return penumbraSweep();
+    if (nameOrFile == u"cascades")
+        return cascadesSweep();
     QByteArray bytes;
     try {
         bytes = readInputFile(nameOrFile, QStringLiteral("sweep file"));

@@ -53,6 +53,7 @@ ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPe
 {
     return {sceneIdentity(settings.scene), settings.camera, size,
             settings.light.position, settings.light.target,  settings.light.projection,
+            settings.light.type, settings.light.type == LightType::Spot ? settings.light.fov : 0.0,
             settings.reference.lightRadius, samplesPerAxis};
 }
 
@@ -96,6 +97,13 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
             // to the tracer's origin, so float rounding cannot put the origin behind the surface.
             const double scale = std::max(1.0, glm::length(p - tracer.origin()));
             const glm::dvec3 from = p + normal * (2e-4 * scale);
+            // Outside a spot light's cone: unlit, nothing to trace (both buffers stay 0).
+            if (light.spotCosine >= -1.0) {
+                const glm::dvec3 fromLight = p - light.position;
+                const double length = glm::length(fromLight);
+                if (!(length > 0.0) || glm::dot(fromLight / length, light.direction) <= light.spotCosine)
+                    continue;
+            }
 
             if (light.perspective)
                 result.hard[std::size_t(i)] = tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;

@@ -36,6 +36,8 @@ struct ReferenceKey {
     glm::dvec3 lightPosition{0.0};
     glm::dvec3 lightTarget{0.0};
     LightProjection projection = LightProjection::Ortho;
+    LightType type = LightType::Directional;
+    double coneFov = 0.0;           // a spot light's cone
     double lightRadius = 0.0;
     int samplesPerAxis = 0;
 
@@ -54,7 +56,8 @@ struct ReferenceOptions {
 // start a small distance off the surface along the geometric normal. Directional (ortho)
 // lights trace parallel rays, and for the area reference a disk of the light's angular size
 // seen from its target; perspective lights trace to the light's position and to a disk there,
-// facing along the light direction. Runs on every core (Qt's global thread pool);
+// facing along the light direction; a spot light's receivers outside its cone (light.fov,
+// LightFrame::spotCosine) are unlit, and a point light's rays go every way. Runs on every core (Qt's global thread pool);
 // `progress` (0..1) is called from the calling thread between rows; setting `*cancel` stops
 // the work early. Needs no GL context, so it can run off the GUI thread.
 ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuffer& buffer, const LightFrame& light,

@@ -239,6 +239,19 @@ std::vector<AuditCase> makeCatalogue()
             o.happened += reversed ? QStringLiteral("; reversed Z") : QStringLiteral("; conventional Z (no clip control)");
             return o;
         });
+    // Light types and cascades at their extremes.
+    add("point light inside a caster", "every receiver it could light is behind the cube's walls; finite; error <= 1 %",
+        accurate(seedWith({"light.type=point", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
+    add("spot light inside a caster", "unlit everywhere; finite; error <= 1 %",
+        accurate(seedWith({"light.type=spot", "light.fov=120", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
+    add("point light on a receiver", "the ground it rests on is lit edge-on (N.L = 0); finite",
+        accurate(seedWith({"light.type=point", "light.position=0.8,-0.5,0.4", "light.target=0,-1,0"}), 1.0, Judge::FiniteOnly));
+    add("point light on a cube-face seam", "a direction exactly between two faces picks one; error <= 2 %",
+        accurate(seedWith({"light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
+    add("cascade splits at shadow distance 1e5", "four finite slices up to the camera's far plane; error <= 2 %",
+        accurate(seedWith({"shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
+    add("cascades on a spot light", "refused, naming shadow.cascades",
+        refused(seedWith({"light.type=spot", "shadow.cascades=4"}), "shadow.cascades"));
     add("perspective near = 0", "refused, naming light.near", refused(seedWith({"light.projection=perspective", "light.near=0"}), "light.near"));
     add("ortho near = 0", "valid for a directional light: renders; error <= 2 %", accurate(seedWith({"light.near=0"}), 0.02));
     add("near = far", "refused, naming light.far", refused(seedWith({"light.near=5", "light.far=5"}), "light.far"));

@@ -1,8 +1,7 @@
 #include "Measurement.h"
 
 #include "Renderer.h"
-
-#include <glm/gtc/matrix_transform.hpp>
+#include "SceneLibrary.h"
 
 namespace shadowlab {
 
@@ -22,12 +21,13 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
                 h.renderFrame(run.settings, size, TimingMode::Finish);
             if (run.moving)
                 h.renderer().invalidateShadowMap();
-            Settings settings = run.settings;
-            if (run.cameraOrbitDegrees != 0.0) {
-                const glm::dmat4 orbit = glm::rotate(glm::dmat4(1.0), glm::radians(run.cameraOrbitDegrees * double(i)), glm::dvec3(0.0, 1.0, 0.0));
-                settings.camera.position = settings.camera.target + glm::dvec3(orbit * glm::dvec4(settings.camera.position - settings.camera.target, 0.0));
+            if (!run.cameraPath.empty()) {
+                Settings moved = run.settings;
+                moved.camera = run.cameraPath[std::size_t(i) % run.cameraPath.size()];
+                h.renderFrame(moved, size, TimingMode::Finish);
+            } else {
+                h.renderFrame(run.settings, size, TimingMode::Finish);
             }
-            h.renderFrame(settings, size, TimingMode::Finish);
             if (i < warmup)
                 continue;
             const FrameStats& f = h.renderer().lastFrame();
@@ -39,6 +39,18 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
                 ++s.shadowPassesRun;
                 s.shadowDraws = f.shadowDraws;
             }
+            if (s.viewWall.size() < f.viewRendered.size()) {
+                s.viewWall.resize(f.viewRendered.size());
+                s.viewPassesRun.resize(f.viewRendered.size(), 0);
+                s.viewDraws.resize(f.viewRendered.size(), 0);
+            }
+            for (std::size_t v = 0; v < f.viewRendered.size(); ++v) {
+                if (f.viewRendered[v]) {
+                    s.viewWall[v].push_back(f.viewWallMs[v]);
+                    ++s.viewPassesRun[v];
+                    s.viewDraws[v] = f.viewDraws[v];
+                }
+            }
             s.lit.push_back(f.litPassMs);
             s.litWall.push_back(f.litPassWallMs);
             s.wall.push_back(f.frameWallMs);
@@ -46,6 +58,33 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
         if (progress)
             progress(double(i + 1) / double(warmup + frames));
     }
+}
+
+FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size)
+{
+    std::vector<VisibilityBuffer> frames;
+    frames.reserve(path.size());
+    Settings still = settings;
+    if (!path.empty())
+        still.camera = path.front();
+    try {
+        for (const CameraSettings& camera : path) {
+            renderer.setFitCamera(camera);
+            frames.push_back(renderer.renderVisibility(still, size));
+        }
+    } catch (...) {
+        renderer.setFitCamera(std::nullopt);
+        throw;
+    }
+    renderer.setFitCamera(std::nullopt);
+    return measureFlicker(frames);
+}
+
+std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels)
+{
+    renderer.renderVisibility(settings, size);
+    const double texel = renderer.lastFrame().texelWorldSize;
+    return cameraPath(settings.camera, frames, texel * texels);
 }
 
 } // namespace shadowlab

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AccuracyMeter.h"
+#include "Flicker.h"
 #include "FrameStats.h"
 #include "HeadlessRenderer.h"
 #include "SampleStats.h"
@@ -22,6 +23,10 @@ struct FrameSamples {
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
+    // Lights with several views: per view, wall ms of the frames that drew it, and how many did.
+    std::vector<std::vector<double>> viewWall;
+    std::vector<int> viewPassesRun;
+    std::vector<int> viewDraws;         // casters drawn the last time each view was drawn
 };
 
 // One configuration to time: where it renders, what, and whether the light "moves" (the
@@ -33,9 +38,9 @@ struct TimedRun {
     // Render an untimed frame of this configuration before each timed one: needed when runs
     // share a renderer, so the switch from the previous run (a map to reallocate) is not timed.
     bool settleFirst = false;
-    // Degrees the camera orbits its target (about the world's up axis) each frame; 0 keeps it still.
-    double cameraOrbitDegrees = 0.0;
     FrameSamples samples;
+    // A moving camera: frame i (warm-up included) uses cameraPath[i % size]; empty: still.
+    std::vector<CameraSettings> cameraPath;
 };
 
 // The one timing loop, used by `bench`, `report` and the accuracy dock: `warmup` untimed then
@@ -44,5 +49,20 @@ struct TimedRun {
 // `progress` (0..1) is called after each round.
 void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int frames,
                      const std::function<void(double)>& progress = {});
+
+// The camera walk flicker is measured over (report and the accuracy dock): frames, and the
+// step in texels of the finest map, under a texel, where an unstabilised map shimmers and a
+// snapped one should not move at all.
+inline constexpr int kFlickerFrames = 8;
+inline constexpr double kFlickerStepTexels = 0.37;
+
+// Shimmer of `settings` over `path`: every frame measured from the path's first camera (the
+// same pixels, the same world points) while the light's maps are fitted to the path's camera
+// of that frame, so any change of the shadow term is the maps' doing. Throws like render().
+FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size);
+
+// The scene's camera path in steps of `texels` of the light's finest map (its first cascade),
+// a fraction for sub-texel motion: what flicker is measured over.
+std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels);
 
 } // namespace shadowlab

@@ -3,6 +3,7 @@
 #include "LightMath.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QStringList>
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace shadowlab {
 
@@ -179,6 +181,64 @@ constexpr double kMarginTexels = 4.0;
 // waste at most 19 % of the texels.
 constexpr double kStepsPerOctave = 4.0;
 
+// Boxes (light space, x and y) in a uniform grid of about one cell per box, for finding the
+// boxes that overlap a query box without testing all of them.
+class ReceiverGrid {
+public:
+    ReceiverGrid(const std::vector<Bounds>& boxes, const Bounds& region) : m_stamp(boxes.size(), 0)
+    {
+        const std::size_t count = std::size_t(std::count_if(boxes.begin(), boxes.end(), [](const Bounds& b) { return !b.isEmpty(); }));
+        m_cells = std::clamp(int(std::ceil(std::sqrt(double(count)))), 1, 256);
+        m_min = glm::dvec2(region.min);
+        const glm::dvec2 span = glm::max(glm::dvec2(region.max) - m_min, glm::dvec2(1e-300));
+        m_scale = double(m_cells) / span;
+        m_lists.resize(std::size_t(m_cells * m_cells));
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            if (boxes[i].isEmpty())
+                continue;
+            const auto [lo, hi] = cellRange(boxes[i]);
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x)
+                    m_lists[std::size_t(y * m_cells + x)].push_back(i);
+        }
+    }
+
+    // The boxes whose cells overlap `box`, each once.
+    void query(const Bounds& box, std::vector<std::size_t>& out) const
+    {
+        out.clear();
+        ++m_query;
+        const auto [lo, hi] = cellRange(box);
+        for (int y = lo.y; y <= hi.y; ++y) {
+            for (int x = lo.x; x <= hi.x; ++x) {
+                for (std::size_t i : m_lists[std::size_t(y * m_cells + x)]) {
+                    if (m_stamp[i] != m_query) {
+                        m_stamp[i] = m_query;
+                        out.push_back(i);
+                    }
+                }
+            }
+        }
+    }
+
+private:
+    std::pair<glm::ivec2, glm::ivec2> cellRange(const Bounds& b) const
+    {
+        const auto cell = [this](double v, int axis) {
+            const double c = std::floor((v - m_min[axis]) * m_scale[axis]);
+            return int(std::clamp(std::isfinite(c) ? c : 0.0, 0.0, double(m_cells - 1)));
+        };
+        return {{cell(b.min.x, 0), cell(b.min.y, 1)}, {cell(b.max.x, 0), cell(b.max.y, 1)}};
+    }
+
+    int m_cells = 1;
+    glm::dvec2 m_min{0.0};
+    glm::dvec2 m_scale{1.0};
+    std::vector<std::vector<std::size_t>> m_lists;
+    mutable std::vector<unsigned> m_stamp;
+    mutable unsigned m_query = 0;
+};
+
 double ladderUp(double x) { return std::exp2(std::ceil(std::log2(x) * kStepsPerOctave) / kStepsPerOctave); }
 double ladderDown(double x) { return std::exp2(std::floor(std::log2(x) * kStepsPerOctave) / kStepsPerOctave); }
 
@@ -198,7 +258,7 @@ std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm
 }
 
 FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
-                     int mapSize)
+                     int mapSize, const std::vector<glm::dmat4>& within)
 {
     FittedLight result;
     const LightVolume manual = manualVolume(light);
@@ -210,6 +270,7 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     std::vector<glm::dmat4> seen;
     if (camera)
         seen.push_back(*camera);
+    seen.insert(seen.end(), within.begin(), within.end());
     // Two significant digits below 10 %, whole percent above ("0.38", "7.2", "100").
     const auto percent = [](double share) {
         const double p = share * 100.0;
@@ -286,7 +347,8 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     std::vector<Bounds> seenParts(objects.size());
     Bounds region;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (!objects[i].receives || objects[i].bounds.isEmpty())
+        if (!objects[i].receives || objects[i].bounds.isEmpty()
+            || std::any_of(limits.begin(), limits.end(), [&](const glm::dmat4& m) { return isOutsideFrustum(m, objects[i].bounds, false); }))
             continue;
         for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits))
             seenParts[i].extend(toLight(p));
@@ -320,7 +382,7 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
         : glm::ortho(region.min.x, region.max.x, region.min.y, region.max.y, casterStart, regionFar) * view;
     std::vector<Bounds> casterParts(objects.size());
     for (std::size_t j = 0; j < objects.size(); ++j) {
-        if (objects[j].casts && !objects[j].bounds.isEmpty() && isFinite(prism)) {
+        if (objects[j].casts && !objects[j].bounds.isEmpty() && isFinite(prism) && !isOutsideFrustum(prism, objects[j].bounds, false)) {
             for (const glm::dvec3& p : clipBoxToFrusta(objects[j].bounds, {prism}))
                 casterParts[j].extend(toLight(p));
         }
@@ -328,12 +390,21 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
 
     // The map covers where a caster's part lies over a receiver's part that is behind it: the
     // shadow of a caster falls at its own place in light space.
+    // Receivers go into a grid over the region, so each caster meets only the receivers near
+    // it: a city's thousands of objects pair in about linear time, not quadratic.
+    const ReceiverGrid receiverGrid(seenParts, region);
     Bounds footprint;
+    std::vector<std::size_t> near;
     for (std::size_t j = 0; j < objects.size(); ++j) {
         const Bounds& c = casterParts[j];
         if (c.isEmpty())
             continue;
-        for (std::size_t i = 0; i < objects.size(); ++i) {
+        // Nothing to add when the footprint holds the caster's whole part already.
+        if (!footprint.isEmpty() && c.min.x >= footprint.min.x && c.min.y >= footprint.min.y && c.max.x <= footprint.max.x
+            && c.max.y <= footprint.max.y)
+            continue;
+        receiverGrid.query(c, near);
+        for (std::size_t i : near) {
             const Bounds& r = seenParts[i];
             if (r.isEmpty() || (i == j && objects[j].convex) || !(r.max.z > c.min.z))
                 continue;

@@ -54,9 +54,10 @@ struct FittedLight {
 inline constexpr double kMaxFittedFov = 150.0;
 
 // `light` must be valid (validate()); objects' empty boxes are ignored; `camera` is the
-// camera's view-projection (nullopt: everything is seen).
+// camera's view-projection (nullopt: everything is seen). `within`: further view-projections
+// the receivers must lie in to count (a cascade's slice, a spot's cone, a cube face).
 FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
-                     int mapSize);
+                     int mapSize, const std::vector<glm::dmat4>& within = {});
 
 // The vertices of the convex region `box` ∩ each frustum (conventional clip space of each
 // view-projection): empty when they do not overlap. Exposed for tests of the fit.

@@ -89,6 +89,8 @@ LightFrame computeLightFrame(const LightSettings& light, const LightVolume& v, b
     f.perspective = v.perspective;
     f.nearPlane = v.nearPlane;
     f.farPlane = v.farPlane;
+    if (light.type == LightType::Spot)
+        f.spotCosine = std::cos(glm::radians(light.fov) * 0.5);
     f.view = stableLookAlong(v.origin, v.direction);
     if (f.perspective) {
         const double n = v.nearPlane;

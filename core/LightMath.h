@@ -47,6 +47,9 @@ struct LightFrame {
     bool perspective = false;
     double nearPlane = 1.0;
     double farPlane = 10.0;
+    // A spot light's cone: the cosine of its half-angle (light.fov); receivers outside it are
+    // unlit. Below -1 for lights without a cone.
+    double spotCosine = -2.0;
 };
 
 struct CameraFrame {

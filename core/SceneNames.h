@@ -8,4 +8,13 @@ namespace shadowlab {
 // each (buildScene(), presetSettings()); tst_Scene checks that every name builds.
 const QStringList& sceneNames();
 
+// The city preset takes its building count in its name: "city" (kCityBuildings) or "city:N"
+// with N in [1, kMaxCityBuildings].
+inline constexpr int kCityBuildings = 2000;
+inline constexpr int kMaxCityBuildings = 20000;
+// The buildings of a city name, 0 for any other name (-1: "city:" with a bad count).
+int cityBuildingCount(const QString& name);
+// A preset's name: one of sceneNames() or a city with a building count.
+bool isPresetName(const QString& name);
+
 } // namespace shadowlab

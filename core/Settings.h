@@ -9,12 +9,17 @@
 namespace shadowlab {
 
 enum class LightProjection { Ortho, Perspective };
+// Directional: a direction, an ortho map (or cascades); spot: a position with a cone and a
+// perspective map; point: a position casting every way through six cube faces.
+enum class LightType { Directional, Spot, Point };
+enum class CascadeSplit { Uniform, Logarithmic, Practical };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
 enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss };
 enum class ShadingModel { Phong, BlinnPhong };
 
+inline constexpr int kMaxCascades = 4;
 // Every field carries its range in a comment; SettingsKeys.cpp holds the same ranges for
 // parsing and validate() enforces them, so GUI, CLI and JSON agree on what is allowed.
 struct LightSettings {
@@ -29,6 +34,11 @@ struct LightSettings {
     // Manual: exactly the volume above.
     LightFit fit = LightFit::Scene;
     bool stabilize = true;                  // snap the fitted volume so camera moves neither shimmer nor redraw the map
+    // light.type sets light.projection (directional: ortho; spot, point: perspective) and
+    // light.projection sets light.type (ortho: directional, perspective: spot), so settings
+    // files that name only the projection load as before; validate() refuses a mismatch.
+    LightType type = LightType::Directional;
+    double falloff = 0.2;                   // spot: share of the cone's half-angle over which light fades out at its rim, [0, 1]
 
     bool operator==(const LightSettings&) const = default;
 };
@@ -89,6 +99,15 @@ struct FilterSettings {
 
 struct ShadowSettings {
     bool enabled = true;
+    // Cascaded shadow maps for a directional light: the camera's view from its near plane to
+    // `distance` split into `cascades` slices, each with a map of map.size² fitted to it (the
+    // maps sit side by side in one texture). Beyond `distance` receivers are lit.
+    int cascades = 1;                       // [1, 4]; 1: one map fitted to the whole view (no distance limit)
+    CascadeSplit split = CascadeSplit::Practical;
+    double splitLambda = 0.75;              // practical split: 0 uniform ... 1 logarithmic, [0, 1]
+    double distance = 100.0;                // world units from the camera, (0, 1e7]; used with cascades > 1
+    double blend = 0.1;                     // share of each cascade blended into the next at its far end, [0, 0.5]
+    bool showCascades = false;              // tint receivers by the cascade (or cube face) they read
 
     bool operator==(const ShadowSettings&) const = default;
 };

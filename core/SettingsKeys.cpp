@@ -7,6 +7,7 @@
 #include "OutputFile.h"
 #include "SettingsError.h"
 #include "ShadowTechnique.h"
+#include "ShadowViews.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -211,6 +212,8 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
 }
 
 const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("perspective")};
+const QStringList kLightTypeNames{QStringLiteral("directional"), QStringLiteral("spot"), QStringLiteral("point")};
+const QStringList kSplitNames{QStringLiteral("uniform"), QStringLiteral("logarithmic"), QStringLiteral("practical")};
 const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
 const QStringList kBiasSpaceNames{QStringLiteral("world"), QStringLiteral("texel"), QStringLiteral("depth")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
@@ -226,7 +229,7 @@ const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-p
 Entry sceneKey()
 {
     const QStringList names = sceneNames();
-    const QString rangeText = names.join(QStringLiteral(" | ")) + QStringLiteral(" | a model or scene file");
+    const QString rangeText = names.join(QStringLiteral(" | ")) + QStringLiteral(" | city:N (N buildings, 1..%1) | a model or scene file").arg(kMaxCityBuildings);
     return {SettingKey{QStringLiteral("scene"), QStringLiteral("choice"), rangeText,
                        QStringLiteral("Built-in scene preset, or the path of a model (glTF, OBJ, PLY, STL, COLLADA, FBX) or scene "
                                       "file (.json); choosing one also resets light and camera to the scene's"),
@@ -234,10 +237,13 @@ Entry sceneKey()
             [](const Settings& s) { return s.scene; },
             [names, rangeText](Settings& s, const QString& v) {
                 const QString name = v.trimmed().toLower();
-                if (names.contains(name)) {
+                if (isPresetName(name)) {
                     s.scene = name;
                     return;
                 }
+                if (cityBuildingCount(name) < 0)
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': a city's building count must be a whole number in [1, %2], e.g. city:8000")
+                                                                     .arg(displayText(v)).arg(kMaxCityBuildings));
                 const QFileInfo file(v.trimmed());
                 if (!file.isFile())
                     throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': no such file, and not a preset (%2)%3; check the path")
@@ -245,10 +251,52 @@ Entry sceneKey()
                 s.scene = file.absoluteFilePath();
             },
             [names](const Settings& s) -> std::optional<QString> {
-                if (!names.contains(s.scene) && !QFileInfo(s.scene).isFile())
+                if (!isPresetName(s.scene) && !QFileInfo(s.scene).isFile())
                     return QStringLiteral("'%1': no such file, and not a preset (%2); check the path").arg(displayText(s.scene), names.join(QStringLiteral(" | ")));
                 return std::nullopt;
             }};
+}
+
+// light.type and light.projection keep each other consistent: a file that names only the
+// projection (as older files do) gets the type it meant.
+Entry lightTypeKey()
+{
+    const QString rangeText = kLightTypeNames.join(QStringLiteral(" | "));
+    return {SettingKey{QStringLiteral("light.type"), QStringLiteral("choice"), rangeText,
+                       QStringLiteral("directional: a direction (sun), ortho map or cascades; spot: a position with a cone (light.fov, "
+                                      "light.falloff), unlit outside it; point: a position casting every way through six cube faces, "
+                                      "rendered only where they see a receiver; sets light.projection"),
+                       kLightTypeNames, 0, double(kLightTypeNames.size() - 1)},
+            [](const Settings& s) { return kLightTypeNames.value(int(s.light.type)); },
+            [rangeText](Settings& s, const QString& v) {
+                const int index = kLightTypeNames.indexOf(v.trimmed().toLower());
+                if (index < 0)
+                    throw SettingsError(QStringLiteral("light.type"), QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
+                s.light.type = LightType(index);
+                s.light.projection = s.light.type == LightType::Directional ? LightProjection::Ortho : LightProjection::Perspective;
+            },
+            [](const Settings&) { return std::optional<QString>(); }};
+}
+
+Entry projectionKey()
+{
+    const QString rangeText = kProjectionNames.join(QStringLiteral(" | "));
+    return {SettingKey{QStringLiteral("light.projection"), QStringLiteral("choice"), rangeText,
+                       QStringLiteral("Ortho for a directional light (sun), perspective for a spot or point light; follows light.type "
+                                      "(setting it chooses directional or, from a directional light, spot)"),
+                       kProjectionNames, 0, double(kProjectionNames.size() - 1)},
+            [](const Settings& s) { return kProjectionNames.value(int(s.light.projection)); },
+            [rangeText](Settings& s, const QString& v) {
+                const int index = kProjectionNames.indexOf(v.trimmed().toLower());
+                if (index < 0)
+                    throw SettingsError(QStringLiteral("light.projection"), QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
+                s.light.projection = LightProjection(index);
+                if (s.light.projection == LightProjection::Ortho)
+                    s.light.type = LightType::Directional;
+                else if (s.light.type == LightType::Directional)
+                    s.light.type = LightType::Spot;
+            },
+            [](const Settings&) { return std::optional<QString>(); }};
 }
 
 Entry filterModeKey()
@@ -281,8 +329,10 @@ std::vector<Entry> makeEntries()
                         "Where the light is; with an ortho light only its direction to the target matters"));
     e.push_back(vec3Key("light.target", [](auto& s) -> auto& { return s.light.target; },
                         "The point the light looks at; the centre of the shadow map"));
-    e.push_back(choiceKey<LightProjection>("light.projection", kProjectionNames, [](auto& s) -> auto& { return s.light.projection; },
-                                           "Ortho for a directional light (sun), perspective for a spot or point light"));
+    e.push_back(lightTypeKey());
+    e.push_back(projectionKey());
+    e.push_back(numberKey("light.falloff", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.light.falloff; },
+                          "Spot light: share of the cone's half-angle (light.fov) over which the light fades to nothing at the rim; 0 is a hard edge"));
     e.push_back(numberKey("light.extent", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.light.extent; },
                           "Ortho half-size in world units: larger covers more of the scene with coarser texels (blockier, more acne)"));
     e.push_back(numberKey("light.fov", Range{0.0, 180.0, true, true}, [](auto& s) -> auto& { return s.light.fov; },
@@ -324,6 +374,18 @@ std::vector<Entry> makeEntries()
                         "Penumbra-only filtering: pcf and poisson skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
     e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
                         "Shadows on or off: off skips the shadow pass entirely"));
+    e.push_back(integerKey("shadow.cascades", 1, kMaxCascades, false, [](auto& s) -> auto& { return s.shadow.cascades; },
+                           "Cascaded shadow maps for a directional light: the view up to shadow.distance split into this many slices, each with a map.size map of its own (more texels near the camera); 1 fits one map to the whole view"));
+    e.push_back(choiceKey<CascadeSplit>("shadow.split", kSplitNames, [](auto& s) -> auto& { return s.shadow.split; },
+                                        "Where cascades split: uniform (equal depth slices, coarse near the camera), logarithmic (equal ratios, tiny first slices) or practical (a blend by shadow.split_lambda)"));
+    e.push_back(numberKey("shadow.split_lambda", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.shadow.splitLambda; },
+                          "Practical split: 0 uniform, 1 logarithmic"));
+    e.push_back(numberKey("shadow.distance", Range{0.0, 1e7, true, false}, [](auto& s) -> auto& { return s.shadow.distance; },
+                          "With cascades: world units from the camera up to which receivers get shadows; beyond it they are lit"));
+    e.push_back(numberKey("shadow.blend", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.shadow.blend; },
+                          "With cascades: share of each cascade's depth, at its far end, over which it fades into the next (hides the seam's change of resolution)"));
+    e.push_back(boolKey("shadow.show_cascades", [](auto& s) -> auto& { return s.shadow.showCascades; },
+                        "Tint receivers by the cascade (red, green, blue, yellow) or cube face they read: where each map's texels go"));
     e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
                                         "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"));
     e.push_back(boolKey("shading.texel_density", [](auto& s) -> auto& { return s.shading.texelDensity; },
@@ -504,6 +566,8 @@ void saveSettingsFile(const QString& path, const Settings& settings)
 }
 
 QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }
+QString toString(LightType value) { return kLightTypeNames.value(int(value)); }
+QString toString(CascadeSplit value) { return kSplitNames.value(int(value)); }
 QString toString(LightFit value) { return kFitNames.value(int(value)); }
 QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
@@ -535,6 +599,19 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (s.light.nearPlane >= s.light.farPlane)
         error("light.far", QStringLiteral("far (%1) must be greater than near (%2)")
                                .arg(formatNumber(s.light.farPlane), formatNumber(s.light.nearPlane)));
+
+    if ((s.light.type == LightType::Directional) != (s.light.projection == LightProjection::Ortho))
+        error("light.projection", QStringLiteral("light.projection=%1 does not fit light.type=%2; a directional light is ortho, spot and point "
+                                                 "lights are perspective (setting light.type sets the projection)")
+                                      .arg(toString(s.light.projection), toString(s.light.type)));
+    if (s.shadow.cascades > 1 && s.light.type != LightType::Directional)
+        error("shadow.cascades", QStringLiteral("cascades split a directional light's map; with light.type=%1 set shadow.cascades=1")
+                                     .arg(toString(s.light.type)));
+    if (s.filter.earlyOut && usesShadowViews(s))
+        error("filter.early_out", QStringLiteral("penumbra-only filtering reads a single map's min/max mip; turn filter.early_out off with "
+                                                 "cascades or a point light"));
+    if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
+        error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
 
     if (s.bias.space == BiasSpace::Depth) {
         // A depth-unit bias above half the depth range pushes every receiver through its casters.

@@ -59,6 +59,8 @@ Settings loadSettingsFile(const QString& path, const Settings& base);
 void saveSettingsFile(const QString& path, const Settings& settings);
 
 QString toString(LightProjection value);
+QString toString(LightType value);
+QString toString(CascadeSplit value);
 QString toString(LightFit value);
 QString toString(DepthFormat value);
 QString toString(BiasSpace value);

@@ -15,19 +15,38 @@ void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
 {
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
-    state.viewport = QRect(0, 0, map.size(), map.size());
+    state.viewport = QRect(0, 0, map.width(), map.height());
     applyPassState(m_gl, state);
     m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     m_gl->glClearDepth(1.0);
 }
 
+void DepthPass::clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile)
+{
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
+    PassState state;
+    state.viewport = tile;
+    applyPassState(m_gl, state);
+    m_gl->glEnable(GL_SCISSOR_TEST);
+    m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
+    m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
+    m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+    m_gl->glClearDepth(1.0);
+    m_gl->glDisable(GL_SCISSOR_TEST);
+}
+
 int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map)
 {
+    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()));
+}
+
+int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile)
+{
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
-    clear(map, reversed);
+    clearTile(map, reversed, tile);
     PassState state;
-    state.viewport = QRect(0, 0, map.size(), map.size());
+    state.viewport = tile;
     state.depthTest = true;
     state.depthFunc = reversed ? GL_GREATER : GL_LESS;
     state.zeroToOneDepth = reversed;
@@ -42,6 +61,9 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
     state.polygonOffsetFactor = sign * float(bias.polygonFactor);
     state.polygonOffsetUnits = sign * float(bias.polygonUnits);
     applyPassState(m_gl, state);
+    // Nothing outside the tile, whatever the rasteriser's guard band does.
+    m_gl->glEnable(GL_SCISSOR_TEST);
+    m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
 
     m_program.bind();
     int draws = 0;
@@ -56,6 +78,7 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
     }
 
     m_gl->glBindVertexArray(0);
+    m_gl->glDisable(GL_SCISSOR_TEST);
     // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.
     applyPassState(m_gl, PassState{});
     return draws;

@@ -23,6 +23,9 @@ public:
     void clear(const ShadowMap& map, bool reversedDepth);
     // Clears, then draws the casters. Returns the number of draw calls issued.
     int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map);
+    // The same for one tile of a map of several views (`tile` in texels): clears the tile only.
+    int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile);
+    void clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile);
 
 private:
     GlFunctions* m_gl;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 namespace shadowlab {
 
 // What one frame cost and did. GPU times come from GL_TIME_ELAPSED (on a software renderer
@@ -19,6 +21,11 @@ struct FrameStats {
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame
     bool reversedDepth = false;         // the map was rendered with reversed depth (depth32f and clip control)
+    // Lights with several views (cascades, cube faces): per view, whether it was drawn this
+    // frame, its casters drawn and (TimingMode::Finish) its wall time; empty for one map.
+    std::vector<bool> viewRendered;
+    std::vector<int> viewDraws;
+    std::vector<double> viewWallMs;
 };
 
 enum class TimingMode {

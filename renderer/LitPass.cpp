@@ -4,6 +4,7 @@
 #include "RenderError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
+#include "ShadowViews.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -11,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace shadowlab {
 
@@ -65,6 +67,13 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
+    if (settings.light.type == LightType::Spot)
+        defines << QStringLiteral("LIGHT_SPOT");
+    if (settings.shadow.enabled && usesShadowViews(settings)) {
+        defines << QStringLiteral("SHADOW_VIEWS") << (settings.light.type == LightType::Point ? QStringLiteral("LIGHT_POINT") : QStringLiteral("CASCADES"));
+        if (settings.shadow.showCascades)
+            defines << QStringLiteral("SHOW_CASCADES");
+    }
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
     if (settings.bias.space == BiasSpace::Depth)
@@ -97,6 +106,57 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bo
     if (it == m_programs.end())
         it = m_programs.emplace(key, std::make_unique<Program>(m_gl, defines)).first;
     return *it->second;
+}
+
+void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map)
+{
+    const ShadowViewFrames& views = *m_views;
+    const int count = int(std::min<std::size_t>(views.frames.size(), kMaxShadowViews));
+    std::vector<glm::mat4> matrices;
+    std::vector<glm::vec4> tiles;
+    std::vector<glm::vec2> uvWorld, depthRange;
+    std::vector<float> texels;
+    const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), camera.position);
+    const glm::dvec2 tileUv(1.0 / map.columns(), 1.0 / map.rows());
+    for (int i = 0; i < count; ++i) {
+        const ShadowView& view = views.set.views[std::size_t(i)];
+        const LightFrame& frame = views.frames[std::size_t(i)];
+        // The view's [0, 1] square to its tile of the map; on homogeneous coordinates, so it
+        // holds for perspective views too.
+        glm::dmat4 toTile(1.0);
+        toTile[0][0] = tileUv.x;
+        toTile[1][1] = tileUv.y;
+        toTile[3][0] = view.column * tileUv.x;
+        toTile[3][1] = view.row * tileUv.y;
+        matrices.emplace_back(toTile * frame.depthShadowMatrix * fromCamera);
+        tiles.emplace_back(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
+                           float((view.row + 1) * tileUv.y));
+        uvWorld.emplace_back(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()));
+        depthRange.emplace_back(float(frame.volume.nearPlane), float(frame.volume.farPlane));
+        texels.push_back(float(texelWorldSize(frame.volume, map.size())));
+    }
+    p.program.set(p.techniqueUniform("uShadowViewCount"), count);
+    m_gl->glUniformMatrix4fv(p.techniqueUniform("uShadowViews"), count, GL_FALSE, &matrices[0][0][0]);
+    m_gl->glUniform4fv(p.techniqueUniform("uShadowTiles"), count, &tiles[0][0]);
+    m_gl->glUniform2fv(p.techniqueUniform("uShadowViewUvWorld"), count, &uvWorld[0][0]);
+    m_gl->glUniform2fv(p.techniqueUniform("uShadowViewDepth"), count, &depthRange[0][0]);
+    m_gl->glUniform1fv(p.techniqueUniform("uShadowViewTexel"), count, texels.data());
+    p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));
+    if (views.set.cascaded) {
+        glm::vec4 far(0.0f), blendStart(0.0f);
+        for (int i = 0; i < count && i < 4; ++i) {
+            const ShadowView& view = views.set.views[std::size_t(i)];
+            far[i] = float(view.splitFar);
+            blendStart[i] = float(view.splitFar - settings.shadow.blend * (view.splitFar - view.splitNear));
+        }
+        m_gl->glUniform4fv(p.techniqueUniform("uCascadeFar"), 1, &far[0]);
+        m_gl->glUniform4fv(p.techniqueUniform("uCascadeBlendStart"), 1, &blendStart[0]);
+        // Cascades are slices of the view depth of the camera they were fitted to.
+        const CameraFrame& fitted = views.camera;
+        const glm::dvec3 forward = -glm::dvec3(fitted.view[0][2], fitted.view[1][2], fitted.view[2][2]);
+        p.program.set(p.techniqueUniform("uViewForward"), glm::vec3(forward));
+        p.program.set(p.techniqueUniform("uViewOrigin"), glm::vec3(fitted.position - camera.position));
+    }
 }
 
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
@@ -132,6 +192,10 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
     p.program.set(p.lightDirection, glm::vec3(light.direction));
+    if (settings.light.type == LightType::Spot) {
+        const double half = glm::radians(settings.light.fov) * 0.5;
+        p.program.set(p.techniqueUniform("uSpotCone"), glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff)))));
+    }
 
     const bool shadows = settings.shadow.enabled && map != nullptr;
     if (shadows) {
@@ -143,11 +207,16 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         p.program.set(p.biasMin, float(settings.bias.min * biasScale));
         for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
             p.program.set(p.techniqueUniform(u.name), u.value);
-        p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->size())));
+        p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
         p.program.set(p.shadowUvWorld, glm::vec2(float(light.volume.width()), float(light.volume.height())));
         p.program.set(p.shadowDepthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
         p.program.set(p.normalOffset, float(settings.bias.normal * texel));
         p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
+        if (usesShadowViews(settings)) {
+            if (m_views == nullptr || m_views->frames.empty())
+                throw RenderError(QStringLiteral("the light's views (cascades or cube faces) were not fitted before the lit pass"));
+            setViewUniforms(p, camera, settings, *map);
+        }
         // Each sampler the technique's row asks for reads the map on a unit of its own.
         const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
         for (std::size_t i = 0; i < samplers.size(); ++i) {

@@ -6,6 +6,7 @@
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
+#include "ShadowViewFrames.h"
 
 #include <map>
 #include <memory>
@@ -37,6 +38,10 @@ public:
     static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
+    // The views the next render() reads when the settings use several (usesShadowViews()):
+    // cascades or cube faces in the tiles of `map`. Null: none. Not owned; must outlive render().
+    void setShadowViews(const ShadowViewFrames* views) { m_views = views; }
+
 private:
     struct Program {
         explicit Program(GlFunctions* gl, const QStringList& defines);
@@ -49,10 +54,12 @@ private:
     };
 
     Program& programFor(const Settings& settings, bool measure, bool reversedDepth);
+    void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;
     std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
+    const ShadowViewFrames* m_views = nullptr;
 };
 
 } // namespace shadowlab

@@ -3,6 +3,9 @@
 #include "LightFitting.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
+#include "ShadowViews.h"
+
+#include <algorithm>
 
 #include <QElapsedTimer>
 
@@ -32,8 +35,11 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
         m_warnedNoReversedDepth = true;
     }
+    const bool multiView = usesShadowViews(settings);
+    const int columns = multiView ? (settings.light.type == LightType::Point ? 3 : std::min(settings.shadow.cascades, 2)) : 1;
+    const int rows = multiView ? (settings.light.type == LightType::Point ? 2 : (settings.shadow.cascades + 1) / 2) : 1;
     if (settings.shadow.enabled)
-        m_shadowMap.ensure(settings.map.size, settings.map.format, reversed);
+        m_shadowMap.ensureTiles(settings.map.size, columns, rows, settings.map.format, reversed);
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
         m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
         m_sceneChanged = false;
@@ -50,14 +56,36 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         const SceneObject& object = scene.objects[i];
         objects.push_back({m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
     }
-    FittedLight fit = fitLight(settings.light, objects, camera.viewProjection, settings.map.size);
-    const LightFrame light = computeLightFrame(settings.light, fit.volume, reversed);
+    ShadowViewFrames views;
+    views.camera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, scene.bounds()) : camera;
+    views.set = fitShadowViews(settings, objects, views.camera, aspect);
+    FittedLight fit = views.set.views.front().fit;
+    if (multiView) {
+        // The fit the window and warnings show: the first view's volume, every view's warnings,
+        // and something to shadow when any view has.
+        for (std::size_t i = 1; i < views.set.views.size(); ++i) {
+            const FittedLight& other = views.set.views[i].fit;
+            fit.anythingToShadow = fit.anythingToShadow || other.anythingToShadow;
+            fit.cutShare = std::max(fit.cutShare, other.cutShare);
+            for (const SettingsIssue& warning : other.warnings) {
+                if (std::none_of(fit.warnings.begin(), fit.warnings.end(), [&](const SettingsIssue& w) { return w.key == warning.key; }))
+                    fit.warnings.push_back(warning);
+            }
+        }
+        for (const ShadowView& view : views.set.views)
+            views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, reversed));
+    }
+    const LightFrame light = multiView ? views.frames.front() : computeLightFrame(settings.light, fit.volume, reversed);
     stats.texelWorldSizeBeforeFit = fit.texelBefore;
     stats.texelWorldSize = fit.texelAfter;
     stats.lightFitted = fit.fitted;
     stats.reversedDepth = reversed;
 
-    if (settings.shadow.enabled) {
+    m_views = std::move(views);
+    if (settings.shadow.enabled && multiView) {
+        renderViews(settings, timing, stats);
+    } else if (settings.shadow.enabled) {
+        m_viewVolumes.clear();
         const ShadowKey key{m_sceneGeneration, fit.volume, reversed, settings.map.size, settings.map.format,
                             settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
         if (m_shadowKey != key && !fit.anythingToShadow) {
@@ -100,6 +128,66 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_camera = camera;
 }
 
+void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameStats& stats)
+{
+    const bool reversed = m_shadowMap.reversedDepth();
+    // What all views share: when it changes, every view is drawn again.
+    const ShadowKey shared{m_sceneGeneration, LightVolume{}, reversed, settings.map.size, settings.map.format,
+                           settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits,
+                           m_shadowMap.columns(), m_shadowMap.rows()};
+    const std::size_t count = m_views.set.views.size();
+    if (m_shadowKey != shared || m_viewVolumes.size() != count) {
+        m_viewVolumes.assign(count, std::nullopt);
+        // A fresh map: every tile reads lit until drawn.
+        m_depthPass.clear(m_shadowMap, reversed);
+        m_shadowKey = shared;
+        ++m_mapGeneration;
+    }
+    stats.viewRendered.assign(count, false);
+    stats.viewDraws.assign(count, 0);
+    stats.viewWallMs.assign(count, 0.0);
+    const int size = m_shadowMap.size();
+    // Nothing to shadow: the tile reads lit, and stays so until the view has something.
+    const auto wantedVolume = [this](std::size_t i) {
+        const FittedLight& fit = m_views.set.views[i].fit;
+        return fit.anythingToShadow ? std::optional<LightVolume>(fit.volume) : std::nullopt;
+    };
+    bool any = false;
+    for (std::size_t i = 0; i < count; ++i)
+        any = any || m_viewVolumes[i] != wantedVolume(i);
+    if (!any)
+        return;
+    m_shadowTimer.begin();
+    QElapsedTimer total;
+    total.start();
+    for (std::size_t i = 0; i < count; ++i) {
+        const ShadowView& view = m_views.set.views[i];
+        const QRect tile(view.column * size, view.row * size, size, size);
+        const std::optional<LightVolume> wanted = wantedVolume(i);
+        if (m_viewVolumes[i] == wanted)
+            continue;
+        QElapsedTimer wall;
+        wall.start();
+        if (wanted)
+            stats.viewDraws[i] = m_depthPass.renderTile(*m_scene, m_views.frames[i], settings.bias, m_shadowMap, tile);
+        else
+            m_depthPass.clearTile(m_shadowMap, reversed, tile);
+        if (timing == TimingMode::Finish) {
+            m_gl->glFinish();
+            stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
+        }
+        m_viewVolumes[i] = wanted;
+        stats.viewRendered[i] = true;
+        stats.shadowDraws += stats.viewDraws[i];
+    }
+    m_shadowTimer.end();
+    ++m_mapGeneration;
+    stats.shadowPassRendered = true;
+    ++m_shadowPassCount;
+    if (timing == TimingMode::Finish)
+        stats.shadowPassWallMs = double(total.nsecsElapsed()) * 1e-6;
+}
+
 void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
 {
     if (timing == TimingMode::Finish) {
@@ -130,6 +218,7 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     QElapsedTimer lit;
     lit.start();
     m_litTimer.begin();
+    m_litPass.setShadowViews(&m_views);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
                                       m_depthRange.get());
     m_litTimer.end();
@@ -152,6 +241,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
         m_measureTarget = std::make_unique<MeasureTarget>(m_gl);
     const RenderTarget target = m_measureTarget->ensure(size);
     m_litTimer.begin();
+    m_litPass.setShadowViews(&m_views);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
                                       true, m_depthRange.get());
     m_litTimer.end();

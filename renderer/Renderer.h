@@ -13,6 +13,7 @@
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
+#include "ShadowViewFrames.h"
 
 #include <QRectF>
 
@@ -61,11 +62,18 @@ public:
     void setScene(std::optional<Scene> scene);
     // The light volume of the last frame after light.fit (the passes' volume), with what it cut.
     const FittedLight& lastFit() const { return m_fit; }
+    // The views of the last frame when the light has several (cascades, cube faces); their
+    // frames are empty otherwise.
+    const ShadowViewFrames& shadowViews() const { return m_views; }
     // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run since construction.
     int shadowPassCount() const { return m_shadowPassCount; }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
+    // Fits the light to `camera` instead of settings.camera (which still draws the frame), until
+    // reset with nullopt: what flicker measures, the shadow maps following a moving camera while
+    // the measured pixels stay put.
+    void setFitCamera(std::optional<CameraSettings> camera) { m_fitCamera = std::move(camera); }
     // Forces the next render() to redraw the shadow map.
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
@@ -77,6 +85,8 @@ private:
     // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
     void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
     void finishTiming(TimingMode timing, FrameStats& stats);
+    // The shadow pass of a light with several views: each view whose volume changed.
+    void renderViews(const Settings& settings, TimingMode timing, FrameStats& stats);
 
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {
@@ -88,6 +98,8 @@ private:
         bool cullFront = false;
         double polygonFactor = 0.0;
         double polygonUnits = 0.0;
+        int columns = 1;
+        int rows = 1;
 
         bool operator==(const ShadowKey&) const = default;
     };
@@ -107,7 +119,12 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowKey> m_shadowKey;
+    // With several views: each view's volume as last drawn (nullopt: cleared or never drawn),
+    // redrawn only when it changes; m_shadowKey then holds what all views share.
+    std::vector<std::optional<LightVolume>> m_viewVolumes;
+    ShadowViewFrames m_views;
     std::optional<Scene> m_customScene;
+    std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;

@@ -4,6 +4,8 @@
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 
+#include <algorithm>
+
 namespace shadowlab {
 
 namespace {
@@ -36,8 +38,13 @@ ShadowMap::ShadowMap(GlFunctions* gl)
 
 void ShadowMap::ensure(int size, DepthFormat format, bool reversedDepth)
 {
-    if (!m_texture || size != m_size || format != m_format)
-        allocate(size, format);
+    ensureTiles(size, 1, 1, format, reversedDepth);
+}
+
+void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format, bool reversedDepth)
+{
+    if (!m_texture || size != m_size || columns != m_columns || rows != m_rows || format != m_format)
+        allocate(size, columns, rows, format);
     if (reversedDepth != m_reversedDepth) {
         configureSampler(m_gl, m_compareNearest.id(), GL_NEAREST, true, reversedDepth);
         configureSampler(m_gl, m_compareLinear.id(), GL_LINEAR, true, reversedDepth);
@@ -59,26 +66,32 @@ GLuint ShadowMap::sampler(ShadowSampler kind) const
     return 0;
 }
 
-void ShadowMap::allocate(int size, DepthFormat format)
+void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
 {
     GLint maxSize = 0;
     m_gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (size < 16 || size > maxSize)
         throw SettingsError(QStringLiteral("map.size"),
                             QStringLiteral("%1 is out of range; this driver allows [16, %2]").arg(size).arg(maxSize));
+    const int width = size * columns, height = size * rows;
+    if (width > maxSize || height > maxSize)
+        throw SettingsError(QStringLiteral("map.size"),
+                            QStringLiteral("%1 x %2 maps of %3 texels do not fit in one %4 x %5 texture (this driver allows %6 per side); "
+                                           "choose map.size <= %7")
+                                .arg(columns).arg(rows).arg(size).arg(width).arg(height).arg(maxSize).arg(maxSize / std::max(columns, rows)));
 
     while (m_gl->glGetError() != GL_NO_ERROR) {
     }
     GlTexture texture = makeTexture(m_gl);
     m_gl->glBindTexture(GL_TEXTURE_2D, texture.id());
     const bool float32 = format == DepthFormat::Depth32F;
-    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, float32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, size, size, 0,
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, float32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24, width, height, 0,
                        GL_DEPTH_COMPONENT, float32 ? GL_FLOAT : GL_UNSIGNED_INT, nullptr);
     // Texture parameters matter only to users that bind no sampler object (another context's view).
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("shadow map %1 x %1 %2").arg(size).arg(toString(format)));
+    labelGlObject(GlLabelKind::Texture, texture.id(), QStringLiteral("shadow map %1 x %2 %3").arg(width).arg(height).arg(toString(format)));
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (const GLenum error = m_gl->glGetError(); error != GL_NO_ERROR) {
         throw RenderError(QStringLiteral("the driver cannot allocate a %1 x %1 %2 shadow map (GL error 0x%3); choose a smaller map.size")
@@ -106,6 +119,8 @@ void ShadowMap::allocate(int size, DepthFormat format)
     m_texture = std::move(texture);
     m_framebuffer = std::move(framebuffer);
     m_size = size;
+    m_columns = columns;
+    m_rows = rows;
     m_format = format;
 }
 

@@ -19,8 +19,14 @@ public:
     // driver's GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate it or the
     // framebuffer is incomplete; the previous map is kept then.
     void ensure(int size, DepthFormat format, bool reversedDepth = false);
+    // The same for `columns` x `rows` tiles of size² texels side by side (cascades, cube faces).
+    void ensureTiles(int size, int columns, int rows, DepthFormat format, bool reversedDepth = false);
 
-    int size() const { return m_size; }
+    int size() const { return m_size; }             // texels per side of one tile (of the map, with one tile)
+    int width() const { return m_size * m_columns; }
+    int height() const { return m_size * m_rows; }
+    int columns() const { return m_columns; }
+    int rows() const { return m_rows; }
     DepthFormat format() const { return m_format; }
     bool reversedDepth() const { return m_reversedDepth; }
     GLuint texture() const { return m_texture.id(); }
@@ -29,7 +35,7 @@ public:
     GLuint sampler(ShadowSampler kind) const;
 
 private:
-    void allocate(int size, DepthFormat format);
+    void allocate(int size, int columns, int rows, DepthFormat format);
 
     GlFunctions* m_gl;
     GlTexture m_texture;
@@ -38,6 +44,8 @@ private:
     GlSampler m_compareLinear;
     GlSampler m_raw;
     int m_size = 0;
+    int m_columns = 1;
+    int m_rows = 1;
     DepthFormat m_format = DepthFormat::Depth24;
     bool m_reversedDepth = false;
 };

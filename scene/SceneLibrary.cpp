@@ -3,7 +3,14 @@
 #include "SceneLoader.h"
 #include "SettingsError.h"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace shadowlab {
 
@@ -90,10 +97,89 @@ Scene occluderScene()
     return s;
 }
 
+// A reproducible hash to [0, 1) (PCG output permutation): the same city on every platform,
+// which std::uniform_real_distribution does not promise.
+double cityRandom(std::uint32_t seed, std::uint32_t i)
+{
+    const std::uint32_t state = (seed * 2654435761u ^ i) * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return double(((word >> 22u) ^ word) >> 8) / 16777216.0;
+}
+
+// The city's street grid: square blocks with streets between them, over kCitySide² metres.
+constexpr double kCitySide = 1200.0;        // metres: 1.44 km²
+constexpr int kCityBlocks = 12;             // per side
+constexpr double kCityStreet = 20.0;        // street width, metres
+constexpr double kCityPitch = kCitySide / kCityBlocks;
+
+Scene cityScene(const QString& name, int buildings)
+{
+    // Buildings of varied footprint and height on the lots of a street grid; the same count
+    // always gives the same city. Heights: mostly low, a few towers (a long-tailed mix), so
+    // shadows range from a few metres to a few hundred.
+    Scene s;
+    s.name = name;
+    s.groundHeight = 0.0;
+    s.meshes.push_back(meshes::plane(float(kCitySide * 0.5 + 60.0), float(kCitySide * 0.5 + 60.0) / 4.0f));
+    s.objects.push_back({QStringLiteral("ground"), 0, glm::dmat4(1.0), TextureKind::Checker, true});
+    s.meshes.push_back(meshes::cube());
+    const int cube = 1;
+    const int blocks = kCityBlocks * kCityBlocks;
+    const int lotsPerSide = std::max(1, int(std::ceil(std::sqrt(double(buildings) / blocks))));
+    const double blockSide = kCityPitch - kCityStreet;
+    const double lot = blockSide / lotsPerSide;
+    const std::uint32_t seed = 12345u;
+    // Lots in an order that spreads any count over the whole grid: block by block in a
+    // scrambled order, so 500 buildings cover the city as sparsely as 8,000 cover it densely.
+    const int lots = blocks * lotsPerSide * lotsPerSide;
+    std::vector<std::pair<double, int>> order;
+    order.reserve(std::size_t(lots));
+    for (int i = 0; i < lots; ++i)
+        order.emplace_back(cityRandom(seed + 7u, std::uint32_t(i)), i);
+    std::sort(order.begin(), order.end());
+    s.objects.reserve(std::size_t(buildings) + 1);
+    for (int n = 0; n < std::min(buildings, lots); ++n) {
+        const int i = order[std::size_t(n)].second;
+        const int block = i / (lotsPerSide * lotsPerSide);
+        const int inBlock = i % (lotsPerSide * lotsPerSide);
+        const double blockX = -kCitySide * 0.5 + (block % kCityBlocks) * kCityPitch + kCityStreet * 0.5;
+        const double blockZ = -kCitySide * 0.5 + (block / kCityBlocks) * kCityPitch + kCityStreet * 0.5;
+        const double r1 = cityRandom(seed, std::uint32_t(4 * i)), r2 = cityRandom(seed, std::uint32_t(4 * i + 1));
+        const double r3 = cityRandom(seed, std::uint32_t(4 * i + 2)), r4 = cityRandom(seed, std::uint32_t(4 * i + 3));
+        const double width = lot * (0.55 + 0.4 * r1), depth = lot * (0.55 + 0.4 * r2);
+        const double height = 4.0 + 8.0 * r3 + (r4 > 0.9 ? 150.0 * (r4 - 0.9) / 0.1 * r3 : 22.0 * r4 * r4);
+        const double x = blockX + (inBlock % lotsPerSide + 0.5) * lot + (r3 - 0.5) * (lot - width) * 0.8;
+        const double z = blockZ + (inBlock / lotsPerSide + 0.5) * lot + (r1 - 0.5) * (lot - depth) * 0.8;
+        glm::dmat4 model = glm::translate(glm::dmat4(1.0), glm::dvec3(x, height * 0.5, z));
+        model = glm::scale(model, glm::dvec3(width * 0.5, height * 0.5, depth * 0.5));
+        s.objects.push_back({QStringLiteral("building %1").arg(n + 1), cube, model, TextureKind::Wood, true, true,
+                             glm::vec3(float(0.55 + 0.35 * r2), float(0.55 + 0.3 * r1), float(0.6 + 0.3 * r4))});
+    }
+    return s;
+}
+
 } // namespace
+
+std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, double step)
+{
+    std::vector<CameraSettings> path;
+    const glm::dvec3 forward = glm::normalize(start.target - start.position);
+    // Sideways and a little forward: the view slides across the shadows as when walking.
+    const glm::dvec3 side = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
+    const glm::dvec3 along = glm::length(side) > 0.0 ? glm::normalize(side + forward * 0.5) : glm::dvec3(1.0, 0.0, 0.0);
+    for (int i = 0; i < std::max(frames, 1); ++i) {
+        CameraSettings c = start;
+        c.position += along * (step * i);
+        c.target += along * (step * i);
+        path.push_back(c);
+    }
+    return path;
+}
 
 Scene buildScene(const QString& name)
 {
+    if (const int buildings = cityBuildingCount(name); buildings > 0)
+        return cityScene(name, buildings);
     if (!sceneNames().contains(name))
         return *loadSceneFile(name);
     if (name == u"seed")
@@ -110,10 +196,23 @@ Scene buildScene(const QString& name)
 
 Settings presetSettings(const QString& name)
 {
-    if (!sceneNames().contains(name))
+    if (!isPresetName(name))
         return sceneFileSettings(name);
     Settings s;
     s.scene = name;
+    if (cityBuildingCount(name) > 0) {
+        // An afternoon sun; a pedestrian on a street, looking down it toward the towers.
+        s.light.position = {-400.0, 500.0, -250.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 700.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 1600.0;
+        const double street = -kCitySide * 0.5 + 5.0 * kCityPitch + kCityStreet * 0.25;
+        s.camera.position = {street, 1.7, 380.0};
+        s.camera.target = {street + 25.0, 8.0, 280.0};
+        s.camera.fov = 60.0;
+        return s;
+    }
     if (name == u"seed") {
         // The global defaults are the seed scene's light; the camera frames the three cubes
         // and their shadows from above and to the side.
@@ -156,7 +255,7 @@ Settings presetSettings(const QString& name)
 
 QString sceneIdentity(const QString& name)
 {
-    if (sceneNames().contains(name))
+    if (isPresetName(name))
         return name;
     return QStringLiteral("sha256:") + QString::fromLatin1(loadSceneFile(name)->identity);
 }

@@ -6,6 +6,8 @@
 
 #include <QStringList>
 
+#include <vector>
+
 namespace shadowlab {
 
 // Builds a preset's geometry, or loads the model or scene file `name` is a path of
@@ -20,5 +22,10 @@ Settings presetSettings(const QString& name);
 // of a loaded file's content (and of the files it names), so renaming a file keeps its cached
 // traces and editing it does not. Throws like buildScene().
 QString sceneIdentity(const QString& name);
+
+// A camera path from `start` (a scene's camera): `frames` cameras, each `step` world units
+// along (sideways and a little forward, the view keeping its direction), for measuring what
+// camera motion does to shadows (flicker, the cost of a moving camera).
+std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, double step);
 
 } // namespace shadowlab

@@ -23,6 +23,11 @@ uniform float uBiasSlope;       // per unit of (1 - N.L); world units (depth uni
 uniform float uBiasMin;         // world units (depth units with BIAS_DEPTH)
 uniform mat4 uShadowWorld;      // world -> shadow texture space; used on directions only
 
+#ifdef LIGHT_SPOT
+uniform vec2 uSpotCone;         // cosines of the cone's half-angle and of where its falloff starts
+#endif
+#include "shadow_views.glsl"
+
 layout(location = 0) out vec4 fragColor;
 #ifdef MEASURE
 layout(location = 1) out vec4 measuredPosition;    // camera-relative position, visibility
@@ -135,13 +140,29 @@ void main()
     if (diffuse <= 0.0)
         specular = 0.0;
 
+#ifdef SHADOW_VIEWS
+    float visibility = uReceives ? shadowViewsVisibility(normal, toLight) : 1.0;
+#else
     float visibility = uReceives ? shadowVisibility(normal, toLight) : 1.0;
+#endif
     vec3 ambient = 0.3 * albedo;
     vec3 direct = diffuse * albedo + specular * vec3(0.3);
+#ifdef LIGHT_SPOT
+    // Unlit outside the cone, fading over its rim; the measured term is the shadow inside the
+    // cone and 0 outside, as the reference traces it.
+    float spotCosine = dot(-toLight, uLightDirection);
+    direct *= uSpotCone.y > uSpotCone.x ? smoothstep(uSpotCone.x, uSpotCone.y, spotCosine) : step(uSpotCone.x, spotCosine);
+    if (spotCosine <= uSpotCone.x)
+        visibility = 0.0;
+#endif
     fragColor = vec4(ambient + visibility * direct, 1.0);
 #ifdef TEXEL_DENSITY
     if (uReceives && inMap)
         fragColor.rgb = mix(fragColor.rgb, densityRamp(1.0 / max(texelsPerPixel, 1e-6)), 0.6);
+#endif
+#if defined(SHADOW_VIEWS) && defined(SHOW_CASCADES)
+    if (uReceives)
+        fragColor.rgb = mix(fragColor.rgb, viewTint(gViewIndex) * (0.4 + 0.6 * fragColor.rgb), 0.45);
 #endif
 #ifdef MEASURE
     vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));

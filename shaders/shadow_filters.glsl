@@ -7,8 +7,18 @@
 
 uniform sampler2DShadow uShadowMap;
 uniform vec2 uShadowTexel;      // 1 / map size
+#ifdef SHADOW_VIEWS
+// Several views share the map (shadow_views.glsl): these follow the view a pixel reads, set
+// before it calls filterShadow, and taps are kept inside that view's tile.
+vec2 gShadowUvWorld;
+vec2 gShadowDepthRange;
+vec4 gShadowTile;               // min xy, max xy in map uv
+#define uShadowUvWorld gShadowUvWorld
+#define uShadowDepthRange gShadowDepthRange
+#else
 uniform vec2 uShadowUvWorld;    // world size of the map's [0, 1] square (perspective: at unit distance)
 uniform vec2 uShadowDepthRange; // near and far of the light volume, world units along its axis
+#endif
 
 // The receiver, for the wide filters; set by the lit pass before it calls filterShadow.
 float gShadowW;                 // the receiver's clip w (its distance along a perspective light's axis)
@@ -17,6 +27,9 @@ vec2 gReceiverSlope;            // depth per uv unit of the receiver's plane (RE
 
 float shadowTap(vec2 uv, float reference)
 {
+#ifdef SHADOW_VIEWS
+    uv = clamp(uv, gShadowTile.xy, gShadowTile.zw);
+#endif
     return texture(uShadowMap, vec3(uv, reference));
 }
 

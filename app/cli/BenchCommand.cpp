@@ -25,13 +25,16 @@ struct Phase {
     QString description;
     Settings settings;
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
-    double cameraOrbitDegrees = 0.0;    // per frame
+    std::vector<CameraSettings> cameraPath;     // a moving camera (empty: still)
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
     FittedLight fit;        // of the last frame
+    std::vector<std::vector<double>> viewWall;  // cascades or cube faces: wall ms of the frames that drew each
+    std::vector<int> viewPassesRun;
+    std::vector<int> viewDraws;
 };
 
 // The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
@@ -59,7 +62,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
 {
     std::vector<TimedRun> runs;
     for (Phase& p : phases)
-        runs.push_back({p.headless.get(), p.settings, p.moving, false, p.cameraOrbitDegrees, {}});
+        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}, p.cameraPath});
     // A bar with the time left on a terminal (stderr), nothing in a pipe.
     ProgressBar progress;
     timeInterleaved(runs, size, warmup, frames, [&](double f) { progress.show(f, QStringLiteral("timing")); });
@@ -76,6 +79,9 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.shadowDraws = s.shadowDraws;
         p.last = s.last;
         p.fit = p.headless->renderer().lastFit();
+        p.viewWall = std::move(s.viewWall);
+        p.viewPassesRun = std::move(s.viewPassesRun);
+        p.viewDraws = std::move(s.viewDraws);
     }
 }
 
@@ -107,6 +113,17 @@ QJsonObject statsJson(const SampleStats& s)
             {QStringLiteral("p90_ms"), s.p90},   {QStringLiteral("min_ms"), s.min},       {QStringLiteral("max_ms"), s.max}};
 }
 
+// Per cascade or cube face: how often it was drawn and its wall time when it was.
+QJsonArray viewsJson(const Phase& p)
+{
+    QJsonArray views;
+    for (std::size_t v = 0; v < p.viewWall.size(); ++v)
+        views.append(QJsonObject{{QStringLiteral("passes_run"), p.viewPassesRun[v]},
+                                 {QStringLiteral("draws"), p.viewDraws[v]},
+                                 {QStringLiteral("wall"), statsJson(summarize(p.viewWall[v]))}});
+    return views;
+}
+
 } // namespace
 
 int runBench(const QStringList& arguments)
@@ -122,7 +139,8 @@ int runBench(const QStringList& arguments)
                           QStringLiteral("200")});
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
                           QStringLiteral("10")});
-        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (with and without shadows), moving-light, or all (default all)."),
+        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (the scene's camera path, light fitted to it every frame; with and without "
+                                         "shadows), moving-light, both (steady and moving-light) or all (default all)."),
                           QStringLiteral("name"), QStringLiteral("all")});
         parser.addOption({QStringLiteral("baseline"),
                           QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
@@ -145,34 +163,34 @@ int runBench(const QStringList& arguments)
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
         const QString phase = parser.value(QStringLiteral("phase"));
-        if (phase != u"all" && phase != u"steady" && phase != u"moving-camera" && phase != u"moving-light")
-            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light or all").arg(phase));
+        if (phase != u"both" && phase != u"all" && phase != u"steady" && phase != u"moving-light" && phase != u"moving-camera")
+            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(phase));
 
         std::vector<Phase> phases;
-        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving, double orbit = 0.0) {
+        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
             Phase p;
             p.name = QString::fromLatin1(name);
             p.description = QString::fromLatin1(description);
             p.settings = s;
             p.moving = moving;
-            p.cameraOrbitDegrees = orbit;
             p.headless = std::make_unique<HeadlessRenderer>();
             phases.push_back(std::move(p));
         };
         const bool all = phase == u"all";
-        if (all || phase == u"steady")
+        if (all || phase == u"both" || phase == u"steady")
             addPhase("steady", "light and camera still: cached shadow map, lit pass only", settings, false);
-        // A quarter degree a frame: the fitted volume follows the view, and the map is redrawn
-        // only when it changes.
-        constexpr double kOrbit = 0.25;
+        if (all || phase == u"both" || phase == u"moving-light")
+            addPhase("moving-light", "shadow pass every frame", settings, true);
         if (all || phase == u"moving-camera") {
-            addPhase("moving-camera", "the camera orbits a quarter degree a frame, light still", settings, false, kOrbit);
+            // A walk of 0.05 world units per frame: maps (cascades) are redrawn only when their
+            // fitted volume changes. The same walk without shadows gives their cost as one ratio.
+            addPhase("moving-camera", "camera walking 0.05 units a frame, maps refitted and redrawn when they change", settings, false);
+            phases.back().cameraPath = cameraPath(settings.camera, 64, 0.05);
             Settings withoutShadows = settings;
             withoutShadows.shadow.enabled = false;
-            addPhase("moving-camera-no-shadows", "the same camera path with shadow.enabled=false", withoutShadows, false, kOrbit);
+            addPhase("moving-camera-no-shadows", "the same camera walk with shadow.enabled=false", withoutShadows, false);
+            phases.back().cameraPath = cameraPath(settings.camera, 64, 0.05);
         }
-        if (all || phase == u"moving-light")
-            addPhase("moving-light", "shadow pass every frame", settings, true);
         if (parser.isSet(QStringLiteral("baseline")))
             addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
                      tutorialSettings(settings), true);
@@ -202,7 +220,8 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
                                               {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
                                               {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
-                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))}});
+                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
+                                              {QStringLiteral("views"), viewsJson(r)}});
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                                {QStringLiteral("configuration"), summary},
@@ -227,6 +246,12 @@ int runBench(const QStringList& arguments)
             out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
             out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';
             out() << "  " << formatTexelLine(r.last) << '\n';
+            for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
+                const bool cube = r.settings.light.type == LightType::Point;
+                out() << statsRow(QStringLiteral("  %1 %2 (wall)").arg(cube ? QStringLiteral("face") : QStringLiteral("cascade")).arg(v),
+                                  summarize(r.viewWall[v]))
+                      << "   drawn in " << r.viewPassesRun[v] << "/" << frames << " frames, " << r.viewDraws[v] << " draws\n";
+            }
             printFitWarnings(r.fit, r.name);
         }
         if (phases.size() > 1) {

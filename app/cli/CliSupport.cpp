@@ -134,7 +134,7 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
     applySetting(probe, QStringLiteral("scene"), scene); // validates the name with a helpful message
 
     Settings settings = presetSettings(probe.scene);
-    if (!sceneNames().contains(probe.scene)) {
+    if (!isPresetName(probe.scene)) {
         for (const QString& warning : loadSceneFile(probe.scene)->warnings)
             err() << "warning: " << QFileInfo(probe.scene).fileName() << ": " << warning << Qt::endl;
     }

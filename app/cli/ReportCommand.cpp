@@ -33,7 +33,9 @@ int runReport(const QStringList& arguments)
         parser.addHelpOption();
         addSettingsOptions(parser);
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
-        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, penumbra, or a JSON file (default: default)."),
+        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, penumbra (each wide filter with and without "
+                                         "penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not), or a JSON file "
+                                         "(default: default)."),
                           QStringLiteral("name|file.json"), QStringLiteral("default")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
         parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration (default 30)."), QStringLiteral("n"),
@@ -41,6 +43,9 @@ int runReport(const QStringList& arguments)
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
         parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
                           QStringLiteral("n"), QStringLiteral("16")});
+        parser.addOption({QStringLiteral("flicker-frames"),
+                          QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
+                          QStringLiteral("n"), QString::number(kFlickerFrames)});
         if (!parseArguments(parser, QStringLiteral("report"), arguments))
             return kExitOk;
         if (!parser.isSet(QStringLiteral("out")))
@@ -55,6 +60,7 @@ int runReport(const QStringList& arguments)
         // Every entry is checked before any work starts; identical configurations are measured once.
         const std::vector<SweepConfiguration> sweep = distinctConfigurations(base, loadSweep(parser.value(QStringLiteral("sweep"))));
         const Settings tutorial = applySweepEntry(base, {QStringLiteral("tutorial"), tutorialAssignments()});
+        const int flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
 
         QElapsedTimer total;
         total.start();
@@ -75,6 +81,11 @@ int runReport(const QStringList& arguments)
             row.tutorial = sweep[c].settings == tutorial;
             row.accuracy = measureAccuracy(meter, headless.renderer(), sweep[c].settings, size,
                                          [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
+            if (flickerFrames > 1) {
+                progress.show(start + step, sweep[c].label + QStringLiteral(": flicker"));
+                row.flicker = measureFlicker(headless.renderer(), sweep[c].settings,
+                                             subTexelPath(headless.renderer(), sweep[c].settings, size, flickerFrames, kFlickerStepTexels), size);
+            }
             printFitWarnings(headless.renderer().lastFit(), sweep[c].label);
             if (row.accuracy.raysPerSecond > 0.0)
                 raysPerSecond = row.accuracy.raysPerSecond;
@@ -87,7 +98,7 @@ int runReport(const QStringList& arguments)
         // previous configuration (a shadow map of another size to allocate) is not timed.
         std::vector<TimedRun> runs;
         for (const SweepConfiguration& configuration : sweep)
-            runs.push_back({&headless, configuration.settings, true, true, 0.0, {}});
+            runs.push_back({&headless, configuration.settings, true, true, {}, {}});
         timeInterleaved(runs, size, warmup, frames,
                         [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
         for (std::size_t c = 0; c < sweep.size(); ++c) {
@@ -115,6 +126,11 @@ int runReport(const QStringList& arguments)
 
         out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
               << QString::number(raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
+        if (flickerFrames > 1) {
+            out() << "flicker (receiver pixels flipping per frame, camera walking " << kFlickerStepTexels << " texel a frame):\n";
+            for (const ReportRow& r : rows)
+                out() << "  " << r.label.leftJustified(36) << QString::number(100 * r.flicker.flicker, 'f', 3).rightJustified(8) << " %\n";
+        }
         // Each light's front from fast to slow: the order a reader walks it in.
         std::vector<const ReportRow*> front;
         for (const ReportRow& r : rows) {

@@ -355,7 +355,8 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     // Times in ms, errors in percent of the measured pixels (MAE and RMSE in percent of full
     // visibility), as the page shows them; every column says its unit.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
-                                 "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light\n");
+                                 "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
+                                 "flicker_pct,flicker_change_pct\n");
     QJsonArray jsonRows;
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
@@ -364,7 +365,8 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            number(r.shadowPass.p10), number(r.shadowPass.p90), number(r.litPass.median), number(r.litPass.p10), number(r.litPass.p90),
                            number(r.frame.median), number(r.frame.p10), number(r.frame.p90), number(100 * h.misclassified, 4),
                            number(100 * h.falseShadow, 4), number(100 * h.falseLight, 4), number(100 * h.mae, 4), number(100 * h.rmse, 4),
-                           number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light)}
+                           number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light),
+                           number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
@@ -375,7 +377,11 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
-                                    {QStringLiteral("pareto_front"), r.paretoFront}});
+                                    {QStringLiteral("pareto_front"), r.paretoFront},
+                                    {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
+                                                                            {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
+                                                                            {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},
+                                                                            {QStringLiteral("frames"), r.flicker.frames}}}});
     }
     writeFile(dir.filePath(QStringLiteral("report.csv")), csv.toUtf8());
 
@@ -472,6 +478,15 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
         page += QStringLiteral("<td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td><td>%7</td></tr>")
                     .arg(number(100 * h.misclassified, 3), number(100 * h.falseShadow, 3), number(100 * h.falseLight, 3), number(100 * h.mae, 3),
                          number(100 * h.rmse, 3), number(100 * r.accuracy.area.mae, 3), number(100 * r.accuracy.area.rmse, 3));
+    }
+    page += QStringLiteral("</table>");
+    page += QStringLiteral("<h2>Flicker</h2><p>The camera the light is fitted to walks in sub-texel steps while the measured pixels stay put: "
+                           "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.</p>"
+                           "<table><tr><th>configuration</th><th>flips %</th><th>worst pair %</th><th>mean change %</th><th>frames</th></tr>");
+    for (const ReportRow& r : rows) {
+        page += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
+                    .arg(html(r.label), number(100 * r.flicker.flicker, 3), number(100 * r.flicker.worstPair, 3), number(100 * r.flicker.meanChange, 3))
+                    .arg(r.flicker.frames);
     }
     page += QStringLiteral("</table>");
     if (best && worst) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AccuracyMeter.h"
+#include "Flicker.h"
 #include "SampleStats.h"
 
 #include <QString>
@@ -18,6 +19,7 @@ struct ReportRow {
     SampleStats litPass;
     SampleStats frame;
     AccuracyResult accuracy;
+    FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
     bool paretoFront = false;   // no other row of the same light beats it (see markParetoFront)
     bool defaults = false;      // the base settings; its error image is shown
     bool tutorial = false;      // the classic tutorial configuration; its error image is shown

@@ -212,6 +212,7 @@ void AccuracyController::startMeasurement(bool thenSweep)
     try {
         ensureValid(m_settings);
         Renderer& renderer = headless().renderer();
+        m_flicker = measureFlicker(renderer, m_settings, subTexelPath(renderer, m_settings, size, kFlickerFrames, kFlickerStepTexels), size);
         auto buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(m_settings, size));
         const ReferenceKey key = referenceKeyFor(m_settings, measureSize(), m_areaSamplesPerAxis);
         if (m_referenceKey == key) {
@@ -285,6 +286,7 @@ void AccuracyController::measure(const Settings& settings, const VisibilityBuffe
     m.area = result.area;
     m.areaNoiseFloor = result.areaNoiseFloor;
     m.errors = result.hardErrors;
+    m.flicker = m_flicker;
     m_measurement = std::move(m);
     setStatus(m_measurement->hard.pixels == 0 ? tr("No surface in view faces the light; nothing to compare.") : QString());
     emit measurementChanged();
@@ -328,7 +330,7 @@ void AccuracyController::sweepStep()
 
         // One untimed frame compiles the lit variant; every frame redraws the shadow map, so
         // the time is what a moving light costs, not the cached-map best case.
-        std::vector<TimedRun> runs{{&h, point.settings, true, false, 0.0, {}}};
+        std::vector<TimedRun> runs{{&h, point.settings, true, false, {}, {}}};
         timeInterleaved(runs, m_sweepSize, 1, kTimedFrames);
         point.frameMs = summarize(runs.front().samples.wall).median;
         m_sweepPoints.push_back(point);

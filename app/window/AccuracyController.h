@@ -1,6 +1,7 @@
 #pragma once
 
 #include "BiasTuner.h"
+#include "Flicker.h"
 
 #include "Settings.h"
 #include "ShadowMetrics.h"
@@ -37,6 +38,7 @@ public:
         ErrorMetrics area;
         double areaNoiseFloor = 0.0;
         QImage errors;              // false shadow / false light over the measured frame
+        FlickerResult flicker;      // over a sub-texel camera walk (Measurement.h)
     };
 
     struct SweepPoint {
@@ -118,6 +120,7 @@ private:
     void tuneStep();
     HeadlessRenderer& headless();
     void setStatus(const QString& text, bool error = false);
+    FlickerResult m_flicker;        // of the settings being measured, taken before the trace
 
     Settings m_settings;
     QSize m_viewSize;

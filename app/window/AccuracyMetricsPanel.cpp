@@ -92,6 +92,11 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
                  tr("Mean absolute difference of visibility (0 shadowed … 1 lit); soft edges count in part."));
     addMetricRow(hardGrid, tr("RMSE"), m_hardRmse,
                  tr("Root mean square difference of visibility; weighs whole wrong pixels more than MAE does."));
+    m_flicker = valueLabel(QStringLiteral("flickerValue"));
+    addMetricRow(hardGrid, tr("Flicker"), m_flicker,
+                 tr("Shimmer: the light's maps follow a camera walking in steps of a third of a texel while the same "
+                    "pixels are measured; the share of them whose shadow flips from one step to the next. Stabilised "
+                    "maps should barely flicker."));
     layout->addWidget(hard);
 
     auto* area = new QGroupBox(tr("Area-light reference"));
@@ -154,6 +159,7 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     put(m_falseLight, percentText(hard.falseLight));
     put(m_hardMae, errorText(hard.mae));
     put(m_hardRmse, errorText(hard.rmse));
+    put(m_flicker, have && measurement->flicker.frames > 1 ? percentText(measurement->flicker.flicker) : QStringLiteral("—"));
     const bool haveArea = have && area.pixels > 0;
     put(m_areaMae, haveArea ? errorText(area.mae) : QStringLiteral("—"));
     put(m_areaRmse, haveArea ? errorText(area.rmse) : QStringLiteral("—"));

@@ -34,6 +34,7 @@ private:
     QLabel* m_areaMae = nullptr;
     QLabel* m_areaRmse = nullptr;
     QLabel* m_noiseFloor = nullptr;
+    QLabel* m_flicker = nullptr;
     QLabel* m_referenceInfo = nullptr;
 };
 

@@ -72,6 +72,14 @@ const Presentation kPresentations[] = {
     {"camera.position", "Position", " wu", 2, -20.0, 20.0},
     {"camera.target", "Target", " wu", 2, -5.0, 5.0},
     {"camera.fov", "Field of view", "°", 1, 10.0, 120.0},
+    {"light.type", "Type", "", 0, 0.0, 0.0},
+    {"light.falloff", "Cone falloff", "", 2, 0.0, 1.0},
+    {"shadow.split", "Cascade split", "", 0, 0.0, 0.0},
+    {"shadow.show_cascades", "Tint by cascade or cube face", "", 0, 0.0, 0.0},
+    {"shadow.cascades", "Cascades", "", 0, 1.0, 4.0},
+    {"shadow.split_lambda", "Split λ", "", 2, 0.0, 1.0},
+    {"shadow.distance", "Shadow distance", " wu", 1, 1.0, 2000.0, SliderSpinBox::Scale::Logarithmic},
+    {"shadow.blend", "Cascade blend", "", 2, 0.0, 0.5},
 };
 
 // The dock's groups, in order; groupOf() puts each key in one.
@@ -81,6 +89,8 @@ QString groupOf(const QString& key)
 {
     if (key == u"light.radius")
         return QStringLiteral("Reference");     // only the ray-traced reference reads it
+    if (key.startsWith(QLatin1String("shadow.")) && key != u"shadow.enabled")
+        return QStringLiteral("Shadow map");    // cascades: how the maps are laid out
     const QString prefix = key.section(QLatin1Char('.'), 0, 0);
     static const QHash<QString, QString> byPrefix{{QStringLiteral("light"), QStringLiteral("Light")},
                                                   {QStringLiteral("map"), QStringLiteral("Shadow map")},
@@ -491,6 +501,11 @@ void PropertiesDock::resetToDefaults()
 void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
 {
     m_pending = candidate;
+    // light.type and light.projection set each other: both fields show the result.
+    for (const QString linked : {"light.type", "light.projection"}) {
+        if (const auto it = m_fields.find(linked); it != m_fields.end())
+            it->load(m_pending);
+    }
     clearErrors();
     updateDependentRows();
     QStringList warnings;
@@ -654,6 +669,17 @@ void PropertiesDock::updateDependentRows()
     for (const TechniqueParameter& parameter : techniqueParameters()) {
         for (QWidget* w : m_rows.value(parameter.key))
             w->setEnabled(usesParameter(m_pending.filter, parameter.key));
+    }
+    // The cone's falloff for a spot light; cascades for a directional one, and their split
+    // settings once there are several.
+    for (QWidget* w : m_rows.value(QStringLiteral("light.falloff")))
+        w->setVisible(m_pending.light.type == LightType::Spot);
+    const bool directional = m_pending.light.type == LightType::Directional;
+    for (QWidget* w : m_rows.value(QStringLiteral("shadow.cascades")))
+        w->setEnabled(directional);
+    for (const QString key : {"shadow.split", "shadow.split_lambda", "shadow.distance", "shadow.blend"}) {
+        for (QWidget* w : m_rows.value(key))
+            w->setEnabled(directional && m_pending.shadow.cascades > 1);
     }
 }
 

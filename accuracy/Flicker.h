@@ -1,0 +1,24 @@
+#pragma once
+
+#include "VisibilityBuffer.h"
+
+#include <vector>
+
+namespace shadowlab {
+
+// Shimmer: how much the shadow term at fixed receiver points changes from one frame to the
+// next while only the camera the light is fitted to moves (the scene, the light and the points
+// measured stay put, so every change is the shadow map's doing, none is real).
+struct FlickerResult {
+    double flicker = 0.0;       // share of receiver pixels whose visibility flips (crosses 0.5) between consecutive frames, mean over pairs
+    double worstPair = 0.0;     // the largest share of one pair
+    double meanChange = 0.0;    // mean |change of visibility| per receiver pixel and pair (soft filters flicker by degrees)
+    int frames = 0;
+    int pixels = 0;             // receiver pixels facing the light in the first frame
+};
+
+// Flips between consecutive buffers of the same pixels (same size, same measuring camera);
+// only pixels facing the light in both frames count.
+FlickerResult measureFlicker(const std::vector<VisibilityBuffer>& frames);
+
+} // namespace shadowlab

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "LightFitting.h"
+#include "LightMath.h"
+#include "Settings.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace shadowlab {
+
+// The most views one light renders: six cube faces (cascades are at most kMaxCascades).
+inline constexpr int kMaxShadowViews = 6;
+
+// One map a light renders: a cascade of a directional light, a face of a point light, or the
+// single map of any light. Its volume is fitted like the single map's (LightFitting.h), within
+// its own slice of the camera's view or its own face.
+struct ShadowView {
+    FittedLight fit;
+    int column = 0, row = 0;            // its tile in the shared texture (map.size² texels each)
+    double splitNear = 0.0;             // cascades: the slice of the camera's view depth it covers
+    double splitFar = 0.0;
+    glm::dvec3 axis{0.0, -1.0, 0.0};    // point lights: the face's axis (+x, -x, +y, -y, +z, -z)
+};
+
+struct ShadowViewSet {
+    std::vector<ShadowView> views;
+    int columns = 1, rows = 1;          // tiles of the shared texture
+    bool cascaded = false;
+    bool cube = false;
+};
+
+// Whether `settings` render more than one view (cascades > 1 or a point light).
+bool usesShadowViews(const Settings& settings);
+
+// count + 1 view depths from nearPlane to farPlane (both > 0, near < far): where each cascade
+// starts and ends. Uniform slices are equal in depth, logarithmic ones in ratio, practical ones
+// are lambda * logarithmic + (1 - lambda) * uniform. Finite and increasing for any finite input.
+std::vector<double> cascadeSplits(CascadeSplit scheme, double lambda, double nearPlane, double farPlane, int count);
+
+// The six faces' axes in the order the shader picks them: +x, -x, +y, -y, +z, -z.
+const std::vector<glm::dvec3>& cubeFaceAxes();
+
+// The full angle of a cube face's map, a little over 90° so a filter's taps next to a face's
+// edge still read that face's own texels.
+double cubeFaceFov(int mapSize);
+
+// Every view of the light in `settings` for the camera `camera` (viewport aspect `aspect`):
+// cascades (shadow.cascades > 1), six cube faces (light.type = point) or the one map. A view
+// with nothing to shadow has fit.anythingToShadow false and need not be rendered.
+// `settings` must be valid.
+ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect);
+
+// A cascade's ortho volume from the bounding sphere of its slice of the camera's view: the same
+// size however the camera turns, its centre snapped to whole texels, so camera motion moves
+// shadow edges by whole texels only (no shimmer) and rarely changes the map. Depth covers the
+// objects under it. `slice` is the slice's view-projection.
+FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitObject>& objects, const glm::dmat4& slice, int mapSize);
+
+} // namespace shadowlab

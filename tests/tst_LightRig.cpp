@@ -1,0 +1,311 @@
+// The light rig without GL: light types and their settings, cascade splits, and the views a
+// light fits (cascades covering the whole shadow distance, cube faces covering every direction).
+#include "LightFitting.h"
+#include "LightMath.h"
+#include "SceneLibrary.h"
+#include "SettingsError.h"
+#include "SettingsKeys.h"
+#include "ShadowViews.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace shadowlab;
+
+namespace {
+
+std::vector<FitObject> fitObjects(const Scene& scene)
+{
+    std::vector<FitObject> objects;
+    for (const SceneObject& object : scene.objects)
+        objects.push_back({scene.worldBounds(object), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
+    return objects;
+}
+
+bool hasError(const Settings& s, const QString& key)
+{
+    for (const SettingsIssue& issue : validate(s)) {
+        if (issue.severity == SettingsIssue::Severity::Error && issue.key == key)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+class TestLightRig : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void typeAndProjectionFollowEachOther()
+    {
+        Settings s;
+        QVERIFY(s.light.type == LightType::Directional);
+        applySetting(s, "light.type", "point");
+        QVERIFY(s.light.projection == LightProjection::Perspective);
+        applySetting(s, "light.type", "directional");
+        QVERIFY(s.light.projection == LightProjection::Ortho);
+        // An older file names only the projection: perspective means a spot light.
+        applySetting(s, "light.projection", "perspective");
+        QVERIFY(s.light.type == LightType::Spot);
+        // A point light stays one when its (already perspective) projection is set again.
+        applySetting(s, "light.type", "point");
+        applySetting(s, "light.projection", "perspective");
+        QVERIFY(s.light.type == LightType::Point);
+        applySetting(s, "light.projection", "ortho");
+        QVERIFY(s.light.type == LightType::Directional);
+        QVERIFY(validate(s).empty());
+        // Both keys in one file, in any order, load to what the file says.
+        Settings fromFile = settingsFromJson(QJsonObject{{"light.type", "point"}, {"light.projection", "perspective"}}, Settings());
+        QVERIFY(fromFile.light.type == LightType::Point);
+        fromFile = settingsFromJson(QJsonObject{{"light.projection", "perspective"}}, Settings());
+        QVERIFY(fromFile.light.type == LightType::Spot);
+        // A saved file loads back to the same light.
+        for (const char* type : {"directional", "spot", "point"}) {
+            Settings original;
+            applySetting(original, "light.type", type);
+            QCOMPARE(settingsFromJson(settingsToJson(original), Settings()), original);
+        }
+    }
+
+    void impossibleCombinationsAreRefused()
+    {
+        Settings s;
+        s.light.type = LightType::Point;    // filled in by code, projection left ortho
+        QVERIFY(hasError(s, "light.projection"));
+        s.light.projection = LightProjection::Perspective;
+        QVERIFY(validate(s).empty());
+        s.shadow.cascades = 3;
+        QVERIFY(hasError(s, "shadow.cascades"));
+        Settings d;
+        d.shadow.cascades = 2;
+        d.light.fit = LightFit::Manual;
+        QVERIFY(hasError(d, "shadow.cascades"));
+        d.light.fit = LightFit::Scene;
+        d.filter.earlyOut = true;
+        QVERIFY(hasError(d, "filter.early_out"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.cascades", "5"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.cascades", "0"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.distance", "0"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.distance", "nan"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.split_lambda", "1.5"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "shadow.blend", "0.6"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "light.falloff", "-0.1"));
+        QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(d, "light.type", "area"));
+    }
+
+    void splitsCoverTheDistance_data()
+    {
+        QTest::addColumn<int>("scheme");
+        QTest::addColumn<double>("lambda");
+        QTest::addColumn<double>("nearPlane");
+        QTest::addColumn<double>("farPlane");
+        for (int scheme = 0; scheme < 3; ++scheme) {
+            for (double lambda : {0.0, 0.5, 1.0}) {
+                for (auto [n, f] : {std::pair{0.1, 100.0}, std::pair{1e-3, 1e5}, std::pair{0.5, 0.5000001}, std::pair{1e-3, 1e7}}) {
+                    QTest::newRow(qPrintable(QString("scheme %1 lambda %2 %3..%4").arg(scheme).arg(lambda).arg(n).arg(f)))
+                        << scheme << lambda << n << f;
+                }
+            }
+        }
+    }
+
+    void splitsCoverTheDistance()
+    {
+        QFETCH(int, scheme);
+        QFETCH(double, lambda);
+        QFETCH(double, nearPlane);
+        QFETCH(double, farPlane);
+        for (int count = 1; count <= kMaxCascades; ++count) {
+            const std::vector<double> splits = cascadeSplits(CascadeSplit(scheme), lambda, nearPlane, farPlane, count);
+            QCOMPARE(int(splits.size()), count + 1);
+            QCOMPARE(splits.front(), nearPlane);
+            QCOMPARE(splits.back(), farPlane);
+            for (std::size_t i = 1; i < splits.size(); ++i) {
+                QVERIFY(std::isfinite(splits[i]));
+                QVERIFY2(splits[i] > splits[i - 1], qPrintable(QString("split %1: %2 after %3").arg(i).arg(splits[i]).arg(splits[i - 1])));
+            }
+        }
+        // Logarithmic splits are equal ratios, uniform ones equal steps.
+        const std::vector<double> log = cascadeSplits(CascadeSplit::Logarithmic, 0.0, nearPlane, farPlane, 4);
+        const std::vector<double> uni = cascadeSplits(CascadeSplit::Uniform, 1.0, nearPlane, farPlane, 4);
+        QVERIFY(std::abs(log[2] / log[1] - log[1] / log[0]) <= 1e-9 * log[1] / log[0]);
+        QVERIFY(std::abs((uni[2] - uni[1]) - (uni[1] - uni[0])) <= 1e-9 * farPlane);
+    }
+
+    void degenerateSplitInputsStayFinite()
+    {
+        for (auto [n, f] : {std::pair{0.0, 10.0}, std::pair{-1.0, 10.0}, std::pair{5.0, 1.0}, std::pair{double(NAN), double(INFINITY)}}) {
+            const std::vector<double> splits = cascadeSplits(CascadeSplit::Practical, 0.5, n, f, 4);
+            for (std::size_t i = 0; i < splits.size(); ++i) {
+                QVERIFY(std::isfinite(splits[i]) && splits[i] > 0.0);
+                if (i > 0)
+                    QVERIFY(splits[i] > splits[i - 1]);
+            }
+        }
+    }
+
+    // Each cascade's fitted volume covers its whole slice of the view (what the camera can see
+    // of every receiver between its split distances), and consecutive slices meet: no gap at a
+    // seam, at any shadow distance up to 10⁵, stabilised or not.
+    void cascadesCoverTheirSlices_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("cascades");
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<bool>("stabilize");
+        for (const QString& scene : sceneNames()) {
+            for (int cascades : {2, 3, 4}) {
+                for (double distance : {5.0, 30.0, 1e5}) {
+                    for (bool stabilize : {false, true})
+                        QTest::newRow(qPrintable(QString("%1 %2 cascades to %3 %4").arg(scene).arg(cascades).arg(distance).arg(stabilize ? "stabilised" : "tight")))
+                            << scene << cascades << distance << stabilize;
+                }
+            }
+        }
+    }
+
+    void cascadesCoverTheirSlices()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, cascades);
+        QFETCH(double, distance);
+        QFETCH(bool, stabilize);
+        Settings s = presetSettings(scene);
+        s.shadow.cascades = cascades;
+        s.shadow.distance = distance;
+        s.light.stabilize = stabilize;
+        QVERIFY(validate(s).empty());
+        const Scene built = buildScene(scene);
+        const std::vector<FitObject> objects = fitObjects(built);
+        const double aspect = 16.0 / 9.0;
+        const CameraFrame camera = computeCameraFrame(s.camera, aspect, built.bounds());
+        const ShadowViewSet set = fitShadowViews(s, objects, camera, aspect);
+        QCOMPARE(int(set.views.size()), cascades);
+        QVERIFY(set.cascaded);
+        QCOMPARE(set.views.front().splitNear, camera.nearPlane);
+        QCOMPARE(set.views.back().splitFar, std::min(distance, camera.farPlane));
+        for (int i = 0; i < cascades; ++i) {
+            const ShadowView& view = set.views[std::size_t(i)];
+            QVERIFY(std::isfinite(view.splitNear) && std::isfinite(view.splitFar) && view.splitFar > view.splitNear);
+            if (i > 0)
+                QCOMPARE(view.splitNear, set.views[std::size_t(i) - 1].splitFar);
+            if (!view.fit.anythingToShadow)
+                continue;
+            const LightFrame frame = computeLightFrame(s.light, view.fit.volume);
+            QVERIFY(isFinite(frame.shadowMatrix));
+            // Every visible receiver point in the slice lies inside the cascade's map, in x and y
+            // (depth: casters before near are clamped, receivers beyond far cannot be shadowed
+            // by anything the fit saw).
+            const glm::dmat4 slice = glm::perspective(glm::radians(s.camera.fov), aspect, view.splitNear, view.splitFar) * camera.view;
+            int inside = 0, outside = 0;
+            for (std::size_t k = 0; k < objects.size(); ++k) {
+                if (!objects[k].receives)
+                    continue;
+                for (const glm::dvec3& p : clipBoxToFrusta(objects[k].bounds, {slice})) {
+                    const glm::dvec4 t = frame.shadowMatrix * glm::dvec4(p, 1.0);
+                    const bool in = t.x >= -1e-6 && t.x <= 1.0 + 1e-6 && t.y >= -1e-6 && t.y <= 1.0 + 1e-6;
+                    (in ? inside : outside) += 1;
+                }
+            }
+            // A tight fit covers only where casters can shadow; the sphere covers the slice whole.
+            if (stabilize)
+                QVERIFY2(outside == 0, qPrintable(QString("cascade %1: %2 of %3 slice corners outside its map").arg(i).arg(outside).arg(inside + outside)));
+        }
+    }
+
+    // The city: the asked-for number of buildings, of varied size, over more than a square
+    // kilometre, the same on every build; bad counts are refused with the key named.
+    void cityIsSeededAndSized_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("buildings");
+        QTest::newRow("city") << "city" << 2000;
+        QTest::newRow("city:500") << "city:500" << 500;
+        QTest::newRow("city:8000") << "city:8000" << 8000;
+    }
+
+    void cityIsSeededAndSized()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, buildings);
+        const Scene city = buildScene(name);
+        QCOMPARE(int(city.objects.size()), buildings + 1);  // and the ground
+        Bounds all;
+        double lowest = 1e9, highest = 0.0, narrowest = 1e9, widest = 0.0;
+        for (std::size_t i = 1; i < city.objects.size(); ++i) {
+            const Bounds b = city.worldBounds(city.objects[i]);
+            all.extend(b);
+            lowest = std::min(lowest, b.max.y - b.min.y);
+            highest = std::max(highest, b.max.y - b.min.y);
+            narrowest = std::min(narrowest, b.max.x - b.min.x);
+            widest = std::max(widest, b.max.x - b.min.x);
+            QVERIFY(b.min.y >= -1e-9);
+        }
+        QVERIFY2((all.max.x - all.min.x) * (all.max.z - all.min.z) >= 1e6, "the buildings cover at least a square kilometre");
+        QVERIFY(highest > 5.0 * lowest);
+        QVERIFY(widest > 1.3 * narrowest);
+        // Seeded: the same city again.
+        const Scene again = buildScene(name);
+        for (std::size_t i = 0; i < city.objects.size(); ++i)
+            QVERIFY(city.objects[i].model == again.objects[i].model);
+        // The street-level camera stands on the ground, in a street, and sees buildings.
+        const Settings s = presetSettings(name);
+        QVERIFY(validate(s).empty());
+        QVERIFY(s.camera.position.y > 1.0 && s.camera.position.y < 3.0);
+        for (std::size_t i = 1; i < city.objects.size(); ++i) {
+            const Bounds b = city.worldBounds(city.objects[i]);
+            const glm::dvec3 p = s.camera.position;
+            QVERIFY(!(p.x > b.min.x && p.x < b.max.x && p.z > b.min.z && p.z < b.max.z));
+        }
+    }
+
+    void cityCountsAreChecked()
+    {
+        Settings s;
+        for (const char* bad : {"city:0", "city:-3", "city:20001", "city:many", "city:"})
+            QVERIFY_THROWS_EXCEPTION(SettingsError, applySetting(s, "scene", bad));
+        applySetting(s, "scene", "city:123");
+        QCOMPARE(s.scene, QString("city:123"));
+    }
+
+    // A point light's six faces, each a little over 90°, leave no direction uncovered.
+    void cubeFacesCoverEveryDirection()
+    {
+        Settings s = presetSettings("seed");
+        applySetting(s, "light.type", "point");
+        s.light.fit = LightFit::Manual;
+        s.light.nearPlane = 0.05;
+        s.light.farPlane = 100.0;
+        const Scene built = buildScene("seed");
+        const CameraFrame camera = computeCameraFrame(s.camera, 1.0, built.bounds());
+        const ShadowViewSet set = fitShadowViews(s, fitObjects(built), camera, 1.0);
+        QVERIFY(set.cube);
+        QCOMPARE(int(set.views.size()), 6);
+        QVERIFY(cubeFaceFov(s.map.size) > 90.0 && cubeFaceFov(s.map.size) < 91.0);
+        // Directions on a fine grid of the sphere, including the face seams and corners.
+        for (int a = 0; a <= 48; ++a) {
+            for (int b = 0; b < 96; ++b) {
+                const double theta = M_PI * a / 48.0, phi = 2.0 * M_PI * b / 96.0;
+                const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+                const glm::dvec3 p = s.light.position + d * 3.0;
+                // The face the shader picks: the major axis of the direction.
+                const glm::dvec3 m = glm::abs(d);
+                const int face = m.x >= m.y && m.x >= m.z ? (d.x >= 0 ? 0 : 1) : m.y >= m.z ? (d.y >= 0 ? 2 : 3) : (d.z >= 0 ? 4 : 5);
+                const LightFrame frame = computeLightFrame(s.light, set.views[std::size_t(face)].fit.volume);
+                const glm::dvec4 t = frame.shadowMatrix * glm::dvec4(p, 1.0);
+                QVERIFY(t.w > 0.0);
+                const glm::dvec3 uvw = glm::dvec3(t) / t.w;
+                QVERIFY2(uvw.x > 0.0 && uvw.x < 1.0 && uvw.y > 0.0 && uvw.y < 1.0 && uvw.z > 0.0 && uvw.z < 1.0,
+                         qPrintable(QString("direction %1,%2,%3 on face %4 maps to %5,%6,%7").arg(d.x).arg(d.y).arg(d.z).arg(face).arg(uvw.x).arg(uvw.y).arg(uvw.z)));
+            }
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLightRig)
+#include "tst_LightRig.moc"

@@ -1,0 +1,378 @@
+// Every light type shadows what the Embree reference says, pixel by pixel: directional, spot
+// (unlit outside its cone) and point (six cube faces), on every preset and from several
+// placements; a point light shadows in all six directions; a light inside a caster or on a
+// receiver gives a clear, finite result.
+#include "Application.h"
+#include "HeadlessRenderer.h"
+#include "HeadlessTestMain.h"
+#include "Measurement.h"
+#include "ReferenceAgreement.h"
+#include "SceneLibrary.h"
+#include "SceneNames.h"
+#include "SettingsKeys.h"
+#include "ShadowViews.h"
+#include "RayTracer.h"
+#include "ShadowReference.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace shadowlab;
+
+Q_DECLARE_METATYPE(glm::dvec3)
+
+namespace {
+
+using probe::Agreement;
+using probe::agreement;
+
+glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
+{
+    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
+    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
+}
+
+QString describe(const Agreement& a)
+{
+    return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
+        .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
+}
+
+// A closed room (six inward-facing walls that receive) around a point light, with a small cube
+// between the light and the middle of each wall.
+Scene roomScene()
+{
+    Scene s;
+    s.name = QStringLiteral("room");
+    s.meshes.push_back(meshes::plane(4.0f, 4.0f));
+    s.meshes.push_back(meshes::cube());
+    for (const glm::dvec3& axis : cubeFaceAxes()) {
+        // The plane's normal +y turned to face the room's centre (-axis).
+        glm::dmat4 wall = glm::translate(glm::dmat4(1.0), axis * 4.0);
+        const glm::dvec3 inward = -axis;
+        const glm::dvec3 turn = glm::cross(glm::dvec3(0, 1, 0), inward);
+        if (glm::length(turn) > 0.5)
+            wall = glm::rotate(wall, glm::radians(90.0), turn);
+        else if (inward.y < 0.0)
+            wall = glm::rotate(wall, glm::radians(180.0), glm::dvec3(1, 0, 0));
+        s.objects.push_back({QStringLiteral("wall"), 0, wall, TextureKind::Checker, false, true});
+        const glm::dmat4 block = glm::scale(glm::translate(glm::dmat4(1.0), axis * 1.5), glm::dvec3(0.3));
+        s.objects.push_back({QStringLiteral("block"), 1, block, TextureKind::Wood, true, true});
+    }
+    return s;
+}
+
+} // namespace
+
+class TestLightTypes : public QObject {
+    Q_OBJECT
+
+public:
+    static void initMain() { configureApplication(); }
+
+private Q_SLOTS:
+    void initTestCase() { m_headless = std::make_unique<HeadlessRenderer>(); }
+    void cleanupTestCase() { m_headless.reset(); }
+
+    void eachTypeAgreesWithTheReference_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("type");
+        QTest::addColumn<glm::dvec3>("direction");   // from the target toward the light
+        QTest::addColumn<double>("distance");
+        QTest::addColumn<QString>("filter");
+        const struct {
+            double azimuth, elevation;
+        } placements[] = {{30, 75}, {200, 50}, {300, 35}};
+        const QStringList filters{"hard", "hw-bilinear", "pcf"};
+        for (const QString& scene : sceneNames()) {
+            int k = 0;
+            for (const QString type : {"directional", "spot", "point"}) {
+                for (const auto& p : placements) {
+                    // Point lights sit among the objects, spots a little farther out.
+                    const double distance = type == "point" ? 3.5 + k % 2 : type == "spot" ? 7.0 : 1e3;
+                    QTest::newRow(qPrintable(QString("%1 %2 az %3 el %4").arg(scene, type).arg(p.azimuth).arg(p.elevation)))
+                        << scene << QString(type) << fromAngles(p.azimuth, p.elevation) << distance << filters[k % 3];
+                    ++k;
+                }
+            }
+        }
+    }
+
+    void eachTypeAgreesWithTheReference()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QString, type);
+        QFETCH(glm::dvec3, direction);
+        QFETCH(double, distance);
+        QFETCH(QString, filter);
+        Settings s = presetSettings(scene);
+        applySetting(s, "light.type", type);
+        applySetting(s, "filter.mode", filter);
+        s.light.fov = 100.0;
+        s.light.position = s.light.target + direction * distance;
+        // A street-level view of a kilometre of city needs cascades (one map has texels of
+        // half a metre there); the last reaches the camera's far plane, so all of it is tested.
+        if (cityBuildingCount(scene) > 0 && type == "directional") {
+            s.shadow.cascades = 4;
+            s.shadow.distance = 1e5;
+        }
+        m_headless->renderer().setScene(std::nullopt);
+        const QSize size(240, 135);
+        const Agreement a = agreement(m_headless->renderer(), s, size);
+        const QString numbers = describe(a);
+        QVERIFY2(a.counted > 300, qPrintable(numbers));
+        QVERIFY2(a.referenceShadowed > 0.005 * a.counted, qPrintable(numbers));
+        // Shadows kept (at most 2 % of the reference's shadow lost at edges) and no acne.
+        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        if (type == "spot") {
+            // The cone leaves part of the view unlit, and the renderer agrees there (above).
+            const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, size);
+            const LightFrame& light = m_headless->renderer().lightFrame();
+            int outside = 0;
+            for (int i = 0; i < buffer.pixelCount(); ++i) {
+                if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                    continue;
+                const glm::dvec3 d = glm::normalize(buffer.worldPosition(i) - light.position);
+                if (glm::dot(d, light.direction) < light.spotCosine - 1e-3) {
+                    ++outside;
+                    QCOMPARE(buffer.visibility(i), 0.0f);
+                }
+            }
+            qInfo().noquote() << outside << "pixels outside the cone";
+        }
+        if (type == "point") {
+            const ShadowViewFrames& views = m_headless->renderer().shadowViews();
+            QCOMPARE(int(views.frames.size()), 6);
+        }
+        qInfo().noquote() << numbers;
+    }
+
+    // A point light in the middle of a room, a block before each wall: every wall has the
+    // block's shadow where the reference puts it.
+    void pointLightShadowsInAllSixDirections_data()
+    {
+        QTest::addColumn<int>("face");
+        QTest::addColumn<QString>("filter");
+        for (int face = 0; face < 6; ++face) {
+            for (const QString filter : {"hard", "pcf"})
+                QTest::newRow(qPrintable(QString("face %1 %2").arg(face).arg(filter))) << face << QString(filter);
+        }
+    }
+
+    void pointLightShadowsInAllSixDirections()
+    {
+        QFETCH(int, face);
+        QFETCH(QString, filter);
+        m_headless->renderer().setScene(roomScene());
+        Settings s;
+        applySetting(s, "light.type", "point");
+        applySetting(s, "filter.mode", filter);
+        s.light.position = {0.12, 0.2, -0.07};
+        s.light.target = {0.0, -1.0, 0.0};
+        const glm::dvec3 axis = cubeFaceAxes()[std::size_t(face)];
+        const glm::dvec3 side = std::abs(axis.y) > 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        // From beside the light, looking at the wall's middle, so the block does not hide its shadow.
+        s.camera.position = -axis * 1.0 + side * 3.0 + glm::cross(axis, side) * 0.5;
+        s.camera.target = axis * 4.0;
+        s.camera.fov = 60.0;
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(200, 150));
+        const QString numbers = describe(a);
+        const FrameStats& stats = m_headless->renderer().lastFrame();
+        m_headless->renderer().setScene(std::nullopt);
+        QVERIFY2(a.counted > 1000, qPrintable(numbers));
+        // The block's shadow on the wall is in view...
+        QVERIFY2(a.referenceShadowed > 0.02 * a.counted, qPrintable(numbers));
+        // ... and rendered where the reference has it.
+        QVERIFY2(a.falseLight <= 0.03 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        // Faces that see no visible receiver are not drawn.
+        QCOMPARE(int(stats.viewDraws.size()), 6);
+        qInfo().noquote() << numbers;
+    }
+
+    // Cascades cover the whole shadow distance: the pixels within it agree with the reference,
+    // and so do those next to each seam (within 5 % of a split), blended or not, stabilised
+    // or not; pixels beyond the distance are lit, as the setting says.
+    void cascadesAgreeAcrossTheSeams_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("cascades");
+        QTest::addColumn<double>("blend");
+        QTest::addColumn<bool>("stabilize");
+        QTest::addColumn<QString>("split");
+        // (Logarithmic splits put every seam within a metre of a camera whose near plane is a
+        // few centimetres, out of these views; tst_LightRig checks their coverage.)
+        const QStringList splits{"uniform", "practical"};
+        int k = 0;
+        for (const QString scene : {"seed", "cubes", "city"}) {
+            // (Two cascades' one seam sits behind the near buildings or objects of these views.)
+            for (int cascades : {3, 4}) {
+                for (double blend : {0.0, 0.2}) {
+                    const bool stabilize = (k % 2) == 0;
+                    QTest::newRow(qPrintable(QString("%1 %2 cascades blend %3 %4 %5").arg(scene).arg(cascades).arg(blend).arg(stabilize ? "stabilised" : "tight", splits[(k / 2) % 2])))
+                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2];
+                    ++k;
+                }
+            }
+        }
+    }
+
+    void cascadesAgreeAcrossTheSeams()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, cascades);
+        QFETCH(double, blend);
+        QFETCH(bool, stabilize);
+        QFETCH(QString, split);
+        Settings s = presetSettings(scene);
+        s.shadow.cascades = cascades;
+        s.shadow.blend = blend;
+        s.light.stabilize = stabilize;
+        applySetting(s, "shadow.split", split);
+        s.map.size = 1024;
+        // The distance ends inside the view, so pixels beyond it are there to check too.
+        const double viewDistance = glm::length(s.camera.target - s.camera.position);
+        s.shadow.distance = cityBuildingCount(scene) > 0 ? 100.0 : viewDistance * 1.3;
+        m_headless->renderer().setScene(std::nullopt);
+        Renderer& renderer = m_headless->renderer();
+        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(320, 180));
+        const ShadowViewFrames& views = renderer.shadowViews();
+        QCOMPARE(int(views.set.views.size()), cascades);
+        const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
+        ReferenceOptions options;
+        options.area = false;
+        const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
+        const glm::dvec3 forward = -glm::dvec3(views.camera.view[0][2], views.camera.view[1][2], views.camera.view[2][2]);
+        int counted = 0, shadowed = 0, falseShadow = 0, falseLight = 0, seamCounted = 0, seamWrong = 0, beyond = 0, beyondShadowed = 0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                continue;
+            const double depth = glm::dot(buffer.worldPosition(i) - views.camera.position, forward);
+            const float measured = buffer.visibility(i), expected = reference.hard[std::size_t(i)];
+            if (depth > s.shadow.distance * 1.001) {
+                ++beyond;
+                beyondShadowed += measured < 0.5f;
+                continue;
+            }
+            if (depth > s.shadow.distance * 0.999)
+                continue;
+            ++counted;
+            shadowed += expected < 0.5f;
+            const bool wrong = std::abs(measured - expected) > 0.5f;
+            falseShadow += measured < expected - 0.5f;
+            falseLight += measured > expected + 0.5f;
+            for (int c = 0; c + 1 < cascades; ++c) {
+                const double seam = views.set.views[std::size_t(c)].splitFar;
+                if (std::abs(depth - seam) < 0.05 * seam) {
+                    ++seamCounted;
+                    seamWrong += wrong;
+                }
+            }
+        }
+        const QString numbers = QString("%1 counted within the distance, %2 shadowed, %3 false shadow, %4 false light; %5 next to a seam, "
+                                        "%6 wrong there; %7 beyond, %8 of them shadowed")
+                                    .arg(counted).arg(shadowed).arg(falseShadow).arg(falseLight).arg(seamCounted).arg(seamWrong).arg(beyond).arg(beyondShadowed);
+        QVERIFY2(counted > 2000 && shadowed > 0.01 * counted, qPrintable(numbers));
+        QVERIFY2(falseLight <= 0.02 * shadowed + 0.002 * counted, qPrintable(numbers));
+        QVERIFY2(falseShadow <= 0.003 * counted, qPrintable(numbers));
+        QVERIFY2(seamCounted > 50, qPrintable(numbers));
+        QVERIFY2(seamWrong <= 0.01 * seamCounted + 2, qPrintable(numbers));
+        QCOMPARE(beyondShadowed, 0);
+        qInfo().noquote() << numbers;
+    }
+
+    // Stabilised maps do not shimmer: over a camera walk of a third of a texel per frame, the
+    // receivers whose shadow flips are far fewer than with tight, unsnapped maps.
+    void stabilisedMapsFlickerLess_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("cascades");
+        // (On the small presets the casters, not the camera, bound the tight fit, so a sliding
+        // camera moves neither map and neither flickers: the city is where the view does.)
+        QTest::newRow("city, one map") << "city" << 1;
+        QTest::newRow("city, 2 cascades") << "city" << 2;
+        QTest::newRow("city, 4 cascades") << "city" << 4;
+    }
+
+    void stabilisedMapsFlickerLess()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, cascades);
+        m_headless->renderer().setScene(std::nullopt);
+        const QSize size(480, 270);
+        FlickerResult result[2];
+        for (bool stabilize : {false, true}) {
+            Settings s = presetSettings(scene);
+            s.shadow.cascades = cascades;
+            s.shadow.distance = cityBuildingCount(scene) > 0 ? 300.0 : 30.0;
+            s.light.stabilize = stabilize;
+            Renderer& renderer = m_headless->renderer();
+            result[stabilize] = measureFlicker(renderer, s, subTexelPath(renderer, s, size, kFlickerFrames, kFlickerStepTexels), size);
+        }
+        const QString numbers = QString("flicker %1 % unstabilised, %2 % stabilised over %3 frames of %4 receiver pixels")
+                                    .arg(100 * result[0].flicker).arg(100 * result[1].flicker).arg(result[1].frames).arg(result[1].pixels);
+        QVERIFY2(result[1].pixels > 10000, qPrintable(numbers));
+        QVERIFY2(result[0].flicker > 0.0, qPrintable(numbers));
+        QVERIFY2(result[1].flicker <= 0.1 * result[0].flicker, qPrintable(numbers));
+        qInfo().noquote() << numbers;
+    }
+
+    // A light inside a caster: everything it could light is behind the caster's walls.
+    // A light on a receiver: grazing everything, still finite. Neither gives NaN.
+    void degenerateLightPlacementsAreClear_data()
+    {
+        QTest::addColumn<QString>("type");
+        QTest::addColumn<glm::dvec3>("position");
+        QTest::addColumn<bool>("allDark");
+        QTest::addColumn<bool>("agrees");
+        for (const QString type : {"spot", "point"}) {
+            QTest::newRow(qPrintable(type + " inside the high cube")) << QString(type) << glm::dvec3(0.05, 1.5, -0.03) << true << true;
+            QTest::newRow(qPrintable(type + " resting on the ground")) << QString(type) << glm::dvec3(0.8, -0.499, 0.4) << false << true;
+            // Exactly in the ground's plane the ground is lit edge-on (N.L = 0): which side of
+            // zero it falls is rounding, in the reference too; only finiteness is asserted.
+            QTest::newRow(qPrintable(type + " in the ground's plane")) << QString(type) << glm::dvec3(0.8, -0.5, 0.4) << false << false;
+        }
+    }
+
+    void degenerateLightPlacementsAreClear()
+    {
+        QFETCH(QString, type);
+        QFETCH(glm::dvec3, position);
+        QFETCH(bool, allDark);
+        QFETCH(bool, agrees);
+        Settings s = presetSettings("seed");
+        applySetting(s, "light.type", type);
+        s.light.fov = 120.0;
+        s.light.position = position;
+        s.light.target = position + glm::dvec3(0.3, -1.0, 0.2);
+        m_headless->renderer().setScene(std::nullopt);
+        const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, QSize(160, 90));
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) == VisibilityBuffer::Background)
+                continue;
+            const float v = buffer.visibility(i);
+            QVERIFY2(std::isfinite(v) && v >= 0.0f && v <= 1.0f, qPrintable(QString("pixel %1: visibility %2").arg(i).arg(v)));
+        }
+        if (!agrees)
+            return;
+        const Agreement a = agreement(m_headless->renderer(), s, QSize(160, 90));
+        const QString numbers = describe(a);
+        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+        QVERIFY2(a.falseShadow <= 0.003 * a.counted + 2, qPrintable(numbers));
+        if (allDark)
+            QVERIFY2(a.referenceShadowed == a.counted, qPrintable(numbers));
+        qInfo().noquote() << numbers;
+    }
+
+private:
+    std::unique_ptr<HeadlessRenderer> m_headless;
+};
+
+SHADOWLAB_TEST_MAIN(TestLightTypes)
+#include "tst_LightTypes.moc"
