@@ -4,7 +4,8 @@ namespace shadowlab {
 
 const QStringList& sceneNames()
 {
-    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder")};
+    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"),
+                                   QStringLiteral("bleeding")};
     return names;
 }
 

@@ -2,6 +2,7 @@
 
 #include "LightMath.h"
 #include "RenderTarget.h"
+#include "Settings.h"
 #include "ShaderProgram.h"
 
 #include <QRectF>
@@ -24,7 +25,19 @@ public:
     void render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target,
                 const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
 
+    // Draws moment `settings.moments.view` of a moments map as grey, decoded by the moment
+    // technique `settings.filter.mode` (exponential warps undone to depth).
+    void renderMoments(GLuint momentsTexture, const Settings& settings, const RenderTarget& target,
+                       const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0));
+
 private:
+    struct MomentsProgram {
+        MomentsProgram(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint moments, channel, exponentPositive, exponentNegative, uvOffset, uvScale;
+    };
+    void draw(GLuint texture);
+
     struct Program {
         Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
@@ -36,6 +49,7 @@ private:
     GlSampler m_sampler;
     // Variants by (perspective, reversed depth), compiled when first shown.
     std::map<std::pair<bool, bool>, std::unique_ptr<Program>> m_programs;
+    std::map<QString, std::unique_ptr<MomentsProgram>> m_momentsPrograms;   // by technique variant
 };
 
 } // namespace shadowlab

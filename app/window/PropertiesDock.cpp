@@ -54,6 +54,9 @@ const Presentation kPresentations[] = {
     {"light.radius", "Reference radius", " wu", 3, 0.0, 2.0},
     {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
     {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
+    {"moments.blur", "Blur", " texels", 0, 0.0, 31.0},
+    {"moments.anisotropy", "Anisotropy", "", 0, 1.0, 16.0},
+    {"moments.view", "Moment shown", "", 0, 1.0, 4.0},
 };
 
 // A Presentation for people: from the list above, or from the technique table for the
@@ -75,7 +78,7 @@ Look presentation(const QString& key)
     }
     for (const TechniqueParameter& p : techniqueParameters()) {
         if (key == p.key)
-            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : 2, p.minimum, p.maximum};
+            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : p.decimals, p.minimum, p.maximum};
     }
     throw SettingsError(key, QStringLiteral("has no field in the properties dock"));
 }
@@ -162,6 +165,13 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
     for (const TechniqueParameter& parameter : techniqueParameters())
         addNumber(filter, parameter.key);
     addBool(filter, QStringLiteral("filter.early_out"), tr("Filter only penumbrae"));
+
+    QGridLayout* moments = addGroup(tr("Moments map"));
+    addChoice(moments, QStringLiteral("moments.format"));
+    addNumber(moments, QStringLiteral("moments.blur"));
+    addBool(moments, QStringLiteral("moments.mipmaps"), tr("Mipmaps"));
+    addNumber(moments, QStringLiteral("moments.anisotropy"));
+    addNumber(moments, QStringLiteral("moments.view"));
 
     QGridLayout* shading = addGroup(tr("Shading"));
     addChoice(shading, QStringLiteral("shading.model"));
