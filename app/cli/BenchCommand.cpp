@@ -27,6 +27,7 @@ struct Phase {
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
+    std::vector<double> blurWall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
@@ -67,6 +68,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.lit = std::move(s.lit);
         p.shadowWall = std::move(s.shadowWall);
         p.litWall = std::move(s.litWall);
+        p.blurWall = std::move(s.blurWall);
         p.wall = std::move(s.wall);
         p.shadowPassesRun = s.shadowPassesRun;
         p.shadowDraws = s.shadowDraws;
@@ -172,6 +174,7 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
                                               {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
                                               {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
+                                              {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
                                               {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))}});
             }
             out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
@@ -195,6 +198,8 @@ int runBench(const QStringList& arguments)
             printFitWarnings(r.fit, r.name);
             out() << "  lit pass (GPU):    " << formatStats(summarize(r.lit)) << '\n';
             out() << "  shadow pass (wall):" << formatStats(summarize(r.shadowWall)) << '\n';
+            if (!r.blurWall.empty())
+                out() << "    of which blur:   " << formatStats(summarize(r.blurWall)) << "   (moments blur and mips)\n";
             out() << "  lit pass (wall):   " << formatStats(summarize(r.litWall)) << '\n';
             out() << "  frame (wall):      " << formatStats(summarize(r.wall)) << '\n';
         }
