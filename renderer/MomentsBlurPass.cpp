@@ -12,13 +12,16 @@ constexpr int kMaxWeights = 16;    // uWeights[16] in momentsblur.frag: widths u
 
 } // namespace
 
+MomentsBlurPass::Program::Program(GlFunctions* gl, int radius)
+    : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsblur.frag"), {QStringLiteral("BLUR_RADIUS %1").arg(radius)}),
+      source(program.uniform("uSource")),
+      step(program.uniform("uStep")),
+      weights(program.uniform("uWeights"))
+{
+}
+
 MomentsBlurPass::MomentsBlurPass(GlFunctions* gl)
     : m_gl(gl),
-      m_program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsblur.frag"), {}),
-      m_source(m_program.uniform("uSource")),
-      m_step(m_program.uniform("uStep")),
-      m_radius(m_program.uniform("uRadius")),
-      m_weights(m_program.uniform("uWeights")),
       m_emptyVertexArray(makeVertexArray(gl)),
       m_sampler(makeSampler(gl))
 {
@@ -61,26 +64,26 @@ int MomentsBlurPass::render(const MomentsMap& map, int width)
         PassState state;
         state.viewport = QRect(0, 0, map.size(), map.size());
         applyPassState(m_gl, state);
-        m_program.bind();
-        m_program.set(m_source, 0);
-        m_program.set(m_program.uniform("uUvOffset"), glm::vec2(0.0f));
-        m_program.set(m_program.uniform("uUvScale"), glm::vec2(1.0f));
-        m_program.set(m_radius, int(w.size()) - 1);
-        m_gl->glUniform1fv(m_weights, kMaxWeights, padded);
+        const int radius = int(w.size()) - 1;
+        std::unique_ptr<Program>& p = m_programs[radius];
+        if (!p)
+            p = std::make_unique<Program>(m_gl, radius);
+        p->program.bind();
+        p->program.set(p->source, 0);
+        m_gl->glUniform1fv(p->weights, kMaxWeights, padded);
         m_gl->glActiveTexture(GL_TEXTURE0);
         m_gl->glBindSampler(0, m_sampler.id());
         m_gl->glBindVertexArray(m_emptyVertexArray.id());
-        const float texel = 1.0f / float(map.size());
         // Horizontal into the scratch texture, vertical back into level 0 of the map.
         const struct {
             GLuint framebuffer;
             GLuint source;
-            glm::vec2 step;
-        } axes[2] = {{map.scratchFramebuffer(), map.texture(), {texel, 0.0f}}, {map.framebuffer(), map.scratchTexture(), {0.0f, texel}}};
+            GLint step[2];
+        } axes[2] = {{map.scratchFramebuffer(), map.texture(), {1, 0}}, {map.framebuffer(), map.scratchTexture(), {0, 1}}};
         for (const auto& axis : axes) {
             m_gl->glBindFramebuffer(GL_FRAMEBUFFER, axis.framebuffer);
             m_gl->glBindTexture(GL_TEXTURE_2D, axis.source);
-            m_program.set(m_step, axis.step);
+            m_gl->glUniform2iv(p->step, 1, axis.step);
             m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
             ++draws;
         }

@@ -3,6 +3,8 @@
 #include "MomentsMap.h"
 #include "ShaderProgram.h"
 
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace shadowlab {
@@ -21,9 +23,15 @@ public:
     static std::vector<float> weights(int width);
 
 private:
+    // One variant per radius (compiled on first use), so the tap loop unrolls.
+    struct Program {
+        Program(GlFunctions* gl, int radius);
+        ShaderProgram program;
+        GLint source, step, weights;
+    };
+
     GlFunctions* m_gl;
-    ShaderProgram m_program;
-    GLint m_source, m_step, m_radius, m_weights;
+    std::map<int, std::unique_ptr<Program>> m_programs;
     GlVertexArray m_emptyVertexArray;
     GlSampler m_sampler;
 };
