@@ -1,5 +1,7 @@
 #include "MomentMath.h"
 
+#include "ShadowTechnique.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,16 +10,7 @@ namespace shadowlab {
 
 bool isMomentTechnique(FilterMode mode)
 {
-    switch (mode) {
-    case FilterMode::Vsm:
-    case FilterMode::Evsm2:
-    case FilterMode::Evsm4:
-    case FilterMode::Msm:
-    case FilterMode::Esm:
-        return true;
-    default:
-        return false;
-    }
+    return shadowTechnique(mode).map == ShadowMapKind::Moments;
 }
 
 double maxExponent(FilterMode mode, MomentFormat format)

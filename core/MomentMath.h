@@ -13,7 +13,7 @@ struct MomentWarp {
     double negative = 0.0;  // evsm4: -exp(-negative * d)
 };
 
-// Whether `mode` reads a moments map (its row's map kind), without the technique table.
+// Whether `mode` reads a moments map (its row's map kind in the technique table).
 bool isMomentTechnique(FilterMode mode);
 
 // The largest exponent whose warp `mode` stores in `format` without overflowing: evsm stores

@@ -598,7 +598,7 @@ std::vector<SettingsIssue> validate(const Settings& s)
             if (used && value > limit)
                 warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(key),
                                     QStringLiteral("%1 does not fit moments.format=%2 for %3: %4 is used; choose moments.format=32 for larger exponents")
-                                        .arg(formatNumber(value), toString(s.moments.format), toString(s.filter.mode), formatNumber(limit))});
+                                        .arg(formatNumber(value), toString(s.moments.format), toString(s.filter.mode), QString::number(limit, 'f', 2))});
         }
     }
     errors.insert(errors.end(), warnings.begin(), warnings.end());
