@@ -28,6 +28,26 @@ std::vector<SweepEntry> filterSweep()
     return s;
 }
 
+// Every moment technique of the table at its defaults, over blur widths and both moments
+// formats, and those that reduce light bleeding once more without it.
+std::vector<SweepEntry> filterableSweep()
+{
+    std::vector<SweepEntry> s;
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        if (technique.map != ShadowMapKind::Moments)
+            continue;
+        const QString mode = QStringLiteral("filter.mode=") + technique.key;
+        for (const char* bits : {"32", "16"}) {
+            for (const char* blur : {"0", "3", "7"})
+                s.push_back({QStringLiteral("%1 %2-bit blur %3").arg(technique.key, QLatin1String(bits), QLatin1String(blur)),
+                             {mode, QStringLiteral("moments.format=%1").arg(QLatin1String(bits)), QStringLiteral("moments.blur=%1").arg(QLatin1String(blur))}});
+        }
+        if (technique.parameters.contains(QStringLiteral("filter.bleeding")))
+            s.push_back({QStringLiteral("%1 without bleeding reduction").arg(technique.key), {mode, QStringLiteral("filter.bleeding=0")}});
+    }
+    return s;
+}
+
 std::vector<SweepEntry> resolutionSweep()
 {
     std::vector<SweepEntry> s;
@@ -200,7 +220,7 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra"), QStringLiteral("cascades")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
@@ -219,6 +239,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
         return penumbraSweep();
     if (nameOrFile == u"cascades")
         return cascadesSweep();
+    if (nameOrFile == u"filterable")
+        return filterableSweep();
     QByteArray bytes;
     try {
         bytes = readInputFile(nameOrFile, QStringLiteral("sweep file"));

@@ -347,6 +347,32 @@ std::vector<AuditCase> makeCatalogue()
     add("sub-texel occluder", "at most a speck, nothing spurious elsewhere; error <= 1 %",
         onScene(groundAndCube(QStringLiteral("speck"), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
                 accurate(presetSettings(QStringLiteral("seed")), 0.01)));
+    // The moment techniques' own extremes, in both moments formats: depth squeezed into a sliver
+    // of a huge range (the moments lose their precision), a caster touching its receiver (where
+    // filtered moments leak by design) and an occluder smaller than a texel. Each must stay finite.
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        if (technique.map != ShadowMapKind::Moments)
+            continue;
+        for (const char* bits : {"32", "16"}) {
+            const QStringList mode{QStringLiteral("filter.mode=") + technique.key, QStringLiteral("moments.format=%1").arg(QLatin1String(bits))};
+            const QString name = QStringLiteral("%1 %2-bit").arg(technique.key, QLatin1String(bits));
+            c.push_back({name + QStringLiteral(": huge depth range (manual ortho volume, near -1e6, far 1e6)"),
+                         QStringLiteral("finite; error reported"),
+                         accurate(seedWith(mode + QStringList{"light.fit=manual", "light.near=-1e6", "light.far=1e6"}), 0.0, Judge::FiniteOnly)});
+            c.push_back({name + QStringLiteral(": perspective light, far/near 1e7"), QStringLiteral("finite; error reported"),
+                         accurate(seedWith(mode + QStringList{"light.projection=perspective", "light.fit=manual", "light.near=0.001", "light.far=1e4"}),
+                                  0.0, Judge::FiniteOnly)});
+            c.push_back({name + QStringLiteral(": caster touching its receiver"), QStringLiteral("finite; error reported (filtered moments leak at contacts)"),
+                         onScene(groundAndCube(QStringLiteral("contact"), glm::scale(glm::dmat4(1.0), glm::dvec3(0.5))),
+                                 accurate(seedWith(mode + QStringList{"light.position=-4,4,0", "light.target=0,-0.5,0", "camera.position=0,4,1.5",
+                                                                      "camera.target=0,-0.5,0"}),
+                                          0.0, Judge::FiniteOnly))});
+            c.push_back({name + QStringLiteral(": sub-texel occluder"), QStringLiteral("finite; error <= 1 %"),
+                         onScene(groundAndCube(QStringLiteral("speck"),
+                                               glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
+                                 accurate(seedWith(mode), 0.01))});
+        }
+    }
     add("degenerate (zero-area) triangle in a mesh", "ignored: finite; error <= 2 %",
         onScene(degenerateTriangleScene(), accurate(presetSettings(QStringLiteral("seed")), 0.02)));
     add("fit = scene on seed", "smaller texels than the classic +-10 volume, error no worse (+0.5 %)", [](HeadlessRenderer& h) {

@@ -36,6 +36,8 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
             if (f.shadowPassRendered) {
                 s.shadow.push_back(f.shadowPassMs);
                 s.shadowWall.push_back(f.shadowPassWallMs);
+                if (f.blurPassWallMs > 0.0)
+                    s.blurWall.push_back(f.blurPassWallMs);
                 ++s.shadowPassesRun;
                 s.shadowDraws = f.shadowDraws;
             }

@@ -20,6 +20,7 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
 // What repeated frames of one configuration cost, per pass; GPU and wall times in ms.
 struct FrameSamples {
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
+    std::vector<double> blurWall;   // of shadowWall, the moments blur and mips (moment techniques only)
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;

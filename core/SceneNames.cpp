@@ -4,7 +4,8 @@ namespace shadowlab {
 
 const QStringList& sceneNames()
 {
-    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"), QStringLiteral("city")};
+    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"),
+                                   QStringLiteral("bleeding"), QStringLiteral("city")};
     return names;
 }
 

@@ -16,7 +16,8 @@ enum class CascadeSplit { Uniform, Logarithmic, Practical };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
-enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss };
+enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Vsm, Evsm2, Evsm4, Msm, Esm };
+enum class MomentFormat { Rgba16F, Rgba32F };
 enum class ShadingModel { Phong, BlinnPhong };
 
 inline constexpr int kMaxCascades = 4;
@@ -93,8 +94,25 @@ struct FilterSettings {
     // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
     // costs more with every shadow pass than the skipped taps save (`shadowlab report`).
     bool earlyOut = false;
+    // The moment techniques (vsm, evsm2, evsm4, msm, esm), read at lookup: changing them needs
+    // no new moments pass.
+    double bleeding = 0.2;                  // [0, 0.95]; light-bleeding reduction: visibility below it reads as shadow
+    double momentBias = 1e-4;               // [0, 0.01]; least variance (vsm; evsm relative to w^2) or the blend toward 0.5 (msm)
+    double positiveExponent = 40.0;         // [0, 80]; esm/evsm warp, clamped to what moments.format holds
+    double negativeExponent = 5.0;          // [0, 80]; evsm4's negative warp, clamped likewise
 
     bool operator==(const FilterSettings&) const = default;
+};
+
+// The moments pass of the moment techniques: what it stores and how it is prefiltered.
+struct MomentSettings {
+    MomentFormat format = MomentFormat::Rgba32F;
+    int blur = 3;                           // separable Gaussian width in texels: 0 (none) or odd in [1, 31]
+    bool mipmaps = false;                   // trilinear lookups from a mip chain built after the blur
+    int anisotropy = 1;                     // [1, 16]; 1 is off; clamped to what the driver offers
+    int view = 1;                           // [1, 4]; the moment the depth-map view shows
+
+    bool operator==(const MomentSettings&) const = default;
 };
 
 struct ShadowSettings {
@@ -143,6 +161,7 @@ struct Settings {
     MapSettings map;
     BiasSettings bias;
     FilterSettings filter;
+    MomentSettings moments;
     ShadowSettings shadow;
     ShadingSettings shading;
     CameraSettings camera;

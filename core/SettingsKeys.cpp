@@ -8,6 +8,7 @@
 #include "SettingsError.h"
 #include "ShadowTechnique.h"
 #include "ShadowViews.h"
+#include "MomentMath.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -23,6 +24,7 @@
 #include <limits>
 #include <functional>
 #include <optional>
+#include <tuple>
 
 namespace shadowlab {
 
@@ -224,6 +226,7 @@ const QStringList kFilterNames = [] {
         names << t.key;
     return names;
 }();
+const QStringList kMomentFormatNames{QStringLiteral("16"), QStringLiteral("32")};
 const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
 
 Entry sceneKey()
@@ -321,6 +324,34 @@ Entry parameterKey(const TechniqueParameter& p)
                      help.constData());
 }
 
+// The blur width: 0 for none or an odd tap count, so the kernel centres on the texel.
+Entry blurKey()
+{
+    const QString k = QStringLiteral("moments.blur");
+    const QString rangeText = QStringLiteral("0 | odd in [1, %1]").arg(kMaxMomentBlur);
+    auto check = [rangeText](int v) -> std::optional<QString> {
+        if (v < 0 || v > kMaxMomentBlur || (v != 0 && v % 2 == 0))
+            return QStringLiteral("%1 is not allowed; use 0 (no blur) or an odd width in [1, %2], e.g. 3 or 7").arg(v).arg(kMaxMomentBlur);
+        return std::nullopt;
+    };
+    return {SettingKey{k, QStringLiteral("integer"), rangeText,
+                       QStringLiteral("Separable Gaussian blur of the moments map, its width in texels (moment techniques): wider "
+                                      "softens the penumbra and hides aliasing for two full-map passes of that many taps, and "
+                                      "spreads light bleeding further; 0 leaves the map as rendered"),
+                       {}, 0.0, double(kMaxMomentBlur)},
+            [](const Settings& s) { return QString::number(s.moments.blur); },
+            [check, k, rangeText](Settings& s, const QString& v) {
+                bool ok = false;
+                const int value = v.trimmed().toInt(&ok);
+                if (!ok)
+                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(displayText(v), rangeText));
+                if (auto problem = check(value))
+                    throw SettingsError(k, *problem);
+                s.moments.blur = value;
+            },
+            [check](const Settings& s) { return check(s.moments.blur); }};
+}
+
 std::vector<Entry> makeEntries()
 {
     std::vector<Entry> e;
@@ -372,6 +403,20 @@ std::vector<Entry> makeEntries()
         e.push_back(parameterKey(parameter));
     e.push_back(boolKey("filter.early_out", [](auto& s) -> auto& { return s.filter.earlyOut; },
                         "Penumbra-only filtering: pcf and poisson skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
+    e.push_back(choiceKey<MomentFormat>("moments.format", kMomentFormatNames, [](auto& s) -> auto& { return s.moments.format; },
+                                        "Bits per channel of the moments map (moment techniques): 16 halves memory and bandwidth, but "
+                                        "holds only small exponents (evsm <= 5.54, esm <= 11.08) and needs a larger filter.moment_bias; "
+                                        "msm then stores Peters and Klein's optimised quantisation"));
+    e.push_back(blurKey());
+    e.push_back(boolKey("moments.mipmaps", [](auto& s) -> auto& { return s.moments.mipmaps; },
+                        "Mipmaps of the moments map (moment techniques), built after each moments pass: trilinear lookups keep "
+                        "distant and grazing shadows smooth instead of aliased, at the cost of a mip build and blurrier far shadows"));
+    e.push_back(integerKey("moments.anisotropy", 1, 16, false, [](auto& s) -> auto& { return s.moments.anisotropy; },
+                           "Anisotropic filtering of the moments map (moment techniques), 1 for off: sharper shadows on receivers seen "
+                           "at grazing angles for more texture reads; capped at what the driver offers"));
+    e.push_back(integerKey("moments.view", 1, 4, false, [](auto& s) -> auto& { return s.moments.view; },
+                           "Which stored moment the depth-map view shows for a moment technique: 1 is depth (unwarped for esm and "
+                           "evsm, linear for a perspective light), 2 to 4 the higher ones as stored (exponential ones on a log scale)"));
     e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
                         "Shadows on or off: off skips the shadow pass entirely"));
     e.push_back(integerKey("shadow.cascades", 1, kMaxCascades, false, [](auto& s) -> auto& { return s.shadow.cascades; },
@@ -573,6 +618,7 @@ QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
 QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
+QString toString(MomentFormat value) { return kMomentFormatNames.value(int(value)); }
 
 std::vector<SettingsIssue> validate(const Settings& s)
 {
@@ -610,6 +656,11 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (s.filter.earlyOut && usesShadowViews(s))
         error("filter.early_out", QStringLiteral("penumbra-only filtering reads a single map's min/max mip; turn filter.early_out off with "
                                                  "cascades or a point light"));
+    if (shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments && usesShadowViews(s))
+        error("filter.mode", QStringLiteral("filter.mode=%1 filters one moments map, and cascades or a point light need several; choose a "
+                                            "depth-compare filter (hard, pcf, poisson, pcss, ...), or set shadow.cascades=1 with a "
+                                            "directional or spot light")
+                                 .arg(toString(s.filter.mode)));
     if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
         error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
 
@@ -628,6 +679,16 @@ std::vector<SettingsIssue> validate(const Settings& s)
         warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.near"),
                             QStringLiteral("far/near = %1 leaves a 24-bit depth map almost no precision far away; raise light.near or use map.format=depth32f")
                                 .arg(formatNumber(s.light.farPlane / s.light.nearPlane))});
+    if (errors.empty() && isMomentTechnique(s.filter.mode)) {
+        const double limit = maxExponent(s.filter.mode, s.moments.format);
+        for (const auto& [key, value, used] : {std::tuple{"filter.exponent_positive", s.filter.positiveExponent, usesParameter(s.filter, QStringLiteral("filter.exponent_positive"))},
+                                               std::tuple{"filter.exponent_negative", s.filter.negativeExponent, usesParameter(s.filter, QStringLiteral("filter.exponent_negative"))}}) {
+            if (used && value > limit)
+                warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(key),
+                                    QStringLiteral("%1 does not fit moments.format=%2 for %3: %4 is used; choose moments.format=32 for larger exponents")
+                                        .arg(formatNumber(value), toString(s.moments.format), toString(s.filter.mode), QString::number(limit, 'f', 2))});
+        }
+    }
     errors.insert(errors.end(), warnings.begin(), warnings.end());
     return errors;
 }

@@ -66,5 +66,6 @@ QString toString(DepthFormat value);
 QString toString(BiasSpace value);
 QString toString(FilterMode value);
 QString toString(ShadingModel value);
+QString toString(MomentFormat value);
 
 } // namespace shadowlab

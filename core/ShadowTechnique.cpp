@@ -1,5 +1,7 @@
 #include "ShadowTechnique.h"
 
+#include "MomentMath.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -15,6 +17,73 @@ std::vector<TechniqueUniform> noUniforms(const Settings&) { return {}; }
 std::function<QString(const FilterSettings&)> plainLabel(const char* key)
 {
     return [k = QString::fromLatin1(key)](const FilterSettings&) { return k; };
+}
+
+// What every moment technique's GLSL reads: the moments format decides the variant (16-bit
+// quantisation), the rest are uniforms, so tuning them needs neither a new variant nor a new
+// moments pass.
+QStringList momentDefines(const Settings& s)
+{
+    return s.moments.format == MomentFormat::Rgba16F ? QStringList{QStringLiteral("MOMENTS_16BIT")} : QStringList{};
+}
+
+std::vector<TechniqueUniform> momentUniforms(const Settings& s)
+{
+    const MomentWarp warp = momentWarp(s);
+    return {{"uBleeding", float(s.filter.bleeding)},
+            {"uMomentBias", float(s.filter.momentBias)},
+            {"uExponentPositive", float(warp.positive)},
+            {"uExponentNegative", float(warp.negative)}};
+}
+
+TechniqueVariation momentVariation(const QString& label, const QString& key, QStringList more = {})
+{
+    return {label, QStringList{QStringLiteral("filter.mode=") + key} + more};
+}
+
+// Filterable maps: a moments pass stores a few powers (or exponential warps) of depth, a
+// blur and mips prefilter them, and the lit pass reconstructs how much of the filtered
+// footprint lies behind the receiver from a single filtered lookup.
+void addMomentTechniques(std::vector<ShadowTechnique>& t)
+{
+    const QString bleeding = QStringLiteral("filter.bleeding"), bias = QStringLiteral("filter.moment_bias");
+    const QString positive = QStringLiteral("filter.exponent_positive"), negative = QStringLiteral("filter.exponent_negative");
+    t.push_back({FilterMode::Vsm, QStringLiteral("vsm"), QStringLiteral("VSM"),
+                 QStringLiteral("vsm (2 moments, 1 filtered tap): variance shadow maps; blurred and mipmapped like a texture, "
+                                "but light bleeds where occluders overlap at different depths"),
+                 QStringLiteral("shadow/vsm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias},
+                 momentDefines, momentUniforms, plainLabel("vsm"),
+                 {momentVariation(QStringLiteral("vsm"), QStringLiteral("vsm")),
+                  momentVariation(QStringLiteral("vsm 16-bit"), QStringLiteral("vsm"), {QStringLiteral("moments.format=16")})}});
+    t.push_back({FilterMode::Evsm2, QStringLiteral("evsm2"), QStringLiteral("EVSM 2"),
+                 QStringLiteral("evsm2 (2 moments of exp(c d), 1 filtered tap): exponential variance shadow maps; the warp "
+                                "shrinks light bleeding, at the cost of exponents the format must hold"),
+                 QStringLiteral("shadow/evsm2.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias, positive},
+                 momentDefines, momentUniforms,
+                 [](const FilterSettings& f) { return QStringLiteral("evsm2 c%1").arg(f.positiveExponent); },
+                 {momentVariation(QStringLiteral("evsm2"), QStringLiteral("evsm2"))}});
+    t.push_back({FilterMode::Evsm4, QStringLiteral("evsm4"), QStringLiteral("EVSM 4"),
+                 QStringLiteral("evsm4 (4 moments of exp(c d) and -exp(-c d), 1 filtered tap): both warps, the least light "
+                                "bleeding of the variance family; twice the memory of evsm2"),
+                 QStringLiteral("shadow/evsm4.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments},
+                 {bleeding, bias, positive, negative}, momentDefines, momentUniforms,
+                 [](const FilterSettings& f) { return QStringLiteral("evsm4 c%1/%2").arg(f.positiveExponent).arg(f.negativeExponent); },
+                 {momentVariation(QStringLiteral("evsm4"), QStringLiteral("evsm4")),
+                  momentVariation(QStringLiteral("evsm4 16-bit"), QStringLiteral("evsm4"), {QStringLiteral("moments.format=16")})}});
+    t.push_back({FilterMode::Msm, QStringLiteral("msm"), QStringLiteral("Moment shadow map"),
+                 QStringLiteral("msm (4 moments, Hamburger, 1 filtered tap): moment shadow maps (Peters and Klein 2015); a sharper "
+                                "bound than vsm's, 16-bit with their optimised quantisation"),
+                 QStringLiteral("shadow/msm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias},
+                 momentDefines, momentUniforms, plainLabel("msm"),
+                 {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
+                  momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})}});
+    t.push_back({FilterMode::Esm, QStringLiteral("esm"), QStringLiteral("ESM"),
+                 QStringLiteral("esm (1 moment exp(c d), 1 filtered tap): exponential shadow maps; the cheapest filterable map, "
+                                "but lit near contacts where receiver and occluder are closer than about 1/c of the depth range"),
+                 QStringLiteral("shadow/esm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {positive},
+                 momentDefines, momentUniforms,
+                 [](const FilterSettings& f) { return QStringLiteral("esm c%1").arg(f.positiveExponent); },
+                 {momentVariation(QStringLiteral("esm"), QStringLiteral("esm"))}});
 }
 
 std::vector<ShadowTechnique> makeTechniques()
@@ -78,6 +147,7 @@ std::vector<ShadowTechnique> makeTechniques()
                  {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
                   {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
                  true});
+    addMomentTechniques(t);
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (int(t[i].mode) != int(i))
             throw std::logic_error("the technique table must list techniques in FilterMode order");
@@ -112,6 +182,26 @@ const std::vector<TechniqueParameter>& techniqueParameters()
          QStringLiteral("Radius of the Poisson disk in shadow-map texels (poisson mode): wider is softer at the same cost, "
                         "with sparser taps (noise) and more bias grown for the outer taps"),
          0.5, 32, false, &FilterSettings::radius},
+        {QStringLiteral("filter.bleeding"), QStringLiteral("Bleeding reduction"), QString(),
+         QStringLiteral("Light-bleeding reduction (vsm, evsm, msm): visibility below this reads as full shadow and the rest is "
+                        "stretched over [0, 1]; removes the false light where occluders overlap, at the cost of darker, "
+                        "narrower penumbrae"),
+         0, 0.95, false, &FilterSettings::bleeding},
+        {QStringLiteral("filter.moment_bias"), QStringLiteral("Moment bias"), QString(),
+         QStringLiteral("Moment bias (vsm, evsm, msm): the least variance (vsm: in squared [0, 1] depth; evsm: relative to the "
+                        "squared warped depth) or the weight that blends the moments toward a flat distribution (msm); too "
+                        "little shows acne and noise where the format runs out of precision (16-bit needs about 1e-4), too "
+                        "much lightens shadows near their casters"),
+         0, 0.01, false, &FilterSettings::momentBias, 6},
+        {QStringLiteral("filter.exponent_positive"), QStringLiteral("Positive exponent"), QString(),
+         QStringLiteral("Exponent c of the warp exp(c d) (esm, evsm2, evsm4): larger cuts light bleeding and sharpens contacts, "
+                        "but must fit the format: used as at most 5.54 (evsm) or 11.08 (esm) with moments.format=16, "
+                        "44.3 or 88.7 with 32"),
+         0, 80, false, &FilterSettings::positiveExponent},
+        {QStringLiteral("filter.exponent_negative"), QStringLiteral("Negative exponent"), QString(),
+         QStringLiteral("Exponent of evsm4's second warp -exp(-c d): fixes bleeding the positive warp leaves on near receivers; "
+                        "clamped like filter.exponent_positive (5.54 at 16-bit)"),
+         0, 80, false, &FilterSettings::negativeExponent},
     };
     return parameters;
 }

@@ -25,6 +25,8 @@ enum class ShadowSampler {
     CompareNearest, // one comparison per tap
     CompareLinear,  // a hardware bilinear blend of four comparisons per tap
     RawNearest,     // depth values, no comparison
+    Moments,        // the moments map, filtered (`uniform sampler2D uShadowMoments`): bilinear,
+                    // trilinear with moments.mipmaps, anisotropic with moments.anisotropy
 };
 
 // A setting only some techniques read (a kernel width, a radius, a tap count). Its key joins
@@ -39,6 +41,7 @@ struct TechniqueParameter {
     double maximum = 0.0;
     bool oddOnly = false;   // integers only
     std::variant<int FilterSettings::*, double FilterSettings::*> field;   // where the value lives
+    int decimals = 2;       // the dock's precision for a number
 };
 
 // A uniform a technique's GLSL reads, with its value for the current settings (a radius, a

@@ -1,6 +1,8 @@
 #include "DepthViewPass.h"
 
+#include "MomentMath.h"
 #include "PassState.h"
+#include "ShadowTechnique.h"
 
 #include <algorithm>
 
@@ -14,6 +16,17 @@ DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       uvOffset(program.uniform("uUvOffset")),
       uvScale(program.uniform("uUvScale")),
       span(program.uniform("uSpan"))
+{
+}
+
+DepthViewPass::MomentsProgram::MomentsProgram(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsview.frag"), defines),
+      moments(program.uniform("uMoments")),
+      channel(program.uniform("uChannel")),
+      exponentPositive(program.uniform("uExponentPositive")),
+      exponentNegative(program.uniform("uExponentNegative")),
+      uvOffset(program.uniform("uUvOffset")),
+      uvScale(program.uniform("uUvScale"))
 {
 }
 
@@ -82,8 +95,39 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
     p.program.set(p.uvScale, glm::vec2(float(visible.width()), float(visible.height())));
     const DepthSpan shown = span.value_or(DepthSpan{});
     p.program.set(p.span, glm::vec2(float(shown.nearest), float(shown.farthest)));
+    draw(depthTexture);
+}
+
+void DepthViewPass::renderMoments(GLuint momentsTexture, const Settings& settings, const RenderTarget& target, const QRectF& visible,
+                                  const QRect& viewport)
+{
+    const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
+    QStringList defines{QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile), QStringLiteral("MOMENTS_VIEW")};
+    defines << technique.defines(settings);
+    std::unique_ptr<MomentsProgram>& variant = m_momentsPrograms[defines.join(QLatin1Char(';'))];
+    if (!variant)
+        variant = std::make_unique<MomentsProgram>(m_gl, defines);
+    MomentsProgram& p = *variant;
+
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    PassState state;
+    state.viewport = viewport.isEmpty() ? QRect(QPoint(0, 0), target.size) : viewport;
+    applyPassState(m_gl, state);
+    const MomentWarp warp = momentWarp(settings);
+    p.program.bind();
+    p.program.set(p.moments, 0);
+    p.program.set(p.channel, settings.moments.view - 1);
+    p.program.set(p.exponentPositive, float(warp.positive));
+    p.program.set(p.exponentNegative, float(warp.negative));
+    p.program.set(p.uvOffset, glm::vec2(float(visible.x()), float(visible.y())));
+    p.program.set(p.uvScale, glm::vec2(float(visible.width()), float(visible.height())));
+    draw(momentsTexture);
+}
+
+void DepthViewPass::draw(GLuint texture)
+{
     m_gl->glActiveTexture(GL_TEXTURE0);
-    m_gl->glBindTexture(GL_TEXTURE_2D, depthTexture);
+    m_gl->glBindTexture(GL_TEXTURE_2D, texture);
     m_gl->glBindSampler(0, m_sampler.id());
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -3,6 +3,7 @@
 #include "DepthRangePass.h"
 #include "LightMath.h"
 #include "RenderTarget.h"
+#include "Settings.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
@@ -50,7 +51,19 @@ public:
     // the picture's text and outlines, painted with QPainter's raster engine.
     void renderOverlay(const RenderTarget& target, const QImage& image);
 
+    // Draws moment `settings.moments.view` of a moments map as grey, decoded by the moment
+    // technique `settings.filter.mode` (exponential warps undone to depth).
+    void renderMoments(GLuint momentsTexture, const Settings& settings, const RenderTarget& target,
+                       const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0), const QRect& viewport = QRect());
+
 private:
+    struct MomentsProgram {
+        MomentsProgram(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint moments, channel, exponentPositive, exponentNegative, uvOffset, uvScale;
+    };
+    void draw(GLuint texture);
+
     struct Program {
         Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
@@ -65,6 +78,7 @@ private:
     GlTexture m_overlay;                        // built on first renderOverlay()
     // Variants by their defines (perspective, reversed depth, legend), compiled when first shown.
     std::map<QString, std::unique_ptr<Program>> m_programs;
+    std::map<QString, std::unique_ptr<MomentsProgram>> m_momentsPrograms;   // by technique variant
 };
 
 } // namespace shadowlab

@@ -14,6 +14,7 @@ struct FrameStats {
     double shadowPassWallMs = 0.0;      // wall time of each pass between glFinish calls; only with
     double litPassWallMs = 0.0;         // TimingMode::Finish (a software renderer's timer queries miss
                                         // its deferred rasterisation, the wall clock does not)
+    double blurPassWallMs = 0.0;        // of shadowPassWallMs, the moments blur and mip build (moment techniques)
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
     int litDraws = 0;

@@ -36,6 +36,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       receives(program.uniform("uReceives")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
+      shadowMoments(program.uniform("uShadowMoments")),
       shadowTexel(program.uniform("uShadowTexel")),
       shadowUvWorld(program.uniform("uShadowUvWorld")),
       shadowDepthRange(program.uniform("uShadowDepthRange")),
@@ -160,11 +161,12 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
 }
 
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-                    const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange)
+                    const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
+                    const MomentsMap* moments)
 {
-    if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments)
-        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which this renderer does not build yet")
-                              .arg(toString(settings.filter.mode)));
+    if (settings.shadow.enabled && map != nullptr && shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments
+        && (moments == nullptr || moments->size() != map->size()))
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
     const bool readsRange = usesDepthRange(settings) && map != nullptr;
     if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
         throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
@@ -221,10 +223,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
         for (std::size_t i = 0; i < samplers.size(); ++i) {
             const GLuint unit = kShadowUnit + GLuint(i);
-            p.program.set(samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap, int(unit));
+            const bool readsMoments = samplers[i] == ShadowSampler::Moments;
+            p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap, int(unit));
             m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, map->texture());
-            m_gl->glBindSampler(unit, map->sampler(samplers[i]));
+            m_gl->glBindTexture(GL_TEXTURE_2D, readsMoments ? moments->texture() : map->texture());
+            m_gl->glBindSampler(unit, readsMoments ? moments->sampler() : map->sampler(samplers[i]));
         }
         if (readsRange) {
             const GLuint unit = kShadowUnit + GLuint(samplers.size());

@@ -3,6 +3,7 @@
 #include "DepthRangePass.h"
 #include "GpuScene.h"
 #include "LightMath.h"
+#include "MomentsMap.h"
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
@@ -26,9 +27,12 @@ public:
     // camera-relative position and shadow visibility, and the geometric normal and a mask
     // (1 facing the light, 2 facing away, 0 background). Returns the number of draw calls.
     // `depthRange` is the min/max depth mip of `map` for penumbra-only filtering; it must be
-    // current (built from the map as it is) whenever usesDepthRange(settings).
+    // current (built from the map as it is) whenever usesDepthRange(settings). `moments` is the
+    // moments map a moment technique reads (its sampler ShadowSampler::Moments); `map` still
+    // gives the map's size then.
     int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-               const ShadowMap* map, const RenderTarget& target, bool measure = false, const DepthRangePass* depthRange = nullptr);
+               const ShadowMap* map, const RenderTarget& target, bool measure = false, const DepthRangePass* depthRange = nullptr,
+               const MomentsMap* moments = nullptr);
 
     // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
     // technique that can skip its taps).
@@ -47,7 +51,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, baseColour, receives, shadowMap, shadowDepth, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
+        GLint diffuse, baseColour, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);

@@ -1,6 +1,8 @@
 #include "Renderer.h"
 
 #include "LightFitting.h"
+#include "MomentMath.h"
+#include "ShadowTechnique.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "ShadowViews.h"
@@ -29,7 +31,9 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     ensureValid(settings);
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     computeLightFrame(settings.light);
-    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F;
+    // A moments map keeps its precision in its own format; its pass uses conventional depth.
+    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
+    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !moments;
     const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
     if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
@@ -38,8 +42,17 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     const bool multiView = usesShadowViews(settings);
     const int columns = multiView ? (settings.light.type == LightType::Point ? 3 : std::min(settings.shadow.cascades, 2)) : 1;
     const int rows = multiView ? (settings.light.type == LightType::Point ? 2 : (settings.shadow.cascades + 1) / 2) : 1;
-    if (settings.shadow.enabled)
+    if (settings.shadow.enabled) {
         m_shadowMap.ensureTiles(settings.map.size, columns, rows, settings.map.format, reversed);
+        if (moments) {
+            if (!m_momentsMap) {
+                m_momentsMap = std::make_unique<MomentsMap>(m_gl);
+                m_momentsPass = std::make_unique<MomentsPass>(m_gl);
+                m_momentsBlur = std::make_unique<MomentsBlurPass>(m_gl);
+            }
+            m_momentsMap->ensure(settings.map.size, settings.moments.format, settings.moments.mipmaps, settings.moments.anisotropy);
+        }
+    }
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
         m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
         m_sceneChanged = false;
@@ -86,19 +99,50 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         renderViews(settings, timing, stats);
     } else if (settings.shadow.enabled) {
         m_viewVolumes.clear();
-        const ShadowKey key{m_sceneGeneration, fit.volume, reversed, settings.map.size, settings.map.format,
-                            settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
+        ShadowKey key{m_sceneGeneration, fit.volume, reversed, settings.map.size, settings.map.format,
+                      settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
+        if (moments) {
+            const MomentWarp warp = momentWarp(settings);
+            key.moments = true;
+            key.momentTechnique = settings.filter.mode;
+            key.momentFormat = settings.moments.format;
+            key.exponentPositive = warp.positive;
+            key.exponentNegative = warp.negative;
+            key.blur = settings.moments.blur;
+            key.mipmaps = settings.moments.mipmaps;
+            key.cullFront = false;      // the moments pass draws every face, with no offset
+            key.polygonFactor = key.polygonUnits = 0.0;
+        }
         if (m_shadowKey != key && !fit.anythingToShadow) {
             // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
-            m_depthPass.clear(m_shadowMap, reversed);
+            if (moments)
+                m_momentsPass->clear(light, settings, *m_momentsMap);
+            else
+                m_depthPass.clear(m_shadowMap, reversed);
             m_shadowKey = key;
             ++m_mapGeneration;
         } else if (m_shadowKey != key) {
             QElapsedTimer wall;
             wall.start();
             m_shadowTimer.begin();
-            stats.shadowDraws = m_depthPass.render(*m_scene, light, settings.bias, m_shadowMap);
-            m_shadowTimer.end();
+            if (moments) {
+                // Moments pass, blur and mips, timed together as the shadow pass.
+                stats.shadowDraws = m_momentsPass->render(*m_scene, light, settings, *m_momentsMap);
+                QElapsedTimer blur;
+                if (timing == TimingMode::Finish) {
+                    m_gl->glFinish();
+                    blur.start();
+                }
+                m_momentsBlur->render(*m_momentsMap, settings.moments.blur);
+                m_shadowTimer.end();
+                if (timing == TimingMode::Finish) {
+                    m_gl->glFinish();
+                    stats.blurPassWallMs = double(blur.nsecsElapsed()) * 1e-6;
+                }
+            } else {
+                stats.shadowDraws = m_depthPass.render(*m_scene, light, settings.bias, m_shadowMap);
+                m_shadowTimer.end();
+            }
             if (timing == TimingMode::Finish) {
                 m_gl->glFinish();
                 stats.shadowPassWallMs = double(wall.nsecsElapsed()) * 1e-6;
@@ -126,6 +170,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_fit = std::move(fit);
     m_light = light;
     m_camera = camera;
+    m_viewSettings = settings;
 }
 
 void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameStats& stats)
@@ -220,7 +265,7 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     m_litTimer.begin();
     m_litPass.setShadowViews(&m_views);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
-                                      m_depthRange.get());
+                                      m_depthRange.get(), m_momentsMap.get());
     m_litTimer.end();
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
@@ -243,7 +288,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     m_litTimer.begin();
     m_litPass.setShadowViews(&m_views);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
-                                      true, m_depthRange.get());
+                                      true, m_depthRange.get(), m_momentsMap.get());
     m_litTimer.end();
     finishTiming(TimingMode::Finish, stats);
     m_stats = stats;
@@ -267,6 +312,13 @@ void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible,
 {
     if (!m_shadowMap.texture() || target.size.isEmpty())
         return;
+    // What the technique stores: the moments for a moment technique, else the depth.
+    if (m_momentsMap && m_viewSettings.shadow.enabled && shadowTechnique(m_viewSettings.filter.mode).map == ShadowMapKind::Moments) {
+        if (!m_depthView)
+            m_depthView = std::make_unique<DepthViewPass>(m_gl);
+        m_depthView->renderMoments(m_momentsMap->texture(), m_viewSettings, target, visible, viewport);
+        return;
+    }
     const std::optional<DepthSpan> span = depthMapSpan();
     m_depthView->render(m_shadowMap.texture(), m_light, target, visible, viewport, span);
 }

@@ -10,6 +10,9 @@
 #include "LightFitting.h"
 #include "LitPass.h"
 #include "MeasureTarget.h"
+#include "MomentsBlurPass.h"
+#include "MomentsMap.h"
+#include "MomentsPass.h"
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
@@ -53,6 +56,8 @@ public:
     const LightFrame& lightFrame() const { return m_light; }
     const CameraFrame& cameraFrame() const { return m_camera; }
     const ShadowMap& shadowMap() const { return m_shadowMap; }
+    // The moments map of the moment techniques; null until one is first used.
+    const MomentsMap* momentsMap() const { return m_momentsMap.get(); }
     // The min/max depth mip of the map for penumbra-only filtering; null until first needed.
     const DepthRangePass* depthRange() const { return m_depthRange.get(); }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
@@ -100,6 +105,15 @@ private:
         double polygonUnits = 0.0;
         int columns = 1;
         int rows = 1;
+        // Moment techniques: what the moments pass stores and how it is prefiltered (all
+        // defaults for depth-compare techniques, which share one depth map).
+        bool moments = false;
+        FilterMode momentTechnique = FilterMode::Hard;
+        MomentFormat momentFormat = MomentFormat::Rgba32F;
+        double exponentPositive = 0.0;
+        double exponentNegative = 0.0;
+        int blur = 0;
+        bool mipmaps = false;
 
         bool operator==(const ShadowKey&) const = default;
     };
@@ -110,6 +124,10 @@ private:
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
+    std::unique_ptr<MomentsMap> m_momentsMap;       // built when a moment technique is first used
+    std::unique_ptr<MomentsPass> m_momentsPass;
+    std::unique_ptr<MomentsBlurPass> m_momentsBlur;
+    Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from
     int m_spanGeneration = -1;          // ... and the written span

@@ -62,6 +62,8 @@ GLuint ShadowMap::sampler(ShadowSampler kind) const
         return m_compareLinear.id();
     case ShadowSampler::RawNearest:
         return m_raw.id();
+    case ShadowSampler::Moments:
+        return 0;   // the moments map's own (MomentsMap::sampler())
     }
     return 0;
 }

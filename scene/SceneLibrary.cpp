@@ -158,6 +158,35 @@ Scene cityScene(const QString& name, int buildings)
     return s;
 }
 
+Scene bleedingScene()
+{
+    // The classic failure of variance shadow maps: thin boards stacked at different heights
+    // over a ground, each partly over the shadow of the one above. Where a receiver sees two
+    // occluders at different depths within one filter footprint, Chebyshev's bound lets light
+    // through inside a shadow the ray tracer says is solid.
+    Scene s;
+    s.name = QStringLiteral("bleeding");
+    addGround(s, 0.0);
+    s.meshes.push_back(meshes::cube());
+    const int cube = int(s.meshes.size() - 1);
+    auto board = [&](const char* name, glm::dvec3 centre, double halfX, double halfZ, double angle, double halfY = 0.03) {
+        glm::dmat4 m = glm::translate(glm::dmat4(1.0), centre);
+        m = glm::rotate(m, glm::radians(angle), glm::dvec3(0.0, 1.0, 0.0));
+        m = glm::scale(m, glm::dvec3(halfX, halfY, halfZ));
+        s.objects.push_back({QString::fromLatin1(name), cube, m, TextureKind::Wood, true});
+    };
+    // Light bleeds most where the lower occluder is close to the receiver and the upper one
+    // far above it: the low board straddles the high board's edge a hand's width over the ground.
+    board("high board", {0.0, 3.0, 0.0}, 1.6, 1.6, 15.0);
+    board("middle board", {-0.3, 1.6, -0.6}, 1.0, 0.5, -20.0);
+    board("low board", {1.45, 0.25, 0.55}, 0.45, 1.5, 15.0);
+    board("low bar", {-0.9, 0.35, 0.7}, 0.2, 1.3, 40.0);
+    // A block resting on the ground, under the high board: its contact shadow is where
+    // exponential warps leak.
+    board("resting block", {0.2, 0.2, 1.1}, 0.2, 0.2, 10.0, 0.2);
+    return s;
+}
+
 } // namespace
 
 std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, double step)
@@ -190,6 +219,8 @@ Scene buildScene(const QString& name)
         return cubesScene();
     if (name == u"occluder")
         return occluderScene();
+    if (name == u"bleeding")
+        return bleedingScene();
     throw SettingsError(QStringLiteral("scene"),
                         QStringLiteral("'%1' is not a scene; choose one of %2").arg(name, sceneNames().join(QStringLiteral(" | "))));
 }
@@ -248,6 +279,18 @@ Settings presetSettings(const QString& name)
         s.light.farPlane = 10.0;
         s.camera.position = {0.0, 5.0, 4.5};
         s.camera.target = {0.0, 0.0, 0.0};
+        return s;
+    }
+    if (name == u"bleeding") {
+        // Nearly overhead, so each board's shadow falls inside the one above's; the camera looks
+        // down past the boards' edges at the ground they shadow.
+        s.light.position = {-1.0, 8.0, -0.6};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 4.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 10.0;
+        s.camera.position = {4.6, 2.4, 5.4};
+        s.camera.target = {0.2, 0.5, 0.2};
         return s;
     }
     return s;

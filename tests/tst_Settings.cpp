@@ -90,7 +90,7 @@ private Q_SLOTS:
         QTest::newRow("kernel 11") << "filter.kernel" << "11" << "[1, 9]";
         QTest::newRow("map too small") << "map.size" << "8" << "[16, 16384]";
         QTest::newRow("map huge") << "map.size" << "100000" << "[16, 16384]";
-        QTest::newRow("unknown filter") << "filter.mode" << "vsm" << "hard | pcf";
+        QTest::newRow("unknown filter") << "filter.mode" << "shadow-volumes" << "hard | pcf";
         QTest::newRow("unknown scene") << "scene" << "sponza" << "seed";
         QTest::newRow("unknown fit") << "light.fit" << "auto" << "manual | scene";
         QTest::newRow("normal offset 9") << "bias.normal" << "9" << "[0, 8]";

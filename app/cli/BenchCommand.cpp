@@ -28,6 +28,7 @@ struct Phase {
     std::vector<CameraSettings> cameraPath;     // a moving camera (empty: still)
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
+    std::vector<double> blurWall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
     FrameStats last;
@@ -74,6 +75,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.lit = std::move(s.lit);
         p.shadowWall = std::move(s.shadowWall);
         p.litWall = std::move(s.litWall);
+        p.blurWall = std::move(s.blurWall);
         p.wall = std::move(s.wall);
         p.shadowPassesRun = s.shadowPassesRun;
         p.shadowDraws = s.shadowDraws;
@@ -220,6 +222,7 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
                                               {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
                                               {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
+                                              {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
                                               {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
                                               {QStringLiteral("views"), viewsJson(r)}});
             }
@@ -242,6 +245,8 @@ int runBench(const QStringList& arguments)
             out() << statsRow(QStringLiteral("shadow pass (GPU)"), summarize(r.shadow)) << "   run in " << r.shadowPassesRun << "/" << frames
                   << " frames" << (r.shadowPassesRun == 0 ? " (cached)" : QStringLiteral(", %1 draws").arg(r.shadowDraws)) << '\n';
             out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << '\n';
+            if (!r.blurWall.empty())
+                out() << statsRow(QStringLiteral("  of which blur (wall)"), summarize(r.blurWall)) << "   (moments blur and mips)\n";
             out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
             out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
             out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';

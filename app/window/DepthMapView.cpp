@@ -6,6 +6,7 @@
 #include "RenderError.h"
 #include "Renderer.h"
 #include "SceneView.h"
+#include "ShadowTechnique.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -61,13 +62,17 @@ void DepthMapView::onSourceFrame()
     // A new shadow pass changes the map, a camera move the outline of what the camera sees.
     const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
     const int passes = renderer ? renderer->shadowPassCount() : -1;
-    const bool enabled = m_source && m_source->renderedSettings() && m_source->renderedSettings()->shadow.enabled;
+    const Settings* settings = m_source && m_source->renderedSettings() ? &*m_source->renderedSettings() : nullptr;
+    const bool enabled = settings && settings->shadow.enabled;
     const std::optional<glm::dmat4> camera = renderer ? std::optional(renderer->cameraFrame().viewProjection) : std::nullopt;
-    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled && camera == m_seenCamera)
+    // A moment technique's view also changes with the moment shown.
+    const int momentView = settings ? int(settings->filter.mode) * 8 + settings->moments.view : 0;
+    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled && camera == m_seenCamera && momentView == m_seenMomentView)
         return;
     m_seenShadowPasses = passes;
     m_seenShadowsEnabled = enabled;
     m_seenCamera = camera;
+    m_seenMomentView = momentView;
     update();
 }
 
@@ -124,8 +129,12 @@ void DepthMapView::paintGL()
         const DepthMapPicture picture(size());
         const RenderTarget target{defaultFramebufferObject(), size() * devicePixelRatio()};
         const QRectF visible = visibleRect();
-        m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(), target, visible,
-                       picture.glViewport(picture.mapArea(), devicePixelRatio()), m_span);
+        if (showsMoments())
+            m_pass->renderMoments(renderer.momentsMap()->texture(), *m_source->renderedSettings(), target, visible,
+                                  picture.glViewport(picture.mapArea(), devicePixelRatio()));
+        else
+            m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(), target, visible,
+                           picture.glViewport(picture.mapArea(), devicePixelRatio()), m_span);
         m_pass->renderLegend(target, picture.glViewport(picture.legendBar(), devicePixelRatio()));
         // Text and outlines through QPainter's raster engine, blended over the map as one image.
         QImage overlay(target.size, QImage::Format_ARGB32_Premultiplied);
@@ -188,6 +197,33 @@ std::optional<float> DepthMapView::readDepth(int x, int y)
     return depth;
 }
 
+bool DepthMapView::showsMoments() const
+{
+    return hasMap() && m_source->renderer()->momentsMap()
+        && shadowTechnique(m_source->renderedSettings()->filter.mode).map == ShadowMapKind::Moments;
+}
+
+std::optional<std::array<float, 4>> DepthMapView::readMoments(int x, int y)
+{
+    if (!m_readFramebuffer || !showsMoments())
+        return std::nullopt;
+    makeCurrent();
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_readFramebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                 m_source->renderer()->momentsMap()->texture(), 0);
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    std::optional<std::array<float, 4>> moments;
+    if (m_gl->glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+        std::array<float, 4> value{};
+        m_gl->glReadPixels(x, y, 1, 1, GL_RGBA, GL_FLOAT, value.data());
+        moments = value;
+    }
+    m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
+    doneCurrent();
+    return moments;
+}
+
 void DepthMapView::reportTexel(QPointF widgetPosition)
 {
     if (!hasMap()) {
@@ -201,6 +237,15 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
     const int y = int(std::floor(uv.y() * size));
     if (x < 0 || y < 0 || x >= size || y >= size) {
         emit texelHovered(QString());
+        return;
+    }
+    if (showsMoments()) {
+        // The moments as stored (after the blur), which the lit pass filters.
+        if (const auto m = readMoments(x, y))
+            emit texelHovered(QStringLiteral("texel %1, %2 · moments %3, %4, %5, %6")
+                                  .arg(x).arg(y).arg((*m)[0], 0, 'g', 5).arg((*m)[1], 0, 'g', 5).arg((*m)[2], 0, 'g', 5).arg((*m)[3], 0, 'g', 5));
+        else
+            emit texelHovered(QStringLiteral("texel %1, %2").arg(x).arg(y));
         return;
     }
     const std::optional<float> depth = readDepth(x, y);

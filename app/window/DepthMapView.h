@@ -10,6 +10,7 @@
 #include <QPointer>
 #include <QRectF>
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -67,6 +68,10 @@ private:
     QPointF mapPoint(QPointF widgetPosition) const;
     void reportTexel(QPointF widgetPosition);
     std::optional<float> readDepth(int x, int y);
+    // The four stored moments of a moments map's texel (moment techniques).
+    std::optional<std::array<float, 4>> readMoments(int x, int y);
+    // Whether the source's last frame used a moment technique (the view then shows its moments).
+    bool showsMoments() const;
 
     QPointer<SceneView> m_source;
     QMetaObject::Connection m_sourceConnection;
@@ -78,6 +83,7 @@ private:
     int m_spanShadowPass = -1;           // the shadow pass m_span was measured after
     std::optional<DepthSpan> m_span;
     bool m_seenShadowsEnabled = false;
+    int m_seenMomentView = 0;       // filter.mode * 8 + moments.view of the last frame shown
     double m_zoom = 1.0;                 // 1: the whole map fits the pane
     QPointF m_center{0.5, 0.5};          // map coordinates at the pane's centre
     QPointF m_lastMouse;

@@ -80,10 +80,15 @@ const Presentation kPresentations[] = {
     {"shadow.split_lambda", "Split λ", "", 2, 0.0, 1.0},
     {"shadow.distance", "Shadow distance", " wu", 1, 1.0, 2000.0, SliderSpinBox::Scale::Logarithmic},
     {"shadow.blend", "Cascade blend", "", 2, 0.0, 0.5},
+    {"moments.format", "Format", "", 0, 0.0, 0.0},
+    {"moments.mipmaps", "Mipmaps", "", 0, 0.0, 0.0},
+    {"moments.blur", "Blur", " texels", 0, 0.0, 31.0},
+    {"moments.anisotropy", "Anisotropy", "", 0, 1.0, 16.0},
+    {"moments.view", "Moment shown", "", 0, 1.0, 4.0},
 };
 
 // The dock's groups, in order; groupOf() puts each key in one.
-const char* const kGroupOrder[] = {"Light", "Shadow map", "Bias", "Filtering", "Shading", "Reference", "Camera", "Scene"};
+const char* const kGroupOrder[] = {"Light", "Shadow map", "Bias", "Filtering", "Moments map", "Shading", "Reference", "Camera", "Scene"};
 
 QString groupOf(const QString& key)
 {
@@ -91,6 +96,8 @@ QString groupOf(const QString& key)
         return QStringLiteral("Reference");     // only the ray-traced reference reads it
     if (key.startsWith(QLatin1String("shadow.")) && key != u"shadow.enabled")
         return QStringLiteral("Shadow map");    // cascades: how the maps are laid out
+    if (key.startsWith(QLatin1String("moments.")))
+        return QStringLiteral("Moments map");   // how a moment technique's map is stored and prefiltered
     const QString prefix = key.section(QLatin1Char('.'), 0, 0);
     static const QHash<QString, QString> byPrefix{{QStringLiteral("light"), QStringLiteral("Light")},
                                                   {QStringLiteral("map"), QStringLiteral("Shadow map")},
@@ -121,7 +128,7 @@ Look presentation(const QString& key)
     }
     for (const TechniqueParameter& p : techniqueParameters()) {
         if (key == p.key)
-            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : 2, p.minimum, p.maximum};
+            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : p.decimals, p.minimum, p.maximum};
     }
     // A key added to the table without a presentation still gets a field: named by its key,
     // its whole range on the slider.

@@ -1,0 +1,102 @@
+#include "MomentsBlurPass.h"
+
+#include "PassState.h"
+
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kMaxWeights = 16;    // uWeights[16] in momentsblur.frag: widths up to 31
+
+} // namespace
+
+MomentsBlurPass::Program::Program(GlFunctions* gl, int radius)
+    : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsblur.frag"), {QStringLiteral("BLUR_RADIUS %1").arg(radius)}),
+      source(program.uniform("uSource")),
+      step(program.uniform("uStep")),
+      weights(program.uniform("uWeights"))
+{
+}
+
+MomentsBlurPass::MomentsBlurPass(GlFunctions* gl)
+    : m_gl(gl),
+      m_emptyVertexArray(makeVertexArray(gl)),
+      m_sampler(makeSampler(gl))
+{
+    const GLuint s = m_sampler.id();
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    m_gl->glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    labelGlObject(GlLabelKind::Sampler, s, QStringLiteral("moments blur: nearest"));
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    labelGlObject(GlLabelKind::VertexArray, m_emptyVertexArray.id(), QStringLiteral("moments blur: no attributes"));
+    m_gl->glBindVertexArray(0);
+}
+
+std::vector<float> MomentsBlurPass::weights(int width)
+{
+    const int radius = std::max(0, (width - 1) / 2);
+    std::vector<float> w(std::size_t(radius) + 1, 1.0f);
+    if (radius == 0)
+        return w;
+    const double sigma = double(width) / 4.0;
+    double sum = 0.0;
+    for (int i = 0; i <= radius; ++i) {
+        const double g = std::exp(-0.5 * double(i * i) / (sigma * sigma));
+        w[std::size_t(i)] = float(g);
+        sum += i == 0 ? g : 2.0 * g;
+    }
+    for (float& v : w)
+        v = float(double(v) / sum);
+    return w;
+}
+
+int MomentsBlurPass::render(const MomentsMap& map, int width)
+{
+    int draws = 0;
+    const std::vector<float> w = weights(width);
+    if (w.size() > 1) {
+        float padded[kMaxWeights] = {};
+        std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxWeights), padded);
+        PassState state;
+        state.viewport = QRect(0, 0, map.size(), map.size());
+        applyPassState(m_gl, state);
+        const int radius = int(w.size()) - 1;
+        std::unique_ptr<Program>& p = m_programs[radius];
+        if (!p)
+            p = std::make_unique<Program>(m_gl, radius);
+        p->program.bind();
+        p->program.set(p->source, 0);
+        m_gl->glUniform1fv(p->weights, kMaxWeights, padded);
+        m_gl->glActiveTexture(GL_TEXTURE0);
+        m_gl->glBindSampler(0, m_sampler.id());
+        m_gl->glBindVertexArray(m_emptyVertexArray.id());
+        // Horizontal into the scratch texture, vertical back into level 0 of the map.
+        const struct {
+            GLuint framebuffer;
+            GLuint source;
+            GLint step[2];
+        } axes[2] = {{map.scratchFramebuffer(), map.texture(), {1, 0}}, {map.framebuffer(), map.scratchTexture(), {0, 1}}};
+        for (const auto& axis : axes) {
+            m_gl->glBindFramebuffer(GL_FRAMEBUFFER, axis.framebuffer);
+            m_gl->glBindTexture(GL_TEXTURE_2D, axis.source);
+            m_gl->glUniform2iv(p->step, 1, axis.step);
+            m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+            ++draws;
+        }
+        m_gl->glBindVertexArray(0);
+        m_gl->glBindSampler(0, 0);
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    if (map.mipmaps()) {
+        m_gl->glBindTexture(GL_TEXTURE_2D, map.texture());
+        m_gl->glGenerateMipmap(GL_TEXTURE_2D);
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    return draws;
+}
+
+} // namespace shadowlab

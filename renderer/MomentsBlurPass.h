@@ -1,0 +1,39 @@
+#pragma once
+
+#include "MomentsMap.h"
+#include "ShaderProgram.h"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace shadowlab {
+
+// Moments blur: a separable Gaussian over the moments map, horizontal into the map's scratch
+// texture and vertical back, then the mip chain when the map has one.
+class MomentsBlurPass {
+public:
+    explicit MomentsBlurPass(GlFunctions* gl);
+
+    // `width` taps (0 or 1: no blur, only the mips). Returns the number of full-map draws.
+    int render(const MomentsMap& map, int width);
+
+    // The weights of a `width`-tap kernel, centre first then one side (pure; for tests): a
+    // Gaussian of sigma width / 4, normalised so both sides and the centre sum to 1.
+    static std::vector<float> weights(int width);
+
+private:
+    // One variant per radius (compiled on first use), so the tap loop unrolls.
+    struct Program {
+        Program(GlFunctions* gl, int radius);
+        ShaderProgram program;
+        GLint source, step, weights;
+    };
+
+    GlFunctions* m_gl;
+    std::map<int, std::unique_ptr<Program>> m_programs;
+    GlVertexArray m_emptyVertexArray;
+    GlSampler m_sampler;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "GlObject.h"
+#include "Settings.h"
+
+namespace shadowlab {
+
+// The moments texture of the moment techniques (vsm, evsm, msm, esm) and what renders into it:
+// an RGBA16F or RGBA32F colour texture with a depth texture for the moments pass, a second
+// colour texture of the same format for the blur's first axis, and the filtered sampler the lit
+// pass reads it through (bilinear; trilinear with mipmaps; anisotropic where asked and offered).
+class MomentsMap {
+public:
+    explicit MomentsMap(GlFunctions* gl);
+
+    // (Re)allocates when size, format or mipmaps differ and sets the sampler's anisotropy.
+    // Throws SettingsError when the size exceeds GL_MAX_TEXTURE_SIZE and RenderError when the
+    // driver cannot allocate or render to it; the previous map is kept then.
+    void ensure(int size, MomentFormat format, bool mipmaps, int anisotropy);
+
+    int size() const { return m_size; }
+    MomentFormat format() const { return m_format; }
+    bool mipmaps() const { return m_mipmaps; }
+    // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
+    // the extension).
+    float anisotropy() const { return m_anisotropy; }
+    GLuint texture() const { return m_texture.id(); }
+    GLuint framebuffer() const { return m_framebuffer.id(); }
+    // The blur's intermediate target (first axis), and its framebuffer.
+    GLuint scratchTexture() const { return m_scratch.id(); }
+    GLuint scratchFramebuffer() const { return m_scratchFramebuffer.id(); }
+    GLuint sampler() const { return m_sampler.id(); }
+
+private:
+    void allocate(int size, MomentFormat format, bool mipmaps);
+    void configureSampler(bool mipmaps, float anisotropy);
+
+    GlFunctions* m_gl;
+    GlTexture m_texture;
+    GlTexture m_depth;
+    GlTexture m_scratch;
+    GlFramebuffer m_framebuffer;
+    GlFramebuffer m_scratchFramebuffer;
+    GlSampler m_sampler;
+    int m_size = 0;
+    MomentFormat m_format = MomentFormat::Rgba32F;
+    bool m_mipmaps = false;
+    float m_anisotropy = 1.0f;
+    float m_maxAnisotropy = 1.0f;   // the driver's; 1 without anisotropic filtering
+};
+
+} // namespace shadowlab

@@ -1,0 +1,98 @@
+#include "MomentsPass.h"
+
+#include "MomentMath.h"
+#include "PassState.h"
+#include "ShadowTechnique.h"
+
+namespace shadowlab {
+
+MomentsPass::Program::Program(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("moments.vert"), QStringLiteral("moments.frag"), defines),
+      mvp(program.uniform("uLightModelViewProjection")),
+      depthRange(program.uniform("uDepthRange")),
+      farPlane(program.uniform("uFarPlane")),
+      exponentPositive(program.uniform("uExponentPositive")),
+      exponentNegative(program.uniform("uExponentNegative"))
+{
+}
+
+MomentsPass::MomentsPass(GlFunctions* gl) : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl))
+{
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    labelGlObject(GlLabelKind::VertexArray, m_emptyVertexArray.id(), QStringLiteral("moments pass: far plane"));
+    m_gl->glBindVertexArray(0);
+}
+
+QStringList MomentsPass::variantDefines(const Settings& settings, bool perspective)
+{
+    const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
+    QStringList defines{QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile), QStringLiteral("MOMENTS_PASS")};
+    defines << technique.defines(settings);
+    if (perspective)
+        defines << QStringLiteral("LIGHT_PERSPECTIVE");
+    return defines;
+}
+
+MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, const MomentsMap& map)
+{
+    const QStringList defines = variantDefines(settings, light.perspective);
+    std::unique_ptr<Program>& p = m_programs[defines.join(QLatin1Char(';'))];
+    if (!p)
+        p = std::make_unique<Program>(m_gl, defines);
+
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
+    PassState fill;
+    fill.viewport = QRect(0, 0, map.size(), map.size());
+    applyPassState(m_gl, fill);
+    m_gl->glClearDepth(1.0);
+    m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+
+    const MomentWarp warp = momentWarp(settings);
+    p->program.bind();
+    p->program.set(p->depthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
+    p->program.set(p->exponentPositive, float(warp.positive));
+    p->program.set(p->exponentNegative, float(warp.negative));
+    // The far plane's moments everywhere first (computed by the same encoding, so no copy of it
+    // lives on the CPU).
+    p->program.set(p->farPlane, 1);
+    m_gl->glBindVertexArray(m_emptyVertexArray.id());
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+    p->program.set(p->farPlane, 0);
+
+    PassState state = fill;
+    state.depthTest = true;
+    state.depthClamp = true;    // casters before the fitted near plane still cast, as in the depth pass
+    applyPassState(m_gl, state);
+    return *p;
+}
+
+void MomentsPass::clear(const LightFrame& light, const Settings& settings, const MomentsMap& map)
+{
+    begin(light, settings, map);
+    m_gl->glBindVertexArray(0);
+    applyPassState(m_gl, PassState{});
+}
+
+int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map)
+{
+    // Every face: the moments must hold the nearest surface, receivers included, so a lit
+    // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
+    // for acne, would leave the far plane behind receivers, and the exponential warps read
+    // that gap as light).
+    Program& p = begin(light, settings, map);
+    int draws = 0;
+    const auto& objects = scene.scene().objects;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const SceneObject& object = objects[i];
+        if (!object.castsShadow || isOutsideFrustum(light.viewProjection, scene.objectBounds(i), true))
+            continue;
+        p.program.set(p.mvp, glm::mat4(light.depthViewProjection * object.model));
+        scene.draw(object);
+        ++draws;
+    }
+    m_gl->glBindVertexArray(0);
+    applyPassState(m_gl, PassState{});
+    return draws;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "GpuScene.h"
+#include "LightMath.h"
+#include "MomentsMap.h"
+#include "Settings.h"
+#include "ShaderProgram.h"
+
+#include <map>
+#include <memory>
+
+namespace shadowlab {
+
+// Moments pass: renders the casters from the light into a moments map, each fragment encoded by
+// the selected moment technique's GLSL (its row's file with MOMENTS_PASS), over a map first
+// filled with the far plane's moments. Depth clamping and caster culling as in the depth pass;
+// every face is drawn and no polygon offset applied (bias.cull_front and the offsets are the
+// depth map's cures for acne, which moments do not need).
+class MomentsPass {
+public:
+    explicit MomentsPass(GlFunctions* gl);
+
+    // Returns the number of caster draw calls. `settings.filter.mode` must be a moment technique.
+    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map);
+    // Fills the map with the far plane's moments only: every lookup reads lit.
+    void clear(const LightFrame& light, const Settings& settings, const MomentsMap& map);
+
+    // The #defines of the variant for `settings` (exposed for tests).
+    static QStringList variantDefines(const Settings& settings, bool perspective);
+
+private:
+    struct Program {
+        Program(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint mvp, depthRange, farPlane, exponentPositive, exponentNegative;
+    };
+
+    Program& begin(const LightFrame& light, const Settings& settings, const MomentsMap& map);
+
+    GlFunctions* m_gl;
+    GlVertexArray m_emptyVertexArray;   // for the far-plane triangle
+    std::map<QString, std::unique_ptr<Program>> m_programs;
+};
+
+} // namespace shadowlab

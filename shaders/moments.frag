@@ -1,0 +1,12 @@
+// Moments pass: the technique's encoding of the fragment's depth (its row's GLSL file, with
+// MOMENTS_PASS). Casters before the near plane are clamped to it, as in the depth pass.
+in float vDepth;
+
+layout(location = 0) out vec4 fragMoments;
+
+#include SHADOW_TECHNIQUE
+
+void main()
+{
+    fragMoments = encodeMoments(clamp(vDepth, 0.0, 1.0));
+}
