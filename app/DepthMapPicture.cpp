@@ -30,6 +30,7 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     facts.span = span;
     facts.fitted = renderer.lastFit().fitted;
     facts.mapSize = renderer.shadowMap().size();
+    facts.moment = renderer.depthMapMoment();
     if (const Scene* scene = renderer.scene())
         facts.footprint = cameraFootprint(scene->bounds(), renderer.cameraFrame().viewProjection, facts.light.shadowMatrix);
     return facts;
@@ -149,19 +150,29 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(QStringLiteral("empty: far plane, lit")) - 18,
                        legend.top() + 6, 14, metrics.height() - 2);
     painter.setPen(kTextColour);
-    const QString title = facts.span ? QStringLiteral("depth from the light · stretched to the map's contents")
-                                     : QStringLiteral("nothing drawn into the map");
+    const QString title = facts.moment == 1 ? QStringLiteral("moments map, first moment: depth from near (black) to far (white)")
+                          : facts.moment > 1 ? QStringLiteral("moments map, moment %1 (grey, 0 to 1)").arg(facts.moment)
+                          : facts.span      ? QStringLiteral("depth from the light · stretched to the map's contents")
+                                            : QStringLiteral("nothing drawn into the map");
     painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, swatch.left() - kMargin - 6, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
                      metrics.elidedText(title, Qt::ElideRight, swatch.left() - kMargin - 6));
     painter.fillRect(swatch, QColor(77, 77, 77));
     painter.fillRect(swatch, QBrush(QColor(90, 90, 90), Qt::BDiagPattern));
     painter.drawText(QPointF(swatch.right() + 5, titleBaseline), QStringLiteral("empty: far plane, lit"));
+    if (facts.moment > 0) {
+        // A moments map is drawn in grey over the light volume's whole depth range: the bar
+        // says so instead of the depth ramp.
+        QLinearGradient grey(legendBar().topLeft(), legendBar().topRight());
+        grey.setColorAt(0.0, Qt::black);
+        grey.setColorAt(1.0, Qt::white);
+        painter.fillRect(legendBar(), grey);
+    }
     painter.setPen(QPen(kTextColour, 1.0));
     painter.drawRect(QRectF(legendBar()).adjusted(-0.5, -0.5, 0.5, 0.5));
-    const DepthSpan span = facts.span.value_or(DepthSpan{});
+    const DepthSpan span = facts.moment > 0 ? DepthSpan{0.0, 1.0} : facts.span.value_or(DepthSpan{});
     const int rowBaseline = legendBar().bottom() + 3 + metrics.ascent();
-    const QString nearText = QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
-    const QString farText = QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
+    const QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
+    const QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
     painter.drawText(QPointF(legendBar().left(), rowBaseline), nearText);
     painter.drawText(QPointF(legendBar().right() - metrics.horizontalAdvance(farText), rowBaseline), farText);
     painter.restore();

@@ -26,6 +26,7 @@ struct DepthMapFacts {
     bool fitted = false;                    // light.fit=scene shaped the volume
     std::vector<glm::dvec2> footprint;      // the camera's visible region, map coordinates
     int mapSize = 0;
+    int moment = 0;                         // 1-4: the pane shows that moment of a moments map, in grey
 };
 
 // The facts of `renderer`'s last frame, with `span` measured by whoever draws.

@@ -114,7 +114,9 @@ QImage HeadlessRenderer::renderDepthPicture(int side)
     }
     // What the legend says, also as PNG text for scripts: the map's size and the written range.
     image.setText(QStringLiteral("map.size"), QString::number(facts.mapSize));
-    if (facts.span) {
+    if (facts.moment > 0) {
+        image.setText(QStringLiteral("moments.view"), QString::number(facts.moment));
+    } else if (facts.span) {
         image.setText(QStringLiteral("depth.nearest"), QString::number(facts.span->nearest, 'g', 9));
         image.setText(QStringLiteral("depth.farthest"), QString::number(facts.span->farthest, 'g', 9));
     }

@@ -16,6 +16,7 @@
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
+#include "ShadowTechnique.h"
 #include "ShadowViewFrames.h"
 
 #include <QRectF>
@@ -58,6 +59,13 @@ public:
     const ShadowMap& shadowMap() const { return m_shadowMap; }
     // The moments map of the moment techniques; null until one is first used.
     const MomentsMap* momentsMap() const { return m_momentsMap.get(); }
+    // Which moment the depth-map view shows (1-4), or 0 when it shows depth.
+    int depthMapMoment() const
+    {
+        return m_momentsMap && m_viewSettings.shadow.enabled && shadowTechnique(m_viewSettings.filter.mode).map == ShadowMapKind::Moments
+            ? m_viewSettings.moments.view
+            : 0;
+    }
     // The min/max depth mip of the map for penumbra-only filtering; null until first needed.
     const DepthRangePass* depthRange() const { return m_depthRange.get(); }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
