@@ -196,19 +196,22 @@ Entry vec3Key(const char* key, Field field, const char* help)
             [field](const Settings& s) { return checkVec3(field(s)); }};
 }
 
-// An enum spelled by a fixed list of names, in the enum's order.
+// An enum spelled by a fixed list of names, in the enum's order. `then` runs after a value is
+// set, for keys that keep another in step (light.type and light.projection).
 template <typename Enum, typename Field>
-Entry choiceKey(const char* key, QStringList names, Field field, const char* help)
+Entry choiceKey(const char* key, QStringList names, Field field, const char* help, std::function<void(Settings&)> then = {})
 {
     const QString k = QString::fromLatin1(key);
     const QString rangeText = names.join(QStringLiteral(" | "));
     return {SettingKey{k, QStringLiteral("choice"), rangeText, QString::fromUtf8(help), names, 0, double(names.size() - 1)},
             [field, names](const Settings& s) { return names.value(int(field(s))); },
-            [field, names, k, rangeText](Settings& s, const QString& v) {
+            [field, names, k, rangeText, then](Settings& s, const QString& v) {
                 const int index = names.indexOf(v.trimmed().toLower());
                 if (index < 0)
                     throw SettingsError(k, QStringLiteral("'%1' is not allowed%2; choose one of %3").arg(displayText(v), didYouMean(v, names), rangeText));
                 field(s) = Enum(index);
+                if (then)
+                    then(s);
             },
             [](const Settings&) { return std::optional<QString>(); }};
 }
@@ -264,42 +267,28 @@ Entry sceneKey()
 // projection (as older files do) gets the type it meant.
 Entry lightTypeKey()
 {
-    const QString rangeText = kLightTypeNames.join(QStringLiteral(" | "));
-    return {SettingKey{QStringLiteral("light.type"), QStringLiteral("choice"), rangeText,
-                       QStringLiteral("directional: a direction (sun), ortho map or cascades; spot: a position with a cone (light.fov, "
-                                      "light.falloff), unlit outside it; point: a position casting every way through six cube faces, "
-                                      "rendered only where they see a receiver; sets light.projection"),
-                       kLightTypeNames, 0, double(kLightTypeNames.size() - 1)},
-            [](const Settings& s) { return kLightTypeNames.value(int(s.light.type)); },
-            [rangeText](Settings& s, const QString& v) {
-                const int index = kLightTypeNames.indexOf(v.trimmed().toLower());
-                if (index < 0)
-                    throw SettingsError(QStringLiteral("light.type"), QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
-                s.light.type = LightType(index);
-                s.light.projection = s.light.type == LightType::Directional ? LightProjection::Ortho : LightProjection::Perspective;
-            },
-            [](const Settings&) { return std::optional<QString>(); }};
+    return choiceKey<LightType>(
+        "light.type", kLightTypeNames, [](auto& s) -> auto& { return s.light.type; },
+        "directional: a direction (sun), ortho map or cascades; spot: a position with a cone (light.fov, light.falloff), unlit "
+        "outside it; point: a position casting every way through six cube faces, rendered only where they see a receiver; sets "
+        "light.projection",
+        [](Settings& s) {
+            s.light.projection = s.light.type == LightType::Directional ? LightProjection::Ortho : LightProjection::Perspective;
+        });
 }
 
 Entry projectionKey()
 {
-    const QString rangeText = kProjectionNames.join(QStringLiteral(" | "));
-    return {SettingKey{QStringLiteral("light.projection"), QStringLiteral("choice"), rangeText,
-                       QStringLiteral("Ortho for a directional light (sun), perspective for a spot or point light; follows light.type "
-                                      "(setting it chooses directional or, from a directional light, spot)"),
-                       kProjectionNames, 0, double(kProjectionNames.size() - 1)},
-            [](const Settings& s) { return kProjectionNames.value(int(s.light.projection)); },
-            [rangeText](Settings& s, const QString& v) {
-                const int index = kProjectionNames.indexOf(v.trimmed().toLower());
-                if (index < 0)
-                    throw SettingsError(QStringLiteral("light.projection"), QStringLiteral("'%1' is not allowed; choose one of %2").arg(displayText(v), rangeText));
-                s.light.projection = LightProjection(index);
-                if (s.light.projection == LightProjection::Ortho)
-                    s.light.type = LightType::Directional;
-                else if (s.light.type == LightType::Directional)
-                    s.light.type = LightType::Spot;
-            },
-            [](const Settings&) { return std::optional<QString>(); }};
+    return choiceKey<LightProjection>(
+        "light.projection", kProjectionNames, [](auto& s) -> auto& { return s.light.projection; },
+        "Ortho for a directional light (sun), perspective for a spot or point light; follows light.type (setting it chooses "
+        "directional or, from a directional light, spot)",
+        [](Settings& s) {
+            if (s.light.projection == LightProjection::Ortho)
+                s.light.type = LightType::Directional;
+            else if (s.light.type == LightType::Directional)
+                s.light.type = LightType::Spot;
+        });
 }
 
 Entry filterModeKey()

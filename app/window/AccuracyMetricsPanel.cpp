@@ -1,5 +1,6 @@
 #include "AccuracyMetricsPanel.h"
 
+#include "NoteLabel.h"
 #include "AccuracyController.h"
 
 #include <QCheckBox>
@@ -49,18 +50,6 @@ void addMetricRow(QGridLayout* grid, const QString& name, QLabel* value, const Q
     const int row = grid->rowCount();
     grid->addWidget(nameLabel, row, 0);
     grid->addWidget(value, row, 1);
-}
-
-QLabel* noteLabel(const QString& objectName)
-{
-    auto* label = new QLabel;
-    label->setObjectName(objectName);
-    label->setWordWrap(true);
-    QFont font = label->font();
-    font.setPointSizeF(font.pointSizeF() * 0.9);
-    label->setFont(font);
-    label->setForegroundRole(QPalette::PlaceholderText);
-    return label;
 }
 
 } // namespace

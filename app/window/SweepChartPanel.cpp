@@ -1,5 +1,6 @@
 #include "SweepChartPanel.h"
 
+#include "NoteLabel.h"
 #include "SettingsSummary.h"
 
 #include <QChart>
@@ -23,18 +24,6 @@ namespace {
 
 const QColor kVariationColor(52, 120, 190);
 const QColor kCurrentColor(235, 120, 30);
-
-QLabel* noteLabel(const QString& objectName)
-{
-    auto* label = new QLabel;
-    label->setObjectName(objectName);
-    label->setWordWrap(true);
-    QFont font = label->font();
-    font.setPointSizeF(font.pointSizeF() * 0.9);
-    label->setFont(font);
-    label->setForegroundRole(QPalette::PlaceholderText);
-    return label;
-}
 
 } // namespace
 
