@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QScatterSeries>
 
+#include <array>
 #include <memory>
 
 using namespace shadowlab;
@@ -29,6 +30,18 @@ Settings acneSettings()
     for (const char* a : {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"})
         applyAssignment(s, QString::fromLatin1(a));
     return s;
+}
+
+// Pixels of an error image painted as false shadow (AccuracyMeter's errorImage colours).
+int magenta(const QImage& image)
+{
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb c = image.pixel(x, y);
+            n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
+        }
+    return n;
 }
 
 } // namespace
@@ -100,28 +113,143 @@ private Q_SLOTS:
         QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("rays/s")), qPrintable(label("referenceInfo")->text()));
 
         QCOMPARE(overlay.count(), 1);
-        const QImage image = overlay.last().at(0).value<QImage>();
+        QCOMPARE(overlay.last().at(0).toInt(), 0);     // one side: A's view
+        const QImage image = overlay.last().at(1).value<QImage>();
         QVERIFY(!image.isNull());
         QCOMPARE(image.size(), kViewSize);
 
         auto* toggle = m_dock->findChild<QCheckBox*>(QStringLiteral("overlayCheck"));
         QTest::mouseClick(toggle, Qt::LeftButton);
         QCOMPARE(overlay.count(), 2);
-        QVERIFY(overlay.last().at(0).value<QImage>().isNull());
+        QVERIFY(overlay.last().at(1).value<QImage>().isNull());
         QTest::mouseClick(toggle, Qt::LeftButton);
         QCOMPARE(overlay.count(), 3);
-        QCOMPARE(overlay.last().at(0).value<QImage>().size(), kViewSize);
+        QCOMPARE(overlay.last().at(1).value<QImage>().size(), kViewSize);
 
         // A settings change makes the overlay stale: it goes, and only once.
         Settings moved = presetSettings(QStringLiteral("seed"));
         moved.map.size = 1024;
         m_dock->setSettings(moved);
         QCOMPARE(overlay.count(), 4);
-        QVERIFY(overlay.last().at(0).value<QImage>().isNull());
+        QVERIFY(overlay.last().at(1).value<QImage>().isNull());
         m_dock->setSettings(moved);
         m_dock->setSettings(presetSettings(QStringLiteral("seed")));
         QCOMPARE(overlay.count(), 5);              // back to what was measured: shown again
-        QVERIFY(!overlay.last().at(0).value<QImage>().isNull());
+        QVERIFY(!overlay.last().at(1).value<QImage>().isNull());
+    }
+
+    // Compare mode: both sides measured over the same pixels, side by side with B − A, each
+    // with its own overlay; a change to one side greys that side only.
+    void compareModeMeasuresBothSides()
+    {
+        const Settings a = presetSettings(QStringLiteral("seed"));
+        const Settings b = acneSettings();
+        QSignalSpy overlay(m_dock.get(), &AccuracyDock::errorOverlayChanged);
+        m_dock->setSides(a, b, 1);
+        QCOMPARE(button("compareButton")->text(), QStringLiteral("Compare A and B with reference"));
+        QCOMPARE(button("tuneButton")->text(), QStringLiteral("Tune bias of side B"));
+        QVERIFY(label("misclassifiedValueB")->isVisible() && label("misclassifiedDelta")->isVisible());
+        QVERIFY(compareAndWait());
+
+        const double fa = value("falseShadowValue"), fb = value("falseShadowValueB");
+        QVERIFY2(fb > 5.0 * fa + 1.0, qPrintable(QStringLiteral("A %1 %, B %2 %").arg(fa).arg(fb)));
+        // B − A in percentage points, red: B has more error.
+        const QString worse = label("falseShadowDelta")->text();
+        QVERIFY2(worse.startsWith(QLatin1Char('+')) && worse.endsWith(QStringLiteral(" pp")), qPrintable(worse));
+        QVERIFY2(qAbs(worse.mid(1).section(QLatin1Char(' '), 0, 0).toDouble() - (fb - fa)) < 0.011, qPrintable(worse));
+        QVERIFY(label("falseShadowDelta")->styleSheet().contains(QStringLiteral("#c0392b")));
+        QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("same pixels")), qPrintable(label("referenceInfo")->text()));
+
+        // Each side's overlay, of the same pixels; the acne is B's.
+        std::array<QImage, 2> last;
+        for (const QList<QVariant>& args : overlay)
+            last[std::size_t(args.at(0).toInt())] = args.at(1).value<QImage>();
+        QVERIFY(!last[0].isNull() && !last[1].isNull());
+        QCOMPARE(last[0].size(), kViewSize);
+        QCOMPARE(last[1].size(), kViewSize);
+        QVERIFY2(magenta(last[1]) > 10 * (magenta(last[0]) + 1), qPrintable(QStringLiteral("%1 %2").arg(magenta(last[0])).arg(magenta(last[1]))));
+
+        // Swapped: the same numbers in the other columns (the reference is reused), the
+        // difference negative and green.
+        m_dock->setSides(b, a, 0);
+        QCOMPARE(button("tuneButton")->text(), QStringLiteral("Tune bias of side A"));
+        QVERIFY(compareAndWait());
+        QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("reused")), qPrintable(label("referenceInfo")->text()));
+        QCOMPARE(value("falseShadowValue"), fb);
+        QCOMPARE(value("falseShadowValueB"), fa);
+        QVERIFY2(label("falseShadowDelta")->text().startsWith(QChar(0x2212)), qPrintable(label("falseShadowDelta")->text()));
+        QVERIFY(label("falseShadowDelta")->styleSheet().contains(QStringLiteral("#2e8b3e")));
+
+        // A change to B greys B's column and withdraws B's overlay only.
+        overlay.clear();
+        Settings smaller = a;
+        smaller.map.size = 512;
+        m_dock->setSides(b, smaller, 1);
+        QVERIFY(label("falseShadowValue")->isEnabled());
+        QVERIFY(!label("falseShadowValueB")->isEnabled());
+        QVERIFY(!label("falseShadowDelta")->isEnabled());
+        QCOMPARE(overlay.count(), 1);
+        QCOMPARE(overlay.last().at(0).toInt(), 1);
+        QVERIFY(overlay.last().at(1).value<QImage>().isNull());
+        QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("Side B changed")), qPrintable(label("referenceInfo")->text()));
+
+        // Lights placed differently on the two sides: a reference each.
+        Settings left = a, right = a;
+        left.light.position += glm::dvec3(-0.7, 0.0, 0.4);
+        right.light.position += glm::dvec3(0.8, 0.5, -0.3);
+        m_dock->setSides(left, right, 0);
+        QVERIFY(compareAndWait());
+        QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("2 references traced")), qPrintable(label("referenceInfo")->text()));
+        for (const char* name : {"misclassifiedValue", "misclassifiedValueB", "areaMaeValue", "areaMaeValueB"})
+            QVERIFY2(value(name) >= 0.0, qPrintable(label(name)->text()));
+
+        // The same settings on both sides: every difference is "same".
+        m_dock->setSides(a, a, 1);
+        QVERIFY(compareAndWait());
+        for (const char* name : {"misclassifiedDelta", "falseShadowDelta", "falseLightDelta", "hardMaeDelta", "hardRmseDelta",
+                                 "flickerDelta", "areaMaeDelta", "areaRmseDelta", "noiseFloorDelta"})
+            QVERIFY2(label(name)->text() == QStringLiteral("same"), qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(name), label(name)->text())));
+
+        // Back to one side: B's column hides and its overlay goes.
+        overlay.clear();
+        m_dock->setSettings(a);
+        QVERIFY(!label("misclassifiedValueB")->isVisible() && !label("misclassifiedDelta")->isVisible());
+        QCOMPARE(button("compareButton")->text(), QStringLiteral("Compare with reference"));
+        QVERIFY(!qIsNaN(value("misclassifiedValue")));
+        QCOMPARE(overlay.count(), 1);
+        QCOMPARE(overlay.last().at(0).toInt(), 1);
+        QVERIFY(overlay.last().at(1).value<QImage>().isNull());
+    }
+
+    // The frames' cost beside the error: medians, B − A, and "same" within the timing spread.
+    void frameTimesShowBesideTheError()
+    {
+        const auto history = [](double frameMs, double shadowMs, bool shadowDrawn) {
+            FrameTimeHistory h;
+            for (int i = 0; i < 30; ++i) {
+                FrameStats f;
+                f.frameWallMs = frameMs + (i % 5) * 0.1;    // a small spread
+                f.shadowPassWallMs = shadowMs;
+                f.shadowPassRendered = shadowDrawn;
+                h.add(f);
+            }
+            return h.summary();
+        };
+        m_dock->setSides(presetSettings(QStringLiteral("seed")), acneSettings(), 0);
+        m_dock->setFrameTimes({history(10.0, 4.0, true), history(25.0, 4.0, false)}, true);
+        QCOMPARE(value("frameTimeValue"), 10.2);
+        QCOMPARE(value("frameTimeValueB"), 25.2);
+        QCOMPARE(label("frameTimeDelta")->text(), QStringLiteral("+15.0 ms"));
+        QCOMPARE(label("shadowPassTimeValueB")->text(), QStringLiteral("cached"));
+        QVERIFY2(label("costInfo")->text().contains(QStringLiteral("CPU time")), qPrintable(label("costInfo")->text()));
+        m_dock->setFrameTimes({history(10.0, 4.0, true), history(10.1, 4.0, true)}, false);
+        QCOMPARE(label("frameTimeDelta")->text(), QStringLiteral("same"));
+        QCOMPARE(label("shadowPassTimeDelta")->text(), QStringLiteral("same"));
+        QVERIFY(!label("costInfo")->text().contains(QStringLiteral("CPU time")));
+        m_dock->setSettings(presetSettings(QStringLiteral("seed")));
+        m_dock->setFrameTimes({history(12.0, 4.0, true)}, true);
+        QCOMPARE(value("frameTimeValue"), 12.2);
+        QVERIFY(!label("frameTimeValueB")->isVisible());
     }
 
     void acneReadsAsFalseShadow()

@@ -126,6 +126,7 @@ private slots:
     void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
+    void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
     void presetButtonShowsTheArtifactAndTheFix();
     void everySettingHasADockField();
@@ -631,6 +632,67 @@ void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
     emit dock->applySettingsRequested(chosen);
     QCOMPARE(applied.count(), 1);
     QVERIFY(m_window->settings(Side::A).filter.mode == FilterMode::Pcf64);
+}
+
+void tst_MainWindow::compareModeMeasuresBothSidesWithTheirCost()
+{
+    // A clean A beside an acned B: one click measures both, each view gets its own errors, and
+    // the dock holds both sides' error and frame time with the difference.
+    AccuracyDock* dock = m_window->accuracyDock();
+    dock->setAreaSamplesPerAxis(2);
+    m_window->setCompareMode(true);
+    Settings acne = m_window->settings(Side::A);
+    acne.bias.cullFront = false;
+    acne.bias.slope = 0.0;
+    acne.bias.min = 0.0;
+    acne.filter.mode = FilterMode::Hard;
+    m_window->setSettings(Side::B, acne);
+    m_window->selectSide(Side::A);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(dock->windowTitle(), QStringLiteral("Accuracy — A and B"));
+    const auto text = [dock](const char* name) { return dock->findChild<QLabel*>(QLatin1String(name))->text(); };
+    // Frame times of both sides, from the views' own frames.
+    QTRY_VERIFY(text("frameTimeValue").endsWith(QStringLiteral(" ms")) && text("frameTimeValueB").endsWith(QStringLiteral(" ms")));
+    QVERIFY2(!text("frameTimeDelta").isEmpty() && text("frameTimeDelta") != QStringLiteral("—"), qPrintable(text("frameTimeDelta")));
+
+    dock->findChild<QCheckBox*>(QStringLiteral("overlayCheck"))->setChecked(true);
+    QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("compareButton")), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!dock->isBusy() && !m_window->sceneView(Side::A)->errorOverlay().isNull()
+                                 && !m_window->sceneView(Side::B)->errorOverlay().isNull(),
+                             60000);
+    const auto falseShadow = [](const QImage& errors) {
+        int n = 0;
+        for (int y = 0; y < errors.height(); ++y)
+            for (int x = 0; x < errors.width(); ++x) {
+                const QRgb c = errors.pixel(x, y);
+                n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
+            }
+        return n;
+    };
+    const int a = falseShadow(m_window->sceneView(Side::A)->errorOverlay());
+    const int b = falseShadow(m_window->sceneView(Side::B)->errorOverlay());
+    QVERIFY2(b > 10 * (a + 1), qPrintable(QStringLiteral("false-shadow pixels: A %1, B %2").arg(a).arg(b)));
+    QVERIFY2(text("misclassifiedDelta").startsWith(QLatin1Char('+')), qPrintable(text("misclassifiedDelta")));
+    // The window's screenshot shows B's errors too (a grab redirects widget painters).
+    QVERIFY(settle(*m_window));
+    SceneView* viewB = m_window->sceneView(Side::B);
+    const QImage shot = m_window->grab(QRect(viewB->mapTo(m_window.get(), QPoint(0, 0)), viewB->size())).toImage();
+    QVERIFY2(falseShadow(shot) > falseShadow(m_window->sceneView(Side::B)->errorOverlay()) / 4,
+             qPrintable(QStringLiteral("%1 magenta pixels in the screenshot of B").arg(falseShadow(shot))));
+
+    // Editing B keeps A's overlay; B's goes, as its measurement is stale.
+    m_window->selectSide(Side::B);
+    Settings fixed = acne;
+    fixed.bias.min = 0.002;
+    m_window->setSettings(Side::B, fixed);
+    QVERIFY(!m_window->sceneView(Side::A)->errorOverlay().isNull());
+    QVERIFY(m_window->sceneView(Side::B)->errorOverlay().isNull());
+
+    // Leaving compare mode hides B's column and its overlay.
+    m_window->setCompareMode(false);
+    QVERIFY(!dock->findChild<QLabel*>(QStringLiteral("misclassifiedValueB"))->isVisibleTo(dock));
+    QVERIFY(m_window->sceneView(Side::B)->errorOverlay().isNull());
+    QCOMPARE(dock->windowTitle(), QStringLiteral("Accuracy"));
 }
 
 void tst_MainWindow::presetButtonShowsTheArtifactAndTheFix_data()

@@ -375,7 +375,7 @@ private slots:
         QCOMPARE(m_window->propertiesDock()->windowTitle(), QStringLiteral("Properties — side A"));
         m_window->selectSide(Side::B);
         QCOMPARE(m_window->propertiesDock()->windowTitle(), QStringLiteral("Properties — side B"));
-        QCOMPARE(m_window->accuracyDock()->windowTitle(), QStringLiteral("Accuracy — side B"));
+        QCOMPARE(m_window->accuracyDock()->windowTitle(), QStringLiteral("Accuracy — A and B"));
         m_window->setCompareMode(false);
         QCOMPARE(m_window->propertiesDock()->windowTitle(), QStringLiteral("Properties"));
     }

@@ -4,6 +4,7 @@
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
 #include "RayTracer.h"
+#include "RenderError.h"
 #include "SampleStats.h"
 #include "SettingsKeys.h"
 #include "SettingsSummary.h"
@@ -84,14 +85,24 @@ AccuracyController::AccuracyController(QObject* parent) : QObject(parent)
 
 AccuracyController::~AccuracyController()
 {
-    if (m_pending)
-        m_pending->cancel->store(true);
+    if (m_cancelTrace)
+        m_cancelTrace->store(true);
     m_traceWatcher.waitForFinished();
 }
 
 void AccuracyController::setSettings(const Settings& settings)
 {
-    m_settings = settings;
+    setSides({settings}, 0);
+}
+
+void AccuracyController::setSides(const std::vector<Settings>& sides, std::size_t selected)
+{
+    if (sides.empty())
+        return;
+    m_sides = sides;
+    m_selected = std::min(selected, sides.size() - 1);
+    // A side that went (compare mode off) takes its measurement with it.
+    m_measurements.resize(sides.size());
 }
 
 void AccuracyController::setViewSize(QSize size)
@@ -114,12 +125,21 @@ void AccuracyController::setAreaSamplesPerAxis(int samples)
 
 bool AccuracyController::isBusy() const
 {
-    return m_pending.has_value() || m_sweeping || m_tuner != nullptr;
+    return m_tracing || !m_captures.empty() || m_sweeping || m_tuner != nullptr;
 }
 
-bool AccuracyController::measurementIsCurrent() const
+bool AccuracyController::measurementIsCurrent(std::size_t side) const
 {
-    return m_measurement && m_measurement->settings == m_settings && m_measurement->errors.size() == measureSize();
+    if (side >= m_sides.size())
+        return false;
+    const std::optional<Measurement>& m = m_measurements[side];
+    return m && m->settings == m_sides[side] && m->errors.size() == measureSize();
+}
+
+const ReferenceVisibility* AccuracyController::cachedReference(const ReferenceKey& key) const
+{
+    const auto it = std::find_if(m_references.begin(), m_references.end(), [&](const auto& cached) { return cached.first == key; });
+    return it == m_references.end() ? nullptr : &it->second;
 }
 
 HeadlessRenderer& AccuracyController::headless()
@@ -142,8 +162,8 @@ void AccuracyController::sweep()
 
 void AccuracyController::cancel()
 {
-    if (m_pending)
-        m_pending->cancel->store(true);
+    if (m_cancelTrace)
+        m_cancelTrace->store(true);
     m_sweepCancelled = m_sweeping;
     m_tuneCancelled = m_tuner != nullptr;
     setStatus(tr("Cancelling…"));
@@ -155,7 +175,7 @@ void AccuracyController::tuneBias()
         return;
     // A small image: the tuner renders every candidate at every light direction.
     const QSize size = measureSize().scaled(QSize(320, 320), Qt::KeepAspectRatio).expandedTo(QSize(16, 16));
-    m_tuner = std::make_unique<BiasTuner>(m_settings, size);
+    m_tuner = std::make_unique<BiasTuner>(settings(), size);
     m_tuneCancelled = false;
     emit busyChanged(true);
     emit progressChanged(0, m_tuner->steps());
@@ -210,85 +230,139 @@ void AccuracyController::startMeasurement(bool thenSweep)
         return;
     }
     try {
-        ensureValid(m_settings);
-        Renderer& renderer = headless().renderer();
-        m_flicker = measureFlicker(renderer, m_settings, subTexelPath(renderer, m_settings, size, kFlickerFrames, kFlickerStepTexels), size);
-        auto buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(m_settings, size));
-        const ReferenceKey key = referenceKeyFor(m_settings, measureSize(), m_areaSamplesPerAxis);
-        if (m_referenceKey == key) {
-            m_lastReferenceReused = true;
-            measure(m_settings, *buffer);
-            if (thenSweep)
-                startSweep();
-            return;
+        // Every side's capture first, at the same size: the sides differ in their settings
+        // only, so the same pixels are compared.
+        // The selected side last: its reference is then the newest, which the sweep reads.
+        std::vector<std::size_t> order;
+        for (std::size_t side = 0; side < m_sides.size(); ++side) {
+            if (side != m_selected)
+                order.push_back(side);
         }
-
-        // The worker gets copies: the renderer may load another scene while it traces.
-        auto scene = std::make_shared<const Scene>(*renderer.scene());
-        const LightFrame light = renderer.lightFrame();
-        const ReferenceOptions options{true, m_settings.reference.lightRadius, m_areaSamplesPerAxis};
-        auto cancelFlag = std::make_shared<std::atomic<bool>>(false);
-        m_pending = PendingTrace{key, m_settings, buffer, cancelFlag, thenSweep};
-        emit progressChanged(0, kProgressSteps);
-        setStatus(tr("Tracing the reference at %1×%2…").arg(size.width()).arg(size.height()));
-        m_traceWatcher.setFuture(QtConcurrent::run(&m_tracePool, [scene, buffer, light, options, cancelFlag](QPromise<TraceOutcome>& promise) {
-            promise.setProgressRange(0, kProgressSteps);
-            TraceOutcome outcome;
-            try {
-                const RayTracer tracer(*scene, buffer->cameraPosition);
-                outcome.reference = traceReference(tracer, *buffer, light, options,
-                                                   [&promise](double f) { promise.setProgressValue(int(f * kProgressSteps)); },
-                                                   cancelFlag.get());
-            } catch (const std::exception& e) {
-                outcome.error = QString::fromUtf8(e.what());
+        order.push_back(m_selected);
+        std::vector<Capture> captures;
+        for (const std::size_t side : order) {
+            const Settings& s = m_sides[side];
+            ensureValid(s);
+            Renderer& renderer = headless().renderer();
+            Capture capture{side, s, referenceKeyFor(s, size, m_areaSamplesPerAxis), nullptr, {}, nullptr, {}};
+            capture.flicker = measureFlicker(renderer, s, subTexelPath(renderer, s, size, kFlickerFrames, kFlickerStepTexels), size);
+            capture.buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(s, size));
+            // A trace needs the scene and light as they were: copied, unless an earlier capture
+            // traces the same reference or the cache holds it.
+            const bool traced = cachedReference(capture.key)
+                || std::any_of(captures.begin(), captures.end(), [&](const Capture& c) { return c.key == capture.key; });
+            if (!traced) {
+                capture.scene = std::make_shared<const Scene>(*renderer.scene());
+                capture.light = renderer.lightFrame();
             }
-            promise.addResult(std::move(outcome));
-        }));
+            captures.push_back(std::move(capture));
+        }
+        m_captures = std::move(captures);
+        m_thenSweep = thenSweep;
+        m_lastReferencesTraced = 0;
+        measureCaptures();
     } catch (const std::exception& e) {
+        m_captures.clear();
         setStatus(QString::fromUtf8(e.what()), true);
     }
     emit busyChanged(isBusy());
+}
+
+void AccuracyController::measureCaptures()
+{
+    while (!m_captures.empty()) {
+        const Capture& capture = m_captures.front();
+        const ReferenceVisibility* reference = cachedReference(capture.key);
+        if (!reference)
+            break;
+        measure(capture, *reference);
+        m_captures.erase(m_captures.begin());
+    }
+    if (m_captures.empty()) {
+        if (m_thenSweep) {
+            m_thenSweep = false;
+            startSweep();
+        }
+        return;
+    }
+
+    const Capture& capture = m_captures.front();
+    if (!capture.scene)
+        throw RenderError(tr("no scene was captured for the reference of side %1").arg(QLatin1Char(char('A' + capture.side))));
+    auto scene = capture.scene;
+    const LightFrame light = capture.light;
+    const ReferenceOptions options{true, capture.settings.reference.lightRadius, m_areaSamplesPerAxis};
+    auto buffer = capture.buffer;
+    m_cancelTrace = std::make_shared<std::atomic<bool>>(false);
+    m_tracing = true;
+    emit progressChanged(0, kProgressSteps);
+    const QSize size = capture.buffer->size;
+    setStatus(m_sides.size() > 1 ? tr("Tracing the reference of side %1 at %2×%3…").arg(QLatin1Char(char('A' + capture.side))).arg(size.width()).arg(size.height())
+                                 : tr("Tracing the reference at %1×%2…").arg(size.width()).arg(size.height()));
+    m_traceWatcher.setFuture(QtConcurrent::run(&m_tracePool, [scene, buffer, light, options, cancelFlag = m_cancelTrace](QPromise<TraceOutcome>& promise) {
+        promise.setProgressRange(0, kProgressSteps);
+        TraceOutcome outcome;
+        try {
+            const RayTracer tracer(*scene, buffer->cameraPosition);
+            outcome.reference = traceReference(tracer, *buffer, light, options,
+                                               [&promise](double f) { promise.setProgressValue(int(f * kProgressSteps)); },
+                                               cancelFlag.get());
+        } catch (const std::exception& e) {
+            outcome.error = QString::fromUtf8(e.what());
+        }
+        promise.addResult(std::move(outcome));
+    }));
 }
 
 void AccuracyController::traceFinished()
 {
-    const PendingTrace pending = std::move(*m_pending);
-    m_pending.reset();
+    m_tracing = false;
+    const bool cancelled = m_cancelTrace && m_cancelTrace->load();
+    m_cancelTrace.reset();
     TraceOutcome outcome = m_traceWatcher.result();
-    emit busyChanged(isBusy());
+    const auto stop = [this](const QString& message, bool error) {
+        m_captures.clear();
+        m_thenSweep = false;
+        emit busyChanged(isBusy());
+        setStatus(message, error);
+    };
     if (!outcome.error.isEmpty()) {
-        setStatus(tr("The reference could not be traced: %1").arg(outcome.error), true);
+        stop(tr("The reference could not be traced: %1").arg(outcome.error), true);
         return;
     }
-    if (outcome.reference.cancelled || pending.cancel->load()) {
-        setStatus(tr("Cancelled; the partial reference was discarded."));
+    if (outcome.reference.cancelled || cancelled) {
+        stop(tr("Cancelled; the partial reference was discarded."), false);
         return;
     }
-    m_reference = std::move(outcome.reference);
-    m_referenceKey = pending.key;
-    m_lastRaysPerSecond = m_reference.raysPerSecond();
-    m_lastReferenceReused = false;
+    m_lastRaysPerSecond = outcome.reference.raysPerSecond();
+    ++m_lastReferencesTraced;
+    m_references.insert(m_references.begin(), {m_captures.front().key, std::move(outcome.reference)});
+    if (m_references.size() > kCachedReferences)
+        m_references.pop_back();
     try {
-        measure(pending.settings, *pending.buffer);
-        if (pending.thenSweep)
-            startSweep();
+        measureCaptures();
     } catch (const std::exception& e) {
-        setStatus(QString::fromUtf8(e.what()), true);
+        stop(QString::fromUtf8(e.what()), true);
+        return;
     }
+    emit busyChanged(isBusy());
 }
 
-void AccuracyController::measure(const Settings& settings, const VisibilityBuffer& buffer)
+void AccuracyController::measure(const Capture& capture, const ReferenceVisibility& reference)
 {
-    const AccuracyResult result = compareWithReference(buffer, m_reference);
+    const AccuracyResult result = compareWithReference(*capture.buffer, reference);
     Measurement m;
-    m.settings = settings;
+    m.settings = capture.settings;
     m.hard = result.hard;
     m.area = result.area;
     m.areaNoiseFloor = result.areaNoiseFloor;
+    m.referenceSamplesPerPixel = reference.samplesPerPixel;
     m.errors = result.hardErrors;
-    m.flicker = m_flicker;
-    m_measurement = std::move(m);
-    setStatus(m_measurement->hard.pixels == 0 ? tr("No surface in view faces the light; nothing to compare.") : QString());
+    m.flicker = capture.flicker;
+    if (capture.side < m_measurements.size())
+        m_measurements[capture.side] = std::move(m);
+    const bool nothing = result.hard.pixels == 0;
+    setStatus(nothing ? tr("No surface in view faces the light; nothing to compare.") : QString());
     emit measurementChanged();
 }
 
@@ -296,7 +370,8 @@ void AccuracyController::startSweep()
 {
     const int maxTextureSize = headless().renderer().maxTextureSize();
     m_sweepPlan.clear();
-    for (Variation& v : sweepAround(m_settings, maxTextureSize))
+    m_sweepKey = referenceKeyFor(settings(), measureSize(), m_areaSamplesPerAxis);
+    for (Variation& v : sweepAround(settings(), maxTextureSize))
         m_sweepPlan.push_back({v.label, std::move(v.settings), 0.0, 0.0});
     m_sweepPoints.clear();
     m_sweepSkipped.clear();
@@ -325,8 +400,11 @@ void AccuracyController::sweepStep()
     setStatus(tr("Sweep %1/%2: %3").arg(m_sweepNext).arg(m_sweepPlan.size()).arg(point.label));
     try {
         HeadlessRenderer& h = headless();
+        const ReferenceVisibility* reference = cachedReference(m_sweepKey);
+        if (!reference)
+            throw RenderError(tr("the reference is gone; compare again"));
         const VisibilityBuffer buffer = h.renderer().renderVisibility(point.settings, m_sweepSize);
-        point.misclassifiedPercent = 100.0 * compareWithReference(buffer, m_reference).hard.misclassified;
+        point.misclassifiedPercent = 100.0 * compareWithReference(buffer, *reference).hard.misclassified;
 
         // One untimed frame compiles the lit variant; every frame redraws the shadow map, so
         // the time is what a moving light costs, not the cached-map best case.

@@ -117,12 +117,35 @@ AccuracyDock::~AccuracyDock() = default;
 
 void AccuracyDock::setSettings(const Settings& settings)
 {
-    if (settings == m_controller->settings())
-        return;
-    m_controller->setSettings(settings);
+    setSides(settings, std::nullopt, 0);
+}
+
+void AccuracyDock::setSides(const Settings& a, const std::optional<Settings>& b, int selected)
+{
+    std::vector<Settings> sides{a};
+    if (b)
+        sides.push_back(*b);
+    const std::size_t chosen = std::size_t(std::clamp(selected, 0, int(sides.size()) - 1));
+    if (sides.size() == m_controller->sideCount() && chosen == m_controller->selectedSide()) {
+        bool same = true;
+        for (std::size_t i = 0; i < sides.size(); ++i)
+            same = same && sides[i] == m_controller->sideSettings(i);
+        if (same)
+            return;
+    }
+    m_controller->setSides(sides, chosen);
+    m_compareButton->setText(sides.size() > 1 ? tr("Compare A and B with reference") : tr("Compare with reference"));
+    const QString side = QString(QLatin1Char(char('A' + chosen)));
+    m_tuneButton->setText(sides.size() > 1 ? tr("Tune bias of side %1").arg(side) : tr("Tune bias"));
+    m_chart->sweepButton()->setText(sides.size() > 1 ? tr("Sweep around side %1").arg(side) : tr("Sweep around current settings"));
     m_metrics->showMeasurement(*m_controller);
     updateOverlay();
-    m_chart->setCurrentSettings(settings);
+    m_chart->setCurrentSettings(m_controller->settings());
+}
+
+void AccuracyDock::setFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime)
+{
+    m_metrics->showFrameTimes(sides, cpuTime);
 }
 
 void AccuracyDock::setViewSize(QSize size)
@@ -154,12 +177,14 @@ bool AccuracyDock::isBusy() const
 
 void AccuracyDock::updateOverlay()
 {
-    const auto& measurement = m_controller->measurement();
-    const QImage wanted = m_controller->measurementIsCurrent() && m_metrics->overlayWanted() ? measurement->errors : QImage();
-    if (wanted.cacheKey() == m_overlay.cacheKey())
-        return;
-    m_overlay = wanted;
-    emit errorOverlayChanged(m_overlay);
+    for (std::size_t side = 0; side < m_overlays.size(); ++side) {
+        const bool have = side < m_controller->sideCount() && m_controller->measurementIsCurrent(side);
+        const QImage wanted = have && m_metrics->overlayWanted() ? m_controller->measurement(side)->errors : QImage();
+        if (wanted.cacheKey() == m_overlays[side].cacheKey())
+            continue;
+        m_overlays[side] = wanted;
+        emit errorOverlayChanged(int(side), wanted);
+    }
 }
 
 void AccuracyDock::showTuning()

@@ -1,9 +1,14 @@
 #pragma once
 
+#include "FrameTimeHistory.h"
 #include "Settings.h"
 
 #include <QDockWidget>
 #include <QImage>
+
+#include <array>
+#include <optional>
+#include <vector>
 
 class QLabel;
 class QProgressBar;
@@ -32,6 +37,11 @@ public:
 
     // What the scene view shows; a change makes the overlay stale, so it is withdrawn.
     void setSettings(const Settings& settings);
+    // Compare mode: both sides, measured together over the same pixels; the sweep and the
+    // bias tuning work on the selected one. `b` empty: one side, A.
+    void setSides(const Settings& a, const std::optional<Settings>& b, int selected);
+    // The scene views' recent frame times (A, then B in compare mode), beside the error.
+    void setFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime);
     void setViewSize(QSize size);
     // The view size scaled down to at most AccuracyController::kMaxMeasureSide px per side.
     QSize measureSize() const;
@@ -44,8 +54,9 @@ public:
     bool isBusy() const;
 
 signals:
-    // The error image over the measured frame, or a null image when there is none to show.
-    void errorOverlayChanged(const QImage& image);
+    // The error image over side `side`'s measured frame (0 A, 1 B), or a null image when
+    // there is none to show.
+    void errorOverlayChanged(int side, const QImage& image);
     // A sweep point was clicked: show these settings.
     void applySettingsRequested(const shadowlab::Settings& settings);
 
@@ -56,7 +67,7 @@ private:
     void setStatus(const QString& text, bool error = false);
 
     AccuracyController* m_controller = nullptr;
-    QImage m_overlay;               // as last emitted
+    std::array<QImage, 2> m_overlays;   // as last emitted, per side
 
     QPushButton* m_compareButton = nullptr;
     QPushButton* m_cancelButton = nullptr;

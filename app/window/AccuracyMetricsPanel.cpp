@@ -11,9 +11,15 @@
 #include <QStyle>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
 namespace shadowlab {
 
 namespace {
+
+const char* const kColumnNames[3] = {"A", "B", "B − A"};
+const char* const kColumnSuffix[3] = {"Value", "ValueB", "Delta"};
 
 QString percentText(double share)
 {
@@ -41,15 +47,19 @@ QLabel* valueLabel(const QString& objectName)
     return label;
 }
 
-// A name and its value on one grid row; both carry the tooltip so either can be hovered.
-void addMetricRow(QGridLayout* grid, const QString& name, QLabel* value, const QString& toolTip)
+// A grid of metrics under a header row naming the sides (hidden with one side).
+QGridLayout* metricGrid(QWidget* box, std::vector<QLabel*>& headers)
 {
-    auto* nameLabel = new QLabel(name);
-    nameLabel->setToolTip(toolTip);
-    value->setToolTip(toolTip);
-    const int row = grid->rowCount();
-    grid->addWidget(nameLabel, row, 0);
-    grid->addWidget(value, row, 1);
+    auto* grid = new QGridLayout(box);
+    grid->setColumnStretch(0, 1);
+    for (int c = 0; c < 3; ++c) {
+        auto* header = new QLabel(QStringLiteral("<b>%1</b>").arg(QString::fromUtf8(kColumnNames[c])));
+        header->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        header->setVisible(false);
+        grid->addWidget(header, 0, c + 1);
+        headers.push_back(header);
+    }
+    return grid;
 }
 
 } // namespace
@@ -61,53 +71,61 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
 
     auto* hard = new QGroupBox(tr("Hard-shadow reference"));
     hard->setObjectName(QStringLiteral("hardGroup"));
-    auto* hardGrid = new QGridLayout(hard);
-    hardGrid->setColumnStretch(0, 1);
-    m_misclassified = valueLabel(QStringLiteral("misclassifiedValue"));
-    m_falseShadow = valueLabel(QStringLiteral("falseShadowValue"));
-    m_falseLight = valueLabel(QStringLiteral("falseLightValue"));
-    m_hardMae = valueLabel(QStringLiteral("hardMaeValue"));
-    m_hardRmse = valueLabel(QStringLiteral("hardRmseValue"));
-    addMetricRow(hardGrid, tr("Misclassified"), m_misclassified,
-                 tr("Share of lit-facing pixels on the wrong side of half visibility compared with one shadow ray per "
-                    "pixel: false shadow plus false light."));
-    addMetricRow(hardGrid, tr("False shadow (acne)"), m_falseShadow,
-                 tr("Dark where the reference is lit: shadow acne from too little bias, over-darkened edges. "
-                    "Magenta on the scene view."));
-    addMetricRow(hardGrid, tr("False light (leaks)"), m_falseLight,
-                 tr("Lit where the reference is dark: peter panning from too much bias, light leaking through thin "
-                    "casters. Cyan on the scene view."));
-    addMetricRow(hardGrid, tr("MAE"), m_hardMae,
-                 tr("Mean absolute difference of visibility (0 shadowed … 1 lit); soft edges count in part."));
-    addMetricRow(hardGrid, tr("RMSE"), m_hardRmse,
-                 tr("Root mean square difference of visibility; weighs whole wrong pixels more than MAE does."));
-    m_flicker = valueLabel(QStringLiteral("flickerValue"));
-    addMetricRow(hardGrid, tr("Flicker"), m_flicker,
-                 tr("Shimmer: the light's maps follow a camera walking in steps of a third of a texel while the same "
-                    "pixels are measured; the share of them whose shadow flips from one step to the next. Stabilised "
-                    "maps should barely flicker."));
+    QGridLayout* hardGrid = metricGrid(hard, m_headers);
+    m_misclassified = addRow(hardGrid, QStringLiteral("misclassified"), tr("Misclassified"),
+                             tr("Share of lit-facing pixels on the wrong side of half visibility compared with one shadow ray per "
+                                "pixel: false shadow plus false light."),
+                             Kind::Share);
+    m_falseShadow = addRow(hardGrid, QStringLiteral("falseShadow"), tr("False shadow (acne)"),
+                           tr("Dark where the reference is lit: shadow acne from too little bias, over-darkened edges. "
+                              "Magenta on the scene view."),
+                           Kind::Share);
+    m_falseLight = addRow(hardGrid, QStringLiteral("falseLight"), tr("False light (leaks)"),
+                          tr("Lit where the reference is dark: peter panning from too much bias, light leaking through thin "
+                             "casters. Cyan on the scene view."),
+                          Kind::Share);
+    m_hardMae = addRow(hardGrid, QStringLiteral("hardMae"), tr("MAE"),
+                       tr("Mean absolute difference of visibility (0 shadowed … 1 lit); soft edges count in part."), Kind::Error);
+    m_hardRmse = addRow(hardGrid, QStringLiteral("hardRmse"), tr("RMSE"),
+                        tr("Root mean square difference of visibility; weighs whole wrong pixels more than MAE does."), Kind::Error);
+    m_flicker = addRow(hardGrid, QStringLiteral("flicker"), tr("Flicker"),
+                       tr("Shimmer: the light's maps follow a camera walking in steps of a third of a texel while the same "
+                          "pixels are measured; the share of them whose shadow flips from one step to the next. Stabilised "
+                          "maps should barely flicker."),
+                       Kind::Share);
     layout->addWidget(hard);
 
     auto* area = new QGroupBox(tr("Area-light reference"));
     area->setObjectName(QStringLiteral("areaGroup"));
     area->setToolTip(tr("A disk light of radius light.radius, sampled with stratified rays: how close a "
                         "filtered edge comes to a real penumbra."));
-    auto* areaGrid = new QGridLayout(area);
-    areaGrid->setColumnStretch(0, 1);
-    m_areaMae = valueLabel(QStringLiteral("areaMaeValue"));
-    m_areaRmse = valueLabel(QStringLiteral("areaRmseValue"));
-    m_noiseFloor = valueLabel(QStringLiteral("noiseFloorValue"));
-    addMetricRow(areaGrid, tr("MAE"), m_areaMae, tr("Mean absolute difference from the area light's visibility."));
-    addMetricRow(areaGrid, tr("RMSE"), m_areaRmse, tr("Root mean square difference from the area light's visibility."));
-    addMetricRow(areaGrid, tr("Noise floor"), m_noiseFloor,
-                 tr("Mean standard error of the area reference itself: differences this small are sampling noise, "
-                    "not error. More samples per pixel lower it."));
+    QGridLayout* areaGrid = metricGrid(area, m_headers);
+    m_areaMae = addRow(areaGrid, QStringLiteral("areaMae"), tr("MAE"), tr("Mean absolute difference from the area light's visibility."),
+                       Kind::Error);
+    m_areaRmse = addRow(areaGrid, QStringLiteral("areaRmse"), tr("RMSE"),
+                        tr("Root mean square difference from the area light's visibility."), Kind::Error);
+    m_noiseFloor = addRow(areaGrid, QStringLiteral("noiseFloor"), tr("Noise floor"),
+                          tr("Mean standard error of the area reference itself: differences this small are sampling noise, "
+                             "not error. More samples per pixel lower it."),
+                          Kind::Error);
     layout->addWidget(area);
 
     m_referenceInfo = noteLabel(QStringLiteral("referenceInfo"));
     m_referenceInfo->setToolTip(tr("Speed of the Embree ray tracer here. The reference depends on scene, camera, view "
                                    "size and light placement only, so map, bias and filter changes reuse it."));
     layout->addWidget(m_referenceInfo);
+
+    auto* cost = new QGroupBox(tr("Cost"));
+    cost->setObjectName(QStringLiteral("costGroup"));
+    cost->setToolTip(tr("What the scene view's frames took: medians over its last frames (View > Measure 100 Frames for "
+                        "more). The shadow pass only counts frames that drew the map; a cached map costs nothing."));
+    QGridLayout* costGrid = metricGrid(cost, m_headers);
+    m_frame = addRow(costGrid, QStringLiteral("frameTime"), tr("Frame"), tr("Median wall time of a whole frame."), Kind::Milliseconds);
+    m_shadowPass = addRow(costGrid, QStringLiteral("shadowPassTime"), tr("Shadow pass"),
+                          tr("Median wall time of the frames' shadow pass, over the frames that ran it."), Kind::Milliseconds);
+    m_costInfo = noteLabel(QStringLiteral("costInfo"));
+    costGrid->addWidget(m_costInfo, costGrid->rowCount(), 0, 1, 4);
+    layout->addWidget(cost);
 
     auto* overlayRow = new QHBoxLayout;
     m_overlayCheck = new QCheckBox(tr("Show errors on the scene view"));
@@ -125,6 +143,88 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
     legend->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);
     layout->addWidget(legend);
     connect(m_overlayCheck, &QCheckBox::toggled, this, &AccuracyMetricsPanel::overlayToggled);
+    setColumns(1);
+}
+
+AccuracyMetricsPanel::Row* AccuracyMetricsPanel::addRow(QGridLayout* grid, const QString& objectName, const QString& name,
+                                                        const QString& toolTip, Kind kind)
+{
+    auto row = std::make_unique<Row>();
+    row->kind = kind;
+    auto* nameLabel = new QLabel(name);
+    nameLabel->setToolTip(toolTip);
+    nameLabel->setWordWrap(true);   // three columns of numbers in compare mode leave a narrow dock little room
+    const int r = grid->rowCount();
+    grid->addWidget(nameLabel, r, 0);
+    for (int c = 0; c < 3; ++c) {
+        row->values[c] = valueLabel(objectName + QLatin1String(kColumnSuffix[c]));
+        // Room for the widest number from the start: a dock that widens when numbers arrive
+        // would shrink the scene views and make the measurement it shows stale at once.
+        const QFontMetrics metrics = row->values[c]->fontMetrics();
+        row->values[c]->setMinimumWidth(metrics.horizontalAdvance(c < 2 ? QStringLiteral("100.00 %") : QStringLiteral("+100.00 pp")));
+        row->values[c]->setToolTip(c < 2 ? toolTip
+                                         : tr("B − A: negative (green) where B is better, positive (red) where it is worse; "
+                                              "\"same\" within the measurement's noise. Shares differ in percentage points (pp)."));
+        grid->addWidget(row->values[c], r, c + 1);
+    }
+    Row* raw = row.get();
+    m_rows.push_back(std::move(row));
+    return raw;
+}
+
+void AccuracyMetricsPanel::setColumns(int sides)
+{
+    m_sides = sides;
+    const bool both = sides > 1;
+    for (QLabel* header : m_headers)
+        header->setVisible(both);
+    for (const auto& row : m_rows) {
+        row->values[1]->setVisible(both);
+        row->values[2]->setVisible(both);
+    }
+}
+
+void AccuracyMetricsPanel::put(Row& row, const std::array<std::optional<double>, 2>& values, const std::array<bool, 2>& stale, double noise)
+{
+    const auto text = [&row](double v) {
+        switch (row.kind) {
+        case Kind::Share: return percentText(v);
+        case Kind::Error: return errorText(v);
+        case Kind::Milliseconds: return QStringLiteral("%1 ms").arg(v, 0, 'f', 1);
+        }
+        return QString();
+    };
+    for (int c = 0; c < 2; ++c) {
+        row.values[c]->setText(values[c] ? text(*values[c]) : QStringLiteral("—"));
+        row.values[c]->setEnabled(!stale[c]);
+    }
+    QLabel* delta = row.values[2];
+    delta->setEnabled(!stale[0] && !stale[1]);
+    if (m_sides < 2 || !values[0] || !values[1]) {
+        delta->setText(QStringLiteral("—"));
+        delta->setStyleSheet(QString());
+        return;
+    }
+    const double d = *values[1] - *values[0];
+    if (std::abs(d) <= noise || (row.kind == Kind::Share && std::abs(d) < 5e-7)) {
+        delta->setText(tr("same"));
+        delta->setStyleSheet(QString());
+        return;
+    }
+    // U+2212 for minus, as the captions write it.
+    const QString sign = d > 0.0 ? QStringLiteral("+") : QStringLiteral("\u2212");
+    const double a = std::abs(d);
+    switch (row.kind) {
+    case Kind::Share: {
+        const double points = a * 100.0;
+        delta->setText(QStringLiteral("%1%2 pp").arg(sign).arg(points, 0, 'f', points < 0.1 ? 3 : 2));
+        break;
+    }
+    case Kind::Error: delta->setText(sign + errorText(a)); break;
+    case Kind::Milliseconds: delta->setText(QStringLiteral("%1%2 ms").arg(sign).arg(a, 0, 'f', 1)); break;
+    }
+    // Every number here is an error or a cost: less is better.
+    delta->setStyleSheet(d < 0.0 ? QStringLiteral("color: #2e8b3e;") : QStringLiteral("color: #c0392b;"));
 }
 
 bool AccuracyMetricsPanel::overlayWanted() const
@@ -134,40 +234,93 @@ bool AccuracyMetricsPanel::overlayWanted() const
 
 void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
 {
-    const auto& measurement = controller.measurement();
-    const bool have = measurement.has_value();
-    const bool stale = have && !controller.measurementIsCurrent();
-    auto put = [&](QLabel* label, const QString& text) {
-        label->setText(have ? text : QStringLiteral("—"));
-        label->setEnabled(!stale);
+    const int sides = int(std::min<std::size_t>(controller.sideCount(), 2));
+    setColumns(sides);
+    std::array<const AccuracyController::Measurement*, 2> m{};
+    std::array<bool, 2> stale{};
+    for (int s = 0; s < sides; ++s) {
+        const auto& measurement = controller.measurement(std::size_t(s));
+        m[s] = measurement ? &*measurement : nullptr;
+        stale[s] = m[s] && !controller.measurementIsCurrent(std::size_t(s));
+    }
+    const auto values = [&](auto get) {
+        std::array<std::optional<double>, 2> out;
+        for (int s = 0; s < 2; ++s)
+            out[s] = m[s] ? get(*m[s]) : std::optional<double>();
+        return out;
     };
-    const ErrorMetrics hard = have ? measurement->hard : ErrorMetrics{};
-    const ErrorMetrics area = have ? measurement->area : ErrorMetrics{};
-    put(m_misclassified, percentText(hard.misclassified));
-    put(m_falseShadow, percentText(hard.falseShadow));
-    put(m_falseLight, percentText(hard.falseLight));
-    put(m_hardMae, errorText(hard.mae));
-    put(m_hardRmse, errorText(hard.rmse));
-    put(m_flicker, have && measurement->flicker.frames > 1 ? percentText(measurement->flicker.flicker) : QStringLiteral("—"));
-    const bool haveArea = have && area.pixels > 0;
-    put(m_areaMae, haveArea ? errorText(area.mae) : QStringLiteral("—"));
-    put(m_areaRmse, haveArea ? errorText(area.rmse) : QStringLiteral("—"));
-    put(m_noiseFloor, haveArea ? errorText(measurement->areaNoiseFloor) : QStringLiteral("—"));
+    using M = AccuracyController::Measurement;
+    put(*m_misclassified, values([](const M& x) { return std::optional(x.hard.misclassified); }), stale, 0.0);
+    put(*m_falseShadow, values([](const M& x) { return std::optional(x.hard.falseShadow); }), stale, 0.0);
+    put(*m_falseLight, values([](const M& x) { return std::optional(x.hard.falseLight); }), stale, 0.0);
+    put(*m_hardMae, values([](const M& x) { return std::optional(x.hard.mae); }), stale, 5e-5);
+    put(*m_hardRmse, values([](const M& x) { return std::optional(x.hard.rmse); }), stale, 5e-5);
+    put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale, 0.0);
+    // The area reference is a Monte Carlo estimate: a difference within its noise floor is noise.
+    double floor = 5e-5;
+    for (int s = 0; s < 2; ++s)
+        floor = m[s] ? std::max(floor, m[s]->areaNoiseFloor) : floor;
+    const auto area = [](auto get) {
+        return [get](const M& x) { return x.area.pixels > 0 ? std::optional(get(x)) : std::nullopt; };
+    };
+    put(*m_areaMae, values(area([](const M& x) { return x.area.mae; })), stale, floor);
+    put(*m_areaRmse, values(area([](const M& x) { return x.area.rmse; })), stale, floor);
+    put(*m_noiseFloor, values(area([](const M& x) { return x.areaNoiseFloor; })), stale, floor);
 
-    if (!have) {
+    const M* shown = m[controller.selectedSide() < 2 ? controller.selectedSide() : 0];
+    if (!m[0] && !m[1]) {
         m_referenceInfo->setText(tr("Not measured yet."));
         return;
     }
-    const QSize size = measurement->errors.size();
-    const QString reference = controller.lastReferenceReused() ? tr("reference reused") : tr("reference traced at %1").arg(raysText(controller.lastRaysPerSecond()));
+    if (!shown)
+        shown = m[0] ? m[0] : m[1];
+    const QSize size = shown->errors.size();
+    const int traced = controller.lastReferencesTraced();
+    const QString reference = traced == 0 ? tr("reference reused")
+                              : traced == 1 ? tr("reference traced at %1").arg(raysText(controller.lastRaysPerSecond()))
+                                            : tr("%1 references traced (the sides' lights differ), at %2").arg(traced).arg(raysText(controller.lastRaysPerSecond()));
     QString info = tr("%1×%2 px, %3 rays/px for the area light; %4.")
                        .arg(size.width())
                        .arg(size.height())
-                       .arg(controller.referenceSamplesPerPixel())
+                       .arg(shown->referenceSamplesPerPixel)
                        .arg(reference);
-    if (stale)
-        info += QLatin1Char(' ') + tr("The view changed since: compare again.");
+    if (sides > 1)
+        info += QLatin1Char(' ') + tr("Both sides over the same pixels.");
+    if (stale[0] || stale[1])
+        info += QLatin1Char(' ') + (sides > 1 && stale[0] != stale[1] ? tr("Side %1 changed since: compare again.").arg(QLatin1Char(stale[0] ? 'A' : 'B'))
+                                                                       : tr("The view changed since: compare again."));
     m_referenceInfo->setText(info);
+}
+
+void AccuracyMetricsPanel::showFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime)
+{
+    setColumns(int(std::min<std::size_t>(sides.size(), 2)));
+    std::array<std::optional<double>, 2> frame, shadow;
+    double frameNoise = 0.0, shadowNoise = 0.0;
+    int frames = 0;
+    for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {
+        const FrameTimeHistory::Summary& x = sides[s];
+        if (x.frame.count > 0) {
+            frame[s] = x.frame.median;
+            frameNoise = std::max(frameNoise, 0.5 * (x.frame.p90 - x.frame.p10));
+            frames = frames == 0 ? x.frame.count : std::min(frames, x.frame.count);
+        }
+        if (x.shadow.count > 0) {
+            shadow[s] = x.shadow.median;
+            shadowNoise = std::max(shadowNoise, 0.5 * (x.shadow.p90 - x.shadow.p10));
+        }
+    }
+    // Timing noise: half the wider p10–p90 spread. Times are never stale, only more or less settled.
+    put(*m_frame, frame, {}, frameNoise);
+    put(*m_shadowPass, shadow, {}, shadowNoise);
+    for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {
+        if (frame[s] && !shadow[s])
+            m_shadowPass->values[s]->setText(tr("cached"));
+    }
+    m_costInfo->setText(frames == 0 ? tr("No frames yet.")
+                                    : tr("Medians of the last %1 frames%2; \"same\" within half the p10–p90 spread.")
+                                          .arg(frames)
+                                          .arg(cpuTime ? tr(", CPU time (software renderer)") : QString()));
 }
 
 } // namespace shadowlab

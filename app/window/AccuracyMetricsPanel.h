@@ -1,8 +1,16 @@
 #pragma once
 
+#include "FrameTimeHistory.h"
+
 #include <QWidget>
 
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
 class QCheckBox;
+class QGridLayout;
 class QLabel;
 
 namespace shadowlab {
@@ -10,32 +18,56 @@ namespace shadowlab {
 class AccuracyController;
 
 // The accuracy dock's numbers: error against the hard and the area reference, what the
-// reference cost, and the switch for the error overlay on the scene view.
+// reference cost, what the frames cost, and the switch for the error overlay on the scene
+// view. In compare mode each number shows for side A, side B and B − A, the difference
+// coloured by which side is better and called "same" where it is within the measurement's
+// noise.
 class AccuracyMetricsPanel : public QWidget {
     Q_OBJECT
 
 public:
     explicit AccuracyMetricsPanel(QWidget* parent = nullptr);
 
-    // Shows what `controller` measured, greyed with a note when the view changed since.
+    // Shows what `controller` measured, each side greyed with a note when its view changed since.
     void showMeasurement(const AccuracyController& controller);
+    // The frame times of each side (one, or A and B), medians over the window's last frames.
+    void showFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime);
     bool overlayWanted() const;
 
 signals:
     void overlayToggled(bool on);
 
 private:
+    enum class Kind { Share, Error, Milliseconds };
+    // A metric's name and its three values: A (or the only side), B, B − A.
+    struct Row {
+        Kind kind;
+        std::array<QLabel*, 3> values{};
+    };
+    Row* addRow(QGridLayout* grid, const QString& objectName, const QString& name, const QString& toolTip, Kind kind);
+    // Fills `row` from both sides' values (nullopt: not measured); `noise` is the size of a
+    // difference that says nothing.
+    void put(Row& row, const std::array<std::optional<double>, 2>& values, const std::array<bool, 2>& stale, double noise);
+    void setColumns(int sides);
+
+    std::vector<QGridLayout*> m_grids;
+    std::vector<QLabel*> m_headers;     // "A", "B", "B − A" over each grid
+    int m_sides = 1;
     QCheckBox* m_overlayCheck = nullptr;
-    QLabel* m_misclassified = nullptr;
-    QLabel* m_falseShadow = nullptr;
-    QLabel* m_falseLight = nullptr;
-    QLabel* m_hardMae = nullptr;
-    QLabel* m_hardRmse = nullptr;
-    QLabel* m_areaMae = nullptr;
-    QLabel* m_areaRmse = nullptr;
-    QLabel* m_noiseFloor = nullptr;
-    QLabel* m_flicker = nullptr;
+    Row* m_misclassified = nullptr;
+    Row* m_falseShadow = nullptr;
+    Row* m_falseLight = nullptr;
+    Row* m_hardMae = nullptr;
+    Row* m_hardRmse = nullptr;
+    Row* m_flicker = nullptr;
+    Row* m_areaMae = nullptr;
+    Row* m_areaRmse = nullptr;
+    Row* m_noiseFloor = nullptr;
+    Row* m_frame = nullptr;
+    Row* m_shadowPass = nullptr;
+    std::vector<std::unique_ptr<Row>> m_rows;
     QLabel* m_referenceInfo = nullptr;
+    QLabel* m_costInfo = nullptr;
 };
 
 } // namespace shadowlab

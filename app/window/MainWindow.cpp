@@ -100,6 +100,9 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
             recordFrame(side);
+            // Both sides are measured over side A's pixels (one reference serves both).
+            if (side == Side::A)
+                m_accuracyDock->setViewSize(m_views[0]->size() * m_views[0]->devicePixelRatio());
             if (side != m_selected)
                 return;
             updateStatus();
@@ -110,7 +113,6 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
                     statusBar()->showMessage(tr("Warning: %1").arg(fit.warnings.front().message), 10000);
                 m_lastFitWarning = fit.warnings.empty() ? QString() : fit.warnings.front().message;
             }
-            m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
         });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {
             if (side == m_selected)
@@ -154,14 +156,15 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     });
     connect(m_dock, &PropertiesDock::animationChanged, this, &MainWindow::setLightAnimation);
 
-    // Accuracy: measures the selected side against the ray-traced reference; its error image
-    // lies over that side's view, and a point of its sweep chart becomes that side's settings.
+    // Accuracy: measures the scene (both sides in compare mode) against the ray-traced
+    // reference; each side's error image lies over its view, and a point of the sweep chart
+    // becomes the selected side's settings.
     m_accuracyDock = new AccuracyDock(this);
     addDockWidget(Qt::RightDockWidgetArea, m_accuracyDock);
     tabifyDockWidget(m_dock, m_accuracyDock);
     m_dock->raise();
     connect(m_accuracyDock, &AccuracyDock::errorOverlayChanged, this,
-            [this](const QImage& image) { m_views[index(m_selected)]->setErrorOverlay(image); });
+            [this](int side, const QImage& image) { m_views[std::size_t(side)]->setErrorOverlay(image); });
     connect(m_accuracyDock, &AccuracyDock::applySettingsRequested, this, [this](const Settings& settings) {
         try {
             setSettings(m_selected, settings, tr("Apply measured configuration"));
@@ -343,6 +346,7 @@ void MainWindow::recordFrame(Side side)
     if (!renderer)
         return;
     m_history[index(side)].add(renderer->lastFrame());
+    showFrameTimes();
     if (m_measureLeft > 0) {
         // Each side redraws itself (shadow pass included) until the selected one has its frames.
         if (side == m_selected && --m_measureLeft == 0) {
@@ -359,6 +363,15 @@ void MainWindow::recordFrame(Side side)
             m_views[index(side)]->redrawForMeasurement();
         }
     }
+}
+
+void MainWindow::showFrameTimes()
+{
+    std::vector<FrameTimeHistory::Summary> sides{m_history[0].summary()};
+    if (m_compare)
+        sides.push_back(m_history[1].summary());
+    const Renderer* renderer = m_views[0]->renderer();
+    m_accuracyDock->setFrameTimes(sides, renderer && isSoftwareRenderer(renderer->rendererString()));
 }
 
 QString MainWindow::timingText(Side side) const
@@ -650,7 +663,7 @@ void MainWindow::pushSettings()
     }
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_settings[i]);
-    m_accuracyDock->setSettings(m_settings[index(m_selected)]);
+    m_accuracyDock->setSides(m_settings[0], m_compare ? std::optional(m_settings[1]) : std::nullopt, int(index(m_selected)));
     updateCaptions();
 }
 
@@ -704,22 +717,20 @@ void MainWindow::setCompareMode(bool on)
         m_sceneSplitter->setSizes({half, half});
     }
     selectSide(on ? m_selected : Side::A);
+    showFrameTimes();
 }
 
 void MainWindow::selectSide(Side side)
 {
     if (!m_compare)
         side = Side::A;
-    if (side != m_selected)
-        m_views[index(m_selected)]->setErrorOverlay({}); // the measurement was of the other side
     m_selected = side;
     m_dock->setSettings(m_settings[index(side)]);
-    m_accuracyDock->setSettings(m_settings[index(side)]);
-    m_accuracyDock->setViewSize(m_views[index(side)]->size() * m_views[index(side)]->devicePixelRatio());
+    m_accuracyDock->setSides(m_settings[0], m_compare ? std::optional(m_settings[1]) : std::nullopt, int(index(side)));
     m_dock->setSideName(m_compare ? QLatin1String(kSideNames[index(side)]) : QString());
     // Tabbed or floating, a dock says whose settings it holds.
     m_dock->setWindowTitle(m_compare ? tr("Properties — side %1").arg(QLatin1String(kSideNames[index(side)])) : tr("Properties"));
-    m_accuracyDock->setWindowTitle(m_compare ? tr("Accuracy — side %1").arg(QLatin1String(kSideNames[index(side)])) : tr("Accuracy"));
+    m_accuracyDock->setWindowTitle(m_compare ? tr("Accuracy — A and B") : tr("Accuracy"));
     m_undoGroup->setActiveStack(m_undoStacks[index(side)]);
     m_depthView->setSource(m_views[index(side)]);
     updateCaptions();

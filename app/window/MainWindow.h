@@ -96,6 +96,8 @@ private:
     void createMeasureActions();
     void measureFrames(int count);
     void recordFrame(Side side);
+    // The sides' recent frame times to the accuracy dock, beside their error.
+    void showFrameTimes();
     QString timingText(Side side) const;
     QString compareTimingText() const;
     void createMenus();

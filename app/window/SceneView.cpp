@@ -13,6 +13,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLVersionFunctionsFactory>
+#include <QOpenGLPaintDevice>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -125,9 +126,18 @@ void SceneView::paintGL()
         }
     }
     if (!m_errorOverlay.isNull()) {
-        QPainter painter(this);
+        // On a paint device of the view's framebuffer, not the widget: a widget painter is
+        // redirected while the window is grabbed (screenshots), and the GL image covers it.
+        QOpenGLPaintDevice device(size() * devicePixelRatio());
+        device.setDevicePixelRatio(devicePixelRatio());
+        QPainter painter(&device);
         painter.setRenderHint(QPainter::SmoothPixmapTransform);
-        painter.drawImage(rect(), m_errorOverlay);
+        // The camera's field of view is vertical: a frame of another width (compare mode
+        // measures both sides at side A's size) matches this view when scaled to its height
+        // and centred.
+        const double scale = double(height()) / m_errorOverlay.height();
+        const double width = m_errorOverlay.width() * scale;
+        painter.drawImage(QRectF((this->width() - width) * 0.5, 0.0, width, height()), m_errorOverlay);
     }
     m_lastFrameMs = double(timer.nsecsElapsed()) * 1e-6;
     ++m_frameCount;
