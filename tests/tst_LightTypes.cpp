@@ -206,6 +206,7 @@ private Q_SLOTS:
         QTest::addColumn<double>("blend");
         QTest::addColumn<bool>("stabilize");
         QTest::addColumn<QString>("split");
+        QTest::addColumn<QString>("filter");
         // (Logarithmic splits put every seam within a metre of a camera whose near plane is a
         // few centimetres, out of these views; tst_LightRig checks their coverage.)
         const QStringList splits{"uniform", "practical"};
@@ -216,9 +217,17 @@ private Q_SLOTS:
                 for (double blend : {0.0, 0.2}) {
                     const bool stabilize = (k % 2) == 0;
                     QTest::newRow(qPrintable(QString("%1 %2 cascades blend %3 %4 %5").arg(scene).arg(cascades).arg(blend).arg(stabilize ? "stabilised" : "tight", splits[(k / 2) % 2])))
-                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2];
+                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2] << QString();
                     ++k;
                 }
+            }
+        }
+        // The wide filters read around the pixel: their taps, and PCSS's blocker search, must
+        // stay inside the cascade's own tile of the map.
+        for (const QString scene : {"seed", "city"}) {
+            for (const QString filter : {"pcss", "poisson", "pcf"}) {
+                QTest::newRow(qPrintable(QString("%1 4 cascades %2").arg(scene, filter)))
+                    << QString(scene) << 4 << 0.1 << true << QString("practical") << QString(filter);
             }
         }
     }
@@ -230,7 +239,14 @@ private Q_SLOTS:
         QFETCH(double, blend);
         QFETCH(bool, stabilize);
         QFETCH(QString, split);
+        QFETCH(QString, filter);
         Settings s = presetSettings(scene);
+        if (!filter.isEmpty()) {
+            applySetting(s, "filter.mode", filter);
+            // Wide: a tap or a blocker search near a tile's edge reaches well into the next tile.
+            applySetting(s, "filter.radius", "4");
+            applySetting(s, "filter.kernel", "7");
+        }
         s.shadow.cascades = cascades;
         s.shadow.blend = blend;
         s.light.stabilize = stabilize;

@@ -46,7 +46,11 @@ float filterShadow(vec2 uv, float reference)
     float blockers = 0.0;
     for (int i = 0; i < kBlockerTaps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * search;
-        float depth = texture(uShadowDepth, uv + offset).r;
+        vec2 at = uv + offset;
+#ifdef SHADOW_VIEWS
+        at = clamp(at, gShadowTile.xy, gShadowTile.zw);     // inside the view's own tile, as shadowTap
+#endif
+        float depth = texture(uShadowDepth, at).r;
         if (isBlocker(depth, wideTapReference(offset, reference))) {
             blockerSum += depth;
             blockers += 1.0;
