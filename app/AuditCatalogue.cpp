@@ -250,6 +250,12 @@ std::vector<AuditCase> makeCatalogue()
         accurate(seedWith({"light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
     add("cascade splits at shadow distance 1e5", "four finite slices up to the camera's far plane; error <= 2 %",
         accurate(seedWith({"shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
+    add("evsm4 on cascades at shadow distance 1e5", "one moments tile per cascade, blurred within it; finite; error <= 2 %",
+        accurate(seedWith({"filter.mode=evsm4", "shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
+    add("msm on a point light on a cube-face seam", "a moments tile per face; finite; error <= 2 %",
+        accurate(seedWith({"filter.mode=msm", "light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
+    add("moment mipmaps over several views", "refused, naming moments.mipmaps",
+        refused(seedWith({"filter.mode=vsm", "moments.mipmaps=true", "shadow.cascades=3"}), "moments.mipmaps"));
     add("cascades on a spot light", "refused, naming shadow.cascades",
         refused(seedWith({"light.type=spot", "shadow.cascades=4"}), "shadow.cascades"));
     add("perspective near = 0", "refused, naming light.near", refused(seedWith({"light.projection=perspective", "light.near=0"}), "light.near"));

@@ -645,11 +645,10 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (s.filter.earlyOut && usesShadowViews(s))
         error("filter.early_out", QStringLiteral("penumbra-only filtering reads a single map's min/max mip; turn filter.early_out off with "
                                                  "cascades or a point light"));
-    if (shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments && usesShadowViews(s))
-        error("filter.mode", QStringLiteral("filter.mode=%1 filters one moments map, and cascades or a point light need several; choose a "
-                                            "depth-compare filter (hard, pcf, poisson, pcss, ...), or set shadow.cascades=1 with a "
-                                            "directional or spot light")
-                                 .arg(toString(s.filter.mode)));
+    if (shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments && s.moments.mipmaps && usesShadowViews(s))
+        error("moments.mipmaps", QStringLiteral("the mip levels of a map holding several views (cascades or a point light's faces) would "
+                                                "blend neighbouring views; set moments.mipmaps=false, or shadow.cascades=1 with a "
+                                                "directional or spot light"));
     if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
         error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
 

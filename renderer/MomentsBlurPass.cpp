@@ -16,7 +16,9 @@ MomentsBlurPass::Program::Program(GlFunctions* gl, int radius)
     : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsblur.frag"), {QStringLiteral("BLUR_RADIUS %1").arg(radius)}),
       source(program.uniform("uSource")),
       step(program.uniform("uStep")),
-      weights(program.uniform("uWeights"))
+      weights(program.uniform("uWeights")),
+      tileMin(program.uniform("uTileMin")),
+      tileMax(program.uniform("uTileMax"))
 {
 }
 
@@ -54,7 +56,7 @@ std::vector<float> MomentsBlurPass::weights(int width)
     return w;
 }
 
-int MomentsBlurPass::render(const MomentsMap& map, int width)
+int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile)
 {
     int draws = 0;
     const std::vector<float> w = weights(width);
@@ -62,7 +64,7 @@ int MomentsBlurPass::render(const MomentsMap& map, int width)
         float padded[kMaxWeights] = {};
         std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxWeights), padded);
         PassState state;
-        state.viewport = QRect(0, 0, map.size(), map.size());
+        state.viewport = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
         applyPassState(m_gl, state);
         const int radius = int(w.size()) - 1;
         std::unique_ptr<Program>& p = m_programs[radius];
@@ -71,6 +73,8 @@ int MomentsBlurPass::render(const MomentsMap& map, int width)
         p->program.bind();
         p->program.set(p->source, 0);
         m_gl->glUniform1fv(p->weights, kMaxWeights, padded);
+        m_gl->glUniform2i(p->tileMin, state.viewport.left(), state.viewport.top());
+        m_gl->glUniform2i(p->tileMax, state.viewport.right(), state.viewport.bottom());
         m_gl->glActiveTexture(GL_TEXTURE0);
         m_gl->glBindSampler(0, m_sampler.id());
         m_gl->glBindVertexArray(m_emptyVertexArray.id());

@@ -3,6 +3,8 @@
 #include "MomentsMap.h"
 #include "ShaderProgram.h"
 
+#include <QRect>
+
 #include <map>
 #include <memory>
 #include <vector>
@@ -16,7 +18,8 @@ public:
     explicit MomentsBlurPass(GlFunctions* gl);
 
     // `width` taps (0 or 1: no blur, only the mips). Returns the number of full-map draws.
-    int render(const MomentsMap& map, int width);
+    // Within `tile` (texels; empty: the whole map): a view's taps never reach its neighbours.
+    int render(const MomentsMap& map, int width, const QRect& tile = QRect());
 
     // The weights of a `width`-tap kernel, centre first then one side (pure; for tests): a
     // Gaussian of sigma width / 4, normalised so both sides and the centre sum to 1.
@@ -27,7 +30,7 @@ private:
     struct Program {
         Program(GlFunctions* gl, int radius);
         ShaderProgram program;
-        GLint source, step, weights;
+        GLint source, step, weights, tileMin, tileMax;
     };
 
     GlFunctions* m_gl;

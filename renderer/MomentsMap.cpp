@@ -54,32 +54,35 @@ void MomentsMap::configureSampler(bool mipmaps, float anisotropy)
     m_anisotropy = anisotropy;
 }
 
-void MomentsMap::ensure(int size, MomentFormat format, bool mipmaps, int anisotropy)
+void MomentsMap::ensureTiles(int size, int columns, int rows, MomentFormat format, bool mipmaps, int anisotropy)
 {
-    if (!m_texture || size != m_size || format != m_format || mipmaps != m_mipmaps)
-        allocate(size, format, mipmaps);
+    if (!m_texture || size != m_size || columns != m_columns || rows != m_rows || format != m_format || mipmaps != m_mipmaps)
+        allocate(size, columns, rows, format, mipmaps);
     const float wanted = std::min(float(anisotropy), m_maxAnisotropy);
     if (wanted != m_anisotropy || mipmaps != m_mipmaps)
         configureSampler(mipmaps, wanted);
     m_mipmaps = mipmaps;
 }
 
-void MomentsMap::allocate(int size, MomentFormat format, bool mipmaps)
+void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, bool mipmaps)
 {
     GLint maxSize = 0;
     m_gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-    if (size < 16 || size > maxSize)
+    const int width = size * columns, height = size * rows;
+    if (size < 16 || width > maxSize || height > maxSize)
         throw SettingsError(QStringLiteral("map.size"),
-                            QStringLiteral("%1 is out of range; this driver allows [16, %2]").arg(size).arg(maxSize));
-    const QString what = QStringLiteral("%1 x %1 RGBA%2F moments map").arg(size).arg(toString(format));
+                            columns * rows > 1 ? QStringLiteral("%1 is out of range for %2 x %3 tiles; this driver allows [16, %4]")
+                                                     .arg(size).arg(columns).arg(rows).arg(maxSize / std::max(columns, rows))
+                                               : QStringLiteral("%1 is out of range; this driver allows [16, %2]").arg(size).arg(maxSize));
+    const QString what = QStringLiteral("%1 x %2 RGBA%3F moments map").arg(width).arg(height).arg(toString(format));
 
     while (m_gl->glGetError() != GL_NO_ERROR) {
     }
     auto colour = [&](const QString& label, int levels) {
         GlTexture texture = makeTexture(m_gl);
         m_gl->glBindTexture(GL_TEXTURE_2D, texture.id());
-        for (int level = 0, side = size; level < levels; ++level, side = std::max(1, side / 2))
-            m_gl->glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat(format)), side, side, 0, GL_RGBA, GL_FLOAT, nullptr);
+        for (int level = 0, w = width, h = height; level < levels; ++level, w = std::max(1, w / 2), h = std::max(1, h / 2))
+            m_gl->glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat(format)), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -88,11 +91,11 @@ void MomentsMap::allocate(int size, MomentFormat format, bool mipmaps)
         labelGlObject(GlLabelKind::Texture, texture.id(), label);
         return texture;
     };
-    GlTexture texture = colour(what, mipmaps ? mipLevels(size) : 1);
+    GlTexture texture = colour(what, mipmaps ? mipLevels(std::max(width, height)) : 1);
     GlTexture scratch = colour(QStringLiteral("moments blur: first axis"), 1);
     GlTexture depth = makeTexture(m_gl);
     m_gl->glBindTexture(GL_TEXTURE_2D, depth.id());
-    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     labelGlObject(GlLabelKind::Texture, depth.id(), QStringLiteral("moments pass: depth"));
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
@@ -129,6 +132,8 @@ void MomentsMap::allocate(int size, MomentFormat format, bool mipmaps)
     m_framebuffer = std::move(framebuffer);
     m_scratchFramebuffer = std::move(scratchFramebuffer);
     m_size = size;
+    m_columns = columns;
+    m_rows = rows;
     m_format = format;
 }
 

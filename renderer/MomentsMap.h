@@ -13,12 +13,19 @@ class MomentsMap {
 public:
     explicit MomentsMap(GlFunctions* gl);
 
-    // (Re)allocates when size, format or mipmaps differ and sets the sampler's anisotropy.
-    // Throws SettingsError when the size exceeds GL_MAX_TEXTURE_SIZE and RenderError when the
-    // driver cannot allocate or render to it; the previous map is kept then.
-    void ensure(int size, MomentFormat format, bool mipmaps, int anisotropy);
+    // (Re)allocates when size, tiles, format or mipmaps differ and sets the sampler's
+    // anisotropy. `columns` x `rows` tiles of `size` texels side by side hold several views
+    // (cascades, cube faces), as ShadowMap's tiles do. Throws SettingsError when the texture
+    // would exceed GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate or render
+    // to it; the previous map is kept then.
+    void ensure(int size, MomentFormat format, bool mipmaps, int anisotropy) { ensureTiles(size, 1, 1, format, mipmaps, anisotropy); }
+    void ensureTiles(int size, int columns, int rows, MomentFormat format, bool mipmaps, int anisotropy);
 
-    int size() const { return m_size; }
+    int size() const { return m_size; }             // texels per side of one tile
+    int width() const { return m_size * m_columns; }
+    int height() const { return m_size * m_rows; }
+    int columns() const { return m_columns; }
+    int rows() const { return m_rows; }
     MomentFormat format() const { return m_format; }
     bool mipmaps() const { return m_mipmaps; }
     // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
@@ -32,7 +39,7 @@ public:
     GLuint sampler() const { return m_sampler.id(); }
 
 private:
-    void allocate(int size, MomentFormat format, bool mipmaps);
+    void allocate(int size, int columns, int rows, MomentFormat format, bool mipmaps);
     void configureSampler(bool mipmaps, float anisotropy);
 
     GlFunctions* m_gl;
@@ -43,6 +50,8 @@ private:
     GlFramebuffer m_scratchFramebuffer;
     GlSampler m_sampler;
     int m_size = 0;
+    int m_columns = 1;
+    int m_rows = 1;
     MomentFormat m_format = MomentFormat::Rgba32F;
     bool m_mipmaps = false;
     float m_anisotropy = 1.0f;

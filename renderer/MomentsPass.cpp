@@ -33,7 +33,7 @@ QStringList MomentsPass::variantDefines(const Settings& settings, bool perspecti
     return defines;
 }
 
-MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, const MomentsMap& map)
+MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile)
 {
     const QStringList defines = variantDefines(settings, light.perspective);
     std::unique_ptr<Program>& p = m_programs[defines.join(QLatin1Char(';'))];
@@ -42,10 +42,14 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState fill;
-    fill.viewport = QRect(0, 0, map.size(), map.size());
+    fill.viewport = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
     applyPassState(m_gl, fill);
+    // Only this tile's depth: the other views' tiles keep theirs.
+    m_gl->glEnable(GL_SCISSOR_TEST);
+    m_gl->glScissor(fill.viewport.x(), fill.viewport.y(), fill.viewport.width(), fill.viewport.height());
     m_gl->glClearDepth(1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+    m_gl->glDisable(GL_SCISSOR_TEST);
 
     const MomentWarp warp = momentWarp(settings);
     p->program.bind();
@@ -66,20 +70,20 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     return *p;
 }
 
-void MomentsPass::clear(const LightFrame& light, const Settings& settings, const MomentsMap& map)
+void MomentsPass::clear(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile)
 {
-    begin(light, settings, map);
+    begin(light, settings, map, tile);
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});
 }
 
-int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map)
+int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile)
 {
     // Every face: the moments must hold the nearest surface, receivers included, so a lit
     // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
     // for acne, would leave the far plane behind receivers, and the exponential warps read
     // that gap as light).
-    Program& p = begin(light, settings, map);
+    Program& p = begin(light, settings, map, tile);
     int draws = 0;
     const auto& objects = scene.scene().objects;
     for (std::size_t i = 0; i < objects.size(); ++i) {

@@ -6,6 +6,8 @@
 #include "Settings.h"
 #include "ShaderProgram.h"
 
+#include <QRect>
+
 #include <map>
 #include <memory>
 
@@ -21,9 +23,10 @@ public:
     explicit MomentsPass(GlFunctions* gl);
 
     // Returns the number of caster draw calls. `settings.filter.mode` must be a moment technique.
-    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map);
+    // Into `tile` of the map (texels; empty: the whole map), for one view of several.
+    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile = QRect());
     // Fills the map with the far plane's moments only: every lookup reads lit.
-    void clear(const LightFrame& light, const Settings& settings, const MomentsMap& map);
+    void clear(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile = QRect());
 
     // The #defines of the variant for `settings` (exposed for tests).
     static QStringList variantDefines(const Settings& settings, bool perspective);
@@ -35,7 +38,7 @@ private:
         GLint mvp, depthRange, farPlane, exponentPositive, exponentNegative;
     };
 
-    Program& begin(const LightFrame& light, const Settings& settings, const MomentsMap& map);
+    Program& begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile);
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // for the far-plane triangle

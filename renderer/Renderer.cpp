@@ -50,7 +50,8 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
                 m_momentsPass = std::make_unique<MomentsPass>(m_gl);
                 m_momentsBlur = std::make_unique<MomentsBlurPass>(m_gl);
             }
-            m_momentsMap->ensure(settings.map.size, settings.moments.format, settings.moments.mipmaps, settings.moments.anisotropy);
+            m_momentsMap->ensureTiles(settings.map.size, columns, rows, settings.moments.format, settings.moments.mipmaps,
+                                      settings.moments.anisotropy);
         }
     }
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
@@ -99,20 +100,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         renderViews(settings, timing, stats);
     } else if (settings.shadow.enabled) {
         m_viewVolumes.clear();
-        ShadowKey key{m_sceneGeneration, fit.volume, reversed, settings.map.size, settings.map.format,
-                      settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits};
-        if (moments) {
-            const MomentWarp warp = momentWarp(settings);
-            key.moments = true;
-            key.momentTechnique = settings.filter.mode;
-            key.momentFormat = settings.moments.format;
-            key.exponentPositive = warp.positive;
-            key.exponentNegative = warp.negative;
-            key.blur = settings.moments.blur;
-            key.mipmaps = settings.moments.mipmaps;
-            key.cullFront = false;      // the moments pass draws every face, with no offset
-            key.polygonFactor = key.polygonUnits = 0.0;
-        }
+        const ShadowKey key = shadowKey(settings, fit.volume, reversed);
         if (m_shadowKey != key && !fit.anythingToShadow) {
             // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
             if (moments)
@@ -173,18 +161,40 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_viewSettings = settings;
 }
 
+Renderer::ShadowKey Renderer::shadowKey(const Settings& settings, const LightVolume& volume, bool reversed) const
+{
+    ShadowKey key{m_sceneGeneration, volume, reversed, settings.map.size, settings.map.format,
+                  settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits,
+                  m_shadowMap.columns(), m_shadowMap.rows()};
+    if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments) {
+        const MomentWarp warp = momentWarp(settings);
+        key.moments = true;
+        key.momentTechnique = settings.filter.mode;
+        key.momentFormat = settings.moments.format;
+        key.exponentPositive = warp.positive;
+        key.exponentNegative = warp.negative;
+        key.blur = settings.moments.blur;
+        key.mipmaps = settings.moments.mipmaps;
+        key.cullFront = false;      // the moments pass draws every face, with no offset
+        key.polygonFactor = key.polygonUnits = 0.0;
+    }
+    return key;
+}
+
 void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameStats& stats)
 {
     const bool reversed = m_shadowMap.reversedDepth();
+    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
     // What all views share: when it changes, every view is drawn again.
-    const ShadowKey shared{m_sceneGeneration, LightVolume{}, reversed, settings.map.size, settings.map.format,
-                           settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits,
-                           m_shadowMap.columns(), m_shadowMap.rows()};
+    const ShadowKey shared = shadowKey(settings, LightVolume{}, reversed);
     const std::size_t count = m_views.set.views.size();
     if (m_shadowKey != shared || m_viewVolumes.size() != count) {
         m_viewVolumes.assign(count, std::nullopt);
         // A fresh map: every tile reads lit until drawn.
-        m_depthPass.clear(m_shadowMap, reversed);
+        if (moments)
+            m_momentsPass->clear(m_views.frames.front(), settings, *m_momentsMap);
+        else
+            m_depthPass.clear(m_shadowMap, reversed);
         m_shadowKey = shared;
         ++m_mapGeneration;
     }
@@ -213,10 +223,20 @@ void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameSta
             continue;
         QElapsedTimer wall;
         wall.start();
-        if (wanted)
+        if (moments) {
+            // The view's moments, blurred within its tile (the map's mips would mix the
+            // views, so settings refuse them here).
+            if (wanted) {
+                stats.viewDraws[i] = m_momentsPass->render(*m_scene, m_views.frames[i], settings, *m_momentsMap, tile);
+                m_momentsBlur->render(*m_momentsMap, settings.moments.blur, tile);
+            } else {
+                m_momentsPass->clear(m_views.frames[i], settings, *m_momentsMap, tile);
+            }
+        } else if (wanted) {
             stats.viewDraws[i] = m_depthPass.renderTile(*m_scene, m_views.frames[i], settings.bias, m_shadowMap, tile);
-        else
+        } else {
             m_depthPass.clearTile(m_shadowMap, reversed, tile);
+        }
         if (timing == TimingMode::Finish) {
             m_gl->glFinish();
             stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;

@@ -125,6 +125,9 @@ private:
 
         bool operator==(const ShadowKey&) const = default;
     };
+    // What the map drawn for `settings` and `volume` depends on (an empty volume: what all of
+    // several views share).
+    ShadowKey shadowKey(const Settings& settings, const LightVolume& volume, bool reversed) const;
 
     GlFunctions* m_gl;
     ShadowMap m_shadowMap;

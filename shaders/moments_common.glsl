@@ -38,6 +38,17 @@ float momentDepth(float reference)
 #endif
 }
 
+// Where a technique samples the moments: with several views, inside the pixel's view's tile
+// (half a texel in), so bilinear filtering never blends a neighbouring view in.
+vec2 momentsUv(vec2 uv)
+{
+#ifdef SHADOW_VIEWS
+    return clamp(uv, gShadowTile.xy, gShadowTile.zw);
+#else
+    return uv;
+#endif
+}
+
 // Outside the map nothing was rendered: lit, as the depth-compare techniques' border says.
 bool outsideMap(vec2 uv)
 {

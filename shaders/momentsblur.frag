@@ -7,18 +7,19 @@
 uniform sampler2D uSource;
 uniform ivec2 uStep;            // one texel along this pass's axis
 uniform float uWeights[16];     // centre first, summing to 1 over both sides
+uniform ivec2 uTileMin;         // the texels of the tile being blurred (the whole map, or one
+uniform ivec2 uTileMax;         // view's tile of several), inclusive: taps stay inside it
 
 layout(location = 0) out vec4 fragMoments;
 
 void main()
 {
     ivec2 centre = ivec2(gl_FragCoord.xy);
-    ivec2 last = textureSize(uSource, 0) - 1;
     vec4 sum = uWeights[0] * texelFetch(uSource, centre, 0);
     for (int i = 1; i <= BLUR_RADIUS; ++i) {
-        // Clamped to the edge, as the map's own sampler is.
-        sum += uWeights[i] * (texelFetch(uSource, clamp(centre + i * uStep, ivec2(0), last), 0)
-                              + texelFetch(uSource, clamp(centre - i * uStep, ivec2(0), last), 0));
+        // Clamped to the tile's edge, as the map's own sampler clamps at the map's.
+        sum += uWeights[i] * (texelFetch(uSource, clamp(centre + i * uStep, uTileMin, uTileMax), 0)
+                              + texelFetch(uSource, clamp(centre - i * uStep, uTileMin, uTileMax), 0));
     }
     fragMoments = sum;
 }

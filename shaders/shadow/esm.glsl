@@ -20,7 +20,7 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    float occluder = texture(uShadowMoments, uv).r;
+    float occluder = texture(uShadowMoments, momentsUv(uv)).r;
     // exp(c (d - t)) <= 1 in front; the product stays finite as c <= ln(largest float).
     return clamp(occluder * exp(-uExponentPositive * momentDepth(reference)), 0.0, 1.0);
 }

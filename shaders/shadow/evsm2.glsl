@@ -19,7 +19,7 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    vec2 moments = texture(uShadowMoments, uv).rg;
+    vec2 moments = texture(uShadowMoments, momentsUv(uv)).rg;
     float w = warpDepth(momentDepth(reference)).x;
     // The least variance relative to the warped depth squared: the same share of precision at
     // every depth and exponent.

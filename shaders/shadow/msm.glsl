@@ -80,7 +80,7 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    vec4 stored = texture(uShadowMoments, uv);
+    vec4 stored = texture(uShadowMoments, momentsUv(uv));
 #ifdef MOMENTS_16BIT
     stored.x -= kQuantiseOffset;
     stored = kDequantise * stored;
