@@ -158,12 +158,13 @@ void DepthViewPass::renderOverlay(const RenderTarget& target, const QImage& imag
     if (image.isNull() || target.size.isEmpty())
         return;
     const QImage rgba = image.convertToFormat(QImage::Format_RGBA8888_Premultiplied);
-    if (!m_overlay) {
+    const bool fresh = !m_overlay;
+    if (fresh)
         m_overlay = makeTexture(m_gl);
-        labelGlObject(GlLabelKind::Texture, m_overlay.id(), QStringLiteral("depth view: legend and outlines"));
-    }
     m_gl->glActiveTexture(GL_TEXTURE0);
     m_gl->glBindTexture(GL_TEXTURE_2D, m_overlay.id());
+    if (fresh)  // a texture name is an object only once bound
+        labelGlObject(GlLabelKind::Texture, m_overlay.id(), QStringLiteral("depth view: legend and outlines"));
     m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.constBits());
     Program& p = program({QStringLiteral("OVERLAY")});

@@ -21,9 +21,9 @@ uniform vec2 uShadowDepthRange; // near and far of the light volume, world units
 #endif
 
 // The receiver, for the wide filters; set by the lit pass before it calls filterShadow.
-float gShadowW;                 // the receiver's clip w (its distance along a perspective light's axis)
-float gGrowth;                  // change of depth per world unit of a tap's distance, at the receiver's slope
-vec2 gReceiverSlope;            // depth per uv unit of the receiver's plane (RECEIVER_PLANE)
+float gShadowW = 1.0;           // the receiver's clip w (its distance along a perspective light's axis)
+float gGrowth = 0.0;            // change of depth per world unit of a tap's distance, at the receiver's slope
+vec2 gReceiverSlope = vec2(0.0); // depth per uv unit of the receiver's plane (RECEIVER_PLANE)
 
 float shadowTap(vec2 uv, float reference)
 {

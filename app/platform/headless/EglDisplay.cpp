@@ -7,6 +7,11 @@
 
 #include <array>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
 namespace shadowlab {
 
 namespace {
@@ -38,6 +43,23 @@ QString coreContextProblem(EGLDisplay display)
     return QString();
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// LeakSanitizer looks for leaks at exit, after eglTerminate has unloaded Mesa's driver; the
+// driver's allocations, reachable only from its own globals, would then read as leaks of
+// whoever made the context. In sanitizer builds the loaded drivers stay mapped until exit.
+void keepDriversLoaded()
+{
+    dl_iterate_phdr(
+            [](dl_phdr_info *info, size_t, void *) {
+                const QByteArray name(info->dlpi_name);
+                if (name.endsWith("_dri.so") || name.contains("libgallium"))
+                    dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+                return 0;
+            },
+            nullptr);
+}
+#endif
+
 } // namespace
 
 std::unique_ptr<EglDisplay> EglDisplay::open(QString *whyNot)
@@ -56,8 +78,12 @@ std::unique_ptr<EglDisplay> EglDisplay::open(QString *whyNot)
             return nullptr;
         }
         const QString problem = coreContextProblem(display);
-        if (problem.isEmpty())
+        if (problem.isEmpty()) {
+#if defined(__SANITIZE_ADDRESS__)
+            keepDriversLoaded();
+#endif
             return std::unique_ptr<EglDisplay>(new EglDisplay(display, platform));
+        }
         problems << QStringLiteral("%1: %2").arg(platform, problem);
         eglTerminate(display);
         return nullptr;
