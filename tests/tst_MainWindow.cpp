@@ -122,6 +122,7 @@ private slots:
     void settingsPersistAcrossWindows();
     void orbitKeepsTheDistanceAndZoomNeverReachesTheTarget();
     void fittedVolumeIsShownReadOnlyAndACutVolumeWarnsAtItsField();
+    void spotLightsConeStaysEditableWhenFitted();
     void orbitNeverGoesBelowTheGround_data();
     void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
@@ -541,6 +542,46 @@ void tst_MainWindow::fittedVolumeIsShownReadOnlyAndACutVolumeWarnsAtItsField()
     m_window->setSettings(Side::A, presetSettings(QStringLiteral("seed")));
     QVERIFY(settle(*m_window));
     QVERIFY(dock->warningText(QStringLiteral("light.extent")).isEmpty() && dock->warningText(QStringLiteral("light.far")).isEmpty());
+}
+
+void tst_MainWindow::spotLightsConeStaysEditableWhenFitted()
+{
+    // A spot light's field of view is its cone: fitting shapes the map inside it, and says so,
+    // but the cone stays the user's; near and far are fitted as for any light.
+    PropertiesDock* dock = m_window->propertiesDock();
+    Settings s = presetSettings(QStringLiteral("seed"));
+    applySetting(s, QStringLiteral("light.type"), QStringLiteral("spot"));
+    s.light.fov = 100.0;
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    SliderSpinBox* fov = field(QStringLiteral("light.fov"));
+    QVERIFY(fov->isEnabled());
+    QVERIFY(!field(QStringLiteral("light.far"))->isEnabled());
+    QCOMPARE(fov->value(), 100.0);
+    const QString note = dock->warningText(QStringLiteral("light.fov"));
+    const auto spans = [](const QString& text) {
+        const int at = text.indexOf(QStringLiteral("spans "));
+        return at < 0 ? qQNaN() : QStringView(text).mid(at + 6).toString().section(QChar(0xB0), 0, 0).toDouble();
+    };
+    const double fitted = spans(note);
+    // (Stabilised maps round their size up, so the map may be a little wider than the cone.)
+    QVERIFY2(fitted > 0.0 && fitted < 120.0, qPrintable(note));
+
+    // Narrowing the cone from the dock is a change of the light, and the map follows it.
+    fov->setValue(60.0);
+    emit fov->valueEdited(60.0);
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A).light.fov, 60.0);
+    QCOMPARE(fov->value(), 60.0);
+    const QString narrower = dock->warningText(QStringLiteral("light.fov"));
+    const double refitted = spans(narrower);
+    QVERIFY2(refitted > 0.0 && refitted < fitted, qPrintable(note + QStringLiteral(" / ") + narrower));
+
+    // A point light's faces are fitted whole: nothing there for the user to set.
+    applySetting(s, QStringLiteral("light.type"), QStringLiteral("point"));
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    QVERIFY(!fov->isEnabled());
 }
 
 void tst_MainWindow::orbitNeverGoesBelowTheGround_data()

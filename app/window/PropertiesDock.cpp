@@ -612,12 +612,16 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
     }
     m_warned.clear();
     const bool fitted = light.fit == LightFit::Scene;
+    // A spot light's field of view is its cone, which the fitted map lies inside: it stays
+    // the user's to set, whatever the fit.
+    const bool spot = light.type == LightType::Spot;
+    const auto isFitted = [&](const char* key) { return fitted && !(spot && qstrcmp(key, "light.fov") == 0); };
 
     for (const char* key : kFittedKeys) {
         for (QWidget* w : m_rows.value(QString::fromLatin1(key))) {
-            w->setEnabled(!fitted);
-            w->setToolTip(fitted ? tr("Fitted to the scene (read-only): set Volume to manual to set it by hand")
-                                 : tooltipFor(keyInfo(QString::fromLatin1(key))));
+            w->setEnabled(!isFitted(key));
+            w->setToolTip(isFitted(key) ? tr("Fitted to the scene (read-only): set Volume to manual to set it by hand")
+                                        : tooltipFor(keyInfo(QString::fromLatin1(key))));
         }
     }
     if (fitted && fit.fitted) {
@@ -636,9 +640,19 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
         m_loading = true;
         for (const char* key : kFittedKeys) {
             if (const auto it = m_fields.find(QString::fromLatin1(key)); it != m_fields.end())
-                it->load(shown);
+                it->load(isFitted(key) ? shown : m_pending);
         }
         m_loading = loading;
+        if (spot && v.perspective) {
+            // What the fit chose inside the cone, said under the cone's own field.
+            const QString key = QStringLiteral("light.fov");
+            if (auto it = m_fields.find(key); it != m_fields.end() && !it->error->property("refusal").toBool()) {
+                it->error->setText(tr("The cone; the map fitted to what it lights spans %1°").arg(shown.light.fov, 0, 'f', 1));
+                it->error->setStyleSheet(QStringLiteral("color: palette(mid);"));
+                it->error->setVisible(true);
+                m_warned << key;
+            }
+        }
     } else if (!fitted) {
         const bool loading = m_loading;
         m_loading = true;
