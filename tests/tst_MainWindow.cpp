@@ -867,10 +867,28 @@ void tst_MainWindow::statusBarShowsMediansAndMeasuresFrames()
     QVERIFY2(m_window->sceneView(Side::A)->renderer()->shadowPassCount() >= shadowPasses + 100, "every measured frame ran the shadow pass");
     QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("100 frames")), qPrintable(m_window->statusBar()->currentMessage()));
     QVERIFY2(timing->text().contains(QStringLiteral("median of 100")), qPrintable(timing->text()));
-    // Compare mode: both sides' cost and the difference.
+    // Compare mode: both sides' cost and the difference, each side's passes in the tooltip.
     m_window->setCompareMode(true);
     QVERIFY(settle(*m_window));
     QVERIFY2(timing->text().contains(QStringLiteral("A: ")) && timing->text().contains(QStringLiteral("B − A")), qPrintable(timing->text()));
+    QVERIFY2(timing->toolTip().contains(QStringLiteral("Side B: shadow")), qPrintable(timing->toolTip()));
+
+    // Nothing in the status bar is cut off at the window's default size, in either mode.
+    m_window->resize(1200, 750);
+    for (bool compare : {true, false}) {
+        m_window->setCompareMode(compare);
+        QVERIFY(settle(*m_window));
+        QTest::qWait(50);
+        int needed = 0;
+        for (QLabel* label : m_window->statusBar()->findChildren<QLabel*>()) {
+            if (label->isVisible() && !label->text().isEmpty()) {
+                needed += label->sizeHint().width();
+                QVERIFY2(label->width() >= label->sizeHint().width(),
+                         qPrintable(QStringLiteral("'%1' is %2 px wide, needs %3").arg(label->text()).arg(label->width()).arg(label->sizeHint().width())));
+            }
+        }
+        QVERIFY2(needed <= m_window->statusBar()->width(), qPrintable(QStringLiteral("%1 px of labels in %2").arg(needed).arg(m_window->statusBar()->width())));
+    }
 }
 
 SHADOWLAB_TEST_MAIN(tst_MainWindow)

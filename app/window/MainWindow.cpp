@@ -388,12 +388,18 @@ QString MainWindow::compareTimingText() const
 {
     if (!m_compare)
         return timingText(m_selected);
-    // Both sides' cost side by side, and what B costs more (or less) than A.
+    // Both sides' frame and what B costs more (or less) than A, short enough for the default
+    // window: the passes of each are in the tooltip and in the accuracy dock's cost table.
     const FrameTimeHistory::Summary a = m_history[0].summary(), b = m_history[1].summary();
-    QString text = tr("A: %1 | B: %2").arg(timingText(Side::A), timingText(Side::B));
-    if (a.frame.count > 0 && b.frame.count > 0)
-        text += tr(" | B − A: frame %1 ms").arg(b.frame.median - a.frame.median, 0, 'f', 1);
-    return text;
+    if (a.frame.count == 0 || b.frame.count == 0)
+        return QString();
+    const Renderer* renderer = m_views[0]->renderer();
+    const bool cpu = renderer && isSoftwareRenderer(renderer->rendererString());
+    return tr("frame A: %1 · B: %2 · B − A: %3 ms%4 · medians")
+        .arg(a.frame.median, 0, 'f', 1)
+        .arg(b.frame.median, 0, 'f', 1)
+        .arg(b.frame.median - a.frame.median, 0, 'f', 1)
+        .arg(cpu ? tr(" CPU time") : QString());
 }
 
 void MainWindow::createToolBar()
@@ -412,16 +418,24 @@ void MainWindow::createToolBar()
     bar->addAction(m_screenshotAction);
 }
 
+QString MainWindow::timingToolTip() const
+{
+    const QString about = tr("Medians over the last frames of the wall time of the shadow pass (over the frames that ran it; \"cached\" "
+                             "when the light, the casters and the map did not change), the lit pass and the whole frame, each between "
+                             "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU time\"). View → Measure 100 "
+                             "Frames times the pass on every frame.");
+    if (!m_compare)
+        return about;
+    return tr("Side A: %1\nSide B: %2\n\n%3").arg(timingText(Side::A), timingText(Side::B), about);
+}
+
 void MainWindow::createStatusBar()
 {
     m_texelLabel = new QLabel;
     m_texelLabel->setObjectName(QStringLiteral("texelLabel"));
     m_timingLabel = new QLabel;
     m_timingLabel->setObjectName(QStringLiteral("timingLabel"));
-    m_timingLabel->setToolTip(tr("Medians over the last frames of the wall time of the shadow pass (over the frames that ran it; \"cached\" "
-                                 "when the light, the casters and the map did not change), the lit pass and the whole frame, each between "
-                                 "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU time\"). View → Measure 100 "
-                                 "Frames times the pass on every frame."));
+    m_timingLabel->setToolTip(timingToolTip());
     m_mapLabel = new QLabel;
     m_mapLabel->setObjectName(QStringLiteral("mapLabel"));
     m_mapLabel->setToolTip(tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow"));
@@ -691,10 +705,18 @@ void MainWindow::updateStatus()
     // Wall times with glFinish between passes (the GPU timer misses a software renderer's
     // deferred rasterisation), as medians over the last frames: single frames jump under load.
     m_timingLabel->setText(compareTimingText());
-    const QString footprint = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize
-                                  ? tr("texel footprint %1 wu (fitted; %2 as set)").arg(stats.texelWorldSize, 0, 'g', 3).arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3)
-                                  : tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
+    m_timingLabel->setToolTip(timingToolTip());
+    // Short enough for the default window; the tooltip says it in full.
+    const bool refitted = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize;
+    const QString footprint = refitted ? tr("texel footprint %1 wu, fitted").arg(stats.texelWorldSize, 0, 'g', 3)
+                                       : tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
     m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), footprint) : tr("no shadow map"));
+    QString mapTip = tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow.");
+    if (shown.shadow.enabled && refitted)
+        mapTip += QLatin1Char(' ') + tr("Fitted to the scene: %1 wu a texel, against %2 wu with the volume as set.")
+                                         .arg(stats.texelWorldSize, 0, 'g', 3)
+                                         .arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3);
+    m_mapLabel->setToolTip(mapTip);
 }
 
 void MainWindow::setCompareMode(bool on)

@@ -100,6 +100,7 @@ private:
     void showFrameTimes();
     QString timingText(Side side) const;
     QString compareTimingText() const;
+    QString timingToolTip() const;
     void createMenus();
     void createToolBar();
     void createStatusBar();
