@@ -1,6 +1,5 @@
 #include "Application.h"
 #include "HeadlessPlatform.h"
-#include "MainWindow.h"
 #include "cli/CliSupport.h"
 #include "cli/Commands.h"
 
@@ -105,21 +104,6 @@ int main(int argc, char* argv[])
         shadowlab::cli::printUsage(shadowlab::cli::out());
         return shadowlab::cli::kExitOk;
     }
-    if (!arguments.isEmpty()) {
-        QGuiApplication app(argc, argv);
-        const QStringList left = QGuiApplication::arguments().mid(1); // without Qt's own options
-        if (!left.isEmpty())
-            return shadowlab::cli::unknownCommand(left.first());
-    }
-
     QApplication app(argc, argv);
-    if (shadowlab::headlessPlatformNames().contains(QGuiApplication::platformName())) {
-        // A window nobody can see would run forever: say what to do instead.
-        shadowlab::cli::err() << "shadowlab: there is no display, so the explorer cannot open.\n"
-                              << "Render it offscreen instead: shadowlab screenshot --out window.png" << Qt::endl;
-        return shadowlab::cli::kExitBadInput;
-    }
-    shadowlab::MainWindow window;
-    window.show();
-    return app.exec();
+    return shadowlab::cli::runExplorer(QApplication::arguments().mid(1)); // without Qt's own options
 }

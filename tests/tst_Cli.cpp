@@ -165,6 +165,35 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(m_dir.filePath("never.png")));
     }
 
+    // The explorer takes the commands' settings options: bad ones are refused before any window
+    // (exit 2, the problem named); good ones get as far as the display, which this machine has not.
+    void explorerTakesTheSettingsOptions_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("mentions");
+        const QString models = "/usr/share/assimp/models/";
+        QTest::newRow("unknown preset") << QStringList{"--preset", "acme"} << "'acme' is not an artifact preset";
+        QTest::newRow("NaN") << QStringList{"--set", "bias.slope=nan"} << "bias.slope";
+        QTest::newRow("mistyped key") << QStringList{"--set", "bias.sloep=0.1"} << "did you mean 'bias.slope'?";
+        QTest::newRow("unknown option") << QStringList{"--frobnicate"} << "Unknown option 'frobnicate'";
+        QTest::newRow("missing model") << QStringList{"/nonexistent/engine.glb"} << "engine.glb";
+        QTest::newRow("empty model") << QStringList{models + "invalid/empty.obj"} << "empty.obj";
+        QTest::newRow("file and --scene") << QStringList{models + "OBJ/box.obj", "--scene", "seed"} << "give one of them";
+        QTest::newRow("two files") << QStringList{models + "OBJ/box.obj", models + "OBJ/box.obj"} << "unexpected argument";
+        QTest::newRow("preset, no display") << QStringList{"--preset", "acne"} << "no display";
+        QTest::newRow("model, no display") << QStringList{models + "OBJ/box.obj", "--set", "map.size=1024"} << "no display";
+    }
+
+    void explorerTakesTheSettingsOptions()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, mentions);
+        const Run r = shadowlab(arguments);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+
     void farOffMistakesGetNoSuggestion()
     {
         const Run r = shadowlab({"render", "--out", m_dir.filePath("never.png"), "--set", "colour=red"});

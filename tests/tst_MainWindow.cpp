@@ -14,6 +14,7 @@
 #include "Renderer.h"
 #include "SceneLibrary.h"
 #include "SceneView.h"
+#include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "SettingsSummary.h"
 #include "SliderSpinBox.h"
@@ -130,6 +131,7 @@ private slots:
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
     void presetButtonShowsTheArtifactAndTheFix();
+    void presetFromTheCommandLineShowsItsNoteAndFix();
     void everySettingHasADockField();
     void cameraFieldsMoveTheSharedCamera();
     void depthLegendSpansTheDepthsInTheMap_data();
@@ -770,6 +772,35 @@ void tst_MainWindow::presetButtonShowsTheArtifactAndTheFix()
     QVERIFY(settle(*m_window));
     QCOMPARE(m_window->settings(Side::A), artifactPresetFixed(preset));
     QVERIFY(!fix->isEnabled());
+}
+
+void tst_MainWindow::presetFromTheCommandLineShowsItsNoteAndFix()
+{
+    // As `shadowlab --preset light-leak` and `screenshot --preset light-leak` start: the
+    // preset's settings set on side A, then its sentences shown without changing them.
+    const ArtifactPreset& preset = artifactPreset(QStringLiteral("light-leak"));
+    const Settings leaking = applyArtifactPreset(preset, presetSettings(QStringLiteral("seed")));
+    m_window->setSettings(Side::A, leaking);
+    auto* dock = m_window->propertiesDock();
+    auto* note = dock->findChild<QLabel*>(QStringLiteral("presetNote"));
+    auto* fix = dock->findChild<QPushButton*>(QStringLiteral("presetFix"));
+    QVERIFY(!note->isVisibleTo(dock) && !fix->isVisibleTo(dock));
+    dock->showPreset(preset.name);
+    QVERIFY(note->isVisibleTo(dock) && fix->isVisibleTo(dock) && fix->isEnabled());
+    QVERIFY2(note->text().contains(preset.lookFor.toHtmlEscaped()) && note->text().contains(preset.fix.toHtmlEscaped()), qPrintable(note->text()));
+    QCOMPARE(m_window->settings(Side::A), leaking);     // showing changes nothing
+
+    QTest::mouseClick(fix, Qt::LeftButton);
+    QVERIFY(settle(*m_window));
+    const Settings fixed = m_window->settings(Side::A);
+    QCOMPARE(fixed, settingsFromJson(preset.fixSettings, leaking));
+    QVERIFY(!fix->isEnabled());
+    QCOMPARE(fix->text(), QStringLiteral("Fix Applied"));
+    // Undo takes the fix back.
+    m_window->undoStack(Side::A)->undo();
+    QCOMPARE(m_window->settings(Side::A), leaking);
+
+    QVERIFY_THROWS_EXCEPTION(SettingsError, dock->showPreset(QStringLiteral("acme")));
 }
 
 void tst_MainWindow::everySettingHasADockField()

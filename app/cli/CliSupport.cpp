@@ -58,7 +58,7 @@ QString commandHelp(const QCommandLineParser& parser, const QString& command)
     QString first = text.left(end);
     const QString program = QCoreApplication::arguments().value(0);
     if (!program.isEmpty() && first.contains(program))
-        first.replace(first.indexOf(program), program.size(), QStringLiteral("shadowlab ") + command);
+        first.replace(first.indexOf(program), program.size(), command.isEmpty() ? QStringLiteral("shadowlab") : QStringLiteral("shadowlab ") + command);
     return first + text.mid(end);
 }
 
@@ -66,13 +66,15 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
 {
     const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")}, QStringLiteral("Print the version and exit."));
     parser.addOption(version);
-    if (!parser.parse(QStringList{QStringLiteral("shadowlab ") + command} + arguments)) {
+    // The explorer itself has no command name.
+    const QString invocation = command.isEmpty() ? QStringLiteral("shadowlab") : QStringLiteral("shadowlab ") + command;
+    if (!parser.parse(QStringList{invocation} + arguments)) {
         QString message = parser.errorText();
         if (const QStringList unknown = parser.unknownOptionNames(); !unknown.isEmpty()) {
             if (const QString match = closestMatch(unknown.first(), optionNames(parser)); !match.isEmpty())
                 message += QStringLiteral(" Did you mean --%1?").arg(match);
         }
-        throw UsageError(message + QStringLiteral(" Run `shadowlab %1 --help` for its options.").arg(command));
+        throw UsageError(message + QStringLiteral(" Run `%1 --help` for its options.").arg(invocation));
     }
     // --help-all (which Qt adds with --help) would list Qt's own options, none of which a
     // command takes: the same help.
@@ -85,7 +87,7 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
         return false;
     }
     if (!parser.positionalArguments().isEmpty())
-        throw UsageError(QStringLiteral("unexpected argument '%1'; run `shadowlab %2 --help`").arg(displayText(parser.positionalArguments().first()), command));
+        throw UsageError(QStringLiteral("unexpected argument '%1'; run `%2 --help`").arg(displayText(parser.positionalArguments().first()), invocation));
     // QCommandLineParser keeps the last of a repeated option; a user who wrote two meant something.
     const QStringList given = parser.optionNames();
     for (const QString& name : given) {

@@ -70,8 +70,10 @@ int unknownCommand(const QString& name)
 
 void printUsage(QTextStream& stream)
 {
-    stream << "usage: shadowlab [command] [options]\n\n"
-           << "With no command, opens the explorer window.\n\nCommands:\n";
+    stream << "usage: shadowlab [command] [options]\n"
+           << "       shadowlab [file] [--scene name|file] [--preset name] [--settings file.json] [--set key=value ...]\n\n"
+           << "With no command, opens the explorer window; settings options start side A from them (as every command\n"
+           << "takes them), and a model or scene file alone opens it.\n\nCommands:\n";
     for (const Command& c : kCommands)
         stream << "  " << QString::fromLatin1(c.name).leftJustified(12) << c.summary << '\n';
     stream << "\nOptions:\n"

@@ -13,6 +13,9 @@ int runSettings(const QStringList& arguments);
 int runAudit(const QStringList& arguments);
 int runTune(const QStringList& arguments);
 int runScreenshot(const QStringList& arguments);  // needs a QApplication
+// The explorer window, side A on the settings options when given (`shadowlab --preset acne`,
+// `shadowlab model.glb`); needs a QApplication and a display.
+int runExplorer(const QStringList& arguments);
 
 // True when `name` is a subcommand; runCommand dispatches to it (`args[0]` is the name).
 bool isCommand(const QString& name);

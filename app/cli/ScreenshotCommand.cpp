@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "ImageFile.h"
 #include "OutputFile.h"
+#include "PropertiesDock.h"
 #include "RenderError.h"
 #include "SceneView.h"
 #include "SettingsKeys.h"
@@ -97,6 +98,9 @@ int runScreenshot(const QStringList& arguments)
                                  .arg(minimum.height()));
         window.setSettings(MainWindow::Side::A, a);
         window.setSettings(MainWindow::Side::B, b);
+        // What to look for and the fix, as the dock's preset buttons show them.
+        if (parser.isSet(QStringLiteral("preset")))
+            window.propertiesDock()->showPreset(parser.value(QStringLiteral("preset")));
         window.resize(size);
         window.show();
         waitUntilRendered(window);

@@ -253,18 +253,24 @@ void PropertiesDock::addPresetButtons()
     column->addWidget(box);
 }
 
+void PropertiesDock::showPreset(const QString& name)
+{
+    const ArtifactPreset& preset = artifactPreset(name);
+    m_presetNote->setText(tr("<b>%1.</b> %2<br><i>Fix:</i> %3").arg(preset.title.toHtmlEscaped(), preset.lookFor.toHtmlEscaped(),
+                                                                     preset.fix.toHtmlEscaped()));
+    m_presetNote->setVisible(true);
+    m_fixButton->setText(tr("Apply the Fix"));
+    m_fixButton->setVisible(true);
+    m_fixButton->setEnabled(true);
+    m_lastPreset = preset.name;
+}
+
 void PropertiesDock::applyPreset(const QString& name)
 {
     Settings candidate;
     try {
-        const ArtifactPreset& preset = artifactPreset(name);
-        candidate = applyArtifactPreset(preset, m_pending);
-        m_presetNote->setText(tr("<b>%1.</b> %2<br><i>Fix:</i> %3").arg(preset.title.toHtmlEscaped(), preset.lookFor.toHtmlEscaped(),
-                                                                         preset.fix.toHtmlEscaped()));
-        m_presetNote->setVisible(true);
-        m_fixButton->setVisible(true);
-        m_fixButton->setEnabled(true);
-        m_lastPreset = preset.name;
+        candidate = applyArtifactPreset(artifactPreset(name), m_pending);
+        showPreset(name);
     } catch (const SettingsError& e) {
         markError(QStringLiteral("scene"), QString::fromStdString(e.what()));
         return;
@@ -283,6 +289,7 @@ void PropertiesDock::applyPresetFix()
         return;
     }
     m_fixButton->setEnabled(false);
+    m_fixButton->setText(tr("Fix Applied"));
     setSettings(candidate);
     accept(candidate, QString());
 }

@@ -62,6 +62,10 @@ public:
     // Applies the artifact preset `name` to this side (its scene, light and camera included)
     // and shows what to look for and a button that applies the fix.
     void applyPreset(const QString& name);
+    // Shows preset `name`'s sentences and its fix button for settings that came from it some
+    // other way (`shadowlab --preset`, `screenshot --preset`); changes no setting. Throws
+    // SettingsError for an unknown name.
+    void showPreset(const QString& name);
     void applyPresetFix();
     double animationSpeed() const;     // degrees per second around the target
 

@@ -1,0 +1,94 @@
+#include "CliSupport.h"
+#include "Commands.h"
+#include "HeadlessPlatform.h"
+#include "MainWindow.h"
+#include "PropertiesDock.h"
+#include "SettingsError.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+#include <optional>
+
+namespace shadowlab::cli {
+
+namespace {
+
+// The settings options that take a value: a word after one of them is that value, not a file.
+bool takesValue(const QString& argument)
+{
+    for (const char* option : {"--scene", "--set", "--settings", "--preset"}) {
+        if (argument == QLatin1String(option))
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+int runExplorer(const QStringList& arguments)
+{
+    // A lone word that is neither an option nor a file (nor looks like one) is most likely a
+    // mistyped command.
+    if (arguments.size() == 1 && !arguments.first().startsWith(QLatin1Char('-')) && !QFileInfo::exists(arguments.first())
+        && !arguments.first().contains(QLatin1Char('/')) && !arguments.first().contains(QLatin1Char('.')))
+        return unknownCommand(arguments.first());
+
+    std::optional<Settings> settings;
+    QString preset;
+    try {
+        if (!arguments.isEmpty()) {
+            QCommandLineParser parser;
+            parser.setApplicationDescription(
+                QStringLiteral("Open the explorer window. With settings options, side A starts from them instead of the last "
+                               "session's settings; a model or scene file alone opens it, as --scene does."));
+            parser.addHelpOption();
+            addSettingsOptions(parser);
+            parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A model or scene file to open (the same as --scene file)."),
+                                         QStringLiteral("[file]"));
+            // A file named on its own (as a file manager starts a program) is --scene file.
+            QStringList rewritten;
+            bool named = false;
+            for (qsizetype i = 0; i < arguments.size(); ++i) {
+                const QString& a = arguments[i];
+                const bool value = i > 0 && takesValue(arguments[i - 1]);
+                if (!a.startsWith(QLatin1Char('-')) && !value && !named) {
+                    rewritten << QStringLiteral("--scene") << a;
+                    named = true;
+                } else {
+                    rewritten << a;
+                }
+            }
+            if (named && arguments.contains(QStringLiteral("--scene")))
+                throw UsageError(QStringLiteral("a file and --scene both name the scene; give one of them"));
+            if (!parseArguments(parser, QString(), rewritten))
+                return kExitOk;
+            settings = settingsFromOptions(parser);
+            preset = parser.value(QStringLiteral("preset"));
+        }
+    } catch (const SettingsError& e) {
+        err() << "shadowlab: " << e.what() << Qt::endl;
+        return kExitBadInput;
+    } catch (const UsageError& e) {
+        err() << "shadowlab: " << e.what() << Qt::endl;
+        return kExitBadInput;
+    }
+
+    if (headlessPlatformNames().contains(QGuiApplication::platformName())) {
+        // A window nobody can see would run forever: say what to do instead.
+        err() << "shadowlab: there is no display, so the explorer cannot open.\n"
+              << "Render it offscreen instead: shadowlab screenshot --out window.png" << Qt::endl;
+        return kExitBadInput;
+    }
+    MainWindow window;
+    if (settings) {
+        window.setSettings(MainWindow::Side::A, *settings, QApplication::translate("Explorer", "Start from the command line's settings"));
+        if (!preset.isEmpty())
+            window.propertiesDock()->showPreset(preset);
+    }
+    window.show();
+    return QApplication::exec();
+}
+
+} // namespace shadowlab::cli
