@@ -31,7 +31,13 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     facts.fitted = renderer.lastFit().fitted;
     facts.mapSize = renderer.shadowMap().size();
     facts.moment = renderer.depthMapMoment();
-    if (const Scene* scene = renderer.scene())
+    facts.views = std::max<int>(1, int(renderer.shadowViews().set.views.size()));
+    // Several views sit in tiles side by side: the picture is of the whole texture.
+    const ShadowMap& map = renderer.shadowMap();
+    facts.aspect = facts.views > 1 && map.height() > 0 ? double(map.width()) / map.height() : DepthMapPicture::aspect(facts.light);
+    // One map: where the camera looks, over it. (Several views side by side each have their own
+    // projection; one outline over all of them would be wrong.)
+    if (const Scene* scene = renderer.scene(); scene && facts.views == 1)
         facts.footprint = cameraFootprint(scene->bounds(), renderer.cameraFrame().viewProjection, facts.light.shadowMatrix);
     return facts;
 }
@@ -69,6 +75,39 @@ QRectF DepthMapPicture::visible(double aspect, double zoom, QPointF centre) cons
     const double scale = std::min(w / aspect, h) * zoom;
     const QSizeF extent(w / (aspect * scale), h / scale);
     return {centre - QPointF(extent.width(), extent.height()) * 0.5, extent};
+}
+
+QRectF DepthMapPicture::homeRegion(const DepthMapFacts& facts)
+{
+    double x0 = 0.0, y0 = 0.0, x1 = 1.0, y1 = 1.0;
+    for (const glm::dvec2& p : facts.footprint) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            continue;
+        x0 = std::min(x0, p.x);
+        y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x);
+        y1 = std::max(y1, p.y);
+    }
+    x0 = std::max(x0, -kFrameLimit);
+    y0 = std::max(y0, -kFrameLimit);
+    x1 = std::min(x1, 1.0 + kFrameLimit);
+    y1 = std::min(y1, 1.0 + kFrameLimit);
+    // A little room around whatever touches the edge.
+    const double margin = 0.03 * std::max(x1 - x0, y1 - y0);
+    return QRectF(QPointF(x0 - margin, y0 - margin), QPointF(x1 + margin, y1 + margin));
+}
+
+std::pair<double, QPointF> DepthMapPicture::framing(double aspect, const QRectF& region) const
+{
+    const QSizeF whole = visible(aspect, 1.0, {0.5, 0.5}).size();   // at zoom 1 the map just fits
+    const double zoom = std::min(whole.width() / std::max(region.width(), 1e-9), whole.height() / std::max(region.height(), 1e-9));
+    return {std::clamp(zoom, 1e-3, 1.0), region.center()};
+}
+
+QRectF DepthMapPicture::homeVisible(const DepthMapFacts& facts) const
+{
+    const auto [zoom, centre] = framing(facts.aspect, homeRegion(facts));
+    return visible(facts.aspect, zoom, centre);
 }
 
 QPointF DepthMapPicture::toPixel(QPointF p, const QRectF& visible) const
@@ -117,8 +156,9 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
                                              .arg(glm::degrees(std::atan(v.right) - std::atan(v.left)), 0, 'f', 0)
                                              .arg(glm::degrees(std::atan(v.top) - std::atan(v.bottom)), 0, 'f', 0)
                                        : QStringLiteral("%1 × %2 wu").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2);
-    const QString volumeText = QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size)
-                                   .arg(facts.mapSize);
+    const QString volumeText = facts.views > 1
+        ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
+        : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size).arg(facts.mapSize);
     const QPointF volumeLabel(std::max(border.left(), double(area.left())) + 4, std::max(border.top(), double(area.top())) + 4 + metrics.ascent());
     painter.setPen(QColor(0, 0, 0, 160));
     painter.drawText(volumeLabel + QPointF(1, 1), volumeText);
@@ -126,13 +166,16 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     painter.drawText(volumeLabel, volumeText);
     if (facts.footprint.size() >= 3) {
         QPolygonF polygon;
-        for (const glm::dvec2& p : facts.footprint)
+        bool cut = false;
+        for (const glm::dvec2& p : facts.footprint) {
             polygon << toPixel({p.x, p.y}, visible);
+            cut = cut || !visible.contains(QPointF(p.x, p.y));
+        }
         painter.setPen(QPen(kFootprintColour, 2.0));
         painter.drawPolygon(polygon);
         // The label at the polygon's lowest point on screen, kept inside the pane.
         const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
-        const QString text = QStringLiteral("what the camera sees");
+        const QString text = cut ? QStringLiteral("what the camera sees (reaches beyond the frame)") : QStringLiteral("what the camera sees");
         const double x = std::clamp(anchor.x() - metrics.horizontalAdvance(text) / 2.0, double(area.left() + 4),
                                     double(area.right() - 4 - metrics.horizontalAdvance(text)));
         const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
@@ -140,6 +183,15 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         painter.drawText(QPointF(x + 1, y + 1), text);
         painter.setPen(kFootprintColour);
         painter.drawText(QPointF(x, y), text);
+    }
+    // Where the picture shows beyond the map: lit, as clamp-to-border makes it. Said in the top
+    // corner when it lies outside the map (the camera's label takes the bottom).
+    const QString outside = QStringLiteral("outside the map: lit");
+    const QRectF outsideBox(area.left() + 4, area.top() + 4, metrics.horizontalAdvance(outside), metrics.height());
+    const QRectF outsideMap(toMap(outsideBox.bottomLeft(), visible), toMap(outsideBox.topRight(), visible));
+    if (!outsideMap.intersects(QRectF(0.0, 0.0, 1.0, 1.0))) {
+        painter.setPen(QColor(150, 156, 170));
+        painter.drawText(outsideBox, Qt::AlignLeft | Qt::AlignVCenter, outside);
     }
     painter.setClipping(false);
 

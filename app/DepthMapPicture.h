@@ -11,6 +11,7 @@
 #include <QSize>
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QPainter;
@@ -27,6 +28,8 @@ struct DepthMapFacts {
     std::vector<glm::dvec2> footprint;      // the camera's visible region, map coordinates
     int mapSize = 0;
     int moment = 0;                         // 1-4: the pane shows that moment of a moments map, in grey
+    int views = 1;                          // cascades or cube faces side by side in the map
+    double aspect = 1.0;                    // width over height of the picture of the whole map
 };
 
 // The facts of `renderer`'s last frame, with `span` measured by whoever draws.
@@ -54,6 +57,16 @@ public:
     static double aspect(const LightFrame& light);
     // The part of the map shown over mapArea() at `zoom` (1: the whole map fits) around `centre`.
     QRectF visible(double aspect, double zoom, QPointF centre) const;
+    // What the picture frames before any zoom or pan, in map coordinates: the map together with
+    // the camera's footprint, so the map is seen where it lies in what the camera sees. A
+    // footprint far larger than the map is cut at kFrameLimit map sides around it, so the map
+    // keeps half the picture's side.
+    static QRectF homeRegion(const DepthMapFacts& facts);
+    static constexpr double kFrameLimit = 0.5;     // map sides beyond each edge of the map
+    // The zoom and centre at which visible() shows `region` whole.
+    std::pair<double, QPointF> framing(double aspect, const QRectF& region) const;
+    // What the picture shows before any zoom or pan: homeRegion() at the facts' aspect.
+    QRectF homeVisible(const DepthMapFacts& facts) const;
     QPointF toPixel(QPointF mapPoint, const QRectF& visible) const;
     QPointF toMap(QPointF pixel, const QRectF& visible) const;
     // `rect` in GL viewport pixels (y up) of a framebuffer `devicePixelRatio` times this size.

@@ -104,7 +104,7 @@ QImage HeadlessRenderer::renderDepthPicture(int side)
     m_gl->glClear(GL_COLOR_BUFFER_BIT);
     const DepthMapPicture picture(size);
     const DepthMapFacts facts = depthMapFacts(*m_renderer, m_renderer->depthMapSpan());
-    const QRectF visible = picture.visible(DepthMapPicture::aspect(facts.light), 1.0, {0.5, 0.5});
+    const QRectF visible = picture.homeVisible(facts);
     m_renderer->renderDepthMap(target, visible, picture.glViewport(picture.mapArea(), 1.0));
     m_renderer->renderDepthLegend(target, picture.glViewport(picture.legendBar(), 1.0));
     QImage image = m_framebuffer->toImage().convertToFormat(QImage::Format_RGB32);

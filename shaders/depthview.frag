@@ -1,7 +1,7 @@
 // Depth-map view: the map stretched to the depths its texels actually hold (uSpan) and drawn
 // through a perceptual colour ramp, near the light dark, far pale; a perspective light's depth
 // is linearised first (raw perspective depth is nearly all one value). Texels nothing was drawn
-// into (the far plane) are hatched grey; outside the map is the pane's dark blue.
+// into (the far plane) are hatched grey; outside the map is a slate a shade lighter than the pane.
 // With LEGEND the pass draws the ramp itself across the viewport, for the colour bar; with
 // OVERLAY it draws an image (uDepth holds it, premultiplied, top row first) for blending.
 #include "ramp.glsl"
@@ -35,7 +35,7 @@ void main()
     fragColor = texture(uDepth, vec2(vUv.x, 1.0 - vUv.y));
 #else
     if (any(lessThan(vUv, vec2(0.0))) || any(greaterThan(vUv, vec2(1.0)))) {
-        fragColor = vec4(0.08, 0.09, 0.13, 1.0);
+        fragColor = vec4(0.15, 0.16, 0.20, 1.0);   // outside the map: lit (clamp to border), a shade off the pane
         return;
     }
     float depth = texture(uDepth, vUv).r;

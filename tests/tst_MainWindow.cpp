@@ -24,6 +24,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -137,6 +138,8 @@ private slots:
     void depthLegendSpansTheDepthsInTheMap_data();
     void depthLegendSpansTheDepthsInTheMap();
     void statusBarShowsMediansAndMeasuresFrames();
+    void depthPaneFramesTheMapInWhatTheCameraSees_data();
+    void depthPaneFramesTheMapInWhatTheCameraSees();
 
 private:
     SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
@@ -882,6 +885,79 @@ void tst_MainWindow::depthLegendSpansTheDepthsInTheMap()
     // The picture uses the ramp's whole range: dark near, pale far, and the empty hatching.
     const QImage picture = depthMap();
     QVERIFY2(distinctLevels(picture) > 20, "a legend and a map, not a flat pane");
+}
+
+void tst_MainWindow::depthPaneFramesTheMapInWhatTheCameraSees_data()
+{
+    QTest::addColumn<QString>("scene");
+    QTest::addColumn<QStringList>("assignments");
+    for (const QString& scene : {QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"), QStringLiteral("city")}) {
+        QTest::newRow(qPrintable(scene)) << scene << QStringList{};
+        QTest::newRow(qPrintable(scene + " grazing light")) << scene << QStringList{"light.position=-9,0.6,-4"};
+    }
+    QTest::newRow("seed light above") << "seed" << QStringList{"light.position=0,6,0"};
+    QTest::newRow("seed spot") << "seed" << QStringList{"light.type=spot", "light.fov=70"};
+    QTest::newRow("seed manual volume") << "seed" << QStringList{"light.fit=manual"};
+    QTest::newRow("seed camera at the horizon") << "seed" << QStringList{"camera.position=0,0.3,9", "camera.target=0,0.3,0"};
+    QTest::newRow("seed camera looking away") << "seed" << QStringList{"camera.position=0,2,4", "camera.target=0,6,12"};
+    QTest::newRow("seed cascades") << "seed" << QStringList{"shadow.cascades=3"};
+    QTest::newRow("seed point light") << "seed" << QStringList{"light.type=point", "light.position=0.5,2.6,0.8"};
+}
+
+// Before any zoom or pan the depth pane shows the whole map and, around it, what the camera sees
+// (cut only where that would shrink the map below half the pane), and the texel readout under
+// the pointer names the texel drawn there.
+void tst_MainWindow::depthPaneFramesTheMapInWhatTheCameraSees()
+{
+    QFETCH(QString, scene);
+    QFETCH(QStringList, assignments);
+    Settings s = presetSettings(scene);
+    for (const QString& a : assignments)
+        applyAssignment(s, a);
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    DepthMapView* pane = m_window->depthMapView();
+    pane->resetZoom();
+    QVERIFY(settle(*m_window));
+    const Renderer& renderer = *m_window->sceneView(Side::A)->renderer();
+    const DepthMapFacts facts = depthMapFacts(renderer, pane->shownSpan());
+    const QRectF shown = pane->visibleRect();
+    const QRectF map(0.0, 0.0, 1.0, 1.0);
+    const QString where = QStringLiteral("shown %1,%2 %3x%4").arg(shown.x()).arg(shown.y()).arg(shown.width()).arg(shown.height());
+    QVERIFY2(shown.contains(map), qPrintable(where));
+    // The map keeps at least half the pane along its tighter side.
+    QVERIFY2(1.0 / shown.width() >= 0.45 || 1.0 / shown.height() >= 0.45, qPrintable(where));
+    // Every corner of the footprint is in the picture, or lies beyond the frame's limit.
+    const double limit = DepthMapPicture::kFrameLimit + 1e-9;
+    for (const glm::dvec2& p : facts.footprint) {
+        const bool beyond = p.x < -limit || p.y < -limit || p.x > 1.0 + limit || p.y > 1.0 + limit;
+        QVERIFY2(beyond || shown.contains(QPointF(p.x, p.y)), qPrintable(QStringLiteral("%1: footprint corner %2, %3 cut").arg(where).arg(p.x).arg(p.y)));
+    }
+    if (facts.views > 1)
+        QVERIFY2(facts.footprint.empty(), "several views: no single footprint drawn over all of them");
+
+    // The texel under the map's centre and near its corner, as the status bar reads them.
+    const ShadowMap& shadowMap = renderer.shadowMap();
+    const DepthMapPicture picture(pane->size());
+    QSignalSpy hovered(pane, &DepthMapView::texelHovered);
+    for (const QPointF uv : {QPointF(0.5, 0.5), QPointF(0.1, 0.9)}) {
+        const QPointF at = picture.toPixel(uv, shown);
+        QMouseEvent move(QEvent::MouseMove, at, pane->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QApplication::sendEvent(pane, &move);
+        QVERIFY(!hovered.isEmpty());
+        const QString text = hovered.last().at(0).toString();
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("texel (\\d+), (\\d+)")).match(text);
+        QVERIFY2(m.hasMatch(), qPrintable(text));
+        QVERIFY2(std::abs(m.captured(1).toInt() - uv.x() * shadowMap.width()) <= 2 && std::abs(m.captured(2).toInt() - uv.y() * shadowMap.height()) <= 2,
+                 qPrintable(QStringLiteral("%1 at map point %2, %3 of %4 x %5").arg(text).arg(uv.x()).arg(uv.y()).arg(shadowMap.width()).arg(shadowMap.height())));
+    }
+    // Zooming leaves the framing where it was, and Fit goes back to it.
+    QWheelEvent wheel(picture.toPixel({0.5, 0.5}, shown), pane->mapToGlobal(picture.toPixel({0.5, 0.5}, shown)), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(pane, &wheel);
+    QVERIFY(pane->visibleRect().width() < shown.width());
+    pane->resetZoom();
+    QCOMPARE(pane->visibleRect(), shown);
 }
 
 void tst_MainWindow::statusBarShowsMediansAndMeasuresFrames()

@@ -12,6 +12,8 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+
+#include <tuple>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QWheelEvent>
 
@@ -152,9 +154,24 @@ void DepthMapView::paintGL()
 
 QRectF DepthMapView::visibleRect() const
 {
-    const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
-    const double aspect = renderer ? DepthMapPicture::aspect(renderer->lightFrame()) : 1.0;
-    return DepthMapPicture(size()).visible(aspect, m_zoom, m_center);
+    const Renderer* renderer = m_source && hasMap() ? m_source->renderer() : nullptr;
+    const DepthMapPicture picture(size());
+    if (!renderer)
+        return picture.visible(1.0, m_zoom, m_center);
+    const DepthMapFacts facts = depthMapFacts(*renderer, m_span);
+    return m_home ? picture.homeVisible(facts) : picture.visible(facts.aspect, m_zoom, m_center);
+}
+
+void DepthMapView::leaveHome()
+{
+    if (!m_home)
+        return;
+    if (m_source && hasMap()) {
+        const DepthMapPicture picture(size());
+        const DepthMapFacts facts = depthMapFacts(*m_source->renderer(), m_span);
+        std::tie(m_zoom, m_center) = picture.framing(facts.aspect, DepthMapPicture::homeRegion(facts));
+    }
+    m_home = false;
 }
 
 QPointF DepthMapView::mapPoint(QPointF p) const
@@ -169,8 +186,7 @@ std::optional<DepthSpan> DepthMapView::shownSpan() const
 
 void DepthMapView::resetZoom()
 {
-    m_zoom = 1.0;
-    m_center = {0.5, 0.5};
+    m_home = true;
     update();
 }
 
@@ -231,11 +247,12 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
         return;
     }
     const Renderer& renderer = *m_source->renderer();
-    const int size = renderer.shadowMap().size();
+    // Map coordinates span the whole texture, every view's tile of it.
+    const int width = renderer.shadowMap().width(), height = renderer.shadowMap().height();
     const QPointF uv = mapPoint(widgetPosition);
-    const int x = int(std::floor(uv.x() * size));
-    const int y = int(std::floor(uv.y() * size));
-    if (x < 0 || y < 0 || x >= size || y >= size) {
+    const int x = int(std::floor(uv.x() * width));
+    const int y = int(std::floor(uv.y() * height));
+    if (x < 0 || y < 0 || x >= width || y >= height) {
         emit texelHovered(QString());
         return;
     }
@@ -273,6 +290,7 @@ void DepthMapView::mouseMoveEvent(QMouseEvent* event)
 {
     const QPointF position = event->position();
     if (event->buttons() != Qt::NoButton) {
+        leaveHome();
         const QPointF delta = position - m_lastMouse;
         const double perPixel = visibleRect().height() / std::max(1, DepthMapPicture(size()).mapArea().height());
         m_center += QPointF(-delta.x() * perPixel, delta.y() * perPixel);
@@ -291,6 +309,7 @@ void DepthMapView::wheelEvent(QWheelEvent* event)
 {
     // Zoom about the cursor: the map point under it stays under it.
     const QPointF position = event->position();
+    leaveHome();
     const QPointF before = mapPoint(position);
     m_zoom = std::clamp(m_zoom * std::pow(kZoomPerStep, event->angleDelta().y() / 120.0), kMinZoom, kMaxZoom);
     m_center += before - mapPoint(position);

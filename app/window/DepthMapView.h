@@ -84,8 +84,13 @@ private:
     std::optional<DepthSpan> m_span;
     bool m_seenShadowsEnabled = false;
     int m_seenMomentView = 0;       // filter.mode * 8 + moments.view of the last frame shown
+    // Until the user zooms or pans, the pane frames the map with the camera's footprint
+    // (DepthMapPicture::homeVisible) as both change; then it stays where it was put.
+    bool m_home = true;
     double m_zoom = 1.0;                 // 1: the whole map fits the pane
     QPointF m_center{0.5, 0.5};          // map coordinates at the pane's centre
+    // Leaves the home framing for a fixed one at the same place, before a zoom or pan.
+    void leaveHome();
     QPointF m_lastMouse;
     int m_frameCount = 0;
 };
