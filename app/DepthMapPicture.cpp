@@ -175,9 +175,11 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         painter.drawPolygon(polygon);
         // The label at the polygon's lowest point on screen, kept inside the pane.
         const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
-        const QString text = cut ? QStringLiteral("what the camera sees (reaches beyond the frame)") : QStringLiteral("what the camera sees");
-        const double x = std::clamp(anchor.x() - metrics.horizontalAdvance(text) / 2.0, double(area.left() + 4),
-                                    double(area.right() - 4 - metrics.horizontalAdvance(text)));
+        // Elided to the pane's width: a narrow pane (compare mode) still reads the start of it.
+        const QString text = metrics.elidedText(cut ? QStringLiteral("what the camera sees (reaches beyond the frame)") : QStringLiteral("what the camera sees"),
+                                                Qt::ElideRight, std::max(0, area.width() - 8));
+        const double width = metrics.horizontalAdvance(text);
+        const double x = std::max(double(area.left() + 4), std::min(anchor.x() - width / 2.0, double(area.right() - 4) - width));
         const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
         painter.setPen(QColor(0, 0, 0, 160));
         painter.drawText(QPointF(x + 1, y + 1), text);
@@ -223,8 +225,13 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     painter.drawRect(QRectF(legendBar()).adjusted(-0.5, -0.5, 0.5, 0.5));
     const DepthSpan span = facts.moment > 0 ? DepthSpan{0.0, 1.0} : facts.span.value_or(DepthSpan{});
     const int rowBaseline = legendBar().bottom() + 3 + metrics.ascent();
-    const QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
-    const QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
+    QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
+    QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
+    if (facts.moment <= 1 && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > legendBar().width()) {
+        // A narrow pane: the world distances only (the depths are in the PNG's text and the tooltip).
+        nearText = QStringLiteral("near %1 wu").arg(depthToDistance(facts.light, span.nearest), 0, 'f', 2);
+        farText = QStringLiteral("far %1 wu").arg(depthToDistance(facts.light, span.farthest), 0, 'f', 2);
+    }
     painter.drawText(QPointF(legendBar().left(), rowBaseline), nearText);
     painter.drawText(QPointF(legendBar().right() - metrics.horizontalAdvance(farText), rowBaseline), farText);
     painter.restore();

@@ -24,6 +24,8 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
@@ -733,6 +735,16 @@ void tst_MainWindow::compareModeMeasuresBothSidesWithTheirCost()
     m_window->setSettings(Side::B, fixed);
     QVERIFY(!m_window->sceneView(Side::A)->errorOverlay().isNull());
     QVERIFY(m_window->sceneView(Side::B)->errorOverlay().isNull());
+
+    // The three columns fit the dock at the default window size: no sideways scrolling.
+    m_window->resize(1200, 750);
+    dock->raise();
+    QVERIFY(settle(*m_window));
+    QTest::qWait(50);
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    QVERIFY(scroll);
+    QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+             qPrintable(QStringLiteral("content %1 px in %2").arg(scroll->widget()->minimumSizeHint().width()).arg(scroll->viewport()->width())));
 
     // Leaving compare mode hides B's column and its overlay.
     m_window->setCompareMode(false);

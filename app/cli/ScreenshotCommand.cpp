@@ -1,3 +1,4 @@
+#include "AccuracyDock.h"
 #include "CliSupport.h"
 #include "Commands.h"
 #include "DepthMapView.h"
@@ -12,6 +13,8 @@
 #include <QApplication>
 #include <QDeadlineTimer>
 #include <QFileInfo>
+#include <QLabel>
+#include <QPushButton>
 
 namespace shadowlab::cli {
 
@@ -64,6 +67,8 @@ int runScreenshot(const QStringList& arguments)
         parser.addOption({QStringLiteral("compare"), QStringLiteral("Compare mode: sides A and B side by side.")});
         parser.addOption({QStringLiteral("set-b"), QStringLiteral("With --compare: a setting of side B on top of A's (repeatable)."),
                           QStringLiteral("key=value")});
+        parser.addOption({QStringLiteral("accuracy"),
+                          QStringLiteral("Show the accuracy dock after Compare with reference (both sides in compare mode), its errors over the views.")});
         parser.addOption({QStringLiteral("size"), QStringLiteral("Window size (default 1200x750)."), QStringLiteral("WxH"),
                           QStringLiteral("1200x750")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("PNG of the window."), QStringLiteral("file.png")});
@@ -104,6 +109,22 @@ int runScreenshot(const QStringList& arguments)
         window.resize(size);
         window.show();
         waitUntilRendered(window);
+        if (parser.isSet(QStringLiteral("accuracy"))) {
+            // As a user would: the dock to the front, Compare, and wait for the measurement.
+            AccuracyDock* dock = window.accuracyDock();
+            dock->raise();
+            waitUntilRendered(window);
+            auto* compare = dock->findChild<QPushButton*>(QStringLiteral("compareButton"));
+            compare->click();
+            const QDeadlineTimer deadline(kTimeoutMs);
+            while (dock->isBusy() && !deadline.hasExpired())
+                QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+            if (dock->isBusy())
+                throw RenderError(QStringLiteral("the comparison with the reference did not finish within %1 s").arg(kTimeoutMs / 1000));
+            if (const auto* status = dock->findChild<QLabel*>(QStringLiteral("status")); status && status->isVisible() && !status->text().isEmpty())
+                err() << "screenshot: " << status->text() << Qt::endl;
+            waitUntilRendered(window);
+        }
 
         const QImage image = window.grab().toImage();
         writeOutputFile(path, encodePng(image));

@@ -161,7 +161,7 @@ AccuracyMetricsPanel::Row* AccuracyMetricsPanel::addRow(QGridLayout* grid, const
         // Room for the widest number from the start: a dock that widens when numbers arrive
         // would shrink the scene views and make the measurement it shows stale at once.
         const QFontMetrics metrics = row->values[c]->fontMetrics();
-        row->values[c]->setMinimumWidth(metrics.horizontalAdvance(c < 2 ? QStringLiteral("100.00 %") : QStringLiteral("+100.00 pp")));
+        row->values[c]->setMinimumWidth(metrics.horizontalAdvance(c < 2 ? QStringLiteral("88.88 %") : QStringLiteral("+88.88 pp")));
         row->values[c]->setToolTip(c < 2 ? toolTip
                                          : tr("B − A: negative (green) where B is better, positive (red) where it is worse; "
                                               "\"same\" within the measurement's noise. Shares differ in percentage points (pp)."));
