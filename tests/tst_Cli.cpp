@@ -194,6 +194,30 @@ private Q_SLOTS:
         QVERIFY(r.out.isEmpty());
     }
 
+    // The window measured before its picture: B's acne painted over B's view only.
+    void screenshotWithAccuracyShowsEachSidesErrors()
+    {
+        const QString out = m_dir.filePath("measured.png");
+        const Run r = shadowlab({"screenshot", "--compare", "--accuracy", "--size", "1000x600", "--set-b", "bias.cull_front=false",
+                                 "--set-b", "bias.slope=0", "--set-b", "bias.min=0", "--set-b", "filter.mode=hard", "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        const QImage image(out);
+        QVERIFY(!image.isNull());
+        // Magenta (false shadow) per half of the scene area, left (A) and right (B) of its middle.
+        const auto magenta = [&image](int x0, int x1) {
+            int n = 0;
+            for (int y = 0; y < image.height(); y += 2)
+                for (int x = x0; x < x1; x += 2) {
+                    const QRgb c = image.pixel(x, y);
+                    n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
+                }
+            return n;
+        };
+        // The views share the left part of the window; the docks and the depth pane are on the right.
+        const int a = magenta(0, image.width() / 5), b = magenta(image.width() / 4, image.width() * 9 / 20);
+        QVERIFY2(b > 200 && b > 20 * (a + 1), qPrintable(QString("magenta pixels: A %1, B %2").arg(a).arg(b)));
+    }
+
     void farOffMistakesGetNoSuggestion()
     {
         const Run r = shadowlab({"render", "--out", m_dir.filePath("never.png"), "--set", "colour=red"});
