@@ -44,7 +44,7 @@ QString FrameTimeHistory::text(const Summary& s, bool cpuTime, bool shadowsOn)
         .arg(shadow)
         .arg(s.lit.median, 0, 'f', 1)
         .arg(s.frame.median, 0, 'f', 1)
-        .arg(cpuTime ? QCoreApplication::translate("FrameTimeHistory", " CPU time") : QString())
+        .arg(cpuTime ? QCoreApplication::translate("FrameTimeHistory", " CPU") : QString())
         .arg(s.frame.count);
 }
 

@@ -30,7 +30,7 @@ public:
     Summary summary() const;
 
     // "shadow 3.1 · lit 8.2 · frame 12.0 ms · median of 30"; with `cpuTime` (a software
-    // renderer) "ms CPU time": the figures are the CPU's, not a GPU's.
+    // renderer) "ms CPU": the figures are the CPU's, not a GPU's.
     static QString text(const Summary& summary, bool cpuTime, bool shadowsOn = true);
 
 private:

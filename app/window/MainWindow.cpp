@@ -399,7 +399,7 @@ QString MainWindow::compareTimingText() const
         .arg(a.frame.median, 0, 'f', 1)
         .arg(b.frame.median, 0, 'f', 1)
         .arg(b.frame.median - a.frame.median, 0, 'f', 1)
-        .arg(cpu ? tr(" CPU time") : QString());
+        .arg(cpu ? tr(" CPU") : QString());
 }
 
 void MainWindow::createToolBar()
@@ -422,7 +422,7 @@ QString MainWindow::timingToolTip() const
 {
     const QString about = tr("Medians over the last frames of the wall time of the shadow pass (over the frames that ran it; \"cached\" "
                              "when the light, the casters and the map did not change), the lit pass and the whole frame, each between "
-                             "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU time\"). View → Measure 100 "
+                             "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU\"). View → Measure 100 "
                              "Frames times the pass on every frame.");
     if (!m_compare)
         return about;
@@ -708,8 +708,7 @@ void MainWindow::updateStatus()
     m_timingLabel->setToolTip(timingToolTip());
     // Short enough for the default window; the tooltip says it in full.
     const bool refitted = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize;
-    const QString footprint = refitted ? tr("texel footprint %1 wu, fitted").arg(stats.texelWorldSize, 0, 'g', 3)
-                                       : tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
+    const QString footprint = tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
     m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), footprint) : tr("no shadow map"));
     QString mapTip = tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow.");
     if (shown.shadow.enabled && refitted)
