@@ -14,6 +14,7 @@
 #include "SceneView.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 #include "SettingsSummary.h"
 #include "ViewPane.h"
 #include "WheelGuard.h"
@@ -689,7 +690,10 @@ void MainWindow::updateCaptions()
                                     settingsSummary(m_settings[i]));
     }
     const Settings& shown = m_settings[index(m_selected)];
-    const QString light = tr("%1 light, %2").arg(toString(shown.light.projection), toString(shown.map.format));
+    // What the map holds: depth in its format, or a moment technique's moments.
+    const bool moments = shadowTechnique(shown.filter.mode).map == ShadowMapKind::Moments;
+    const QString holds = moments ? tr("moments RGBA%1F").arg(toString(shown.moments.format)) : toString(shown.map.format);
+    const QString light = tr("%1 light, %2").arg(toString(shown.light.projection), holds);
     m_depthPane->setCaption(m_compare ? tr("Shadow map of %1").arg(QLatin1String(kSideNames[index(m_selected)])) : tr("Shadow map"),
                             shown.shadow.enabled ? light : tr("shadows are off"));
 }
