@@ -3,6 +3,7 @@
 // plots points that apply their settings when clicked.
 #include "AccuracyDock.h"
 #include "Application.h"
+#include "ErrorPixels.h"
 #include "HeadlessTestMain.h"
 #include "SceneLibrary.h"
 #include "SettingsKeys.h"
@@ -30,18 +31,6 @@ Settings acneSettings()
     for (const char* a : {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"})
         applyAssignment(s, QString::fromLatin1(a));
     return s;
-}
-
-// Pixels of an error image painted as false shadow (AccuracyMeter's errorImage colours).
-int magenta(const QImage& image)
-{
-    int n = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x) {
-            const QRgb c = image.pixel(x, y);
-            n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
-        }
-    return n;
 }
 
 } // namespace
@@ -167,7 +156,7 @@ private Q_SLOTS:
         QVERIFY(!last[0].isNull() && !last[1].isNull());
         QCOMPARE(last[0].size(), kViewSize);
         QCOMPARE(last[1].size(), kViewSize);
-        QVERIFY2(magenta(last[1]) > 10 * (magenta(last[0]) + 1), qPrintable(QStringLiteral("%1 %2").arg(magenta(last[0])).arg(magenta(last[1]))));
+        QVERIFY2(falseShadowPixels(last[1]) > 10 * (falseShadowPixels(last[0]) + 1), qPrintable(QStringLiteral("%1 %2").arg(falseShadowPixels(last[0])).arg(falseShadowPixels(last[1]))));
 
         // Swapped: the same numbers in the other columns (the reference is reused), the
         // difference negative and green.

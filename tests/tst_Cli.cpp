@@ -1,4 +1,6 @@
 // The command line as a user meets it: the real binary, its files, its exit codes and messages.
+#include "ErrorPixels.h"
+
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -204,15 +206,7 @@ private Q_SLOTS:
         const QImage image(out);
         QVERIFY(!image.isNull());
         // Magenta (false shadow) per half of the scene area, left (A) and right (B) of its middle.
-        const auto magenta = [&image](int x0, int x1) {
-            int n = 0;
-            for (int y = 0; y < image.height(); y += 2)
-                for (int x = x0; x < x1; x += 2) {
-                    const QRgb c = image.pixel(x, y);
-                    n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
-                }
-            return n;
-        };
+        const auto magenta = [&image](int x0, int x1) { return falseShadowPixels(image.copy(x0, 0, x1 - x0, image.height()), 2); };
         // The views share the left part of the window; the docks and the depth pane are on the right.
         const int a = magenta(0, image.width() / 5), b = magenta(image.width() / 4, image.width() * 9 / 20);
         QVERIFY2(b > 200 && b > 20 * (a + 1), qPrintable(QString("magenta pixels: A %1, B %2").arg(a).arg(b)));

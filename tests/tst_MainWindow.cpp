@@ -6,6 +6,7 @@
 #include "ArtifactPresets.h"
 #include "DepthMapPicture.h"
 #include "DepthMapView.h"
+#include "ErrorPixels.h"
 #include "AccuracyDock.h"
 #include "HeadlessTestMain.h"
 #include "MainWindow.h"
@@ -51,6 +52,16 @@ int frames(const MainWindow& w)
 }
 
 // Runs the event loop until every visible view has drawn and then no frame came for 250 ms.
+// `s` with front faces in the map, no bias and one hard tap: acne everywhere the light grazes.
+Settings acneOf(Settings s)
+{
+    s.bias.cullFront = false;
+    s.bias.slope = 0.0;
+    s.bias.min = 0.0;
+    s.filter.mode = FilterMode::Hard;
+    return s;
+}
+
 bool settle(const MainWindow& w)
 {
     QElapsedTimer total, quiet;
@@ -643,11 +654,7 @@ void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
     AccuracyDock* dock = m_window->accuracyDock();
     QVERIFY(dock);
     dock->setAreaSamplesPerAxis(2);
-    Settings acne = m_window->settings(Side::A);
-    acne.bias.cullFront = false;
-    acne.bias.slope = 0.0;
-    acne.bias.min = 0.0;
-    acne.filter.mode = FilterMode::Hard;
+    const Settings acne = acneOf(m_window->settings(Side::A));
     m_window->setSettings(Side::A, acne);
     QVERIFY(settle(*m_window));
     const QImage before = scene();
@@ -658,12 +665,7 @@ void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
     QVERIFY(settle(*m_window));
     // The acne shows as false shadow (magenta) over the greyed scene.
     const QImage overlaid = scene();
-    int magenta = 0;
-    for (int y = 0; y < overlaid.height(); y += 2)
-        for (int x = 0; x < overlaid.width(); x += 2) {
-            const QRgb c = overlaid.pixel(x, y);
-            magenta += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
-        }
+    const int magenta = falseShadowPixels(overlaid, 2);
     QVERIFY2(magenta > 200, qPrintable(QString::number(magenta)));
     QVERIFY(overlaid != before);
 
@@ -689,11 +691,7 @@ void tst_MainWindow::compareModeMeasuresBothSidesWithTheirCost()
     AccuracyDock* dock = m_window->accuracyDock();
     dock->setAreaSamplesPerAxis(2);
     m_window->setCompareMode(true);
-    Settings acne = m_window->settings(Side::A);
-    acne.bias.cullFront = false;
-    acne.bias.slope = 0.0;
-    acne.bias.min = 0.0;
-    acne.filter.mode = FilterMode::Hard;
+    const Settings acne = acneOf(m_window->settings(Side::A));
     m_window->setSettings(Side::B, acne);
     m_window->selectSide(Side::A);
     QVERIFY(settle(*m_window));
@@ -708,15 +706,7 @@ void tst_MainWindow::compareModeMeasuresBothSidesWithTheirCost()
     QTRY_VERIFY_WITH_TIMEOUT(!dock->isBusy() && !m_window->sceneView(Side::A)->errorOverlay().isNull()
                                  && !m_window->sceneView(Side::B)->errorOverlay().isNull(),
                              60000);
-    const auto falseShadow = [](const QImage& errors) {
-        int n = 0;
-        for (int y = 0; y < errors.height(); ++y)
-            for (int x = 0; x < errors.width(); ++x) {
-                const QRgb c = errors.pixel(x, y);
-                n += qRed(c) > 180 && qBlue(c) > 150 && qGreen(c) < 100;
-            }
-        return n;
-    };
+    const auto falseShadow = [](const QImage& errors) { return falseShadowPixels(errors); };
     const int a = falseShadow(m_window->sceneView(Side::A)->errorOverlay());
     const int b = falseShadow(m_window->sceneView(Side::B)->errorOverlay());
     QVERIFY2(b > 10 * (a + 1), qPrintable(QStringLiteral("false-shadow pixels: A %1, B %2").arg(a).arg(b)));
