@@ -183,6 +183,9 @@ private Q_SLOTS:
         QTest::newRow("glTF with infinite vertices") << model("glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb") << "";
         QTest::newRow("glTF indices out of range") << model("glTF2/IndexOutOfRange/AllIndicesOutOfRange.gltf") << "";
         QTest::newRow("glTF schema failure") << model("glTF2/SchemaFailures/sceneWrongType.gltf") << "";
+        // A header that declares over a billion vertices in 309 bytes: refused at once, not
+        // after minutes and gigabytes.
+        QTest::newRow("OFF with an absurd vertex count") << model("invalid/OutOfMemory.off") << "header is damaged";
     }
 
     void brokenFilesGiveANamedError()
