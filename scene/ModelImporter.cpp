@@ -445,6 +445,13 @@ Scene importModel(const QString& path)
         const QString reason = QString::fromUtf8(importer.GetErrorString()).trimmed();
         if (reason.contains(QStringLiteral("no faces")))
             throw SceneFileError(path, QStringLiteral("has no triangles (%1); export surfaces, not a point cloud or curves").arg(reason));
+        // Every mesh was points or lines, which are dropped above.
+        if (reason.contains(QStringLiteral("No meshes remaining")))
+            throw SceneFileError(path, QStringLiteral("has no triangles, only points or lines; export surfaces, not a point cloud or curves"));
+        // The suffix is known, the contents are not: another version or variant of the format.
+        if (reason.contains(QStringLiteral("No suitable reader")))
+            throw SceneFileError(path, QStringLiteral("is a version or variant of .%1 that cannot be read (glTF 1 binaries, for one); export "
+                                                      "it again as glTF 2 (.glb) or OBJ").arg(suffix));
         throw SceneFileError(path, QStringLiteral("cannot be read: %1; the file is damaged, truncated or not what its name says — "
                                                   "open it in another tool or export it again (glTF 2 .glb is the safest choice)")
                                        .arg(reason));

@@ -185,6 +185,9 @@ private Q_SLOTS:
         QTest::newRow("glTF schema failure") << model("glTF2/SchemaFailures/sceneWrongType.gltf") << "";
         // A header that declares over a billion vertices in 309 bytes: refused at once, not
         // after minutes and gigabytes.
+        QTest::newRow("lines only OBJ") << model("OBJ/testline.obj") << "only points or lines";
+        QTest::newRow("glTF points primitive") << model("glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_00.gltf") << "only points or lines";
+        QTest::newRow("glTF 1 binary") << model("glTF/BoxTextured-glTF-Binary/BoxTextured.glb") << "glTF 2";
         QTest::newRow("OFF with an absurd vertex count") << model("invalid/OutOfMemory.off") << "header is damaged";
     }
 
