@@ -4,6 +4,7 @@
 
 #include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -387,6 +388,21 @@ void normaliseVertices(aiScene* scene, QStringList& warnings)
     warnings << scaledWarning(size, factor);
 }
 
+// Assimp's progress (0..1 through reading and post-processing) to a callback.
+class ProgressForwarder : public Assimp::ProgressHandler {
+public:
+    explicit ProgressForwarder(std::function<void(double)> progress) : m_progress(std::move(progress)) {}
+    bool Update(float percentage) override
+    {
+        if (percentage >= 0.0f && std::isfinite(percentage))
+            m_progress(std::clamp(double(percentage), 0.0, 1.0));
+        return true;
+    }
+
+private:
+    std::function<void(double)> m_progress;
+};
+
 QByteArray hashFiles(const std::set<QString>& files)
 {
     QCryptographicHash hash(QCryptographicHash::Sha256);
@@ -411,7 +427,7 @@ QStringList modelSuffixes()
     return suffixes;
 }
 
-Scene importModel(const QString& path)
+Scene importModel(const QString& path, const std::function<void(double)>& progress)
 {
     const QFileInfo info(path);
     if (!info.exists())
@@ -434,6 +450,8 @@ Scene importModel(const QString& path)
     Assimp::Importer importer;
     auto* io = new RecordingIoSystem;   // owned by the importer
     importer.SetIOHandler(io);
+    if (progress)
+        importer.SetProgressHandler(new ProgressForwarder(progress));   // owned by the importer
     // Points and lines are dropped: they cast no shadow and have no normal.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.0f);

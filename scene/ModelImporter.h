@@ -5,6 +5,7 @@
 #include <QStringList>
 
 #include <cstddef>
+#include <functional>
 
 namespace shadowlab {
 
@@ -25,8 +26,11 @@ constexpr std::size_t kMeshChunkTriangles = 1 << 16;
 // installed Assimp reads): triangulated, normals generated where missing, node transforms
 // applied as object placements, base colour and base-colour texture kept. Throws
 // SceneFileError naming the file, the problem and what to do about it. The result has no
-// ground plane, light or camera; Scene::identity is a hash of the file's bytes.
-Scene importModel(const QString& path);
+// ground plane, light or camera; Scene::identity is a hash of the file's bytes. `progress`
+// hears Assimp's progress through the read (0..1).
+// This runs Assimp in the calling process: everything else reads files through
+// importModelIsolated() (IsolatedImport.h), which runs this in the import worker.
+Scene importModel(const QString& path, const std::function<void(double)>& progress = {});
 
 // Lower-case file suffixes (no dot) the installed Assimp can read.
 QStringList modelSuffixes();

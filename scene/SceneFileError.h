@@ -11,7 +11,13 @@ namespace shadowlab {
 class SceneFileError : public SettingsError {
 public:
     SceneFileError(const QString& path, const QString& problem)
-        : SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': %2").arg(path, problem)) {}
+        : SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': %2").arg(path, problem)), m_problem(problem) {}
+
+    // What is wrong, without the file's name: what the import worker sends back.
+    const QString& problem() const { return m_problem; }
+
+private:
+    QString m_problem;
 };
 
 } // namespace shadowlab

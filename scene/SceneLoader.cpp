@@ -1,6 +1,6 @@
 #include "SceneLoader.h"
 
-#include "ModelImporter.h"
+#include "IsolatedImport.h"
 #include "SceneFileError.h"
 #include "SettingsKeys.h"
 
@@ -47,9 +47,9 @@ struct CacheEntry {
 std::mutex g_cacheMutex;
 std::map<QString, CacheEntry> g_cache;
 
-Loaded load(const QString& path);
+Loaded load(const QString& path, const ImportControl& control);
 
-Loaded cached(const QString& path)
+Loaded cached(const QString& path, const ImportControl& control)
 {
     const QFileInfo info(path);
     if (!info.exists())
@@ -61,7 +61,7 @@ Loaded cached(const QString& path)
         if (it != g_cache.end() && it->second.size == info.size() && it->second.modified == info.lastModified())
             return it->second.loaded;
     }
-    Loaded loaded = load(key);
+    Loaded loaded = load(key, control);
     std::lock_guard lock(g_cacheMutex);
     g_cache[key] = {info.size(), info.lastModified(), loaded};
     return loaded;
@@ -114,7 +114,7 @@ void append(Scene& scene, const Scene& part, const glm::dmat4& placement, bool c
     scene.warnings += part.warnings;
 }
 
-Loaded loadScene(const QString& path)
+Loaded loadScene(const QString& path, const ImportControl& control)
 {
     QFile file(path);
     if (QFileInfo(path).size() > kMaxSceneFileBytes)
@@ -146,7 +146,7 @@ Loaded loadScene(const QString& path)
         const QString modelPath = QFileInfo(QFileInfo(path).dir(), name).absoluteFilePath();
         if (isSceneFile(modelPath))
             throw SceneFileError(path, QStringLiteral("%1: a scene file cannot include another scene file").arg(where));
-        const std::shared_ptr<const Scene> part = cached(modelPath).model;
+        const std::shared_ptr<const Scene> part = cached(modelPath, control).model;
         const glm::dvec3 position = vectorOf(path, where + QStringLiteral(".position"), m.value(QStringLiteral("position")), glm::dvec3(0.0));
         const glm::dvec3 rotation = vectorOf(path, where + QStringLiteral(".rotation"), m.value(QStringLiteral("rotation")), glm::dvec3(0.0));
         const glm::dvec3 scale = vectorOf(path, where + QStringLiteral(".scale"), m.value(QStringLiteral("scale")), glm::dvec3(1.0));
@@ -170,11 +170,11 @@ Loaded loadScene(const QString& path)
     return loaded;
 }
 
-Loaded load(const QString& path)
+Loaded load(const QString& path, const ImportControl& control)
 {
     if (isSceneFile(path))
-        return loadScene(path);
-    auto model = std::make_shared<const Scene>(importModel(path));
+        return loadScene(path, control);
+    auto model = std::make_shared<const Scene>(importModelIsolated(path, control));
     auto scene = std::make_shared<Scene>(*model);
     addGround(*scene, scene->bounds().min.y);
     return {std::move(scene), std::move(model), {}};
@@ -182,14 +182,14 @@ Loaded load(const QString& path)
 
 } // namespace
 
-std::shared_ptr<const Scene> loadSceneFile(const QString& path)
+std::shared_ptr<const Scene> loadSceneFile(const QString& path, const ImportControl& control)
 {
-    return cached(path).scene;
+    return cached(path, control).scene;
 }
 
 Settings sceneFileSettings(const QString& path)
 {
-    const Loaded loaded = cached(path);
+    const Loaded loaded = cached(path, ImportControl{});
     const Scene& scene = *loaded.scene;
     // Frame what is not ground: the camera and light follow the models, not the big plane.
     Bounds models;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "IsolatedImport.h"
 #include "Scene.h"
 #include "Settings.h"
 
@@ -20,8 +21,9 @@ namespace shadowlab {
 // A model gets a ground plane under it, a camera framing it and a light from above at an
 // angle, all from its bounds; a scene file may turn the ground off and set any key.
 // Loads are cached by absolute path, size and modification time, so every command and view
-// shares one import. Throws SceneFileError naming the file, what is wrong and how to fix it.
-std::shared_ptr<const Scene> loadSceneFile(const QString& path);
+// shares one import; models are read by the import worker under `control`'s limits
+// (IsolatedImport.h). Throws SceneFileError naming the file, what is wrong and how to fix it.
+std::shared_ptr<const Scene> loadSceneFile(const QString& path, const ImportControl& control = {});
 
 // The settings a loaded scene starts with: defaults, the light, camera, bias and reference
 // radius derived from its bounds, then the scene file's own keys. Throws like loadSceneFile().

@@ -1,6 +1,7 @@
 #include "CliSupport.h"
 
 #include "ArtifactPresets.h"
+#include "ImportLimits.h"
 #include "IoError.h"
 #include "Limits.h"
 #include "OutputFile.h"
@@ -111,10 +112,38 @@ void addSettingsOptions(QCommandLineParser& parser)
                       QStringLiteral("Start from an artifact preset (%1): its scene and the settings that show the artifact.")
                           .arg(artifactPresetNames().join(QStringLiteral(", "))),
                       QStringLiteral("name")});
+    const ImportLimits defaults;
+    parser.addOption({QStringLiteral("import-time-limit"),
+                      QStringLiteral("Seconds the importer may take to read a model file before it is stopped (default %1).").arg(defaults.timeSeconds),
+                      QStringLiteral("s")});
+    parser.addOption({QStringLiteral("import-memory-limit"),
+                      QStringLiteral("Memory in MiB the importer may use for a model file (default %1).").arg(defaults.memoryMiB),
+                      QStringLiteral("MiB")});
+}
+
+void applyImportOptions(const QCommandLineParser& parser)
+{
+    ImportLimits limits = importLimits();
+    if (parser.isSet(QStringLiteral("import-time-limit"))) {
+        bool ok = false;
+        limits.timeSeconds = parser.value(QStringLiteral("import-time-limit")).toDouble(&ok);
+        if (!ok)
+            throw SettingsError(QStringLiteral("import-time-limit"), QStringLiteral("'%1' is not a number of seconds, e.g. --import-time-limit 60")
+                                                                         .arg(parser.value(QStringLiteral("import-time-limit"))));
+    }
+    if (parser.isSet(QStringLiteral("import-memory-limit"))) {
+        bool ok = false;
+        limits.memoryMiB = parser.value(QStringLiteral("import-memory-limit")).toInt(&ok);
+        if (!ok)
+            throw SettingsError(QStringLiteral("import-memory-limit"), QStringLiteral("'%1' is not a whole number of MiB, e.g. --import-memory-limit 8192")
+                                                                           .arg(parser.value(QStringLiteral("import-memory-limit"))));
+    }
+    setImportLimits(limits);
 }
 
 Settings settingsFromOptions(const QCommandLineParser& parser)
 {
+    applyImportOptions(parser);
     const QStringList assignments = parser.values(QStringLiteral("set"));
     const QString file = parser.value(QStringLiteral("settings"));
 

@@ -40,8 +40,12 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
 // The parser's help with its usage line naming `shadowlab <command>`, not the binary's path.
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
 
-// Adds --scene, --set (repeatable), --settings and --preset to `parser`.
+// Adds --scene, --set (repeatable), --settings, --preset, --import-time-limit and
+// --import-memory-limit to `parser`.
 void addSettingsOptions(QCommandLineParser& parser);
+// The import limits those options give, made the process's (ImportLimits.h); throws
+// SettingsError naming the option. settingsFromOptions() calls it first.
+void applyImportOptions(const QCommandLineParser& parser);
 
 // The settings those options describe: the scene's preset (from --set scene=..., --scene, the
 // file's "scene", the artifact preset's scene, or "seed", in that order), then the artifact

@@ -3,7 +3,9 @@
 #include "HeadlessPlatform.h"
 #include "MainWindow.h"
 #include "PropertiesDock.h"
+#include "SceneNames.h"
 #include "SettingsError.h"
+#include "SettingsKeys.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -18,7 +20,7 @@ namespace {
 // The settings options that take a value: a word after one of them is that value, not a file.
 bool takesValue(const QString& argument)
 {
-    for (const char* option : {"--scene", "--set", "--settings", "--preset"}) {
+    for (const char* option : {"--scene", "--set", "--settings", "--preset", "--import-time-limit", "--import-memory-limit"}) {
         if (argument == QLatin1String(option))
             return true;
     }
@@ -37,6 +39,7 @@ int runExplorer(const QStringList& arguments)
 
     std::optional<Settings> settings;
     QString preset;
+    QString backgroundScene;
     try {
         if (!arguments.isEmpty()) {
             QCommandLineParser parser;
@@ -64,7 +67,21 @@ int runExplorer(const QStringList& arguments)
                 throw UsageError(QStringLiteral("a file and --scene both name the scene; give one of them"));
             if (!parseArguments(parser, QString(), rewritten))
                 return kExitOk;
-            settings = settingsFromOptions(parser);
+            applyImportOptions(parser);
+            // A file alone (as a file manager starts a program) opens in the window, in the
+            // background; with other settings on top, or with no display to open on, it is read
+            // first, like every command does, and a refusal is exit code 2.
+            const bool onlyAFile = !headlessPlatformNames().contains(QGuiApplication::platformName())
+                                   && parser.isSet(QStringLiteral("scene")) && !parser.isSet(QStringLiteral("set"))
+                                   && !parser.isSet(QStringLiteral("settings")) && !parser.isSet(QStringLiteral("preset"));
+            if (onlyAFile) {
+                Settings probe;
+                applySetting(probe, QStringLiteral("scene"), parser.value(QStringLiteral("scene")));   // a missing file: exit 2 now
+                if (!isPresetName(probe.scene))
+                    backgroundScene = probe.scene;
+            }
+            if (backgroundScene.isEmpty())
+                settings = settingsFromOptions(parser);
             preset = parser.value(QStringLiteral("preset"));
         }
     } catch (const SettingsError& e) {
@@ -88,6 +105,8 @@ int runExplorer(const QStringList& arguments)
             window.propertiesDock()->showPreset(preset);
     }
     window.show();
+    if (!backgroundScene.isEmpty())
+        window.openSceneInBackground(backgroundScene);
     return QApplication::exec();
 }
 

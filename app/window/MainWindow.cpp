@@ -11,6 +11,8 @@
 #include "ModelImporter.h"
 #include "SceneLibrary.h"
 #include "SceneLoader.h"
+#include "SceneOpener.h"
+#include "SessionAutosave.h"
 #include "SceneView.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -31,10 +33,14 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QKeyEvent>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QDockWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -75,7 +81,9 @@ std::optional<Settings> settingsFromText(const QString& text)
     if (object.isEmpty())
         return std::nullopt;
     try {
-        Settings settings = settingsFromJson(object, presetSettings(object.value(QStringLiteral("scene")).toString(QStringLiteral("seed"))));
+        // Every key is stored, so a file scene needs no base from its bounds, and is not read here.
+        const QString scene = object.value(QStringLiteral("scene")).toString(QStringLiteral("seed"));
+        Settings settings = settingsFromJson(object, isPresetName(scene) ? presetSettings(scene) : Settings{});
         ensureValid(settings);
         return settings;
     } catch (const SettingsError&) {
@@ -89,6 +97,9 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
 {
     setWindowTitle(tr("ShadowLab"));
     setAcceptDrops(true);   // a model or scene file dropped anywhere on the window, the views included
+    m_autosave = new SessionAutosave([this] { saveState(); }, this);
+    m_opener = new SceneOpener(this);
+    connect(m_opener, &SceneOpener::finished, this, &MainWindow::sceneOpenFinished);
     m_settings[0] = presetSettings(QStringLiteral("seed"));
     m_settings[1] = m_settings[0];
 
@@ -101,6 +112,10 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
             recordFrame(side);
+            if (!m_openingScene.isEmpty() && m_settings[index(side)].scene == m_openingScene) {
+                m_openingScene.clear();     // drawn: no longer a suspect after a crash
+                m_autosave->setOpening({});
+            }
             // Both sides are measured over side A's pixels (one reference serves both).
             if (side == Side::A)
                 m_accuracyDock->setViewSize(m_views[0]->size() * m_views[0]->devicePixelRatio());
@@ -191,13 +206,32 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     resize(1200, 750);
     m_mainSplitter->setSizes({520, 330});
 
-    if (m_persistence == Persistence::Restore)
-        restoreState();
+    if (m_persistence == Persistence::Restore) {
+        const bool crashed = m_autosave->begin();
+        restoreLayout();
+        if (crashed)
+            QTimer::singleShot(0, this, [this, opening = m_autosave->openingAtStart()] { offerRestore(opening); });
+        else
+            restoreSession();
+        // The layout is part of the session too.
+        connect(m_mainSplitter, &QSplitter::splitterMoved, this, &MainWindow::sessionChanged);
+        for (QDockWidget* dock : {static_cast<QDockWidget*>(m_dock), static_cast<QDockWidget*>(m_accuracyDock)}) {
+            connect(dock, &QDockWidget::dockLocationChanged, this, &MainWindow::sessionChanged);
+            connect(dock, &QDockWidget::topLevelChanged, this, &MainWindow::sessionChanged);
+            connect(dock, &QDockWidget::visibilityChanged, this, &MainWindow::sessionChanged);
+        }
+    }
     pushSettings();
     selectSide(m_selected);
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::sessionChanged()
+{
+    if (m_persistence == Persistence::Restore)
+        m_autosave->changed();
+}
 
 void MainWindow::createActions()
 {
@@ -444,6 +478,34 @@ void MainWindow::createStatusBar()
     // Apart enough to read as three facts, not one run-on line.
     for (QLabel* label : {m_texelLabel, m_timingLabel, m_mapLabel})
         label->setContentsMargins(12, 0, 0, 0);
+    // While a file is read in the background: what, how far, and a way to stop it.
+    m_openBox = new QWidget;
+    m_openBox->setObjectName(QStringLiteral("openSceneProgress"));
+    auto* openLayout = new QHBoxLayout(m_openBox);
+    openLayout->setContentsMargins(0, 0, 0, 0);
+    m_openLabel = new QLabel;
+    m_openProgress = new QProgressBar;
+    m_openProgress->setRange(0, 100);
+    m_openProgress->setMaximumWidth(140);
+    m_openCancel = new QPushButton(tr("Cancel"));
+    m_openCancel->setObjectName(QStringLiteral("cancelOpenButton"));
+    m_openCancel->setToolTip(tr("Stop reading the file; the current scene stays (Esc)"));
+    m_openCancel->setShortcut(QKeySequence(Qt::Key_Escape));
+    connect(m_openCancel, &QPushButton::clicked, m_opener, &SceneOpener::cancel);
+    openLayout->addWidget(m_openLabel);
+    openLayout->addWidget(m_openProgress);
+    openLayout->addWidget(m_openCancel);
+    m_openBox->setVisible(false);
+    statusBar()->addWidget(m_openBox);
+    connect(m_opener, &SceneOpener::progressed, m_openProgress, [this](double fraction) { m_openProgress->setValue(int(fraction * 100.0 + 0.5)); });
+    connect(m_opener, &SceneOpener::started, this, [this](const QString& path) {
+        m_openLabel->setText(tr("Opening %1…").arg(QFileInfo(path).fileName()));
+        m_openLabel->setToolTip(path);
+        m_openProgress->setValue(0);
+        m_openBox->setVisible(true);
+        if (m_persistence == Persistence::Restore)
+            m_autosave->setOpening(QFileInfo(path).absoluteFilePath());
+    });
     statusBar()->addPermanentWidget(m_texelLabel);
     statusBar()->addPermanentWidget(m_timingLabel);
     statusBar()->addPermanentWidget(m_mapLabel);
@@ -486,9 +548,66 @@ QString MainWindow::openScene(const QString& path)
 
 void MainWindow::openSceneReporting(const QString& path)
 {
-    const QString error = openScene(path);
-    if (!error.isEmpty())
-        QMessageBox::warning(this, tr("Cannot open scene"), tr("%1\n\nThe current scene stays.").arg(error));
+    openSceneInBackground(path);
+}
+
+void MainWindow::openSceneInBackground(const QString& path)
+{
+    m_pendingRestore = {};      // the user's choice wins over a restore still reading
+    m_restoreQueue.clear();
+    m_opener->open(path);
+}
+
+void MainWindow::showOpenError(const QString& error)
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), tr("%1\n\nThe current scene stays.").arg(error),
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("openErrorBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::sceneOpenFinished(const QString& path, const QString& error, bool cancelled)
+{
+    m_openBox->setVisible(false);
+    if (m_persistence == Persistence::Restore)
+        m_autosave->setOpening({});
+    const QString name = QFileInfo(path).fileName();
+    if (m_restoreQueue.contains(path)) {
+        // A scene of the restored session: its sides take their saved settings.
+        m_restoreQueue.removeAll(path);
+        for (std::size_t i = 0; i < 2; ++i) {
+            if (!m_pendingRestore[i] || m_pendingRestore[i]->scene != path)
+                continue;
+            if (error.isEmpty() && !cancelled) {
+                m_settings[i] = *m_pendingRestore[i];
+                m_settings[1 - i].camera = m_settings[i].camera;
+            }
+            m_pendingRestore[i].reset();
+        }
+        pushSettings();
+        m_dock->setSettings(m_settings[index(m_selected)]);
+        if (!error.isEmpty())
+            statusBar()->showMessage(tr("The last session's scene cannot be read: %1 — showing the default scene").arg(error), 15000);
+        if (!m_restoreQueue.isEmpty())
+            m_opener->open(m_restoreQueue.first());
+        return;
+    }
+    if (cancelled) {
+        statusBar()->showMessage(tr("Opening %1 was cancelled; the scene stays as it was").arg(name), 8000);
+        return;
+    }
+    const QString failure = error.isEmpty() ? openScene(path) : error;
+    if (!failure.isEmpty()) {
+        showOpenError(failure);
+        return;
+    }
+    if (m_persistence == Persistence::Restore) {
+        // Suspect until its first frame is drawn: a crash before that does not reopen it.
+        m_openingScene = m_settings[index(m_selected)].scene;
+        m_autosave->setOpening(m_openingScene);
+        m_autosave->flush();
+    }
 }
 
 void MainWindow::openSceneInteractively()
@@ -680,6 +799,7 @@ void MainWindow::pushSettings()
         m_views[i]->setSettings(m_settings[i]);
     m_accuracyDock->setSides(m_settings[0], m_compare ? std::optional(m_settings[1]) : std::nullopt, int(index(m_selected)));
     updateCaptions();
+    sessionChanged();
 }
 
 void MainWindow::updateCaptions()
@@ -760,6 +880,7 @@ void MainWindow::selectSide(Side side)
     m_depthView->setSource(m_views[index(side)]);
     updateCaptions();
     updateStatus();
+    sessionChanged();
 }
 
 void MainWindow::copyAToB()
@@ -929,7 +1050,7 @@ void MainWindow::showAbout()
                            .arg(QCoreApplication::applicationVersion(), renderer.toHtmlEscaped(), QString::fromLatin1(qVersion())));
 }
 
-void MainWindow::restoreState()
+void MainWindow::restoreLayout()
 {
     QSettings store;
     if (const QByteArray geometry = store.value(QStringLiteral("window/geometry")).toByteArray(); !geometry.isEmpty())
@@ -940,15 +1061,58 @@ void MainWindow::restoreState()
         m_mainSplitter->restoreState(splitter);
     m_recentScenes = store.value(QStringLiteral("scenes/recent")).toStringList();
     updateRecentMenu();
-    for (std::size_t i = 0; i < 2; ++i) {
-        if (auto settings = settingsFromText(store.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString()))
-            m_settings[i] = *settings;
-    }
-    m_settings[1].camera = m_settings[0].camera;
     m_volumeAction->setChecked(store.value(QStringLiteral("view/lightVolume"), true).toBool());
     m_screenshotFolder = store.value(QStringLiteral("view/screenshotFolder"), m_screenshotFolder).toString();
+}
+
+void MainWindow::restoreSession(const QString& skipScene)
+{
+    QSettings store;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::optional<Settings> settings = settingsFromText(store.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString());
+        if (!settings || (!skipScene.isEmpty() && settings->scene == skipScene))
+            continue;
+        if (isPresetName(settings->scene)) {
+            m_settings[i] = *settings;
+        } else {
+            m_pendingRestore[i] = settings;
+            if (!m_restoreQueue.contains(settings->scene))
+                m_restoreQueue << settings->scene;
+        }
+    }
+    m_settings[1].camera = m_settings[0].camera;
     setCompareMode(store.value(QStringLiteral("view/compare"), false).toBool());
     m_selected = store.value(QStringLiteral("view/selected")).toString() == u"B" ? Side::B : Side::A;
+    if (!m_restoreQueue.isEmpty())
+        m_opener->open(m_restoreQueue.first());
+}
+
+void MainWindow::offerRestore(const QString& openingAtCrash)
+{
+    auto* box = new QMessageBox(this);
+    box->setObjectName(QStringLiteral("restoreSessionBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setIcon(QMessageBox::Question);
+    box->setWindowTitle(tr("Restore Session"));
+    QString text = tr("ShadowLab did not close properly last time: it crashed or was stopped.\n\nRestore that session? Both sides' "
+                      "settings, compare mode and the scene come back as they were a second before.");
+    if (!openingAtCrash.isEmpty())
+        text += tr("\n\n%1 was being opened then; it is not reopened. Open it again from File → Open Recent if you trust it.")
+                    .arg(QFileInfo(openingAtCrash).fileName());
+    box->setText(text);
+    QPushButton* restore = box->addButton(tr("Restore Session"), QMessageBox::AcceptRole);
+    restore->setObjectName(QStringLiteral("restoreSessionButton"));
+    box->addButton(tr("Start Fresh"), QMessageBox::RejectRole)->setObjectName(QStringLiteral("startFreshButton"));
+    box->setDefaultButton(restore);
+    connect(box, &QMessageBox::buttonClicked, this, [this, restore, openingAtCrash](QAbstractButton* button) {
+        if (button == restore) {
+            restoreSession(openingAtCrash);
+            pushSettings();
+            selectSide(m_selected);
+        }
+        sessionChanged();
+    });
+    box->open();
 }
 
 void MainWindow::saveState() const
@@ -959,7 +1123,7 @@ void MainWindow::saveState() const
     store.setValue(QStringLiteral("window/splitter"), m_mainSplitter->saveState());
     store.setValue(QStringLiteral("scenes/recent"), m_recentScenes);
     for (std::size_t i = 0; i < 2; ++i)
-        store.setValue(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i])), settingsAsText(m_settings[i]));
+        store.setValue(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i])), settingsAsText(m_pendingRestore[i].value_or(m_settings[i])));
     store.setValue(QStringLiteral("view/lightVolume"), m_volumeAction->isChecked());
     store.setValue(QStringLiteral("view/screenshotFolder"), m_screenshotFolder);
     store.setValue(QStringLiteral("view/compare"), m_compare);
@@ -968,8 +1132,9 @@ void MainWindow::saveState() const
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    m_opener->cancel();
     if (m_persistence == Persistence::Restore)
-        saveState();
+        m_autosave->end();
     QMainWindow::closeEvent(event);
 }
 

@@ -10,10 +10,13 @@
 #include <QTimer>
 
 #include <array>
+#include <optional>
 
 class QAction;
 class QLabel;
 class QMenu;
+class QProgressBar;
+class QPushButton;
 class QSplitter;
 class QToolBar;
 class QUndoGroup;
@@ -24,6 +27,8 @@ namespace shadowlab {
 class AccuracyDock;
 class DepthMapView;
 class PropertiesDock;
+class SceneOpener;
+class SessionAutosave;
 class SceneView;
 class ViewPane;
 
@@ -73,6 +78,12 @@ public:
     // and remembers it among the recent files; returns an empty string or what went wrong, and
     // then the current scene stays.
     QString openScene(const QString& path);
+    // What File → Open, Open Recent, a drop and the command line do: the file is read in the
+    // background with a progress bar and Cancel in the status bar, the current scene stays
+    // usable meanwhile, and openScene() applies it once it is ready (a refusal is shown in a
+    // message box, "openErrorBox").
+    void openSceneInBackground(const QString& path);
+    SceneOpener* sceneOpener() const { return m_opener; }
     const QStringList& recentScenes() const { return m_recentScenes; }
 
     SceneView* sceneView(Side side) const { return m_views[std::size_t(side)]; }
@@ -104,8 +115,17 @@ private:
     void createMenus();
     void createToolBar();
     void createStatusBar();
-    void restoreState();
+    void restoreLayout();
+    // The last session's settings, compare mode and side; a side on a model or scene file
+    // starts on the default scene and takes its settings once the file is read (in the
+    // background). `skipScene` (what was being opened when the last session crashed) is not
+    // reopened.
+    void restoreSession(const QString& skipScene = {});
+    void offerRestore(const QString& openingAtCrash);
     void saveState() const;
+    void sessionChanged();
+    void sceneOpenFinished(const QString& path, const QString& error, bool cancelled);
+    void showOpenError(const QString& error);
 
     void applyEdit(const Settings& settings);
     // Makes the change from `before` (the sides it holds) to the present settings a step of
@@ -128,6 +148,16 @@ private:
     void showAbout();
 
     Persistence m_persistence;
+    SessionAutosave* m_autosave = nullptr;
+    SceneOpener* m_opener = nullptr;
+    QWidget* m_openBox = nullptr;           // status bar: "Opening engine.ply" [progress] [Cancel]
+    QLabel* m_openLabel = nullptr;
+    QProgressBar* m_openProgress = nullptr;
+    QPushButton* m_openCancel = nullptr;
+    // Sides of the restored session waiting for their scene file, and the files still to read.
+    std::array<std::optional<Settings>, 2> m_pendingRestore;
+    QStringList m_restoreQueue;
+    QString m_openingScene;     // applied, but not yet drawn: cleared after its first frame
     QStringList m_recentScenes;     // newest first
     QMenu* m_recentMenu = nullptr;
     std::array<Settings, 2> m_settings;

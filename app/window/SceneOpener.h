@@ -1,0 +1,51 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <atomic>
+#include <memory>
+
+class QThread;
+
+namespace shadowlab {
+
+// Reads a model or scene file in the background (loadSceneFile() on a thread of its own, the
+// parsing itself in the import worker), so the window stays usable while it loads: progress
+// as it comes, cancel at any time. One file at a time; opening another cancels the first.
+// When it is done the scene is in the loader's cache, so the window applies it at once.
+class SceneOpener : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SceneOpener(QObject* parent = nullptr);
+    ~SceneOpener() override;   // cancels and waits for the worker (milliseconds)
+
+    void open(const QString& path);
+    void cancel();
+    bool isBusy() const { return m_thread != nullptr; }
+    const QString& path() const { return m_path; }
+
+signals:
+    void started(const QString& path);
+    void progressed(double fraction);
+    // `error` is empty when the scene is ready; `cancelled` when cancel() stopped it.
+    void finished(const QString& path, const QString& error, bool cancelled);
+
+private:
+    struct Job {
+        std::atomic<bool> cancel = false;
+        std::atomic<double> progress = 0.0;
+        QString error;          // written by the thread before it ends, read after
+        bool cancelled = false;
+    };
+    void stopThread(bool notify);
+
+    QThread* m_thread = nullptr;
+    std::shared_ptr<Job> m_job;
+    QString m_path;
+    QTimer m_progressTimer;
+};
+
+} // namespace shadowlab

@@ -1,0 +1,184 @@
+#include "IsolatedImport.h"
+
+#include "ImportPayload.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QProcess>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+
+#include <sys/prctl.h>
+#include <sys/resource.h>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kPollMs = 20;             // how soon a cancel or an overrun is noticed
+constexpr int kStartTimeoutMs = 10000;
+constexpr auto kWorkerName = "shadowlab-import-worker";
+
+// What the worker's environment keeps: enough to find its libraries and Qt's image plugins.
+QProcessEnvironment workerEnvironment([[maybe_unused]] const ImportLimits& limits)
+{
+    const QProcessEnvironment parent = QProcessEnvironment::systemEnvironment();
+    QProcessEnvironment env;
+    for (const char* name : {"PATH", "LANG", "LC_ALL", "LD_LIBRARY_PATH", "QT_PLUGIN_PATH", "TMPDIR", "ASAN_OPTIONS", "UBSAN_OPTIONS"}) {
+        const QString key = QString::fromLatin1(name);
+        if (parent.contains(key))
+            env.insert(key, parent.value(key));
+    }
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer reserves terabytes of address space, so the limit on it cannot apply;
+    // its allocator's own limit stands in.
+    env.insert(QStringLiteral("ASAN_OPTIONS"), env.value(QStringLiteral("ASAN_OPTIONS")) + QStringLiteral(":malloc_limit_mb=%1").arg(limits.memoryMiB));
+#endif
+    return env;
+}
+
+QString signalName(int signal)
+{
+    const char* description = strsignal(signal);
+    return description ? QString::fromLocal8Bit(description).toLower() : QStringLiteral("unknown signal");
+}
+
+// Progress lines on the worker's standard error: "progress 0.42".
+void readProgress(QProcess& process, QByteArray& pending, const ImportControl& control)
+{
+    pending += process.readAllStandardError();
+    if (pending.size() > (1 << 16))
+        pending = pending.right(1 << 12);   // a chatty worker cannot grow this
+    qsizetype newline;
+    while ((newline = pending.indexOf('\n')) >= 0) {
+        const QByteArray line = pending.left(newline).trimmed();
+        pending.remove(0, newline + 1);
+        if (!control.progress || !line.startsWith("progress "))
+            continue;
+        bool ok = false;
+        const double fraction = line.mid(9).toDouble(&ok);
+        if (ok && std::isfinite(fraction))
+            control.progress(std::clamp(fraction, 0.0, 1.0));
+    }
+}
+
+} // namespace
+
+QString importWorkerProgram()
+{
+    if (const QString overridden = qEnvironmentVariable("SHADOWLAB_IMPORT_WORKER"); !overridden.isEmpty())
+        return QFileInfo(overridden).isExecutable() ? overridden : QString();
+    QStringList candidates;
+    if (QCoreApplication::instance()) {
+        const QDir dir(QCoreApplication::applicationDirPath());
+        candidates << dir.filePath(QLatin1String(kWorkerName)) << dir.filePath(QStringLiteral("../libexec/shadowlab/") + QLatin1String(kWorkerName));
+    }
+#ifdef SHADOWLAB_IMPORT_WORKER_BUILD
+    candidates << QStringLiteral(SHADOWLAB_IMPORT_WORKER_BUILD);
+#endif
+    for (const QString& candidate : candidates) {
+        if (QFileInfo(candidate).isExecutable())
+            return QFileInfo(candidate).absoluteFilePath();
+    }
+    return QString();
+}
+
+Scene importModelIsolated(const QString& path, const ImportControl& control)
+{
+    control.limits.validate();
+    const QString program = control.workerProgram.isEmpty() ? importWorkerProgram() : control.workerProgram;
+    if (program.isEmpty())
+        throw SceneFileError(path, QStringLiteral("cannot be read: the import worker '%1' is missing next to the program; reinstall ShadowLab")
+                                       .arg(QLatin1String(kWorkerName)));
+
+    const ImportLimits limits = control.limits;
+    QProcess process;
+    process.setProgram(program);
+    process.setArguments({QFileInfo(path).absoluteFilePath()});
+    process.setProcessEnvironment(workerEnvironment(control.limits));
+    process.setStandardInputFile(QProcess::nullDevice());
+    process.setWorkingDirectory(QDir::tempPath());
+    // Runs in the child between fork and exec: only async-signal-safe calls.
+    process.setChildProcessModifier([limits] {
+        const auto cap = [](int resource, rlim_t value) {
+            const rlimit limit{value, value};
+            setrlimit(resource, &limit);
+        };
+#if !defined(__SANITIZE_ADDRESS__)
+        cap(RLIMIT_AS, rlim_t(limits.memoryMiB) << 20);
+#endif
+        cap(RLIMIT_CPU, rlim_t(std::ceil(limits.timeSeconds)) + 2);
+        cap(RLIMIT_CORE, 0);
+        cap(RLIMIT_FSIZE, 0);       // it reads; it never writes a file
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+    });
+    process.start(QIODevice::ReadOnly);
+    if (!process.waitForStarted(kStartTimeoutMs))
+        throw SceneFileError(path, QStringLiteral("cannot be read: the import worker did not start (%1); reinstall ShadowLab").arg(process.errorString()));
+
+    const qint64 outputLimit = qint64(limits.outputMiB) << 20;
+    const qint64 timeLimitMs = qint64(limits.timeSeconds * 1000.0);
+    QElapsedTimer clock;
+    clock.start();
+    QByteArray pendingProgress;
+    const auto stop = [&process] {
+        process.kill();
+        process.waitForFinished(-1);
+    };
+    // waitForReadyRead returns after each read of the pipe (or the poll interval), so the limits
+    // are checked as the answer grows; waitForFinished would read a flood to its end first.
+    while (process.state() != QProcess::NotRunning) {
+        process.waitForReadyRead(kPollMs);
+        readProgress(process, pendingProgress, control);
+        if (control.cancel && control.cancel->load()) {
+            stop();
+            throw ImportCancelled(path);
+        }
+        if (clock.elapsed() > timeLimitMs) {
+            stop();
+            throw SceneFileError(path, QStringLiteral("took longer than %1 s to read, the import time limit, and was stopped; the file is "
+                                                      "damaged or very large — raise --import-time-limit if it is only large; nothing was changed")
+                                           .arg(limits.timeSeconds));
+        }
+        if (process.bytesAvailable() > outputLimit) {
+            stop();
+            throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit, and was stopped; "
+                                                      "nothing was changed").arg(limits.outputMiB));
+        }
+    }
+    process.waitForFinished(-1);
+    readProgress(process, pendingProgress, control);
+    const QByteArray answer = process.readAllStandardOutput();
+
+    if (process.exitStatus() == QProcess::CrashExit) {
+        const int signal = process.exitCode();
+        if (signal == SIGXCPU)
+            throw SceneFileError(path, QStringLiteral("the importer used more than %1 s of processor time on it and was stopped; the file is "
+                                                      "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2));
+        throw SceneFileError(path, QStringLiteral("the importer crashed reading it (signal %1, %2): the file is damaged or not what its name "
+                                                  "says; nothing was changed").arg(signal).arg(signalName(signal)));
+    }
+    if (answer.size() > outputLimit)
+        throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit; nothing was changed").arg(limits.outputMiB));
+    if (process.exitCode() != 0 && answer.isEmpty())
+        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer (exit code %1): the file is damaged or not what "
+                                                  "its name says; nothing was changed").arg(process.exitCode()));
+    if (answer.isEmpty())
+        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer; the file is damaged or not what its name says; "
+                                                  "nothing was changed"));
+    ImportReply reply = decodeImportReply(answer, path);
+    if (reply.kind == ImportReplyKind::OutOfMemory)
+        throw SceneFileError(path, QStringLiteral("needs more memory to read than the import memory limit of %1 MiB (%2); the file is "
+                                                  "damaged or very large — raise --import-memory-limit if it is only large; nothing was changed")
+                                       .arg(limits.memoryMiB).arg(reply.message));
+    if (reply.kind == ImportReplyKind::Refusal)
+        throw SceneFileError(path, reply.message);
+    return std::move(reply.scene);
+}
+
+} // namespace shadowlab

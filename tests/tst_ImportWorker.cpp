@@ -1,0 +1,315 @@
+// Model files are read in a separate process: whatever the worker does (crash, hang, eat
+// memory, flood or garble its answer, stop early, get cancelled), the caller gets a refusal that
+// names the file and what happened, quickly, and nothing else changes. What comes back is
+// checked again; the real worker's scene equals the in-process import.
+#include "ImportPayload.h"
+#include "IsolatedImport.h"
+#include "ModelImporter.h"
+#include "SceneFileError.h"
+#include "SceneLoader.h"
+
+#include <QElapsedTimer>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <atomic>
+#include <cstring>
+#include <thread>
+
+using namespace shadowlab;
+
+namespace {
+
+const QString kModels = QStringLiteral("/usr/share/assimp/models/");
+
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
+{
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+ImportControl fakeControl(double seconds = 3.0)
+{
+    ImportControl control;
+    control.workerProgram = QStringLiteral(SHADOWLAB_FAKE_WORKER);
+    control.limits.timeSeconds = seconds;
+    control.limits.memoryMiB = 512;
+    control.limits.outputMiB = 16;
+    return control;
+}
+
+// The refusal's message, or a failure when there was none.
+QString refusal(const QString& path, const ImportControl& control)
+{
+    try {
+        importModelIsolated(path, control);
+    } catch (const SceneFileError& e) {
+        return QString::fromUtf8(e.what());
+    }
+    return QString();
+}
+
+std::size_t triangles(const Scene& scene)
+{
+    std::size_t n = 0;
+    for (const Mesh& mesh : scene.meshes)
+        n += mesh.indices.size() / 3;
+    return n;
+}
+
+} // namespace
+
+class tst_ImportWorker : public QObject {
+    Q_OBJECT
+
+private slots:
+    void workerMisbehaves_data();
+    void workerMisbehaves();
+    void cancelStopsAtOnce();
+    void progressArrives();
+    void realWorkerMatchesInProcess_data();
+    void realWorkerMatchesInProcess();
+    void realWorkerRefusesLikeInProcess();
+    void realWorkerUnderAHang();
+    void untrustedAnswer_data();
+    void untrustedAnswer();
+    void limitsValidate();
+};
+
+void tst_ImportWorker::workerMisbehaves_data()
+{
+    QTest::addColumn<QByteArray>("mode");
+    QTest::addColumn<QString>("says");
+    QTest::newRow("crash") << QByteArray("crash") << QStringLiteral("crashed reading it (signal 11");
+    QTest::newRow("abort") << QByteArray("abort") << QStringLiteral("crashed reading it (signal 6");
+    QTest::newRow("busy forever") << QByteArray("spin") << QStringLiteral("took longer than 1.5 s");
+    QTest::newRow("asleep forever") << QByteArray("sleep") << QStringLiteral("took longer than 1.5 s");
+    // The address-space limit stops it long before the machine's memory: an allocation fails.
+    QTest::newRow("eats memory") << QByteArray("memory") << QStringLiteral("crashed reading it (signal 6");
+    QTest::newRow("garbage") << QByteArray("garbage") << QStringLiteral("does not start as an import answer does");
+    QTest::newRow("half an answer") << QByteArray("truncated") << QStringLiteral("does not hold together");
+    QTest::newRow("bad index") << QByteArray("bad-index") << QStringLiteral("names a vertex a mesh of 24 does not have");
+    QTest::newRow("early exit") << QByteArray("exit") << QStringLiteral("stopped without an answer (exit code 3)");
+    QTest::newRow("silent") << QByteArray("silent") << QStringLiteral("stopped without an answer");
+    QTest::newRow("flood") << QByteArray("flood") << QStringLiteral("more than 16 MiB");
+}
+
+void tst_ImportWorker::workerMisbehaves()
+{
+    QFETCH(QByteArray, mode);
+    QFETCH(QString, says);
+#if defined(__SANITIZE_ADDRESS__)
+    if (mode == "memory")
+        says = QStringLiteral("stopped without an answer");    // ASan's allocator limit reports and exits
+#endif
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("engine.ply"), mode + "\n");
+    QElapsedTimer clock;
+    clock.start();
+    const QString message = refusal(path, fakeControl(1.5));
+    QVERIFY2(message.contains(says), qPrintable(message));
+    QVERIFY2(message.contains(path), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("nothing was changed")) || message.contains(QStringLiteral("damaged")), qPrintable(message));
+    QVERIFY2(clock.elapsed() < 12000, qPrintable(QString::number(clock.elapsed())));
+}
+
+void tst_ImportWorker::cancelStopsAtOnce()
+{
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("big.glb"), "sleep\n");
+    std::atomic<bool> cancel = false;
+    ImportControl control = fakeControl(30.0);
+    control.cancel = &cancel;
+    QElapsedTimer clock;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        clock.start();
+        cancel = true;
+    });
+    bool cancelled = false;
+    try {
+        importModelIsolated(path, control);
+    } catch (const ImportCancelled& e) {
+        cancelled = QString::fromUtf8(e.what()).contains(QStringLiteral("cancelled"));
+    }
+    canceller.join();
+    QVERIFY(cancelled);
+    QVERIFY2(clock.elapsed() < 1000, qPrintable(QString::number(clock.elapsed())));
+}
+
+void tst_ImportWorker::progressArrives()
+{
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("slow.obj"), "slow\n");
+    std::vector<double> seen;
+    ImportControl control = fakeControl(20.0);
+    control.progress = [&](double f) { seen.push_back(f); };
+    const Scene scene = importModelIsolated(path, control);
+    QCOMPARE(scene.objects.size(), std::size_t(1));
+    QVERIFY2(seen.size() >= 10, qPrintable(QString::number(seen.size())));
+    QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+    QCOMPARE(seen.back(), 1.0);
+}
+
+void tst_ImportWorker::realWorkerMatchesInProcess_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::newRow("glb") << kModels + QStringLiteral("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+    QTest::newRow("gltf textured") << kModels + QStringLiteral("glTF2/BoxTextured-glTF/BoxTextured.gltf");
+    QTest::newRow("obj") << kModels + QStringLiteral("OBJ/spider.obj");
+    QTest::newRow("ply") << kModels + QStringLiteral("PLY/cube.ply");
+    QTest::newRow("stl") << kModels + QStringLiteral("STL/Spider_ascii.stl");
+    QTest::newRow("dae") << kModels + QStringLiteral("Collada/duck.dae");
+}
+
+void tst_ImportWorker::realWorkerMatchesInProcess()
+{
+    QFETCH(QString, file);
+    QVERIFY2(QFileInfo::exists(file), qPrintable(file));
+    const Scene direct = importModel(file);
+    const Scene isolated = importModelIsolated(file);
+    QCOMPARE(isolated.name, direct.name);
+    QCOMPARE(isolated.identity, direct.identity);
+    QCOMPARE(isolated.warnings, direct.warnings);
+    QCOMPARE(isolated.meshes.size(), direct.meshes.size());
+    QCOMPARE(isolated.objects.size(), direct.objects.size());
+    QCOMPARE(isolated.images.size(), direct.images.size());
+    QCOMPARE(triangles(isolated), triangles(direct));
+    for (std::size_t m = 0; m < direct.meshes.size(); ++m) {
+        QCOMPARE(isolated.meshes[m].indices, direct.meshes[m].indices);
+        QCOMPARE(isolated.meshes[m].vertices.size(), direct.meshes[m].vertices.size());
+        QVERIFY(std::memcmp(isolated.meshes[m].vertices.data(), direct.meshes[m].vertices.data(),
+                            direct.meshes[m].vertices.size() * sizeof(Vertex)) == 0);
+    }
+    for (std::size_t o = 0; o < direct.objects.size(); ++o) {
+        QCOMPARE(isolated.objects[o].mesh, direct.objects[o].mesh);
+        QVERIFY(isolated.objects[o].model == direct.objects[o].model);
+        QCOMPARE(isolated.objects[o].image, direct.objects[o].image);
+    }
+    for (std::size_t i = 0; i < direct.images.size(); ++i)
+        QCOMPARE(isolated.images[i], direct.images[i].convertToFormat(QImage::Format_RGBA8888));
+}
+
+void tst_ImportWorker::realWorkerRefusesLikeInProcess()
+{
+    QTemporaryDir dir;
+    const QStringList files = {
+        writeFile(dir, QStringLiteral("empty.obj"), QByteArray()),
+        writeFile(dir, QStringLiteral("noise.stl"), QByteArray("solid x\nfacet normal what\n")),
+        writeFile(dir, QStringLiteral("inflated.ply"), QByteArray("ply\nformat ascii 1.0\nelement vertex 99999999\nproperty float x\nend_header\n1\n")),
+        writeFile(dir, QStringLiteral("points.obj"), QByteArray("v 0 0 0\nv 1 0 0\np 1 2\n")),
+        dir.filePath(QStringLiteral("missing.glb")),
+    };
+    for (const QString& file : files) {
+        QString direct;
+        try {
+            importModel(file);
+        } catch (const SceneFileError& e) {
+            direct = QString::fromUtf8(e.what());
+        }
+        QVERIFY2(!direct.isEmpty(), qPrintable(file));
+        QCOMPARE(refusal(file, ImportControl{}), direct);
+    }
+}
+
+void tst_ImportWorker::realWorkerUnderAHang()
+{
+    // A worker that does not answer in time is stopped: the real worker, given a tiny limit, on
+    // a model that takes longer than that to read (a 10^6-triangle binary STL made here).
+    QTemporaryDir dir;
+    const quint32 count = 1'000'000;
+    QByteArray stl(80, ' ');
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    QByteArray facet(50, '\0');
+    for (quint32 i = 0; i < count; ++i) {
+        float v[12] = {0, 0, 1, float(i), 0, 0, float(i) + 1, 0, 0, float(i), 1, 0};
+        std::memcpy(facet.data(), v, sizeof v);
+        stl.append(facet);
+    }
+    const QString path = writeFile(dir, QStringLiteral("big.stl"), stl);
+    ImportControl control;
+    control.limits.timeSeconds = 1.0;
+    QElapsedTimer clock;
+    clock.start();
+    const QString message = refusal(path, control);
+    QVERIFY2(message.contains(QStringLiteral("took longer than 1 s")), qPrintable(message));
+    QVERIFY2(clock.elapsed() < 5000, qPrintable(QString::number(clock.elapsed())));
+}
+
+void tst_ImportWorker::untrustedAnswer_data()
+{
+    QTest::addColumn<QByteArray>("answer");
+    QTest::addColumn<QString>("says");
+    Scene scene;
+    scene.name = QStringLiteral("s");
+    scene.meshes.push_back(meshes::cube());
+    SceneObject object;
+    object.texture = TextureKind::Flat;
+    scene.objects.push_back(object);
+    const QByteArray good = encodeImportedScene(scene);
+    const auto with = [&](auto change) {
+        Scene s = scene;
+        change(s);
+        return encodeImportedScene(s);
+    };
+    QTest::newRow("good") << good << QString();
+    QTest::newRow("empty") << QByteArray() << QStringLiteral("does not start");
+    QTest::newRow("one byte short") << good.chopped(1) << QStringLiteral("does not end");
+    QTest::newRow("trailing bytes") << good + "xx" << QStringLiteral("2 bytes follow");
+    QTest::newRow("NaN position") << with([](Scene& s) { s.meshes[0].vertices[3].position.y = NAN; }) << QStringLiteral("not a finite number");
+    QTest::newRow("index out of range") << with([](Scene& s) { s.meshes[0].indices[0] = 24; }) << QStringLiteral("does not have");
+    QTest::newRow("partial triangle") << with([](Scene& s) { s.meshes[0].indices.pop_back(); }) << QStringLiteral("not whole triangles");
+    QTest::newRow("mesh out of range") << with([](Scene& s) { s.objects[0].mesh = 1; }) << QStringLiteral("names mesh 1 of 1");
+    QTest::newRow("texture out of range") << with([](Scene& s) { s.objects[0].texture = TextureKind::Image; s.objects[0].image = 0; })
+                                          << QStringLiteral("names texture 0 of 0");
+    QTest::newRow("infinite placement") << with([](Scene& s) { s.objects[0].model[3][1] = INFINITY; }) << QStringLiteral("placement is not finite");
+    QTest::newRow("no objects") << with([](Scene& s) { s.objects.clear(); }) << QStringLiteral("no objects");
+    // A count that promises more than the bytes there are is refused before anything is allocated.
+    // The mesh's vertex count: after the header (13 bytes), the name "s" (5), an empty identity
+    // (4), no warnings (4), no ground (1), the mesh count (4) and the convex flag (1).
+    QByteArray inflated = good;
+    const qsizetype vertexCount = 13 + 5 + 4 + 4 + 1 + 4 + 1;
+    QCOMPARE(quint8(inflated[vertexCount]), quint8(24));
+    inflated[vertexCount + 3] = '\x7f';
+    QTest::newRow("vertex count inflated") << inflated << QStringLiteral("more than the answer holds");
+    QByteArray kind = good;
+    kind[12] = 9;
+    QTest::newRow("unknown kind") << kind << QStringLiteral("its kind is 9");
+}
+
+void tst_ImportWorker::untrustedAnswer()
+{
+    QFETCH(QByteArray, answer);
+    QFETCH(QString, says);
+    QString message;
+    try {
+        const ImportReply reply = decodeImportReply(answer, QStringLiteral("model.glb"));
+        QCOMPARE(reply.scene.meshes.at(0).vertices.size(), std::size_t(24));
+    } catch (const SceneFileError& e) {
+        message = QString::fromUtf8(e.what());
+    }
+    if (says.isEmpty()) {
+        QVERIFY2(message.isEmpty(), qPrintable(message));
+    } else {
+        QVERIFY2(message.contains(says), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("'model.glb'")), qPrintable(message));
+    }
+}
+
+void tst_ImportWorker::limitsValidate()
+{
+    for (const ImportLimits& bad : {ImportLimits{.timeSeconds = 0.0}, ImportLimits{.timeSeconds = NAN}, ImportLimits{.memoryMiB = 16},
+                                    ImportLimits{.outputMiB = 0}}) {
+        QVERIFY_THROWS_EXCEPTION(SettingsError, setImportLimits(bad));
+    }
+    QCOMPARE(importLimits().timeSeconds, 30.0);
+    setImportLimits({.timeSeconds = 5.0});
+    QCOMPARE(importLimits().timeSeconds, 5.0);
+    setImportLimits({});
+}
+
+QTEST_GUILESS_MAIN(tst_ImportWorker)
+#include "tst_ImportWorker.moc"
