@@ -12,6 +12,7 @@
 #include "SceneView.h"
 #include "SettingsKeys.h"
 
+#include <QDir>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -41,6 +42,14 @@ QString storedSettings(const QString& side)
     QSettings store;
     store.sync();   // read what is on disk now
     return store.value(QStringLiteral("settings/") + side).toString();
+}
+
+// With SHADOWLAB_TEST_PICTURES set to a folder, what the user sees at each step is saved there.
+void keepPicture(QWidget* widget, const QString& name)
+{
+    const QString folder = qEnvironmentVariable("SHADOWLAB_TEST_PICTURES");
+    if (!folder.isEmpty() && widget)
+        widget->grab().save(QDir(folder).filePath(name + QStringLiteral(".png")));
 }
 
 QMessageBox* box(const MainWindow& window, const QString& name)
@@ -85,6 +94,7 @@ private slots:
         QVERIFY(progress && progress->isVisible());
         QVERIFY(progress->findChild<QLabel*>()->text().contains(QStringLiteral("large.glb")));
         QTRY_VERIFY(progress->findChild<QProgressBar*>()->value() >= 10);
+        keepPicture(&window, QStringLiteral("opening-in-background"));
         // The current scene stays usable meanwhile: an edit applies and is drawn.
         Settings edited = before;
         edited.bias.slope *= 2.0;
@@ -100,6 +110,7 @@ private slots:
         QVERIFY(!progress->isVisible());
         QCOMPARE(window.settings(MainWindow::Side::A), edited);
         QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("cancelled")));
+        keepPicture(&window, QStringLiteral("opening-cancelled"));
         QVERIFY(window.recentScenes().isEmpty());
 
         // Left alone, the same file opens.
@@ -131,6 +142,8 @@ private slots:
         window.openSceneInBackground(file);
         QTRY_VERIFY_WITH_TIMEOUT(box(window, QStringLiteral("openErrorBox")), 10000);
         const QString text = box(window, QStringLiteral("openErrorBox"))->text();
+        keepPicture(&window, QStringLiteral("importer-%1-window").arg(QString::fromLatin1(mode)));
+        keepPicture(box(window, QStringLiteral("openErrorBox")), QStringLiteral("importer-%1-message").arg(QString::fromLatin1(mode)));
         QVERIFY2(text.contains(says) && text.contains(QStringLiteral("engine.ply")) && text.contains(QStringLiteral("The current scene stays")),
                  qPrintable(text));
         QCOMPARE(window.settings(MainWindow::Side::A), before);
@@ -204,6 +217,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QTRY_VERIFY(box(window, QStringLiteral("restoreSessionBox")));
         QVERIFY(box(window, QStringLiteral("restoreSessionBox"))->text().contains(QStringLiteral("box.obj was being opened")));
+        keepPicture(box(window, QStringLiteral("restoreSessionBox")), QStringLiteral("restore-after-crash"));
         box(window, QStringLiteral("restoreSessionBox"))->findChild<QPushButton*>(QStringLiteral("restoreSessionButton"))->click();
         QTest::qWait(300);
         QVERIFY(!window.sceneOpener()->isBusy());
