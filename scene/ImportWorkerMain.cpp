@@ -1,6 +1,6 @@
-// shadowlab-import-worker FILE: reads one model file with Assimp (importModel) and writes the
-// scene, or why it cannot be read, to standard output (ImportPayload.h); progress lines
-// ("progress 0.42") go to standard error. The explorer and the command line start it through
+// shadowlab-import-worker FILE [--answer-fd N]: reads one model file with Assimp (importModel)
+// and writes the scene, or why it cannot be read (ImportPayload.h), to file descriptor N, or to
+// standard output; progress lines ("progress 0.42") go to standard error. The explorer and the command line start it through
 // importModelIsolated(), under limits, so that a damaged file can crash or hang this process
 // and nothing else.
 #include "ImportPayload.h"
@@ -8,22 +8,32 @@
 #include "SceneFileError.h"
 
 #include <QCoreApplication>
-#include <QFile>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <new>
+
+#include <unistd.h>
 
 using namespace shadowlab;
 
 namespace {
 
-bool writeAll(const QByteArray& bytes)
+bool writeAll(int fd, const QByteArray& bytes)
 {
-    QFile out;
-    if (!out.open(stdout, QIODevice::WriteOnly | QIODevice::Unbuffered))
-        return false;
-    return out.write(bytes) == bytes.size();
+    const char* data = bytes.constData();
+    std::size_t left = std::size_t(bytes.size());
+    while (left > 0) {
+        const ssize_t written = ::write(fd, data, left);
+        if (written < 0 && errno == EINTR)
+            continue;
+        if (written <= 0)
+            return false;
+        data += written;
+        left -= std::size_t(written);
+    }
+    return true;
 }
 
 } // namespace
@@ -32,8 +42,12 @@ int main(int argc, char* argv[])
 {
     QCoreApplication app(argc, argv);   // Qt's image plugins, for textures
     const QStringList arguments = app.arguments();
-    if (arguments.size() != 2) {
-        std::fputs("usage: shadowlab-import-worker FILE (started by shadowlab, not by hand)\n", stderr);
+    int fd = STDOUT_FILENO;
+    bool ok = arguments.size() == 2;
+    if (arguments.size() == 4 && arguments.at(2) == u"--answer-fd")
+        fd = arguments.at(3).toInt(&ok);
+    if (!ok) {
+        std::fputs("usage: shadowlab-import-worker FILE [--answer-fd N] (started by shadowlab, not by hand)\n", stderr);
         return 64;
     }
     const QString path = arguments.at(1);
@@ -56,5 +70,5 @@ int main(int argc, char* argv[])
         answer = encodeImportRefusal(ImportReplyKind::OutOfMemory, QStringLiteral("an allocation failed"));
     }
     progress(1.0);
-    return writeAll(answer) ? 0 : 74;
+    return writeAll(fd, answer) ? 0 : 74;
 }

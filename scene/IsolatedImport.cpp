@@ -11,10 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cerrno>
 #include <cstring>
 
+#include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace shadowlab {
 
@@ -67,6 +71,41 @@ void readProgress(QProcess& process, QByteArray& pending, const ImportControl& c
     }
 }
 
+constexpr int kAnswerFd = 3;
+
+// An anonymous file in memory, closed on exec (the worker gets a copy at kAnswerFd); its
+// contents are mapped, not copied, when the worker is done.
+struct AnswerFile {
+    int fd = memfd_create("shadowlab-import-answer", MFD_CLOEXEC);
+    void* mapping = nullptr;
+    std::size_t size = 0;
+
+    AnswerFile() = default;
+    AnswerFile(const AnswerFile&) = delete;
+    AnswerFile& operator=(const AnswerFile&) = delete;
+    ~AnswerFile()
+    {
+        if (mapping)
+            munmap(mapping, size);
+        if (fd >= 0)
+            close(fd);
+    }
+    // The bytes the worker wrote, valid while this lives; empty when there are none.
+    QByteArray contents(qint64 limit)
+    {
+        struct stat info {};
+        if (mapping || fstat(fd, &info) != 0 || info.st_size <= 0 || info.st_size > limit)
+            return QByteArray();
+        size = std::size_t(info.st_size);
+        mapping = mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);   // one fault, not one a page
+        if (mapping == MAP_FAILED) {
+            mapping = nullptr;
+            return QByteArray();
+        }
+        return QByteArray::fromRawData(static_cast<const char*>(mapping), qsizetype(size));
+    }
+};
+
 } // namespace
 
 QString importWorkerProgram()
@@ -97,14 +136,21 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
                                        .arg(QLatin1String(kWorkerName)));
 
     const ImportLimits limits = control.limits;
+    const qint64 outputLimit = qint64(limits.outputMiB) << 20;
+    // The answer comes back through an anonymous memory file, the worker's fd 3: no copy through a
+    // pipe, and the kernel stops the worker (SIGXFSZ) at the output limit.
+    AnswerFile answerFile;
+    if (answerFile.fd < 0)
+        throw SceneFileError(path, QStringLiteral("cannot be read: no memory for the importer's answer (%1)").arg(QString::fromLocal8Bit(strerror(errno))));
     QProcess process;
     process.setProgram(program);
-    process.setArguments({QFileInfo(path).absoluteFilePath()});
+    process.setArguments({QFileInfo(path).absoluteFilePath(), QStringLiteral("--answer-fd"), QString::number(kAnswerFd)});
     process.setProcessEnvironment(workerEnvironment(control.limits));
     process.setStandardInputFile(QProcess::nullDevice());
+    process.setStandardOutputFile(QProcess::nullDevice());
     process.setWorkingDirectory(QDir::tempPath());
     // Runs in the child between fork and exec: only async-signal-safe calls.
-    process.setChildProcessModifier([limits] {
+    process.setChildProcessModifier([limits, outputLimit, fd = answerFile.fd] {
         const auto cap = [](int resource, rlim_t value) {
             const rlimit limit{value, value};
             setrlimit(resource, &limit);
@@ -114,14 +160,15 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
 #endif
         cap(RLIMIT_CPU, rlim_t(std::ceil(limits.timeSeconds)) + 2);
         cap(RLIMIT_CORE, 0);
-        cap(RLIMIT_FSIZE, 0);       // it reads; it never writes a file
+        cap(RLIMIT_FSIZE, rlim_t(outputLimit));     // its answer is the one file it writes
         prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (dup2(fd, kAnswerFd) < 0)    // dup2 clears close-on-exec on the copy only
+            _exit(71);
     });
     process.start(QIODevice::ReadOnly);
     if (!process.waitForStarted(kStartTimeoutMs))
         throw SceneFileError(path, QStringLiteral("cannot be read: the import worker did not start (%1); reinstall ShadowLab").arg(process.errorString()));
 
-    const qint64 outputLimit = qint64(limits.outputMiB) << 20;
     const qint64 timeLimitMs = qint64(limits.timeSeconds * 1000.0);
     QElapsedTimer clock;
     clock.start();
@@ -130,10 +177,7 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
         process.kill();
         process.waitForFinished(-1);
     };
-    // waitForReadyRead returns after each read of the pipe (or the poll interval), so the limits
-    // are checked as the answer grows; waitForFinished would read a flood to its end first.
-    while (process.state() != QProcess::NotRunning) {
-        process.waitForReadyRead(kPollMs);
+    while (!process.waitForFinished(kPollMs)) {
         readProgress(process, pendingProgress, control);
         if (control.cancel && control.cancel->load()) {
             stop();
@@ -145,26 +189,23 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
                                                       "damaged or very large — raise --import-time-limit if it is only large; nothing was changed")
                                            .arg(limits.timeSeconds));
         }
-        if (process.bytesAvailable() > outputLimit) {
-            stop();
-            throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit, and was stopped; "
-                                                      "nothing was changed").arg(limits.outputMiB));
-        }
+        if (process.state() == QProcess::NotRunning)
+            break;
     }
-    process.waitForFinished(-1);
     readProgress(process, pendingProgress, control);
-    const QByteArray answer = process.readAllStandardOutput();
 
     if (process.exitStatus() == QProcess::CrashExit) {
         const int signal = process.exitCode();
+        if (signal == SIGXFSZ)
+            throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit, and was stopped; "
+                                                      "nothing was changed").arg(limits.outputMiB));
         if (signal == SIGXCPU)
             throw SceneFileError(path, QStringLiteral("the importer used more than %1 s of processor time on it and was stopped; the file is "
                                                       "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2));
         throw SceneFileError(path, QStringLiteral("the importer crashed reading it (signal %1, %2): the file is damaged or not what its name "
                                                   "says; nothing was changed").arg(signal).arg(signalName(signal)));
     }
-    if (answer.size() > outputLimit)
-        throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit; nothing was changed").arg(limits.outputMiB));
+    const QByteArray answer = answerFile.contents(outputLimit);
     if (process.exitCode() != 0 && answer.isEmpty())
         throw SceneFileError(path, QStringLiteral("the importer stopped without an answer (exit code %1): the file is damaged or not what "
                                                   "its name says; nothing was changed").arg(process.exitCode()));

@@ -28,10 +28,20 @@ constexpr qint64 kMaxSceneFileBytes = 1 << 20;      // a scene file is a short l
 constexpr double kSeedObjectRadius = 2.5;           // the seed preset's objects, whose defaults the bias was tuned on
 
 struct Loaded {
-    std::shared_ptr<const Scene> scene;     // what is drawn, with its ground
-    std::shared_ptr<const Scene> model;     // a model file's meshes alone, to place in scene files
+    std::shared_ptr<const Scene> scene;     // what is drawn, with its ground (a model's is its last mesh and object)
     QJsonObject settings;                   // a scene file's keys of `shadowlab settings`
 };
+
+// A model file's meshes alone, to place in a scene file: its scene without the ground that
+// load() added. Made when a scene file asks, so opening a model alone copies nothing.
+Scene withoutGround(const Scene& scene)
+{
+    Scene model = scene;
+    model.meshes.pop_back();
+    model.objects.pop_back();
+    model.groundHeight.reset();
+    return model;
+}
 
 bool isSceneFile(const QString& path)
 {
@@ -146,7 +156,7 @@ Loaded loadScene(const QString& path, const ImportControl& control)
         const QString modelPath = QFileInfo(QFileInfo(path).dir(), name).absoluteFilePath();
         if (isSceneFile(modelPath))
             throw SceneFileError(path, QStringLiteral("%1: a scene file cannot include another scene file").arg(where));
-        const std::shared_ptr<const Scene> part = cached(modelPath, control).model;
+        const Scene part = withoutGround(*cached(modelPath, control).scene);
         const glm::dvec3 position = vectorOf(path, where + QStringLiteral(".position"), m.value(QStringLiteral("position")), glm::dvec3(0.0));
         const glm::dvec3 rotation = vectorOf(path, where + QStringLiteral(".rotation"), m.value(QStringLiteral("rotation")), glm::dvec3(0.0));
         const glm::dvec3 scale = vectorOf(path, where + QStringLiteral(".scale"), m.value(QStringLiteral("scale")), glm::dvec3(1.0));
@@ -157,8 +167,8 @@ Loaded loadScene(const QString& path, const ImportControl& control)
         placement = glm::rotate(placement, glm::radians(rotation.y), glm::dvec3(0, 1, 0));
         placement = glm::rotate(placement, glm::radians(rotation.x), glm::dvec3(1, 0, 0));
         placement = glm::scale(placement, scale);
-        append(*scene, *part, placement, m.value(QStringLiteral("casts")).toBool(true), m.value(QStringLiteral("receives")).toBool(true));
-        identity.addData(part->identity);
+        append(*scene, part, placement, m.value(QStringLiteral("casts")).toBool(true), m.value(QStringLiteral("receives")).toBool(true));
+        identity.addData(part.identity);
     }
     if (ground.isDouble())
         addGround(*scene, ground.toDouble());
@@ -174,10 +184,9 @@ Loaded load(const QString& path, const ImportControl& control)
 {
     if (isSceneFile(path))
         return loadScene(path, control);
-    auto model = std::make_shared<const Scene>(importModelIsolated(path, control));
-    auto scene = std::make_shared<Scene>(*model);
+    auto scene = std::make_shared<Scene>(importModelIsolated(path, control));
     addGround(*scene, scene->bounds().min.y);
-    return {std::move(scene), std::move(model), {}};
+    return {std::move(scene), {}};
 }
 
 } // namespace
