@@ -136,8 +136,11 @@ Mesh readMesh(Reader& in, std::size_t& triangles)
         throw Malformed{QStringLiteral("more than %1 triangles").arg(kMaxModelTriangles)};
     const char* vertexData = in.array(vertices, sizeof(Vertex), "a vertex array");
     const char* indexData = in.array(indices, sizeof(std::uint32_t), "an index array");
+    if (indices == 0)
+        throw Malformed{QStringLiteral("a mesh has no triangles")};
     mesh.vertices.resize(vertices);
-    std::memcpy(mesh.vertices.data(), vertexData, vertices * sizeof(Vertex));
+    if (vertices > 0)
+        std::memcpy(mesh.vertices.data(), vertexData, vertices * sizeof(Vertex));
     mesh.indices.resize(indices);
     std::memcpy(mesh.indices.data(), indexData, indices * sizeof(std::uint32_t));
     for (Vertex& v : mesh.vertices) {
@@ -211,6 +214,8 @@ Scene readScene(Reader& in)
     Scene scene;
     scene.name = in.string("the scene's name");
     scene.identity = in.string("the scene's identity").toLatin1();
+    if (scene.identity.size() > 128)
+        throw Malformed{QStringLiteral("its identity is %1 bytes long").arg(scene.identity.size())};
     const std::size_t warnings = in.count(kMaxWarnings, 4, "warning");
     for (std::size_t i = 0; i < warnings; ++i)
         scene.warnings << in.string("a warning");
@@ -234,6 +239,10 @@ Scene readScene(Reader& in)
         scene.objects.push_back(readObject(in, scene));
     if (scene.objects.empty())
         throw Malformed{QStringLiteral("a scene with no objects")};
+    // Finite numbers can still multiply to infinity: the placed bounds must be finite too.
+    const Bounds bounds = scene.bounds();
+    if (!std::isfinite(bounds.min.x + bounds.min.y + bounds.min.z + bounds.max.x + bounds.max.y + bounds.max.z))
+        throw Malformed{QStringLiteral("its placed meshes reach beyond finite numbers")};
     return scene;
 }
 

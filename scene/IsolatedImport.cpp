@@ -3,6 +3,8 @@
 #include "ImportPayload.h"
 
 #include <QCoreApplication>
+#include <QCryptographicHash>
+#include <QFile>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -14,10 +16,13 @@
 #include <cerrno>
 #include <cstring>
 
+#include <fcntl.h>
+
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/types.h>
 #include <unistd.h>
 
 namespace shadowlab {
@@ -73,10 +78,22 @@ void readProgress(QProcess& process, QByteArray& pending, const ImportControl& c
 
 constexpr int kAnswerFd = 3;
 
+// Above the low descriptors, so that dup2() to kAnswerFd in the child always makes a copy
+// (dup2 onto itself would keep close-on-exec set).
+int openAnswerFile()
+{
+    const int fd = memfd_create("shadowlab-import-answer", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+    if (fd < 0)
+        return fd;
+    const int moved = fcntl(fd, F_DUPFD_CLOEXEC, 10);
+    close(fd);
+    return moved;
+}
+
 // An anonymous file in memory, closed on exec (the worker gets a copy at kAnswerFd); its
 // contents are mapped, not copied, when the worker is done.
 struct AnswerFile {
-    int fd = memfd_create("shadowlab-import-answer", MFD_CLOEXEC);
+    int fd = openAnswerFile();
     void* mapping = nullptr;
     std::size_t size = 0;
 
@@ -93,8 +110,11 @@ struct AnswerFile {
     // The bytes the worker wrote, valid while this lives; empty when there are none.
     QByteArray contents(qint64 limit)
     {
+        // Sealed first: nothing the worker left behind can shrink the file under the mapping
+        // (a read past its end would be SIGBUS here) or change it while it is decoded.
         struct stat info {};
-        if (mapping || fstat(fd, &info) != 0 || info.st_size <= 0 || info.st_size > limit)
+        if (mapping || fcntl(fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL) != 0
+            || fstat(fd, &info) != 0 || info.st_size <= 0 || info.st_size > limit)
             return QByteArray();
         size = std::size_t(info.st_size);
         mapping = mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);   // one fault, not one a page
@@ -106,12 +126,22 @@ struct AnswerFile {
     }
 };
 
+QByteArray boundIdentity(const QString& path, const QByteArray& claimed)
+{
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    QFile file(path);
+    if (file.open(QIODevice::ReadOnly))
+        hash.addData(&file);
+    hash.addData(claimed);
+    return hash.result().toHex();
+}
+
 } // namespace
 
 QString importWorkerProgram()
 {
     if (const QString overridden = qEnvironmentVariable("SHADOWLAB_IMPORT_WORKER"); !overridden.isEmpty())
-        return QFileInfo(overridden).isExecutable() ? overridden : QString();
+        return overridden;  // checked, and named in the refusal, where it is started
     QStringList candidates;
     if (QCoreApplication::instance()) {
         const QDir dir(QCoreApplication::applicationDirPath());
@@ -134,6 +164,9 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
     if (program.isEmpty())
         throw SceneFileError(path, QStringLiteral("cannot be read: the import worker '%1' is missing next to the program; reinstall ShadowLab")
                                        .arg(QLatin1String(kWorkerName)));
+    if (!QFileInfo(program).isExecutable())
+        throw SceneFileError(path, QStringLiteral("cannot be read: the import worker '%1' is not an executable (check SHADOWLAB_IMPORT_WORKER, "
+                                                  "or reinstall ShadowLab)").arg(program));
 
     const ImportLimits limits = control.limits;
     const qint64 outputLimit = qint64(limits.outputMiB) << 20;
@@ -158,10 +191,12 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
 #if !defined(__SANITIZE_ADDRESS__)
         cap(RLIMIT_AS, rlim_t(limits.memoryMiB) << 20);
 #endif
-        cap(RLIMIT_CPU, rlim_t(std::ceil(limits.timeSeconds)) + 2);
+        const rlimit cpu{rlim_t(std::ceil(limits.timeSeconds)) + 2, rlim_t(std::ceil(limits.timeSeconds)) + 3};
+        setrlimit(RLIMIT_CPU, &cpu);    // SIGXCPU at the soft limit, SIGKILL a second later
         cap(RLIMIT_CORE, 0);
         cap(RLIMIT_FSIZE, rlim_t(outputLimit));     // its answer is the one file it writes
         prctl(PR_SET_PDEATHSIG, SIGKILL);
+        setpgid(0, 0);                  // its own group: stopping it stops whatever it started
         if (dup2(fd, kAnswerFd) < 0)    // dup2 clears close-on-exec on the copy only
             _exit(71);
     });
@@ -173,7 +208,9 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
     QElapsedTimer clock;
     clock.start();
     QByteArray pendingProgress;
-    const auto stop = [&process] {
+    const qint64 pid = process.processId();
+    const auto stop = [&process, pid] {
+        ::kill(pid_t(-pid), SIGKILL);
         process.kill();
         process.waitForFinished(-1);
     };
@@ -193,6 +230,7 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
             break;
     }
     readProgress(process, pendingProgress, control);
+    ::kill(pid_t(-pid), SIGKILL);   // anything the worker left running in its group
 
     if (process.exitStatus() == QProcess::CrashExit) {
         const int signal = process.exitCode();
@@ -213,6 +251,12 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
         throw SceneFileError(path, QStringLiteral("the importer stopped without an answer; the file is damaged or not what its name says; "
                                                   "nothing was changed"));
     ImportReply reply = decodeImportReply(answer, path);
+    if (reply.kind == ImportReplyKind::Scene) {
+        // The name and the cache key are the parent's to say, not the answer's: the file's own
+        // path, and the worker's hash of what it read bound to the parent's hash of the file.
+        reply.scene.name = QFileInfo(path).absoluteFilePath();
+        reply.scene.identity = boundIdentity(path, reply.scene.identity);
+    }
     if (reply.kind == ImportReplyKind::OutOfMemory)
         throw SceneFileError(path, QStringLiteral("needs more memory to read than the import memory limit of %1 MiB (%2); the file is "
                                                   "damaged or very large — raise --import-memory-limit if it is only large; nothing was changed")

@@ -1,5 +1,6 @@
 #include "ModelImporter.h"
 
+#include "Limits.h"
 #include "SceneFileError.h"
 
 #include <assimp/DefaultIOSystem.h>
@@ -230,6 +231,12 @@ int loadImage(Importing& in, const aiMaterial* material)
                                  .arg(name, QString::fromUtf8(materialName.C_Str()));
         return -1;
     }
+    if (image.width() > kMaxImageSide || image.height() > kMaxImageSide) {
+        in.scene.warnings << QStringLiteral("texture '%1' is %2 × %3 texels; drawn at most %4 texels wide")
+                                 .arg(name).arg(image.width()).arg(image.height()).arg(kMaxImageSide);
+        image = image.scaled(std::min(image.width(), kMaxImageSide), std::min(image.height(), kMaxImageSide), Qt::KeepAspectRatio,
+                             Qt::SmoothTransformation);
+    }
     in.scene.images.push_back(image.convertToFormat(QImage::Format_RGBA8888));
     return int(in.scene.images.size() - 1);
 }
@@ -304,6 +311,8 @@ void convertMeshes(Importing& in)
                 mesh.indices.push_back(face.mIndices[c]);
             }
         }
+        if (mesh.indices.empty())
+            continue;   // nothing but points and lines after all
         std::vector<Mesh> pieces;
         splitMesh(mesh, pieces);
         for (Mesh& piece : pieces) {

@@ -11,6 +11,7 @@ packages=(
     qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
     libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev libassimp-dev
     fonts-dejavu-core
+    python3            # scripts: the generated test mesh, the speed guard, the damaged-model survey
     assimp-testmodels  # test data: real and deliberately broken models
 )
 

@@ -113,10 +113,20 @@ int main(int argc, char* argv[])
         write(encodeImportedScene(scene));
         return 0;
     }
+    if (mode == "out-of-memory") {
+        write(encodeImportRefusal(ImportReplyKind::OutOfMemory, QStringLiteral("an allocation failed")));
+        return 0;
+    }
+    if (mode == "other-name") {
+        Scene scene = cubeScene(QStringLiteral("/etc/passwd"));
+        scene.identity = "seed";
+        write(encodeImportedScene(scene));
+        return 0;
+    }
     if (mode == "slow") {
-        // Progress for about 5 s, then a good answer: what a large model looks like.
-        for (int i = 0; i <= 50; ++i) {
-            std::fprintf(stderr, "progress %.2f\n", i / 50.0);
+        // Progress for about 10 s, then a good answer: what a large model looks like.
+        for (int i = 0; i <= 100; ++i) {
+            std::fprintf(stderr, "progress %.2f\n", i / 100.0);
             std::fflush(stderr);
             QThread::msleep(100);
         }

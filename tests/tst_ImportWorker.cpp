@@ -68,6 +68,7 @@ class tst_ImportWorker : public QObject {
 private slots:
     void workerMisbehaves_data();
     void workerMisbehaves();
+    void theParentNamesTheScene();
     void cancelStopsAtOnce();
     void progressArrives();
     void realWorkerMatchesInProcess_data();
@@ -96,6 +97,7 @@ void tst_ImportWorker::workerMisbehaves_data()
     QTest::newRow("early exit") << QByteArray("exit") << QStringLiteral("stopped without an answer (exit code 3)") << 1.5;
     QTest::newRow("silent") << QByteArray("silent") << QStringLiteral("stopped without an answer") << 1.5;
     QTest::newRow("flood") << QByteArray("flood") << QStringLiteral("more than 16 MiB") << 1.5;
+    QTest::newRow("out of memory") << QByteArray("out-of-memory") << QStringLiteral("more memory to read than the import memory limit of 512 MiB") << 1.5;
 }
 
 void tst_ImportWorker::workerMisbehaves()
@@ -116,6 +118,20 @@ void tst_ImportWorker::workerMisbehaves()
     QVERIFY2(message.contains(path), qPrintable(message));
     QVERIFY2(message.contains(QStringLiteral("nothing was changed")) || message.contains(QStringLiteral("damaged")), qPrintable(message));
     QVERIFY2(clock.elapsed() < 12000 + seconds * 1000, qPrintable(QString::number(clock.elapsed())));
+}
+
+void tst_ImportWorker::theParentNamesTheScene()
+{
+    // An answer cannot point the program at another file, nor claim another scene's cached traces.
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("box.glb"), "other-name\n");
+    const Scene scene = importModelIsolated(path, fakeControl());
+    QCOMPARE(scene.name, QFileInfo(path).absoluteFilePath());
+    QVERIFY(scene.identity != "seed");
+    QCOMPARE(scene.identity.size(), 64);
+    const QString other = writeFile(dir, QStringLiteral("box2.glb"), "other-name\n\n");
+    QVERIFY(importModelIsolated(other, fakeControl()).identity != scene.identity);
+    QCOMPARE(importModelIsolated(path, fakeControl()).identity, scene.identity);   // and it is stable
 }
 
 void tst_ImportWorker::cancelStopsAtOnce()
@@ -174,7 +190,7 @@ void tst_ImportWorker::realWorkerMatchesInProcess()
     const Scene direct = importModel(file);
     const Scene isolated = importModelIsolated(file);
     QCOMPARE(isolated.name, direct.name);
-    QCOMPARE(isolated.identity, direct.identity);
+    QCOMPARE(isolated.identity.size(), 64);   // the parent's hash, bound to what the worker read (theParentNamesTheScene)
     QCOMPARE(isolated.warnings, direct.warnings);
     QCOMPARE(isolated.meshes.size(), direct.meshes.size());
     QCOMPARE(isolated.objects.size(), direct.objects.size());
@@ -220,9 +236,9 @@ void tst_ImportWorker::realWorkerRefusesLikeInProcess()
 void tst_ImportWorker::realWorkerUnderAHang()
 {
     // A worker that does not answer in time is stopped: the real worker, given a tiny limit, on
-    // a model that takes longer than that to read (a 10^6-triangle binary STL made here).
+    // a model that takes longer than that to read (a 3·10^6-triangle binary STL made here).
     QTemporaryDir dir;
-    const quint32 count = 1'000'000;
+    const quint32 count = 3'000'000;
     QByteArray stl(80, ' ');
     stl.append(reinterpret_cast<const char*>(&count), 4);
     QByteArray facet(50, '\0');
@@ -269,6 +285,10 @@ void tst_ImportWorker::untrustedAnswer_data()
                                           << QStringLiteral("names texture 0 of 0");
     QTest::newRow("infinite placement") << with([](Scene& s) { s.objects[0].model[3][1] = INFINITY; }) << QStringLiteral("placement is not finite");
     QTest::newRow("no objects") << with([](Scene& s) { s.objects.clear(); }) << QStringLiteral("no objects");
+    QTest::newRow("empty mesh") << with([](Scene& s) { s.meshes[0].vertices.clear(); s.meshes[0].indices.clear(); }) << QStringLiteral("no triangles");
+    QTest::newRow("placed beyond finite") << with([](Scene& s) { s.meshes[0].vertices[0].position.x = 3e38f; s.objects[0].model[0][0] = 1e300; })
+                                          << QStringLiteral("beyond finite numbers");
+    QTest::newRow("long identity") << with([](Scene& s) { s.identity = QByteArray(4096, 'a'); }) << QStringLiteral("identity is 4096 bytes");
     // A count that promises more than the bytes there are is refused before anything is allocated.
     // The mesh's vertex count: after the header (13 bytes), the name "s" (5), an empty identity
     // (4), no warnings (4), no ground (1), the mesh count (4) and the convex flag (1).

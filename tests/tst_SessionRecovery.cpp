@@ -10,6 +10,7 @@
 #include "SceneLibrary.h"
 #include "SceneOpener.h"
 #include "SceneView.h"
+#include "SessionAutosave.h"
 #include "SettingsKeys.h"
 
 #include <QDir>
@@ -109,7 +110,8 @@ private slots:
         QVERIFY2(clock.elapsed() < 1000, qPrintable(QString::number(clock.elapsed())));
         QVERIFY(!progress->isVisible());
         QCOMPARE(window.settings(MainWindow::Side::A), edited);
-        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("cancelled")));
+        QVERIFY2(window.statusBar()->currentMessage().contains(QStringLiteral("Cancelled: large.glb not opened")),
+                 qPrintable(window.statusBar()->currentMessage()));
         keepPicture(&window, QStringLiteral("opening-cancelled"));
         QVERIFY(window.recentScenes().isEmpty());
 
@@ -187,9 +189,12 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         QTRY_VERIFY(box(window, QStringLiteral("restoreSessionBox")));
         QVERIFY(box(window, QStringLiteral("restoreSessionBox"))->text().contains(QStringLiteral("did not close properly")));
-        // Until the user says so, nothing of the crashed session is applied.
+        // Until the user says so, nothing of the crashed session is applied, and nothing is saved
+        // over it, however long the question stays open.
         QCOMPARE(window.settings(MainWindow::Side::A).bias.slope, presetSettings(QStringLiteral("seed")).bias.slope);
         QVERIFY(!window.compareMode());
+        QTest::qWait(2 * SessionAutosave::kDelayMs);
+        QVERIFY(storedSettings(QStringLiteral("A")).contains(QStringLiteral("0.0456")));
         box(window, QStringLiteral("restoreSessionBox"))->findChild<QPushButton*>(QStringLiteral("restoreSessionButton"))->click();
         QCOMPARE(window.settings(MainWindow::Side::A).bias.slope, 0.0456);
         QCOMPARE(settingValue(window.settings(MainWindow::Side::A), QStringLiteral("filter.mode")), QStringLiteral("pcf"));
@@ -218,6 +223,8 @@ private slots:
         QTRY_VERIFY(box(window, QStringLiteral("restoreSessionBox")));
         QVERIFY(box(window, QStringLiteral("restoreSessionBox"))->text().contains(QStringLiteral("box.obj was being opened")));
         keepPicture(box(window, QStringLiteral("restoreSessionBox")), QStringLiteral("restore-after-crash"));
+        QTest::qWait(2 * SessionAutosave::kDelayMs);
+        QVERIFY(storedSettings(QStringLiteral("A")).contains(QStringLiteral("box.obj")));   // what Restore would bring back
         box(window, QStringLiteral("restoreSessionBox"))->findChild<QPushButton*>(QStringLiteral("restoreSessionButton"))->click();
         QTest::qWait(300);
         QVERIFY(!window.sceneOpener()->isBusy());

@@ -209,10 +209,12 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     if (m_persistence == Persistence::Restore) {
         const bool crashed = m_autosave->begin();
         restoreLayout();
-        if (crashed)
+        if (crashed) {
+            m_holdAutosave = true;
             QTimer::singleShot(0, this, [this, opening = m_autosave->openingAtStart()] { offerRestore(opening); });
-        else
-            restoreSession();
+        } else {
+            restoreSession(savedSession());
+        }
         // The layout is part of the session too.
         connect(m_mainSplitter, &QSplitter::splitterMoved, this, &MainWindow::sessionChanged);
         for (QDockWidget* dock : {static_cast<QDockWidget*>(m_dock), static_cast<QDockWidget*>(m_accuracyDock)}) {
@@ -229,7 +231,7 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::sessionChanged()
 {
-    if (m_persistence == Persistence::Restore)
+    if (m_persistence == Persistence::Restore && !m_holdAutosave)
         m_autosave->changed();
 }
 
@@ -519,10 +521,13 @@ QAction* MainWindow::action(const QString& objectName) const
 QString MainWindow::openScene(const QString& path)
 {
     Settings candidate = m_settings[index(m_selected)];
+    QStringList warnings;
     try {
         Settings probe;
         applySetting(probe, QStringLiteral("scene"), path);
         const Settings loaded = presetSettings(probe.scene);   // imports (cached) or throws
+        if (!isPresetName(loaded.scene))
+            warnings = loadSceneFile(loaded.scene)->warnings;
         candidate.scene = loaded.scene;
         candidate.light = loaded.light;
         candidate.camera = loaded.camera;
@@ -538,11 +543,8 @@ QString MainWindow::openScene(const QString& path)
     while (m_recentScenes.size() > kMaxRecentScenes)
         m_recentScenes.removeLast();
     updateRecentMenu();
-    if (!sceneNames().contains(candidate.scene)) {
-        const QStringList warnings = loadSceneFile(candidate.scene)->warnings;
-        if (!warnings.isEmpty())
-            statusBar()->showMessage(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
-    }
+    if (!warnings.isEmpty())
+        statusBar()->showMessage(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
     return QString();
 }
 
@@ -582,6 +584,10 @@ void MainWindow::sceneOpenFinished(const QString& path, const QString& error, bo
             if (error.isEmpty() && !cancelled) {
                 m_settings[i] = *m_pendingRestore[i];
                 m_settings[1 - i].camera = m_settings[i].camera;
+                if (m_persistence == Persistence::Restore) {
+                    m_openingScene = path;      // suspect until drawn, as a scene the user opens
+                    m_autosave->setOpening(path);
+                }
             }
             m_pendingRestore[i].reset();
         }
@@ -594,7 +600,7 @@ void MainWindow::sceneOpenFinished(const QString& path, const QString& error, bo
         return;
     }
     if (cancelled) {
-        statusBar()->showMessage(tr("Opening %1 was cancelled; the scene stays as it was").arg(name), 8000);
+        statusBar()->showMessage(tr("Cancelled: %1 not opened").arg(name), 8000);
         return;
     }
     const QString failure = error.isEmpty() ? openScene(path) : error;
@@ -1065,24 +1071,34 @@ void MainWindow::restoreLayout()
     m_screenshotFolder = store.value(QStringLiteral("view/screenshotFolder"), m_screenshotFolder).toString();
 }
 
-void MainWindow::restoreSession(const QString& skipScene)
+QVariantMap MainWindow::savedSession() const
 {
     QSettings store;
+    QVariantMap session;
+    for (const QString& key : {QStringLiteral("settings/A"), QStringLiteral("settings/B"), QStringLiteral("view/compare"), QStringLiteral("view/selected")})
+        session.insert(key, store.value(key));
+    return session;
+}
+
+void MainWindow::restoreSession(const QVariantMap& session, const QString& skipScene)
+{
+    // A file the user is opening now wins over the session's files.
+    const bool userOpening = m_opener->isBusy() && !m_restoreQueue.contains(m_opener->path());
     for (std::size_t i = 0; i < 2; ++i) {
-        const std::optional<Settings> settings = settingsFromText(store.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString());
+        const std::optional<Settings> settings = settingsFromText(session.value(QStringLiteral("settings/%1").arg(QLatin1String(kSideNames[i]))).toString());
         if (!settings || (!skipScene.isEmpty() && settings->scene == skipScene))
             continue;
         if (isPresetName(settings->scene)) {
             m_settings[i] = *settings;
-        } else {
+        } else if (!userOpening) {
             m_pendingRestore[i] = settings;
             if (!m_restoreQueue.contains(settings->scene))
                 m_restoreQueue << settings->scene;
         }
     }
     m_settings[1].camera = m_settings[0].camera;
-    setCompareMode(store.value(QStringLiteral("view/compare"), false).toBool());
-    m_selected = store.value(QStringLiteral("view/selected")).toString() == u"B" ? Side::B : Side::A;
+    setCompareMode(session.value(QStringLiteral("view/compare"), false).toBool());
+    m_selected = session.value(QStringLiteral("view/selected")).toString() == u"B" ? Side::B : Side::A;
     if (!m_restoreQueue.isEmpty())
         m_opener->open(m_restoreQueue.first());
 }
@@ -1104,9 +1120,11 @@ void MainWindow::offerRestore(const QString& openingAtCrash)
     restore->setObjectName(QStringLiteral("restoreSessionButton"));
     box->addButton(tr("Start Fresh"), QMessageBox::RejectRole)->setObjectName(QStringLiteral("startFreshButton"));
     box->setDefaultButton(restore);
-    connect(box, &QMessageBox::buttonClicked, this, [this, restore, openingAtCrash](QAbstractButton* button) {
+    // Read now: until the question is answered nothing is saved over it.
+    connect(box, &QMessageBox::buttonClicked, this, [this, restore, openingAtCrash, session = savedSession()](QAbstractButton* button) {
+        m_holdAutosave = false;
         if (button == restore) {
-            restoreSession(openingAtCrash);
+            restoreSession(session, openingAtCrash);
             pushSettings();
             selectSide(m_selected);
         }

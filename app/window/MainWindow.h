@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QTimer>
+#include <QVariantMap>
 
 #include <array>
 #include <optional>
@@ -120,7 +121,8 @@ private:
     // starts on the default scene and takes its settings once the file is read (in the
     // background). `skipScene` (what was being opened when the last session crashed) is not
     // reopened.
-    void restoreSession(const QString& skipScene = {});
+    void restoreSession(const QVariantMap& session, const QString& skipScene = {});
+    QVariantMap savedSession() const;   // what restoreSession() reads, as saved
     void offerRestore(const QString& openingAtCrash);
     void saveState() const;
     void sessionChanged();
@@ -158,6 +160,7 @@ private:
     std::array<std::optional<Settings>, 2> m_pendingRestore;
     QStringList m_restoreQueue;
     QString m_openingScene;     // applied, but not yet drawn: cleared after its first frame
+    bool m_holdAutosave = false;    // while the restore question is open, the crashed session stays on disk
     QStringList m_recentScenes;     // newest first
     QMenu* m_recentMenu = nullptr;
     std::array<Settings, 2> m_settings;

@@ -19,12 +19,17 @@ SceneOpener::SceneOpener(QObject* parent) : QObject(parent)
 
 SceneOpener::~SceneOpener()
 {
-    stopThread(false);
+    stopThread();
 }
 
 void SceneOpener::open(const QString& path)
 {
-    stopThread(true);
+    // The one it replaces is said to be cancelled once this one is under way, from the event
+    // loop: a slot that opens a file in answer then does not re-enter this function.
+    const QString replaced = m_thread ? m_path : QString();
+    stopThread();
+    if (!replaced.isEmpty())
+        QMetaObject::invokeMethod(this, [this, replaced] { emit finished(replaced, QString(), true); }, Qt::QueuedConnection);
     m_path = path;
     auto job = std::make_shared<Job>();
     m_job = job;
@@ -67,7 +72,7 @@ void SceneOpener::cancel()
         m_job->cancel = true;   // the worker is killed within ImportControl's poll interval
 }
 
-void SceneOpener::stopThread(bool notify)
+void SceneOpener::stopThread()
 {
     if (!m_thread)
         return;
@@ -77,8 +82,6 @@ void SceneOpener::stopThread(bool notify)
     delete m_thread;
     m_thread = nullptr;
     m_progressTimer.stop();
-    if (notify)
-        emit finished(m_path, QString(), true);
 }
 
 } // namespace shadowlab

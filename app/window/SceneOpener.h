@@ -22,6 +22,8 @@ public:
     explicit SceneOpener(QObject* parent = nullptr);
     ~SceneOpener() override;   // cancels and waits for the worker (milliseconds)
 
+    // Starts reading `path`; one still being read is cancelled (its finished() comes later,
+    // from the event loop).
     void open(const QString& path);
     void cancel();
     bool isBusy() const { return m_thread != nullptr; }
@@ -40,7 +42,7 @@ private:
         QString error;          // written by the thread before it ends, read after
         bool cancelled = false;
     };
-    void stopThread(bool notify);
+    void stopThread();   // cancels and waits; says nothing
 
     QThread* m_thread = nullptr;
     std::shared_ptr<Job> m_job;

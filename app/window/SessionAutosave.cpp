@@ -1,5 +1,7 @@
 #include "SessionAutosave.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QSettings>
 
 namespace shadowlab {
@@ -23,7 +25,12 @@ SessionAutosave::SessionAutosave(std::function<void()> save, QObject* parent) : 
 bool SessionAutosave::begin()
 {
     QSettings store;
-    const bool crashed = store.value(kRunning, false).toBool();
+    // A stale lock (its process gone) is taken over; a live one is another explorer running.
+    const QString folder = QFileInfo(store.fileName()).absolutePath();
+    QDir().mkpath(folder);
+    m_lock = std::make_unique<QLockFile>(QDir(folder).filePath(QStringLiteral("session.lock")));
+    const bool alone = m_lock->tryLock(0);
+    const bool crashed = alone && store.value(kRunning, false).toBool();
     m_openingAtStart = crashed ? store.value(kOpening).toString() : QString();
     store.setValue(kRunning, true);
     store.remove(kOpening);
@@ -61,6 +68,8 @@ void SessionAutosave::end()
     store.setValue(kRunning, false);
     store.remove(kOpening);
     store.sync();
+    if (m_lock)
+        m_lock->unlock();
 }
 
 } // namespace shadowlab

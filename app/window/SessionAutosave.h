@@ -1,18 +1,20 @@
 #pragma once
 
+#include <QLockFile>
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
 #include <functional>
+#include <memory>
 
 namespace shadowlab {
 
 // Keeps the explorer's session (both sides' settings, compare mode, the scene, the layout) on
 // disk as it changes, so that a crash or a kill loses at most the last second. Saves go through
 // QSettings, which writes a new file and renames it over the old one (an atomic write), at most
-// once a second. A marker says whether the session is running: one still set at start means the
-// last session did not end cleanly.
+// once a second. A marker says whether the session is running: one still set at start, with no
+// other explorer holding the session's lock, means the last session did not end cleanly.
 class SessionAutosave : public QObject {
     Q_OBJECT
 
@@ -39,6 +41,7 @@ private:
     std::function<void()> m_save;
     QTimer m_timer;
     QString m_openingAtStart;
+    std::unique_ptr<QLockFile> m_lock;  // held while running: a second explorer is not a crash
 };
 
 } // namespace shadowlab

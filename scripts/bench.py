@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""The speed guard's runner (scripts/bench.sh builds the two binaries and calls this).
+
+Runs a fixed suite of `shadowlab bench --json` cases, a model load and a small report on a BASE
+and a HEAD binary, interleaved round by round in alternating order, and prints for every figure
+the median of each side, the median HEAD/BASE ratio over the rounds and the p10-p90 of those
+ratios. A figure whose median ratio is above 1.05 is flagged. The table is also written to a
+Markdown file (docs/performance.md)."""
+import argparse
+import datetime
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+SLOWER = 1.05
+
+
+def cases(mesh, quick):
+    frames = ["--frames", "20" if quick else "60", "--warmup", "5"]
+    hd = ["--size", "1280x720"]
+    suite = [
+        ("seed, still", ["bench", "--scene", "seed", "--phase", "steady"] + hd + frames, ["steady"]),
+        ("seed, moving light", ["bench", "--scene", "seed", "--phase", "moving-light"] + hd + frames, ["moving-light"]),
+        ("seed, moving camera", ["bench", "--scene", "seed", "--phase", "moving-camera"] + hd + frames, ["moving-camera"]),
+        ("city, still", ["bench", "--scene", "city", "--phase", "steady"] + hd + frames, ["steady"]),
+        ("city, moving camera", ["bench", "--scene", "city", "--phase", "moving-camera"] + hd + frames, ["moving-camera"]),
+        ("10^6 triangles, still", ["bench", "--scene", mesh, "--phase", "steady", "--size", "960x540"] + frames, ["steady"]),
+    ]
+    whole = [
+        ("10^6 triangles, load", ["settings", "--scene", mesh]),
+        ("report, seed 160x90", ["report", "--scene", "seed", "--size", "160x90", "--frames", "5", "--area-samples", "2",
+                                 "--sweep", "filters", "--out", None]),
+    ]
+    return suite, whole
+
+
+def run_bench(binary, arguments):
+    out = subprocess.run([binary] + arguments + ["--json"], check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def phase_figures(report, phases):
+    figures = {}
+    for phase in report["phases"]:
+        if phase["phase"] not in phases:
+            continue
+        for name in ("frame_wall", "shadow_pass_wall", "lit_pass_wall"):
+            stats = phase.get(name, {})
+            if stats.get("count", 0) > 0:
+                figures[f'{name.replace("_wall", "")} ms'] = stats["median_ms"]
+    return figures
+
+
+def run_whole(binary, arguments):
+    with tempfile.TemporaryDirectory() as folder:
+        arguments = [folder if a is None else a for a in arguments]
+        start = time.monotonic()
+        subprocess.run([binary] + arguments, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        return {"whole process ms": (time.monotonic() - start) * 1000.0}
+
+
+def percentile(values, q):
+    ordered = sorted(values)
+    index = (len(ordered) - 1) * q
+    low, high = int(index), min(int(index) + 1, len(ordered) - 1)
+    return ordered[low] + (ordered[high] - ordered[low]) * (index - low)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--base", required=True)
+    parser.add_argument("--head", required=True)
+    parser.add_argument("--base-name", default="BASE")
+    parser.add_argument("--head-name", default="HEAD")
+    parser.add_argument("--mesh", required=True)
+    parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--quick", action="store_true", help="fewer frames per case (a rough look, not for notes)")
+    parser.add_argument("--out")
+    options = parser.parse_args()
+
+    suite, whole = cases(options.mesh, options.quick)
+    # samples[case][figure][side] -> list over rounds
+    samples = {}
+    binaries = {"base": options.base, "head": options.head}
+    for round_index in range(options.rounds):
+        order = ["base", "head"] if round_index % 2 == 0 else ["head", "base"]
+        for name, arguments, phases in suite:
+            for side in order:
+                figures = phase_figures(run_bench(binaries[side], arguments), phases)
+                for figure, value in figures.items():
+                    samples.setdefault(name, {}).setdefault(figure, {"base": [], "head": []})[side].append(value)
+        for name, arguments in whole:
+            for side in order:
+                for figure, value in run_whole(binaries[side], arguments).items():
+                    samples.setdefault(name, {}).setdefault(figure, {"base": [], "head": []})[side].append(value)
+        print(f"round {round_index + 1}/{options.rounds} done", file=sys.stderr, flush=True)
+
+    rows = []
+    flagged = 0
+    for name, figures in samples.items():
+        for figure, sides in figures.items():
+            base, head = sides["base"], sides["head"]
+            if not base or len(base) != len(head):
+                continue
+            ratios = [h / b for h, b in zip(head, base) if b > 0]
+            if not ratios:
+                continue
+            ratio = statistics.median(ratios)
+            slower = ratio > SLOWER
+            flagged += slower
+            rows.append((name, figure, statistics.median(base), statistics.median(head), ratio,
+                         percentile(ratios, 0.1), percentile(ratios, 0.9), slower))
+
+    machine = f"{platform.machine()}, {os.cpu_count()} cores"
+    header = (f"HEAD {options.head_name} against BASE {options.base_name}, {options.rounds} interleaved rounds, "
+              f"{datetime.date.today().isoformat()}, {machine}; wall-clock medians (CPU time on a software renderer)")
+    lines = [header, "",
+             "| case | figure | BASE | HEAD | HEAD/BASE | p10–p90 of the ratio | |",
+             "| --- | --- | ---: | ---: | ---: | ---: | --- |"]
+    for name, figure, base, head, ratio, p10, p90, slower in rows:
+        lines.append(f"| {name} | {figure} | {base:.2f} | {head:.2f} | {ratio:.3f} | {p10:.3f}–{p90:.3f} | {'**slower**' if slower else ''} |")
+    lines.append("")
+    lines.append(f"{flagged} figure(s) more than {round((SLOWER - 1) * 100)} % slower." if flagged else
+                 f"No figure more than {round((SLOWER - 1) * 100)} % slower.")
+    print("\n".join(lines))
+    if options.out:
+        with open(options.out, "w", encoding="utf-8") as out:
+            out.write("# Performance: the speed guard's last table\n\n")
+            out.write("Made by `scripts/bench.sh` (see its header); run it before merging a change to a pass, and quote it.\n\n")
+            out.write("\n".join(lines) + "\n")
+        print(f"wrote {options.out}", file=sys.stderr)
+    return 1 if flagged else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
