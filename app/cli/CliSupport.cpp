@@ -112,6 +112,11 @@ void addSettingsOptions(QCommandLineParser& parser)
                       QStringLiteral("Start from an artifact preset (%1): its scene and the settings that show the artifact.")
                           .arg(artifactPresetNames().join(QStringLiteral(", "))),
                       QStringLiteral("name")});
+    addImportOptions(parser);
+}
+
+void addImportOptions(QCommandLineParser& parser)
+{
     const ImportLimits defaults;
     parser.addOption({QStringLiteral("import-time-limit"),
                       QStringLiteral("Seconds the importer may take to read a model file before it is stopped (default %1).").arg(defaults.timeSeconds),

@@ -43,6 +43,7 @@ QString commandHelp(const QCommandLineParser& parser, const QString& command);
 // Adds --scene, --set (repeatable), --settings, --preset, --import-time-limit and
 // --import-memory-limit to `parser`.
 void addSettingsOptions(QCommandLineParser& parser);
+void addImportOptions(QCommandLineParser& parser);  // --import-time-limit, --import-memory-limit
 // The import limits those options give, made the process's (ImportLimits.h); throws
 // SettingsError naming the option. settingsFromOptions() calls it first.
 void applyImportOptions(const QCommandLineParser& parser);

@@ -15,11 +15,13 @@ int runSettings(const QStringList& arguments)
         QCommandLineParser parser;
         parser.setApplicationDescription(QStringLiteral("List every setting key with its default and range."));
         parser.addHelpOption();
-        parser.addOption({QStringLiteral("scene"), QStringLiteral("Show the defaults of this scene preset."), QStringLiteral("name"),
-                          QStringLiteral("seed")});
+        parser.addOption({QStringLiteral("scene"), QStringLiteral("Show the defaults of this scene preset, or of a model or scene file (which is read)."),
+                          QStringLiteral("name|file"), QStringLiteral("seed")});
         parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
+        addImportOptions(parser);
         if (!parseArguments(parser, QStringLiteral("settings"), arguments))
             return kExitOk;
+        applyImportOptions(parser);
         Settings probe;
         applySetting(probe, QStringLiteral("scene"), parser.value(QStringLiteral("scene")));
         const Settings defaults = presetSettings(probe.scene);
