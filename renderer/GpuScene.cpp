@@ -8,8 +8,10 @@ namespace shadowlab {
 
 GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(scene))
 {
-    for (const SceneObject& object : m_scene.objects)
+    for (const SceneObject& object : m_scene.objects) {
         m_objectBounds.push_back(m_scene.worldBounds(object));
+        m_bounds.extend(m_objectBounds.back());
+    }
     for (const Mesh& mesh : m_scene.meshes) {
         GpuMesh g{makeVertexArray(gl), makeBuffer(gl), makeBuffer(gl), GLsizei(mesh.indices.size())};
         gl->glBindVertexArray(g.vertexArray.id());

@@ -18,6 +18,8 @@ public:
     const Scene& scene() const { return m_scene; }
     // World bounds of scene().objects[i], computed once at upload (culling runs per frame).
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
+    // scene().bounds(), computed once: Scene::bounds() visits every vertex.
+    const Bounds& bounds() const { return m_bounds; }
     // Binds the object's vertex array and draws it.
     void draw(const SceneObject& object) const;
     // The diffuse texture the object's colour is multiplied by (its base colour multiplies it).
@@ -35,6 +37,7 @@ private:
     Scene m_scene;
     std::vector<GpuMesh> m_meshes;
     std::vector<Bounds> m_objectBounds;
+    Bounds m_bounds;
     std::array<GlTexture, 3> m_textures;   // Checker, Wood, Flat (white)
     std::vector<GlTexture> m_images;
 };

@@ -82,6 +82,8 @@ public:
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run since construction.
     int shadowPassCount() const { return m_shadowPassCount; }
+    // How many times the light's views were fitted; a frame whose inputs did not change does not.
+    int fitCount() const { return m_fitCount; }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
     // Fits the light to `camera` instead of settings.camera (which still draws the frame), until
     // reset with nullopt: what flicker measures, the shadow maps following a moving camera while
@@ -100,6 +102,10 @@ private:
     void finishTiming(TimingMode timing, FrameStats& stats);
     // The shadow pass of a light with several views: each view whose volume changed.
     void renderViews(const Settings& settings, TimingMode timing, FrameStats& stats);
+    // Fits the light's views to what the camera sees: the views, their light frames (several
+    // views) and the fit the window shows.
+    void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, bool multiView,
+                  ShadowViewFrames& views, FittedLight& fit) const;
 
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {
@@ -152,6 +158,16 @@ private:
     // redrawn only when it changes; m_shadowKey then holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;
     ShadowViewFrames m_views;
+    // What the last fit was computed from (Renderer::prepareFrame).
+    struct FitInputs {
+        int sceneGeneration = 0;
+        Settings settings;
+        std::optional<CameraSettings> fitCamera;
+        QSize size;
+        bool reversed = false;
+        bool operator==(const FitInputs&) const = default;
+    };
+    std::optional<FitInputs> m_fitInputs;
     std::optional<Scene> m_customScene;
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
@@ -162,6 +178,7 @@ private:
     CameraFrame m_camera;
     FrameStats m_stats;
     int m_shadowPassCount = 0;
+    int m_fitCount = 0;
     double m_lastShadowMs = 0.0;    // newest finished measurements, for TimingMode::Async
     double m_lastLitMs = 0.0;
 };

@@ -358,6 +358,40 @@ private Q_SLOTS:
         QCOMPARE(r.shadowPassCount(), before + 3);
     }
 
+    void aStillFrameDoesNoFitting_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("seed") << QStringList{};
+        QTest::newRow("city, 4 cascades") << QStringList{"scene=city:300", "shadow.cascades=4"};
+        QTest::newRow("point light") << QStringList{"light.type=point"};
+    }
+    void aStillFrameDoesNoFitting()
+    {
+        // Repainting what did not change refits nothing, and the fit it keeps is the fit a fresh
+        // renderer computes for the same frame.
+        QFETCH(QStringList, assignments);
+        Renderer& r = m_headless->renderer();
+        Settings s = seedWith(assignments);
+        m_headless->renderFrame(s, kSize);
+        const int fits = r.fitCount();
+        for (int i = 0; i < 3; ++i)
+            m_headless->renderFrame(s, kSize);
+        QCOMPARE(r.fitCount(), fits);
+        s.camera.position.x += 0.5;     // what the camera sees changed: fitted again, once
+        m_headless->renderFrame(s, kSize);
+        m_headless->renderFrame(s, kSize);
+        QCOMPARE(r.fitCount(), fits + 1);
+        m_headless->renderFrame(s, QSize(kSize.width() / 2, kSize.height()));   // so did its aspect
+        QCOMPARE(r.fitCount(), fits + 2);
+        m_headless->renderFrame(s, kSize);
+        HeadlessRenderer fresh;
+        fresh.renderFrame(s, kSize);
+        QCOMPARE(r.shadowViews().set.views.size(), fresh.renderer().shadowViews().set.views.size());
+        for (std::size_t i = 0; i < r.shadowViews().set.views.size(); ++i)
+            QVERIFY(r.shadowViews().set.views[i].fit.volume == fresh.renderer().shadowViews().set.views[i].fit.volume);
+        QCOMPARE(r.lastFit().texelAfter, fresh.renderer().lastFit().texelAfter);
+    }
+
     void fittedShadowPassIsSkippedOnSmallCameraMoves()
     {
         Renderer& r = m_headless->renderer();
