@@ -327,6 +327,13 @@ void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, int de
     if (depth > kMaxNodeDepth)
         throw SceneFileError(in.path, QStringLiteral("its node tree is deeper than %1 levels (a cycle?); flatten the hierarchy").arg(kMaxNodeDepth));
     const glm::dmat4 world = parent * toGlm(node->mTransformation);
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            if (!std::isfinite(world[c][r]))
+                throw SceneFileError(in.path, QStringLiteral("node '%1' has a transform that is not finite numbers (NaN or infinity); repair the hierarchy")
+                                                  .arg(QString::fromUtf8(node->mName.C_Str())));
+        }
+    }
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
         const unsigned m = node->mMeshes[i];
         if (m >= in.ai->mNumMeshes)

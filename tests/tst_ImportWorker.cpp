@@ -219,6 +219,8 @@ void tst_ImportWorker::realWorkerRefusesLikeInProcess()
         writeFile(dir, QStringLiteral("noise.stl"), QByteArray("solid x\nfacet normal what\n")),
         writeFile(dir, QStringLiteral("inflated.ply"), QByteArray("ply\nformat ascii 1.0\nelement vertex 99999999\nproperty float x\nend_header\n1\n")),
         writeFile(dir, QStringLiteral("points.obj"), QByteArray("v 0 0 0\nv 1 0 0\np 1 2\n")),
+        // A node scaled beyond a float: its transform is infinite, named by the importer.
+        writeFile(dir, QStringLiteral("infinite.gltf"), QByteArray("{\"asset\": {\"version\": \"2.0\"}, \"scene\": 0, \"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"scale\": [1e+200, 1e+200, 1e+200], \"children\": [1]}, {\"scale\": [1e+200, 1e+200, 1e+200], \"mesh\": 0}], \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}}]}], \"buffers\": [{\"byteLength\": 36, \"uri\": \"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA\"}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}], \"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\", \"min\": [0, 0, 0], \"max\": [1, 1, 0]}]}")),
         dir.filePath(QStringLiteral("missing.glb")),
     };
     for (const QString& file : files) {
@@ -231,6 +233,7 @@ void tst_ImportWorker::realWorkerRefusesLikeInProcess()
         QVERIFY2(!direct.isEmpty(), qPrintable(file));
         QCOMPARE(refusal(file, ImportControl{}), direct);
     }
+    QVERIFY(refusal(files[4], ImportControl{}).contains(QStringLiteral("has a transform that is not finite numbers")));
 }
 
 void tst_ImportWorker::realWorkerUnderAHang()
