@@ -209,7 +209,7 @@ record() {   # record NAME RC SECONDS [DETAIL]
 }
 : > "$summary"
 say "ShadowLab GPU bundle ($BUNDLE_SOURCE) on $(uname -n), $(date -u +%FT%TZ)"
-{ nvidia-smi -L 2>&1 || echo "(no nvidia-smi)"; } | sed 's/^/  /' | tee -a "$summary"
+if command -v nvidia-smi >/dev/null; then nvidia-smi -L 2>&1; else echo "(no nvidia-smi)"; fi | sed 's/^/  /' | tee -a "$summary"
 say "  glibc $(getconf GNU_LIBC_VERSION | awk '{print $2}'); libstdc++: $cxx_note; EGL vendors: $vendor_note; SHADOWLAB_EGL_PLATFORM=${SHADOWLAB_EGL_PLATFORM:-<empty>}"
 {
     echo "LD_LIBRARY_PATH=$LD_LIBRARY_PATH"

@@ -7,6 +7,7 @@
 #include "ModelImporter.h"
 #include "SceneFileError.h"
 #include "SceneLoader.h"
+#include "TestFiles.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
@@ -20,16 +21,7 @@ using namespace shadowlab;
 
 namespace {
 
-const QString kModels = QStringLiteral("/usr/share/assimp/models/");
-
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
+const QString kModels = kTestModels;
 
 ImportControl fakeControl(double seconds = 3.0)
 {

@@ -15,6 +15,7 @@
 #include "SceneView.h"
 #include "SettingsKeys.h"
 #include "ShadowReference.h"
+#include "TestFiles.h"
 
 #include <glm/geometric.hpp>
 
@@ -26,7 +27,7 @@ using namespace shadowlab;
 
 namespace {
 
-const QString kModels = QStringLiteral("/usr/share/assimp/models/");
+const QString kModels = kTestModels;
 
 QString model(const QString& relative)
 {
@@ -41,15 +42,6 @@ std::size_t triangleCount(const Scene& scene, bool withGround = false)
             n += scene.meshes.at(std::size_t(o.mesh)).indices.size() / 3;
     }
     return n;
-}
-
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
 }
 
 QByteArray readFile(const QString& path)

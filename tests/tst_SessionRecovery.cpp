@@ -12,6 +12,7 @@
 #include "SceneView.h"
 #include "SessionAutosave.h"
 #include "SettingsKeys.h"
+#include "TestFiles.h"
 
 #include <QDir>
 #include <QLabel>
@@ -27,16 +28,7 @@ using namespace shadowlab;
 
 namespace {
 
-const QString kModels = QStringLiteral("/usr/share/assimp/models/");
-
-QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
-        qFatal("cannot write %s", qPrintable(path));
-    return path;
-}
+const QString kModels = kTestModels;
 
 QString storedSettings(const QString& side)
 {
