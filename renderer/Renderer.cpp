@@ -66,23 +66,23 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // size: when none of them changed (a still frame, a window repaint), the last one stands.
     // For the city that is 2,000 objects clipped against the view each frame, left out.
     FitInputs inputs{m_sceneGeneration, settings, m_fitCamera, size, reversed};
-    ShadowViewFrames views;
-    FittedLight fit;
-    if (m_fitInputs && *m_fitInputs == inputs) {
-        views = m_views;
-        fit = m_fit;
-    } else {
-        fitViews(settings, camera, aspect, reversed, multiView, views, fit);
+    if (!m_fitInputs || !(*m_fitInputs == inputs)) {
+        ShadowViewFrames views;
+        FittedLight fitted;
+        fitViews(settings, camera, aspect, reversed, multiView, views, fitted);
+        m_views = std::move(views);
+        m_fit = std::move(fitted);
         m_fitInputs = std::move(inputs);
         ++m_fitCount;
     }
+    const FittedLight& fit = m_fit;
+    const ShadowViewFrames& views = m_views;
     const LightFrame light = multiView ? views.frames.front() : computeLightFrame(settings.light, fit.volume, reversed);
     stats.texelWorldSizeBeforeFit = fit.texelBefore;
     stats.texelWorldSize = fit.texelAfter;
     stats.lightFitted = fit.fitted;
     stats.reversedDepth = reversed;
 
-    m_views = std::move(views);
     if (settings.shadow.enabled && multiView) {
         renderViews(settings, timing, stats);
     } else if (settings.shadow.enabled) {
@@ -142,7 +142,6 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
             stats.shadowPassWallMs += double(wall.nsecsElapsed()) * 1e-6;
         }
     }
-    m_fit = std::move(fit);
     m_light = light;
     m_camera = camera;
     m_viewSettings = settings;

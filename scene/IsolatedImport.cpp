@@ -126,6 +126,41 @@ struct AnswerFile {
     }
 };
 
+// Runs in the worker between fork and exec, so only async-signal-safe calls: its limits, its own
+// process group (stopping it stops whatever it started), death with its parent, and the answer
+// file at kAnswerFd.
+void limitWorker(const ImportLimits& limits, qint64 outputLimit, int answerFd)
+{
+    const auto cap = [](int resource, rlim_t soft, rlim_t hard) {
+        const rlimit limit{soft, hard};
+        setrlimit(resource, &limit);
+    };
+#if !defined(__SANITIZE_ADDRESS__)
+    cap(RLIMIT_AS, rlim_t(limits.memoryMiB) << 20, rlim_t(limits.memoryMiB) << 20);
+#endif
+    const rlim_t cpu = rlim_t(std::ceil(limits.timeSeconds)) + 2;
+    cap(RLIMIT_CPU, cpu, cpu + 1);     // SIGXCPU at the soft limit, SIGKILL a second later
+    cap(RLIMIT_CORE, 0, 0);
+    cap(RLIMIT_FSIZE, rlim_t(outputLimit), rlim_t(outputLimit));     // its answer is the one file it writes
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    setpgid(0, 0);
+    if (dup2(answerFd, kAnswerFd) < 0)    // dup2 clears close-on-exec on the copy only
+        _exit(71);
+}
+
+// What a worker killed by `signal` tells the user.
+SceneFileError deathRefusal(const QString& path, int signal, const ImportLimits& limits)
+{
+    if (signal == SIGXFSZ)
+        return SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit, and was stopped; "
+                                                   "nothing was changed").arg(limits.outputMiB));
+    if (signal == SIGXCPU)
+        return SceneFileError(path, QStringLiteral("the importer used more than %1 s of processor time on it and was stopped; the file is "
+                                                   "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2));
+    return SceneFileError(path, QStringLiteral("the importer crashed reading it (signal %1, %2): the file is damaged or not what its name "
+                                               "says; nothing was changed").arg(signal).arg(signalName(signal)));
+}
+
 QByteArray boundIdentity(const QString& path, const QByteArray& claimed)
 {
     QCryptographicHash hash(QCryptographicHash::Sha256);
@@ -182,24 +217,7 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
     process.setStandardInputFile(QProcess::nullDevice());
     process.setStandardOutputFile(QProcess::nullDevice());
     process.setWorkingDirectory(QDir::tempPath());
-    // Runs in the child between fork and exec: only async-signal-safe calls.
-    process.setChildProcessModifier([limits, outputLimit, fd = answerFile.fd] {
-        const auto cap = [](int resource, rlim_t value) {
-            const rlimit limit{value, value};
-            setrlimit(resource, &limit);
-        };
-#if !defined(__SANITIZE_ADDRESS__)
-        cap(RLIMIT_AS, rlim_t(limits.memoryMiB) << 20);
-#endif
-        const rlimit cpu{rlim_t(std::ceil(limits.timeSeconds)) + 2, rlim_t(std::ceil(limits.timeSeconds)) + 3};
-        setrlimit(RLIMIT_CPU, &cpu);    // SIGXCPU at the soft limit, SIGKILL a second later
-        cap(RLIMIT_CORE, 0);
-        cap(RLIMIT_FSIZE, rlim_t(outputLimit));     // its answer is the one file it writes
-        prctl(PR_SET_PDEATHSIG, SIGKILL);
-        setpgid(0, 0);                  // its own group: stopping it stops whatever it started
-        if (dup2(fd, kAnswerFd) < 0)    // dup2 clears close-on-exec on the copy only
-            _exit(71);
-    });
+    process.setChildProcessModifier([limits, outputLimit, fd = answerFile.fd] { limitWorker(limits, outputLimit, fd); });
     process.start(QIODevice::ReadOnly);
     if (!process.waitForStarted(kStartTimeoutMs))
         throw SceneFileError(path, QStringLiteral("cannot be read: the import worker did not start (%1); reinstall ShadowLab").arg(process.errorString()));
@@ -232,17 +250,8 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
     readProgress(process, pendingProgress, control);
     ::kill(pid_t(-pid), SIGKILL);   // anything the worker left running in its group
 
-    if (process.exitStatus() == QProcess::CrashExit) {
-        const int signal = process.exitCode();
-        if (signal == SIGXFSZ)
-            throw SceneFileError(path, QStringLiteral("the importer sent back more than %1 MiB, the import output limit, and was stopped; "
-                                                      "nothing was changed").arg(limits.outputMiB));
-        if (signal == SIGXCPU)
-            throw SceneFileError(path, QStringLiteral("the importer used more than %1 s of processor time on it and was stopped; the file is "
-                                                      "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2));
-        throw SceneFileError(path, QStringLiteral("the importer crashed reading it (signal %1, %2): the file is damaged or not what its name "
-                                                  "says; nothing was changed").arg(signal).arg(signalName(signal)));
-    }
+    if (process.exitStatus() == QProcess::CrashExit)
+        throw deathRefusal(path, process.exitCode(), limits);   // the exit code of a crash is its signal
     const QByteArray answer = answerFile.contents(outputLimit);
     if (process.exitCode() != 0 && answer.isEmpty())
         throw SceneFileError(path, QStringLiteral("the importer stopped without an answer (exit code %1): the file is damaged or not what "

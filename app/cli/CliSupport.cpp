@@ -128,21 +128,22 @@ void addImportOptions(QCommandLineParser& parser)
 
 void applyImportOptions(const QCommandLineParser& parser)
 {
+    // The option's value as a number, or `fallback` when it is not given.
+    const auto number = [&parser](const QString& option, double fallback, bool whole, const char* example) {
+        if (!parser.isSet(option))
+            return fallback;
+        bool ok = false;
+        const QString text = parser.value(option);
+        const double value = whole ? double(text.toInt(&ok)) : text.toDouble(&ok);
+        if (!ok)
+            throw SettingsError(option, QStringLiteral("'%1' is not %2, e.g. --%3 %4")
+                                            .arg(text, whole ? QStringLiteral("a whole number of MiB") : QStringLiteral("a number of seconds"), option,
+                                                 QLatin1String(example)));
+        return value;
+    };
     ImportLimits limits = importLimits();
-    if (parser.isSet(QStringLiteral("import-time-limit"))) {
-        bool ok = false;
-        limits.timeSeconds = parser.value(QStringLiteral("import-time-limit")).toDouble(&ok);
-        if (!ok)
-            throw SettingsError(QStringLiteral("import-time-limit"), QStringLiteral("'%1' is not a number of seconds, e.g. --import-time-limit 60")
-                                                                         .arg(parser.value(QStringLiteral("import-time-limit"))));
-    }
-    if (parser.isSet(QStringLiteral("import-memory-limit"))) {
-        bool ok = false;
-        limits.memoryMiB = parser.value(QStringLiteral("import-memory-limit")).toInt(&ok);
-        if (!ok)
-            throw SettingsError(QStringLiteral("import-memory-limit"), QStringLiteral("'%1' is not a whole number of MiB, e.g. --import-memory-limit 8192")
-                                                                           .arg(parser.value(QStringLiteral("import-memory-limit"))));
-    }
+    limits.timeSeconds = number(QStringLiteral("import-time-limit"), limits.timeSeconds, false, "60");
+    limits.memoryMiB = int(number(QStringLiteral("import-memory-limit"), limits.memoryMiB, true, "8192"));
     setImportLimits(limits);
 }
 
