@@ -5,6 +5,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPolygonF>
+#include <QStringList>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -20,6 +21,37 @@ const QColor kTextColour(225, 228, 235);
 const QColor kFootprintColour(255, 150, 40);
 const QColor kVolumeColour(235, 235, 235);
 constexpr int kMargin = 8;
+
+// A world distance with three significant digits at least: 0.00012 wu and 4,870 wu both read.
+QString distanceText(double d)
+{
+    const double magnitude = std::abs(d);
+    if (magnitude >= 100.0 || magnitude == 0.0 || !std::isfinite(d))
+        return QString::number(d, 'f', magnitude >= 100.0 ? 0 : 2);
+    return QString::number(d, 'f', std::clamp(int(std::ceil(-std::log10(magnitude))) + 2, 2, 8));
+}
+
+// The first of `texts` that fits `width` pixels, else the last one elided.
+QString fitting(const QFontMetrics& metrics, const QStringList& texts, int width)
+{
+    for (const QString& text : texts) {
+        if (metrics.horizontalAdvance(text) <= width)
+            return text;
+    }
+    return metrics.elidedText(texts.last(), Qt::ElideRight, width);
+}
+
+// Where the segment from `inside` to `outside` (pixels) leaves `frame`.
+QPointF exitPoint(QPointF inside, QPointF outside, const QRectF& frame)
+{
+    double t = 1.0;
+    const QPointF d = outside - inside;
+    if (d.x() > 0.0) t = std::min(t, (frame.right() - inside.x()) / d.x());
+    if (d.x() < 0.0) t = std::min(t, (frame.left() - inside.x()) / d.x());
+    if (d.y() > 0.0) t = std::min(t, (frame.bottom() - inside.y()) / d.y());
+    if (d.y() < 0.0) t = std::min(t, (frame.top() - inside.y()) / d.y());
+    return inside + d * std::clamp(t, 0.0, 1.0);
+}
 
 } // namespace
 
@@ -77,7 +109,13 @@ QRectF DepthMapPicture::visible(double aspect, double zoom, QPointF centre) cons
     return {centre - QPointF(extent.width(), extent.height()) * 0.5, extent};
 }
 
-QRectF DepthMapPicture::homeRegion(const DepthMapFacts& facts)
+QRectF DepthMapPicture::homeRegion()
+{
+    constexpr double margin = 0.02;
+    return QRectF(QPointF(-margin, -margin), QPointF(1.0 + margin, 1.0 + margin));
+}
+
+QRectF DepthMapPicture::footprintRegion(const DepthMapFacts& facts)
 {
     double x0 = 0.0, y0 = 0.0, x1 = 1.0, y1 = 1.0;
     for (const glm::dvec2& p : facts.footprint) {
@@ -104,9 +142,9 @@ std::pair<double, QPointF> DepthMapPicture::framing(double aspect, const QRectF&
     return {std::clamp(zoom, 1e-3, 1.0), region.center()};
 }
 
-QRectF DepthMapPicture::homeVisible(const DepthMapFacts& facts) const
+QRectF DepthMapPicture::regionVisible(const DepthMapFacts& facts, const QRectF& region) const
 {
-    const auto [zoom, centre] = framing(facts.aspect, homeRegion(facts));
+    const auto [zoom, centre] = framing(facts.aspect, region);
     return visible(facts.aspect, zoom, centre);
 }
 
@@ -130,9 +168,15 @@ QRect DepthMapPicture::glViewport(const QRect& rect, double dpr) const
             int(std::lround(rect.width() * dpr)), int(std::lround(rect.height() * dpr))};
 }
 
-QString DepthMapPicture::depthText(const LightFrame& light, double depth)
+QString DepthMapPicture::depthText(const LightFrame& light, double depth, int decimals)
 {
-    return QStringLiteral("%1 · %2 wu").arg(depth, 0, 'f', 4).arg(depthToDistance(light, depth), 0, 'f', 2);
+    return QStringLiteral("%1 · %2 wu").arg(depth, 0, 'f', decimals).arg(distanceText(depthToDistance(light, depth)));
+}
+
+int DepthMapPicture::depthDecimals(double a, double b)
+{
+    const double apart = std::abs(a - b);
+    return apart > 0.0 && std::isfinite(apart) ? std::clamp(int(std::ceil(-std::log10(apart))) + 1, 4, 9) : 4;
 }
 
 void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const QRectF& visible) const
@@ -159,11 +203,17 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     const QString volumeText = facts.views > 1
         ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
         : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size).arg(facts.mapSize);
-    const QPointF volumeLabel(std::max(border.left(), double(area.left())) + 4, std::max(border.top(), double(area.top())) + 4 + metrics.ascent());
-    painter.setPen(QColor(0, 0, 0, 160));
-    painter.drawText(volumeLabel + QPointF(1, 1), volumeText);
+    // On a dark plate, so it reads over the map's brightest depths and never runs past the pane.
+    const int labelRoom = std::max(0, area.width() - 16);
+    const QString volumeShown = fitting(metrics, {volumeText, QStringLiteral("%1 light volume %2").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size), size}, labelRoom);
+    const QPointF volumeLabel(std::max(border.left(), double(area.left())) + 6, std::max(border.top(), double(area.top())) + 6 + metrics.ascent());
+    const double volumeX = std::min(volumeLabel.x(), double(area.right()) - 6 - metrics.horizontalAdvance(volumeShown));
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 150));
+    painter.drawRoundedRect(QRectF(volumeX - 3, volumeLabel.y() - metrics.ascent() - 2, metrics.horizontalAdvance(volumeShown) + 6, metrics.height() + 3), 3, 3);
+    painter.setBrush(Qt::NoBrush);
     painter.setPen(kVolumeColour);
-    painter.drawText(volumeLabel, volumeText);
+    painter.drawText(QPointF(volumeX, volumeLabel.y()), volumeShown);
     if (facts.footprint.size() >= 3) {
         QPolygonF polygon;
         bool cut = false;
@@ -173,11 +223,29 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         }
         painter.setPen(QPen(kFootprintColour, 2.0));
         painter.drawPolygon(polygon);
+        // Where the footprint leaves the picture: an arrowhead on the edge, pointing the way out.
+        const QRectF frame = QRectF(area).adjusted(1, 1, -1, -1);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(kFootprintColour);
+        for (qsizetype i = 0; i < polygon.size(); ++i) {
+            const QPointF a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+            if (frame.contains(a) == frame.contains(b))
+                continue;
+            const QPointF in = frame.contains(a) ? a : b, out = frame.contains(a) ? b : a;
+            const QPointF tip = exitPoint(in, out, frame);
+            QPointF dir = out - in;
+            dir /= std::max(1e-9, std::hypot(dir.x(), dir.y()));
+            const QPointF side(-dir.y(), dir.x());
+            painter.drawPolygon(QPolygonF{tip, tip - dir * 10.0 + side * 5.0, tip - dir * 10.0 - side * 5.0});
+        }
+        painter.setBrush(Qt::NoBrush);
         // The label at the polygon's lowest point on screen, kept inside the pane.
         const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
-        // Elided to the pane's width: a narrow pane (compare mode) still reads the start of it.
-        const QString text = metrics.elidedText(cut ? QStringLiteral("what the camera sees (reaches beyond the frame)") : QStringLiteral("what the camera sees"),
-                                                Qt::ElideRight, std::max(0, area.width() - 8));
+        // The longest that fits: a narrow pane (compare mode) still reads what it is.
+        const QString text = cut ? fitting(metrics, {QStringLiteral("what the camera sees (beyond the frame: View → Frame Camera Footprint, F)"),
+                                                     QStringLiteral("what the camera sees (beyond the frame: F)"), QStringLiteral("what the camera sees")},
+                                           std::max(0, area.width() - 8))
+                                 : fitting(metrics, {QStringLiteral("what the camera sees")}, std::max(0, area.width() - 8));
         const double width = metrics.horizontalAdvance(text);
         const double x = std::max(double(area.left() + 4), std::min(anchor.x() - width / 2.0, double(area.right() - 4) - width));
         const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
@@ -201,18 +269,24 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     // by GL), near and far.
     const QRect legend(0, area.bottom() + 1, m_size.width(), kLegendHeight);
     const int titleBaseline = legend.top() + 6 + metrics.ascent();
-    const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(QStringLiteral("empty: far plane, lit")) - 18,
-                       legend.top() + 6, 14, metrics.height() - 2);
+    // The swatch's words and the title each shorten to what the pane's width leaves them.
+    const int width = std::max(0, m_size.width() - 2 * kMargin);
+    const QString empty = fitting(metrics, {QStringLiteral("empty: far plane, lit"), QStringLiteral("empty: lit")}, width / 3);
+    const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(empty) - 18, legend.top() + 6, 14, metrics.height() - 2);
     painter.setPen(kTextColour);
-    const QString title = facts.moment == 1 ? QStringLiteral("moments map, first moment: depth from near (black) to far (white)")
-                          : facts.moment > 1 ? QStringLiteral("moments map, moment %1 (grey, 0 to 1)").arg(facts.moment)
-                          : facts.span      ? QStringLiteral("depth from the light · stretched to the map's contents")
-                                            : QStringLiteral("nothing drawn into the map");
-    painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, swatch.left() - kMargin - 6, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
-                     metrics.elidedText(title, Qt::ElideRight, swatch.left() - kMargin - 6));
+    const QStringList titles = facts.moment == 1 ? QStringList{QStringLiteral("moments map, first moment: depth from near (black) to far (white)"),
+                                                               QStringLiteral("first moment: depth, near to far"), QStringLiteral("first moment")}
+                               : facts.moment > 1 ? QStringList{QStringLiteral("moments map, moment %1 (grey, 0 to 1)").arg(facts.moment),
+                                                                QStringLiteral("moment %1 (0 to 1)").arg(facts.moment)}
+                               : facts.span      ? QStringList{QStringLiteral("depth from the light · stretched to the map's contents"),
+                                                               QStringLiteral("depth from the light, stretched"), QStringLiteral("depth")}
+                                                 : QStringList{QStringLiteral("nothing drawn into the map"), QStringLiteral("empty map")};
+    const int titleRoom = swatch.left() - kMargin - 6;
+    painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, titleRoom, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                     fitting(metrics, titles, titleRoom));
     painter.fillRect(swatch, QColor(77, 77, 77));
     painter.fillRect(swatch, QBrush(QColor(90, 90, 90), Qt::BDiagPattern));
-    painter.drawText(QPointF(swatch.right() + 5, titleBaseline), QStringLiteral("empty: far plane, lit"));
+    painter.drawText(QPointF(swatch.right() + 5, titleBaseline), empty);
     if (facts.moment > 0) {
         // A moments map is drawn in grey over the light volume's whole depth range: the bar
         // says so instead of the depth ramp.
@@ -225,12 +299,14 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     painter.drawRect(QRectF(legendBar()).adjusted(-0.5, -0.5, 0.5, 0.5));
     const DepthSpan span = facts.moment > 0 ? DepthSpan{0.0, 1.0} : facts.span.value_or(DepthSpan{});
     const int rowBaseline = legendBar().bottom() + 3 + metrics.ascent();
-    QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest));
-    QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest));
+    // As many decimals as make near and far read apart (a perspective map packs its depths near 1).
+    const int decimals = depthDecimals(span.nearest, span.farthest);
+    QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest, decimals));
+    QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest, decimals));
     if (facts.moment <= 1 && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > legendBar().width()) {
         // A narrow pane: the world distances only (the depths are in the PNG's text and the tooltip).
-        nearText = QStringLiteral("near %1 wu").arg(depthToDistance(facts.light, span.nearest), 0, 'f', 2);
-        farText = QStringLiteral("far %1 wu").arg(depthToDistance(facts.light, span.farthest), 0, 'f', 2);
+        nearText = QStringLiteral("near %1 wu").arg(distanceText(depthToDistance(facts.light, span.nearest)));
+        farText = QStringLiteral("far %1 wu").arg(distanceText(depthToDistance(facts.light, span.farthest)));
     }
     painter.drawText(QPointF(legendBar().left(), rowBaseline), nearText);
     painter.drawText(QPointF(legendBar().right() - metrics.horizontalAdvance(farText), rowBaseline), farText);

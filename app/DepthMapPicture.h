@@ -57,16 +57,20 @@ public:
     static double aspect(const LightFrame& light);
     // The part of the map shown over mapArea() at `zoom` (1: the whole map fits) around `centre`.
     QRectF visible(double aspect, double zoom, QPointF centre) const;
-    // What the picture frames before any zoom or pan, in map coordinates: the map together with
-    // the camera's footprint, so the map is seen where it lies in what the camera sees. A
-    // footprint far larger than the map is cut at kFrameLimit map sides around it, so the map
-    // keeps half the picture's side.
-    static QRectF homeRegion(const DepthMapFacts& facts);
+    // What the picture frames before any zoom or pan, in map coordinates: the map, with a thin
+    // margin, so it fills the picture along its tighter side. The camera's footprint is drawn
+    // over it, cut at the picture's edge with a marker where it leaves.
+    static QRectF homeRegion();
+    // The map together with the camera's footprint, so the map is seen where it lies in what the
+    // camera sees (View → Frame Camera Footprint). A footprint far larger than the map is cut at
+    // kFrameLimit map sides around it, so the map keeps half the picture's side.
+    static QRectF footprintRegion(const DepthMapFacts& facts);
     static constexpr double kFrameLimit = 0.5;     // map sides beyond each edge of the map
     // The zoom and centre at which visible() shows `region` whole.
     std::pair<double, QPointF> framing(double aspect, const QRectF& region) const;
-    // What the picture shows before any zoom or pan: homeRegion() at the facts' aspect.
-    QRectF homeVisible(const DepthMapFacts& facts) const;
+    // `region` shown whole at the facts' aspect: what the picture shows before any zoom or pan.
+    QRectF regionVisible(const DepthMapFacts& facts, const QRectF& region) const;
+    QRectF homeVisible(const DepthMapFacts& facts) const { return regionVisible(facts, homeRegion()); }
     QPointF toPixel(QPointF mapPoint, const QRectF& visible) const;
     QPointF toMap(QPointF pixel, const QRectF& visible) const;
     // `rect` in GL viewport pixels (y up) of a framebuffer `devicePixelRatio` times this size.
@@ -74,8 +78,11 @@ public:
 
     void paint(QPainter& painter, const DepthMapFacts& facts, const QRectF& visible) const;
 
-    // "0.1234 · 3.21 wu": a depth and its distance from the light, as the legend writes them.
-    static QString depthText(const LightFrame& light, double depth);
+    // "0.1234 · 3.21 wu": a depth and its distance from the light, as the legend writes them,
+    // with `decimals` for the depth (more where near and far differ only far down).
+    static QString depthText(const LightFrame& light, double depth, int decimals = 4);
+    // Decimals at which the depths `a` and `b` read apart (4 at least, 9 at most).
+    static int depthDecimals(double a, double b);
 
 private:
     QSize m_size;

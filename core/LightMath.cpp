@@ -5,11 +5,31 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
+
+LightAngles lightAngles(const glm::dvec3& position, const glm::dvec3& target, double previousAzimuth)
+{
+    const glm::dvec3 offset = position - target;
+    LightAngles angles;
+    angles.distance = glm::length(offset);
+    const double horizontal = std::hypot(offset.x, offset.z);
+    angles.elevation = glm::degrees(std::atan2(offset.y, horizontal));
+    // Within a millionth of the distance of the vertical, the azimuth says nothing.
+    angles.azimuth = horizontal > 1e-6 * angles.distance ? glm::degrees(std::atan2(offset.x, offset.z)) : previousAzimuth;
+    return angles;
+}
+
+glm::dvec3 lightPosition(const glm::dvec3& target, const LightAngles& angles)
+{
+    const double azimuth = glm::radians(angles.azimuth), elevation = glm::radians(std::clamp(angles.elevation, -90.0, 90.0));
+    const glm::dvec3 direction(std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth));
+    return target + direction * angles.distance;
+}
 
 glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target)
 {

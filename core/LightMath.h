@@ -61,6 +61,19 @@ struct CameraFrame {
     double farPlane = 100.0;
 };
 
+// Where a light sits around its target, as people turn it: azimuth in degrees around the
+// vertical (0 toward +z, 90 toward +x, in (-180, 180]), elevation in degrees above the
+// horizontal plane ([-90, 90]), and distance in world units. The dock's direction fields and
+// a Ctrl-drag in the scene view edit light.position through these.
+struct LightAngles {
+    double azimuth = 0.0;
+    double elevation = 0.0;
+    double distance = 0.0;
+};
+// Straight above or below, the azimuth is undefined and `previousAzimuth` is kept.
+LightAngles lightAngles(const glm::dvec3& position, const glm::dvec3& target, double previousAzimuth = 0.0);
+glm::dvec3 lightPosition(const glm::dvec3& target, const LightAngles& angles);
+
 // A right-handed look-at whose up vector is chosen away from the view direction, so a light
 // straight above or below its target still gets an orthonormal, finite basis.
 // Requires eye != target (see validate()).

@@ -20,6 +20,16 @@ Bounds Scene::casterBounds() const
     return b;
 }
 
+Bounds Scene::modelBounds() const
+{
+    Bounds b;
+    for (const SceneObject& o : objects) {
+        if (o.name != u"ground" || o.texture != TextureKind::Checker)
+            b.extend(worldBounds(o));
+    }
+    return b.isEmpty() ? bounds() : b;
+}
+
 Bounds Scene::bounds() const
 {
     Bounds b;

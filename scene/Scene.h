@@ -47,6 +47,9 @@ struct Scene {
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts
     Bounds bounds() const;              // everything
+    // Everything but the checkered ground plane a preset or a loaded model stands on: the size
+    // cameras, lights and sliders follow (the whole scene when there is nothing else).
+    Bounds modelBounds() const;
 };
 
 } // namespace shadowlab

@@ -296,6 +296,23 @@ Settings presetSettings(const QString& name)
     return s;
 }
 
+Settings movedToScene(const Settings& side, const Settings& scene)
+{
+    Settings moved = side;
+    moved.scene = scene.scene;
+    moved.light = scene.light;
+    moved.camera = scene.camera;
+    moved.reference = scene.reference;
+    moved.shadow.distance = scene.shadow.distance;
+    moved.bias.cullFront = scene.bias.cullFront;
+    // A bias in texels or depth units means the same on any scene; one in world units does not.
+    if (side.bias.space == BiasSpace::World && scene.bias.space == BiasSpace::World) {
+        moved.bias.slope = scene.bias.slope;
+        moved.bias.min = scene.bias.min;
+    }
+    return moved;
+}
+
 QString sceneIdentity(const QString& name)
 {
     if (isPresetName(name))

@@ -18,6 +18,13 @@ Scene buildScene(const QString& name);
 // for a model or scene file (derived from its bounds, then the file's own keys).
 Settings presetSettings(const QString& name);
 
+// `side`'s settings on the scene whose settings are `scene` (its presetSettings(), or another
+// side already on it): what belongs to the scene comes from there (the scene, its light and
+// camera, and the lengths in its world units: world-space bias, cascade distance, reference
+// light size, and whether its meshes are closed enough to cull front faces); the techniques
+// being compared stay. This is how a scene is shared by both sides of compare mode.
+Settings movedToScene(const Settings& side, const Settings& scene);
+
 // What a scene's references may be cached under: a preset's name, or "sha256:" and the hash
 // of a loaded file's content (and of the files it names), so renaming a file keeps its cached
 // traces and editing it does not. Throws like buildScene().

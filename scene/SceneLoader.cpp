@@ -201,11 +201,7 @@ Settings sceneFileSettings(const QString& path)
     const Loaded loaded = cached(path, ImportControl{});
     const Scene& scene = *loaded.scene;
     // Frame what is not ground: the camera and light follow the models, not the big plane.
-    Bounds models;
-    for (const SceneObject& object : scene.objects) {
-        if (object.name != u"ground" || object.texture != TextureKind::Checker)
-            models.extend(scene.worldBounds(object));
-    }
+    const Bounds models = scene.modelBounds();
     const glm::dvec3 centre = models.center();
     const double radius = std::max(glm::length(models.max - models.min) * 0.5, 1e-6);
 
@@ -231,6 +227,8 @@ Settings sceneFileSettings(const QString& path)
     s.bias.slope = std::min(s.bias.slope * scale, 100.0);
     s.bias.min = std::min(s.bias.min * scale, 100.0);
     s.reference.lightRadius = std::min(s.reference.lightRadius * scale, 100.0);
+    // Cascades cover what is in view: the model and the ground round it, not the seed's 100 wu.
+    s.shadow.distance = std::min(distance + radius * 2.0, 1e7);
     // Front-face culling in the shadow pass needs closed meshes; models are often open
     // (single-sided shells, thin legs) and would lose their shadows, so draw both sides.
     s.bias.cullFront = false;

@@ -239,6 +239,34 @@ private Q_SLOTS:
         m_dock->setFrameTimes({history(12.0, 4.0, true)}, true);
         QCOMPARE(value("frameTimeValue"), 12.2);
         QVERIFY(!label("frameTimeValueB")->isVisible());
+
+        // Too few frames since a side's settings changed to tell a difference from noise.
+        const auto frames = [](std::vector<double> frameMs, int shadowEvery) {
+            FrameTimeHistory h;
+            for (std::size_t i = 0; i < frameMs.size(); ++i) {
+                FrameStats f;
+                f.frameWallMs = frameMs[i];
+                f.shadowPassRendered = shadowEvery > 0 && i % std::size_t(shadowEvery) == 0;
+                f.shadowPassWallMs = f.shadowPassRendered ? frameMs[i] * 0.6 : 0.0;
+                h.add(f);
+            }
+            return h.summary();
+        };
+        m_dock->setSides(presetSettings(QStringLiteral("seed")), acneSettings(), 0);
+        m_dock->setFrameTimes({frames({17.4, 17.2, 17.6}, 1), frames(std::vector<double>(30, 5.8), 1)}, true);
+        QCOMPARE(label("frameTimeDelta")->text(), QStringLiteral("…"));
+        // A pass that ran in some frames only: its median is of those, and the dock says so.
+        std::vector<double> mixed(30, 6.0);
+        for (std::size_t i = 0; i < mixed.size(); i += 10)
+            mixed[i] = 20.0;
+        m_dock->setSettings(presetSettings(QStringLiteral("seed")));
+        m_dock->setFrameTimes({frames(mixed, 10)}, true);
+        QCOMPARE(value("shadowPassTimeValue"), 12.0);
+        QCOMPARE(value("frameTimeValue"), 6.0);
+        QVERIFY2(label("costInfo")->text().contains(QStringLiteral("3 of 30 frames")) && label("costInfo")->text().contains(QStringLiteral("20.0 ms")),
+                 qPrintable(label("costInfo")->text()));
+        QVERIFY2(FrameTimeHistory::text(frames(mixed, 10), true).contains(QStringLiteral("shadow 12.0 in 3 of 30")),
+                 qPrintable(FrameTimeHistory::text(frames(mixed, 10), true)));
     }
 
     void acneReadsAsFalseShadow()
@@ -325,6 +353,13 @@ private Q_SLOTS:
         m_dock->setSettings(chosen);
         QCOMPARE(marker->count(), 1);
         QCOMPARE(marker->at(0), target);
+
+        // Another scene withdraws the seed's sweep and measurement: nothing left to click.
+        QVERIFY(!qIsNaN(value("misclassifiedValue")));
+        m_dock->setSettings(presetSettings(QStringLiteral("torus")));
+        QCOMPARE(qobject_cast<QScatterSeries*>(view->chart()->series().at(0))->count(), 0);
+        QVERIFY(qIsNaN(value("misclassifiedValue")));
+        m_dock->setSettings(presetSettings(QStringLiteral("seed")));
     }
 
     void sweepCancels()
@@ -367,6 +402,12 @@ private Q_SLOTS:
         QVERIFY(compareAndWait());
         const double after = value("falseShadowValue");
         QVERIFY2(after < 0.2 * before, qPrintable(QString("false shadow %1 -> %2").arg(before).arg(after)));
+        QVERIFY(button("applyTuningButton")->isEnabled());
+
+        // The tuning was of the seed: on another scene there is nothing to apply.
+        m_dock->setSettings(presetSettings(QStringLiteral("torus")));
+        QVERIFY(!button("applyTuningButton")->isEnabled());
+        QVERIFY(!m_dock->findChild<QWidget*>(QStringLiteral("tuningChart"))->isVisible());
         m_dock->setSettings(presetSettings(QStringLiteral("seed")));
     }
 };

@@ -3,6 +3,7 @@
 // several light directions, and the fix its sentence names takes it away again.
 #include "Application.h"
 #include "ArtifactPresets.h"
+#include "ArtifactsHelp.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "ReferenceAgreement.h"
@@ -145,6 +146,28 @@ private slots:
         QVERIFY2(withPreset >= 0.01 && withPreset >= 5.0 * withDefaults, qPrintable(numbers));
         // Fixed: within a percentage point of the defaults, and a fifth of the preset or less.
         QVERIFY2(withFix <= withDefaults + 0.01 && withFix <= withPreset / 5.0, qPrintable(numbers));
+    }
+
+    // Help → Shadow Artifacts shows each artifact and its fix as the program renders them.
+    void helpShowsEachArtifactAndItsFix()
+    {
+        const std::map<QString, QImage>& pictures = ArtifactsHelp::pictures();
+        QCOMPARE(pictures.size(), artifactPresets().size() * 2);
+        const QString page = ArtifactsHelp::html(true);
+        for (const ArtifactPreset& preset : artifactPresets()) {
+            const QImage& artifact = pictures.at(preset.name);
+            const QImage& fixed = pictures.at(preset.name + QStringLiteral("-fixed"));
+            QCOMPARE(artifact.size(), QSize(ArtifactsHelp::kPictureWidth, ArtifactsHelp::kPictureHeight));
+            // The fix shows: the two pictures differ somewhere visibly.
+            int differing = 0;
+            for (int y = 0; y < artifact.height(); ++y) {
+                for (int x = 0; x < artifact.width(); ++x)
+                    differing += qGray(artifact.pixel(x, y)) != qGray(fixed.pixel(x, y)) ? 1 : 0;
+            }
+            QVERIFY2(differing > 10, qPrintable(QStringLiteral("%1: %2 pixels differ").arg(preset.name).arg(differing)));
+            QVERIFY(page.contains(QStringLiteral("artifact:%1-fixed").arg(preset.name)));
+        }
+        QVERIFY(!ArtifactsHelp::html(false).contains(QStringLiteral("<img")));
     }
 };
 

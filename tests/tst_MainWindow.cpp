@@ -17,6 +17,7 @@
 #include "SceneView.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 #include "SettingsSummary.h"
 #include "SliderSpinBox.h"
 
@@ -554,8 +555,8 @@ void tst_MainWindow::fittedVolumeIsShownReadOnlyAndACutVolumeWarnsAtItsField()
     const QString hint = dock->warningText(QStringLiteral("light.extent")) + dock->warningText(QStringLiteral("light.near"))
                        + dock->warningText(QStringLiteral("light.far"));
     QVERIFY2(hint.contains(QStringLiteral("lit without a shadow test")), qPrintable(hint));
-    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("outside the light volume")),
-             qPrintable(m_window->statusBar()->currentMessage()));
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("outside the light volume")),
+             qPrintable(m_window->statusMessage()));
 
     m_window->setSettings(Side::A, presetSettings(QStringLiteral("seed")));
     QVERIFY(settle(*m_window));
@@ -773,10 +774,20 @@ void tst_MainWindow::presetButtonShowsTheArtifactAndTheFix()
     }
     auto* fix = dock->findChild<QPushButton*>(QStringLiteral("presetFix"));
     QVERIFY(fix->isVisibleTo(dock) && fix->isEnabled());
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    const auto inView = [scroll](const QWidget* w) {
+        const QRect at(w->mapTo(scroll->viewport(), QPoint(0, 0)), w->size());
+        return scroll->viewport()->rect().intersects(at);
+    };
+    QVERIFY(inView(note));
+    const int scrolled = scroll->verticalScrollBar()->value();
     QTest::mouseClick(fix, Qt::LeftButton);
     QVERIFY(settle(*m_window));
     QCOMPARE(m_window->settings(Side::A), artifactPresetFixed(preset));
     QVERIFY(!fix->isEnabled());
+    // The explanation stays where the user reads it.
+    QCOMPARE(scroll->verticalScrollBar()->value(), scrolled);
+    QVERIFY(inView(note) && inView(fix));
 }
 
 void tst_MainWindow::presetFromTheCommandLineShowsItsNoteAndFix()
@@ -820,14 +831,26 @@ void tst_MainWindow::everySettingHasADockField()
             QVERIFY2(editor, qPrintable(key.key + QStringLiteral(" has no field in the dock")));
             // The tooltip is the table's help, so the dock explains what the CLI explains (a
             // fitted, read-only field says instead why it cannot be edited).
+            // The filter's says what the chosen one does, each choice its own in the list.
+            const QString help = key.key == u"filter.mode" ? shadowTechnique(m_window->settings(Side::A).filter.mode).help : key.help;
             if (editor->isEnabled())
-                QVERIFY2(editor->toolTip().contains(key.help.left(30).toHtmlEscaped()), qPrintable(key.key));
+                QVERIFY2(editor->toolTip().contains(help.left(30).toHtmlEscaped()), qPrintable(key.key));
         }
     }
     // Shown in the dock as the settings hold them.
     for (const QString& key : {QStringLiteral("light.radius"), QStringLiteral("bias.normal"), QStringLiteral("camera.fov")})
         QCOMPARE(field(key)->value(), settingValue(m_window->settings(Side::A), key).toDouble());
     QCOMPARE(dock->findChild<QComboBox*>(QStringLiteral("light.fit"))->currentText(), settingValue(m_window->settings(Side::A), "light.fit"));
+    // Filters by name with their key, each with a tooltip of its own of a sentence or two.
+    auto* filter = dock->findChild<QComboBox*>(QStringLiteral("filter.mode"));
+    for (const ShadowTechnique& t : shadowTechniques()) {
+        const int i = filter->findData(t.key);
+        QVERIFY2(i >= 0, qPrintable(t.key));
+        QVERIFY2(filter->itemText(i).contains(t.label) && filter->itemText(i).endsWith(t.key), qPrintable(filter->itemText(i)));
+        const QString tip = filter->itemData(i, Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains(t.help.toHtmlEscaped()) && tip.size() < 500, qPrintable(tip));
+    }
+    QVERIFY2(filter->toolTip().size() < 700, qPrintable(filter->toolTip()));
     QCOMPARE(dock->findChild<QCheckBox*>(QStringLiteral("light.stabilize"))->isChecked(), m_window->settings(Side::A).light.stabilize);
 }
 
@@ -927,14 +950,27 @@ void tst_MainWindow::depthPaneFramesTheMapInWhatTheCameraSees()
     const QRectF map(0.0, 0.0, 1.0, 1.0);
     const QString where = QStringLiteral("shown %1,%2 %3x%4").arg(shown.x()).arg(shown.y()).arg(shown.width()).arg(shown.height());
     QVERIFY2(shown.contains(map), qPrintable(where));
-    // The map keeps at least half the pane along its tighter side.
-    QVERIFY2(1.0 / shown.width() >= 0.45 || 1.0 / shown.height() >= 0.45, qPrintable(where));
-    // Every corner of the footprint is in the picture, or lies beyond the frame's limit.
+    // The map first: it spans the pane along its tighter side, and fills at least half the
+    // pane's area unless the light volume's aspect is far from the pane's.
+    QVERIFY2(1.0 / shown.width() >= 0.94 || 1.0 / shown.height() >= 0.94, qPrintable(where));
+    const QSize area = DepthMapPicture(pane->size()).mapArea().size();
+    const double paneAspect = double(area.width()) / area.height();
+    if (std::max(facts.aspect / paneAspect, paneAspect / facts.aspect) < 1.8)
+        QVERIFY2(1.0 / (shown.width() * shown.height()) >= 0.5, qPrintable(where));
+
+    // One click away: the map with what the camera sees around it. Every corner of the
+    // footprint is then in the picture, or lies beyond the frame's limit.
+    m_window->action(QStringLiteral("frameFootprintAction"))->trigger();
+    const QRectF framed = pane->visibleRect();
+    QVERIFY2(framed.contains(map), qPrintable(where));
+    QVERIFY2(1.0 / framed.width() >= 0.45 || 1.0 / framed.height() >= 0.45, qPrintable(where));
     const double limit = DepthMapPicture::kFrameLimit + 1e-9;
     for (const glm::dvec2& p : facts.footprint) {
         const bool beyond = p.x < -limit || p.y < -limit || p.x > 1.0 + limit || p.y > 1.0 + limit;
-        QVERIFY2(beyond || shown.contains(QPointF(p.x, p.y)), qPrintable(QStringLiteral("%1: footprint corner %2, %3 cut").arg(where).arg(p.x).arg(p.y)));
+        QVERIFY2(beyond || framed.contains(QPointF(p.x, p.y)), qPrintable(QStringLiteral("%1: footprint corner %2, %3 cut").arg(where).arg(p.x).arg(p.y)));
     }
+    m_window->action(QStringLiteral("fitDepthMapAction"))->trigger();
+    QCOMPARE(pane->visibleRect(), shown);
     if (facts.views > 1)
         QVERIFY2(facts.footprint.empty(), "several views: no single footprint drawn over all of them");
 
@@ -974,8 +1010,15 @@ void tst_MainWindow::statusBarShowsMediansAndMeasuresFrames()
     QTRY_VERIFY_WITH_TIMEOUT(m_window->action(QStringLiteral("measureAction"))->isEnabled(), 120000);
     QVERIFY(m_window->sceneView(Side::A)->frameCount() >= before + 100);
     QVERIFY2(m_window->sceneView(Side::A)->renderer()->shadowPassCount() >= shadowPasses + 100, "every measured frame ran the shadow pass");
-    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("100 frames")), qPrintable(m_window->statusBar()->currentMessage()));
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("100 frames")), qPrintable(m_window->statusMessage()));
     QVERIFY2(timing->text().contains(QStringLiteral("median of 100")), qPrintable(timing->text()));
+    // Other settings start another window: frames of the last ones say nothing about these.
+    Settings other = m_window->settings(Side::A);
+    applySetting(other, "filter.mode", "pcf");
+    m_window->setSettings(Side::A, other);
+    QVERIFY(settle(*m_window));
+    QVERIFY2(!timing->text().contains(QStringLiteral("median of 100")), qPrintable(timing->text()));
+    QVERIFY2(timing->toolTip().contains(QStringLiteral("since the settings last changed")), qPrintable(timing->toolTip()));
     // Compare mode: both sides' cost and the difference, each side's passes in the tooltip.
     m_window->setCompareMode(true);
     QVERIFY(settle(*m_window));

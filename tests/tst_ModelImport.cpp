@@ -8,6 +8,9 @@
 #include "ReferenceAgreement.h"
 #include "MainWindow.h"
 #include "ModelImporter.h"
+#include "LightMath.h"
+#include "SliderSpinBox.h"
+#include "PropertiesDock.h"
 #include "RayTracer.h"
 #include "SceneFileError.h"
 #include "SceneLibrary.h"
@@ -19,6 +22,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSlider>
 #include <QMimeData>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -409,6 +415,120 @@ private Q_SLOTS:
         // Read in the background: the window answers meanwhile, and takes the scene when it is ready.
         QTRY_COMPARE(window.settings(MainWindow::Side::A).scene, dropped);
         QCOMPARE(window.recentScenes(), (QStringList{dropped, good}));
+    }
+
+    void compareModeOpensAModelForBothSides()
+    {
+        using Side = MainWindow::Side;
+        MainWindow window(MainWindow::Persistence::None);
+        window.resize(1200, 750);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.setCompareMode(true);
+        window.selectSide(Side::B);
+        Settings b = window.settings(Side::B);
+        applySetting(b, "filter.mode", "pcf");
+        applySetting(b, "bias.space", "texel");
+        applySetting(b, "bias.slope", "1.5");
+        window.setSettings(Side::B, b);
+        const Settings seedA = window.settings(Side::A), seedB = window.settings(Side::B);
+
+        // The scene is what both sides look at; the settings are what they compare.
+        const QString engine = model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+        QCOMPARE(window.openScene(engine), QString());
+        const Settings a = window.settings(Side::A), opened = window.settings(Side::B);
+        QCOMPARE(a.scene, engine);
+        QCOMPARE(opened.scene, engine);
+        QVERIFY(a.light == opened.light);
+        QVERIFY(a.camera == opened.camera);
+        QVERIFY(a.light.position != seedA.light.position);
+        QVERIFY(a.filter.mode == FilterMode::HwBilinear);
+        QVERIFY(opened.filter.mode == FilterMode::Pcf);
+        // A bias in world units follows the model's size; one in texels means the same anywhere.
+        QVERIFY2(a.bias.min > seedA.bias.min * 10.0, qPrintable(QString::number(a.bias.min)));
+        QVERIFY(opened.bias.space == BiasSpace::Texel);
+        QCOMPARE(opened.bias.slope, 1.5);
+        QVERIFY2(a.shadow.distance > seedA.shadow.distance, "the cascades' reach follows the model's size");
+        QTRY_VERIFY(window.sceneView(Side::A)->renderer() && window.sceneView(Side::A)->renderer()->scene()
+                    && window.sceneView(Side::A)->renderer()->scene()->name == engine);
+
+        // One undo step brings the seed back on both sides.
+        window.undoStack(Side::B)->undo();
+        QCOMPARE(window.settings(Side::A).scene, seedA.scene);
+        QVERIFY(window.settings(Side::B) == seedB);
+        window.undoStack(Side::B)->redo();
+        QCOMPARE(window.settings(Side::A).scene, engine);
+
+        // Leaving compare mode keeps the model just opened.
+        window.setCompareMode(false);
+        QCOMPARE(window.settings(Side::A).scene, engine);
+
+        // Choosing a preset in the dock moves both sides as well.
+        window.setCompareMode(true);
+        window.selectSide(Side::A);
+        auto* combo = window.findChild<QComboBox*>(QStringLiteral("scene"));
+        QVERIFY(combo);
+        combo->setCurrentIndex(combo->findText(QStringLiteral("torus")));
+        QCOMPARE(window.settings(Side::A).scene, QStringLiteral("torus"));
+        QCOMPARE(window.settings(Side::B).scene, QStringLiteral("torus"));
+        QVERIFY(window.settings(Side::B).filter.mode == FilterMode::Pcf);
+    }
+
+    // On an 850-unit engine the light's controls span the engine, not the seed's ±10 units, and
+    // a directional light turns by its direction: fields, or a Ctrl+drag in the view.
+    void lightControlsFitTheScene()
+    {
+        using Side = MainWindow::Side;
+        MainWindow window(MainWindow::Persistence::None);
+        window.resize(1200, 750);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        const QString engine = model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+        QCOMPARE(window.openScene(engine), QString());
+        QTRY_VERIFY(window.sceneView(Side::A)->renderer() && window.sceneView(Side::A)->renderer()->scene()
+                    && window.sceneView(Side::A)->renderer()->scene()->name == engine);
+        PropertiesDock* dock = window.propertiesDock();
+        QTRY_VERIFY(dock->findChild<SliderSpinBox*>("light.target.x")->slider()->maximum() > 0);
+        // No slider of a position sits pinned at an end of its span.
+        for (const char* name : {"light.target.x", "light.target.y", "light.target.z", "camera.position.x", "camera.position.y",
+                                 "camera.position.z", "light.distance"}) {
+            QSlider* slider = dock->findChild<SliderSpinBox*>(name)->slider();
+            QVERIFY2(slider->value() > slider->minimum() && slider->value() < slider->maximum(),
+                     qPrintable(QStringLiteral("%1 at %2 of [%3, %4]").arg(name).arg(slider->value()).arg(slider->minimum()).arg(slider->maximum())));
+        }
+        // A directional light shows a direction, not a place.
+        QVERIFY(!dock->findChild<SliderSpinBox*>("light.position.x")->isVisibleTo(dock));
+        auto* azimuth = dock->findChild<SliderSpinBox*>("light.azimuth");
+        auto* elevation = dock->findChild<SliderSpinBox*>("light.elevation");
+        QVERIFY(azimuth->isVisibleTo(dock) && elevation->isVisibleTo(dock));
+        const Settings before = window.settings(Side::A);
+        const LightAngles start = lightAngles(before.light.position, before.light.target);
+        QVERIFY2(std::abs(azimuth->value() - start.azimuth) < 1e-6, qPrintable(QString::number(azimuth->value())));
+
+        // The elevation typed: the light keeps its azimuth and distance, only rises.
+        elevation->spinBox()->setValue(30.0);
+        const LightAngles typed = lightAngles(window.settings(Side::A).light.position, before.light.target);
+        QVERIFY2(std::abs(typed.elevation - 30.0) < 1e-6 && std::abs(typed.azimuth - start.azimuth) < 1e-6
+                     && std::abs(typed.distance - start.distance) < 0.01 * start.distance,
+                 qPrintable(QStringLiteral("%1 %2 %3").arg(typed.azimuth).arg(typed.elevation).arg(typed.distance)));
+
+        // Ctrl+drag 25 pixels right: 10 degrees further round, as one undo step.
+        SceneView* view = window.sceneView(Side::A);
+        const QPoint from(view->width() / 2, view->height() / 2);
+        const int steps = window.undoStack(Side::A)->count();
+        QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, from);
+        for (int x = 5; x <= 25; x += 5) {
+            QMouseEvent move(QEvent::MouseMove, QPointF(from + QPoint(x, 0)), view->mapToGlobal(QPointF(from + QPoint(x, 0))), Qt::NoButton,
+                             Qt::LeftButton, Qt::ControlModifier);
+            QApplication::sendEvent(view, &move);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, from + QPoint(25, 0));
+        const LightAngles dragged = lightAngles(window.settings(Side::A).light.position, before.light.target);
+        QVERIFY2(std::abs(std::remainder(dragged.azimuth - typed.azimuth, 360.0) - 10.0) < 1e-6, qPrintable(QString::number(dragged.azimuth)));
+        QVERIFY(std::abs(dragged.elevation - 30.0) < 1e-6);
+        QCOMPARE(window.undoStack(Side::A)->count(), steps + 1);
+        QVERIFY(window.settings(Side::A).camera == before.camera);     // the drag turned the light, not the view
+        QTRY_VERIFY(std::abs(azimuth->value() - dragged.azimuth) < 1e-6);
     }
 
     void init() { if (!m_headless) m_headless = std::make_unique<HeadlessRenderer>(); }

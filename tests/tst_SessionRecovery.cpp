@@ -102,8 +102,8 @@ private slots:
         QVERIFY2(clock.elapsed() < 1000, qPrintable(QString::number(clock.elapsed())));
         QVERIFY(!progress->isVisible());
         QCOMPARE(window.settings(MainWindow::Side::A), edited);
-        QVERIFY2(window.statusBar()->currentMessage().contains(QStringLiteral("Cancelled: large.glb not opened")),
-                 qPrintable(window.statusBar()->currentMessage()));
+        QVERIFY2(window.statusMessage().contains(QStringLiteral("Cancelled: large.glb not opened")),
+                 qPrintable(window.statusMessage()));
         keepPicture(&window, QStringLiteral("opening-cancelled"));
         QVERIFY(window.recentScenes().isEmpty());
 

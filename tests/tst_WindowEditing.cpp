@@ -237,7 +237,7 @@ private slots:
 
         // A choice in a combo box, and a settings file imported.
         auto* filter = m_window->propertiesDock()->findChild<QComboBox*>(QStringLiteral("filter.mode"));
-        filter->setCurrentText(QStringLiteral("hard"));
+        filter->setCurrentIndex(filter->findData(QStringLiteral("hard")));   // shown as "Hard (1 tap) — hard"
         QVERIFY(m_window->settings(Side::A).filter.mode == FilterMode::Hard);
         const QString file = m_dir.filePath(QStringLiteral("import.json"));
         Settings fileSettings = original;
@@ -283,7 +283,8 @@ private slots:
         field(QStringLiteral("map.size"))->spinBox()->setValue(512);
         QCOMPARE(m_window->settings(Side::B).map.size, 512);
         m_window->selectSide(Side::A);
-        m_window->propertiesDock()->findChild<QComboBox*>(QStringLiteral("filter.mode"))->setCurrentText(QStringLiteral("hard"));
+        auto* filterCombo = m_window->propertiesDock()->findChild<QComboBox*>(QStringLiteral("filter.mode"));
+        filterCombo->setCurrentIndex(filterCombo->findData(QStringLiteral("hard")));
 
         // Undo on A takes back A's edit only.
         undo->trigger();

@@ -99,10 +99,38 @@ void AccuracyController::setSides(const std::vector<Settings>& sides, std::size_
 {
     if (sides.empty())
         return;
+    const bool sceneChanged = sides.front().scene != m_sides.front().scene;
+    const bool sideChanged = std::min(selected, sides.size() - 1) != m_selected;
     m_sides = sides;
     m_selected = std::min(selected, sides.size() - 1);
     // A side that went (compare mode off) takes its measurement with it.
     m_measurements.resize(sides.size());
+    if (sceneChanged)
+        withdrawResults();
+    else if (sideChanged && m_tuning)
+        withdrawTuning();   // it was of the other side's settings
+}
+
+void AccuracyController::withdrawResults()
+{
+    // Measured on another scene: nothing of it says anything about this one, and work still
+    // under way for it is stopped.
+    if (isBusy())
+        cancel();
+    for (auto& measurement : m_measurements)
+        measurement.reset();
+    m_sweepPoints.clear();
+    m_tuning.reset();
+    setStatus({});
+    emit measurementChanged();
+    emit sweepPointsChanged();
+    emit tuningFinished();
+}
+
+void AccuracyController::withdrawTuning()
+{
+    m_tuning.reset();
+    emit tuningFinished();
 }
 
 void AccuracyController::setViewSize(QSize size)

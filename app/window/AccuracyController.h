@@ -84,6 +84,7 @@ public:
     // (BiasTuner), between events; tuning() holds the result when it finishes.
     void tuneBias();
     void cancel();
+    // The last tuning of the selected side on this scene; tuningFinished() also says it went.
     const std::optional<BiasTuning>& tuning() const { return m_tuning; }
 
     // The selected side's measurement, or side `side`'s.
@@ -132,6 +133,10 @@ private:
         LightFrame light;
     };
 
+    // Drops every result (a new scene), or the tuning alone (another side selected), with
+    // the signals that make the dock show their absence.
+    void withdrawResults();
+    void withdrawTuning();
     void startMeasurement(bool thenSweep);
     // Measures the waiting captures whose reference is cached, and starts the trace of the
     // first one whose is not; then the sweep, when asked for.

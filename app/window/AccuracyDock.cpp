@@ -190,6 +190,8 @@ void AccuracyDock::updateOverlay()
 void AccuracyDock::showTuning()
 {
     const auto& t = m_controller->tuning();
+    m_tuningChart->setVisible(t.has_value());
+    m_applyTuningButton->setEnabled(t.has_value());
     if (!t)
         return;
     // The acne-against-leak trade-off: each point a bias no other beats on both.
@@ -209,6 +211,14 @@ void AccuracyDock::showTuning()
     for (QAbstractSeries* series : std::initializer_list<QAbstractSeries*>{curve, best, current})
         chart->addSeries(series);
     chart->createDefaultAxes();
+    // Shares start at zero: the default axes pad a flat curve into negative percentages.
+    double maxShadow = 100.0 * t->current.falseShadow, maxLight = 100.0 * t->current.falseLight;
+    for (const std::size_t i : t->front) {
+        maxShadow = std::max(maxShadow, 100.0 * t->candidates[i].falseShadow);
+        maxLight = std::max(maxLight, 100.0 * t->candidates[i].falseLight);
+    }
+    chart->axes(Qt::Horizontal).front()->setRange(0.0, std::max(maxShadow * 1.15, 0.001));
+    chart->axes(Qt::Vertical).front()->setRange(0.0, std::max(maxLight * 1.15, 0.001));
     chart->axes(Qt::Horizontal).front()->setTitleText(tr("false shadow % (acne)"));
     chart->axes(Qt::Vertical).front()->setTitleText(tr("false light % (leaks)"));
     chart->legend()->setAlignment(Qt::AlignBottom);

@@ -8,11 +8,13 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QStringList>
 #include <QStyle>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -206,6 +208,11 @@ void AccuracyMetricsPanel::put(Row& row, const std::array<std::optional<double>,
         return;
     }
     const double d = *values[1] - *values[0];
+    if (std::isnan(noise)) {
+        delta->setText(QStringLiteral("…"));    // too few samples to tell a difference from noise
+        delta->setStyleSheet(QString());
+        return;
+    }
     if (std::abs(d) <= noise || (row.kind == Kind::Share && std::abs(d) < 5e-7)) {
         delta->setText(tr("same"));
         delta->setStyleSheet(QString());
@@ -310,17 +317,38 @@ void AccuracyMetricsPanel::showFrameTimes(const std::vector<FrameTimeHistory::Su
             shadowNoise = std::max(shadowNoise, 0.5 * (x.shadow.p90 - x.shadow.p10));
         }
     }
-    // Timing noise: half the wider p10–p90 spread. Times are never stale, only more or less settled.
-    put(*m_frame, frame, {}, frameNoise);
-    put(*m_shadowPass, shadow, {}, shadowNoise);
+    // Timing noise: half the wider p10–p90 spread, once each side has frames enough for one
+    // (the windows restart when a side's settings change). Times are never stale, only more or
+    // less settled.
+    const auto settled = [&](auto count) {
+        for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {
+            if (count(sides[s]) > 0 && count(sides[s]) < kFramesToCompare)
+                return false;
+        }
+        return true;
+    };
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    put(*m_frame, frame, {}, settled([](const FrameTimeHistory::Summary& x) { return x.frame.count; }) ? frameNoise : unknown);
+    put(*m_shadowPass, shadow, {}, settled([](const FrameTimeHistory::Summary& x) { return x.shadow.count; }) ? shadowNoise : unknown);
     for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {
         if (frame[s] && !shadow[s])
             m_shadowPass->values[s]->setText(tr("cached"));
     }
     m_costInfo->setText(frames == 0 ? tr("No frames yet.")
-                                    : tr("Medians of the last %1 frames%2; \"same\" within half the p10–p90 spread.")
+                                    : tr("Medians of the last %1 frames since the settings changed%2; \"same\" within half the "
+                                         "p10–p90 spread, \"…\" until each side has %3 frames.")
                                           .arg(frames)
-                                          .arg(cpuTime ? tr(", CPU time (software renderer)") : QString()));
+                                          .arg(cpuTime ? tr(", CPU time (software renderer)") : QString())
+                                          .arg(kFramesToCompare));
+    // A pass median over fewer frames than the frame's: say so, or it reads larger than the frame.
+    QStringList partial;
+    for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {
+        const FrameTimeHistory::Summary& x = sides[s];
+        if (x.shadow.count > 0 && x.shadow.count < x.frame.count)
+            partial << (sides.size() > 1 ? tr("Side %1: ").arg(QLatin1Char(char('A' + s))) : QString()) + FrameTimeHistory::explanation(x);
+    }
+    if (!partial.isEmpty())
+        m_costInfo->setText(m_costInfo->text() + QLatin1Char(' ') + partial.join(QLatin1Char(' ')));
 }
 
 } // namespace shadowlab

@@ -34,6 +34,9 @@ public:
     void showFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime);
     bool overlayWanted() const;
 
+    // Frames each side needs before a difference in cost is told from noise (or called "same").
+    static constexpr int kFramesToCompare = 5;
+
 signals:
     void overlayToggled(bool on);
 

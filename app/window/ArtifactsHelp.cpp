@@ -1,11 +1,14 @@
 #include "ArtifactsHelp.h"
 
 #include "ArtifactPresets.h"
+#include "HeadlessRenderer.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
 #include <QDialogButtonBox>
 #include <QTextBrowser>
+#include <QTextDocument>
+#include <QUrl>
 #include <QVBoxLayout>
 
 namespace shadowlab {
@@ -69,7 +72,10 @@ ArtifactsHelp::ArtifactsHelp(QWidget* parent) : QDialog(parent)
 {
     setWindowTitle(tr("Shadow Artifacts — ShadowLab"));
     auto* browser = new QTextBrowser;
-    browser->setHtml(html());
+    const std::map<QString, QImage>& images = pictures();
+    for (const auto& [name, image] : images)
+        browser->document()->addResource(QTextDocument::ImageResource, QUrl(QStringLiteral("artifact:") + name), image);
+    browser->setHtml(html(!images.empty()));
     browser->setOpenExternalLinks(false);
     browser->setOpenLinks(false);
     // "preset:NAME" links show the artifact in the explorer.
@@ -85,7 +91,26 @@ ArtifactsHelp::ArtifactsHelp(QWidget* parent) : QDialog(parent)
     resize(720, 640);
 }
 
-QString ArtifactsHelp::html()
+const std::map<QString, QImage>& ArtifactsHelp::pictures()
+{
+    static const std::map<QString, QImage> rendered = [] {
+        std::map<QString, QImage> images;
+        try {
+            HeadlessRenderer headless;
+            for (const ArtifactPreset& preset : artifactPresets()) {
+                const QSize size(kPictureWidth, kPictureHeight);
+                images[preset.name] = headless.renderScene(artifactPresetSettings(preset), size);
+                images[preset.name + QStringLiteral("-fixed")] = headless.renderScene(artifactPresetFixed(preset), size);
+            }
+        } catch (const std::exception&) {
+            images.clear();     // the page reads without them
+        }
+        return images;
+    }();
+    return rendered;
+}
+
+QString ArtifactsHelp::html(bool withPictures)
 {
     QString table = QStringLiteral("<h3>Every setting</h3><table cellpadding='3'>"
                                    "<tr><th align='left'>Key</th><th align='left'>Range</th><th align='left'>What it trades</th></tr>");
@@ -100,9 +125,18 @@ QString ArtifactsHelp::html()
     filters += QStringLiteral("</ul>");
     QString presets = QStringLiteral("<h3>See each artifact in one click</h3><p>Each link sets the selected side to an artifact "
                                      "preset (also in the Properties dock, and <tt>--preset NAME</tt> on the command line):</p><ul>");
-    for (const ArtifactPreset& p : artifactPresets())
-        presets += QStringLiteral("<li><a href='preset:%1'><b>%2</b></a> (<tt>%1</tt>) — %3 <i>Fix:</i> %4</li>")
+    for (const ArtifactPreset& p : artifactPresets()) {
+        presets += QStringLiteral("<li><a href='preset:%1'><b>%2</b></a> (<tt>%1</tt>) — %3 <i>Fix:</i> %4")
                        .arg(p.name, p.title.toHtmlEscaped(), p.lookFor.toHtmlEscaped(), p.fix.toHtmlEscaped());
+        if (withPictures)
+            presets += QStringLiteral("<table cellpadding='2'><tr><td><img src='artifact:%1' width='%2' height='%3'></td>"
+                                      "<td><img src='artifact:%1-fixed' width='%2' height='%3'></td></tr>"
+                                      "<tr><td align='center'><small>the artifact</small></td><td align='center'><small>with the fix</small></td></tr></table>")
+                           .arg(p.name)
+                           .arg(kPictureWidth)
+                           .arg(kPictureHeight);
+        presets += QStringLiteral("</li>");
+    }
     presets += QStringLiteral("</ul>");
     QString text = QString::fromUtf8(kArtifacts).replace(QStringLiteral("%FILTERS%"), filters);
     // Right after the introduction, before the artifacts one by one.

@@ -1,6 +1,10 @@
 #pragma once
 
 #include <QDialog>
+#include <QImage>
+#include <QString>
+
+#include <map>
 
 namespace shadowlab {
 
@@ -13,7 +17,13 @@ class ArtifactsHelp : public QDialog {
 public:
     explicit ArtifactsHelp(QWidget* parent = nullptr);
 
-    static QString html();
+    // `withPictures`: each preset shows what it looks like and what its fix looks like, from
+    // artifact:NAME and artifact:NAME-fixed images (pictures()).
+    static QString html(bool withPictures = false);
+    // The presets rendered as the dialog shows them, NAME and NAME-fixed, drawn once per run on
+    // an offscreen renderer; empty where no GL context can be had.
+    static const std::map<QString, QImage>& pictures();
+    static constexpr int kPictureWidth = 320, kPictureHeight = 180;
 
 signals:
     // A preset link was clicked: show that artifact.

@@ -159,19 +159,26 @@ QRectF DepthMapView::visibleRect() const
     if (!renderer)
         return picture.visible(1.0, m_zoom, m_center);
     const DepthMapFacts facts = depthMapFacts(*renderer, m_span);
-    return m_home ? picture.homeVisible(facts) : picture.visible(facts.aspect, m_zoom, m_center);
+    return m_framing == Framing::Free ? picture.visible(facts.aspect, m_zoom, m_center) : picture.regionVisible(facts, framedRegion());
+}
+
+QRectF DepthMapView::framedRegion() const
+{
+    if (m_framing == Framing::Footprint && m_source && hasMap())
+        return DepthMapPicture::footprintRegion(depthMapFacts(*m_source->renderer(), m_span));
+    return DepthMapPicture::homeRegion();
 }
 
 void DepthMapView::leaveHome()
 {
-    if (!m_home)
+    if (m_framing == Framing::Free)
         return;
     if (m_source && hasMap()) {
         const DepthMapPicture picture(size());
         const DepthMapFacts facts = depthMapFacts(*m_source->renderer(), m_span);
-        std::tie(m_zoom, m_center) = picture.framing(facts.aspect, DepthMapPicture::homeRegion(facts));
+        std::tie(m_zoom, m_center) = picture.framing(facts.aspect, framedRegion());
     }
-    m_home = false;
+    m_framing = Framing::Free;
 }
 
 QPointF DepthMapView::mapPoint(QPointF p) const
@@ -186,7 +193,13 @@ std::optional<DepthSpan> DepthMapView::shownSpan() const
 
 void DepthMapView::resetZoom()
 {
-    m_home = true;
+    m_framing = Framing::Map;
+    update();
+}
+
+void DepthMapView::frameFootprint()
+{
+    m_framing = Framing::Footprint;
     update();
 }
 
@@ -321,6 +334,10 @@ void DepthMapView::keyPressEvent(QKeyEvent* event)
 {
     if (event->key() == Qt::Key_Home || event->key() == Qt::Key_0) {
         resetZoom();
+        return;
+    }
+    if (event->key() == Qt::Key_F) {
+        frameFootprint();
         return;
     }
     QOpenGLWidget::keyPressEvent(event);

@@ -23,7 +23,8 @@ class SceneView;
 // own DepthViewPass, and draws it as DepthMapPicture lays it out: a colour ramp stretched to
 // the depths the map holds, at the light volume's aspect, with the volume's and the camera's
 // outlines and a legend. The map is fitted to the pane; wheel zooms around the cursor, drag
-// pans, double-click or Home fits again. Hovering reports the texel under the cursor.
+// pans, double-click or Home fits again, F frames the camera's footprint with it. Hovering
+// reports the texel under the cursor.
 class DepthMapView : public QOpenGLWidget {
     Q_OBJECT
 
@@ -35,7 +36,10 @@ public:
     void setSource(SceneView* source);
     SceneView* source() const { return m_source; }
 
+    // Fits the whole map to the pane (Home, 0, double-click), the default.
     void resetZoom();
+    // Frames the map together with what the camera sees of the scene (F).
+    void frameFootprint();
     double zoom() const { return m_zoom; }
     // The part of the map shown, in map coordinates ([0, 1]^2 is the whole map, y up).
     QRectF visibleRect() const;
@@ -84,9 +88,12 @@ private:
     std::optional<DepthSpan> m_span;
     bool m_seenShadowsEnabled = false;
     int m_seenMomentView = 0;       // filter.mode * 8 + moments.view of the last frame shown
-    // Until the user zooms or pans, the pane frames the map with the camera's footprint
-    // (DepthMapPicture::homeVisible) as both change; then it stays where it was put.
-    bool m_home = true;
+    // Until the user zooms or pans, the pane keeps framing the map (or the map with the camera's
+    // footprint) as both change; then it stays where it was put.
+    enum class Framing { Map, Footprint, Free };
+    Framing m_framing = Framing::Map;
+    // The region the framing holds in view, for the current map and camera.
+    QRectF framedRegion() const;
     double m_zoom = 1.0;                 // 1: the whole map fits the pane
     QPointF m_center{0.5, 0.5};          // map coordinates at the pane's centre
     // Leaves the home framing for a fixed one at the same place, before a zoom or pan.

@@ -3,8 +3,10 @@
 #include "AccuracyDock.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
+#include "ElidedLabel.h"
 #include "FrameTimeHistory.h"
 #include "ImageFile.h"
+#include "LightMath.h"
 #include "OutputFile.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
@@ -34,11 +36,15 @@
 #include <QJsonDocument>
 #include <QKeyEvent>
 #include <QHBoxLayout>
+#include <QIcon>
 #include <QLabel>
 #include <QDockWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPainter>
+#include <QPixmap>
+#include <QPolygonF>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
@@ -62,6 +68,31 @@ namespace {
 constexpr int kAnimationIntervalMs = 33;
 constexpr int kMaxRecentScenes = 8;
 const char* const kSideNames[] = {"A", "B"};
+
+// The depth pane's framing buttons: the map's square filling the frame, or the small square
+// inside the camera's orange footprint.
+QIcon framingIcon(bool withFootprint)
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QColor light(225, 228, 235);
+    painter.setPen(QPen(light, 2.5));
+    if (withFootprint) {
+        painter.drawRect(QRectF(11, 11, 10, 10));
+        painter.setPen(QPen(QColor(255, 150, 40), 2.5));
+        painter.drawPolygon(QPolygonF{QPointF(4, 28), QPointF(28, 28), QPointF(22, 4), QPointF(10, 4)});
+    } else {
+        painter.drawRect(QRectF(7, 7, 18, 18));
+        for (const QPointF corner : {QPointF(2, 2), QPointF(30, 2), QPointF(30, 30), QPointF(2, 30)}) {
+            const QPointF in((corner.x() < 16 ? 1 : -1) * 6.0, (corner.y() < 16 ? 1 : -1) * 6.0);
+            painter.drawLine(corner, corner + QPointF(in.x(), 0));
+            painter.drawLine(corner, corner + QPointF(0, in.y()));
+        }
+    }
+    return QIcon(pixmap);
+}
 
 std::size_t index(MainWindow::Side side)
 {
@@ -109,6 +140,10 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         m_scenePanes[i] = new ViewPane(m_views[i]);
         const Side side = Side(i);
         connect(m_views[i], &SceneView::cameraEdited, this, &MainWindow::setCamera);
+        connect(m_views[i], &SceneView::lightTurned, this, [this, side](double azimuth, double elevation) {
+            selectSide(side);
+            turnLight(azimuth, elevation);
+        });
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] {
             recordFrame(side);
@@ -123,17 +158,23 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
                 return;
             updateStatus();
             if (const Renderer* renderer = m_views[index(side)]->renderer(); renderer && m_views[index(side)]->renderedSettings()) {
+                // The dock's sliders follow the size of the scene now drawn.
+                if (const Scene* scene = renderer->scene(); scene && scene->name != m_sizedScene) {
+                    m_sizedScene = scene->name;
+                    const Bounds models = scene->modelBounds();
+                    m_dock->setSceneSize(models.center(), glm::length(models.max - models.min) * 0.5);
+                }
                 const FittedLight& fit = renderer->lastFit();
                 m_dock->showFit(fit, m_views[index(side)]->renderedSettings()->light);
                 if (!fit.warnings.empty() && fit.warnings.front().message != m_lastFitWarning)
-                    statusBar()->showMessage(tr("Warning: %1").arg(fit.warnings.front().message), 10000);
+                    showStatusMessage(tr("Warning: %1").arg(fit.warnings.front().message), 10000);
                 m_lastFitWarning = fit.warnings.empty() ? QString() : fit.warnings.front().message;
             }
         });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {
             if (side == m_selected)
                 m_dock->showError(key, message);
-            statusBar()->showMessage(tr("%1: %2 — showing the last settings that worked").arg(QLatin1String(kSideNames[index(side)]), message), 8000);
+            showStatusMessage(tr("%1: %2 — showing the last settings that worked").arg(QLatin1String(kSideNames[index(side)]), message), 8000);
         });
     }
     m_depthView = new DepthMapView;
@@ -168,7 +209,7 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     connect(m_dock, &PropertiesDock::settingsEdited, this, &MainWindow::applyEdit);
     connect(m_dock, &PropertiesDock::warningsChanged, this, [this](const QString& text) {
         if (!text.isEmpty())
-            statusBar()->showMessage(tr("Warning: %1").arg(text), 10000);
+            showStatusMessage(tr("Warning: %1").arg(text), 10000);
     });
     connect(m_dock, &PropertiesDock::animationChanged, this, &MainWindow::setLightAnimation);
 
@@ -185,7 +226,7 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
         try {
             setSettings(m_selected, settings, tr("Apply measured configuration"));
         } catch (const SettingsError& e) {
-            statusBar()->showMessage(tr("Cannot apply that configuration: %1").arg(QString::fromUtf8(e.what())), 8000);
+            showStatusMessage(tr("Cannot apply that configuration: %1").arg(QString::fromUtf8(e.what())), 8000);
         }
     });
     connect(m_depthView, &DepthMapView::texelHovered, this,
@@ -204,7 +245,9 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
     createMenus();
     createStatusBar();
     resize(1200, 750);
-    m_mainSplitter->setSizes({520, 330});
+    // The dock as narrow as its fields read well: the views are what the window is for.
+    resizeDocks({m_dock}, {400}, Qt::Horizontal);
+    m_mainSplitter->setSizes({480, 320});
 
     if (m_persistence == Persistence::Restore) {
         const bool crashed = m_autosave->begin();
@@ -324,11 +367,20 @@ void MainWindow::createMenus()
         try {
             setCamera(presetSettings(m_settings[0].scene).camera);
         } catch (const SettingsError& e) {
-            statusBar()->showMessage(tr("Cannot reset the camera: %1").arg(QString::fromUtf8(e.what())), 8000);
+            showStatusMessage(tr("Cannot reset the camera: %1").arg(QString::fromUtf8(e.what())), 8000);
         }
     });
     resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
-    view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
+    QAction* fitMap = view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
+    fitMap->setObjectName(QStringLiteral("fitDepthMapAction"));
+    fitMap->setToolTip(tr("The whole shadow map in its pane (Home or double-click in the pane)"));
+    QAction* frameFootprint = view->addAction(tr("Frame Camera &Footprint"), m_depthView, &DepthMapView::frameFootprint);
+    frameFootprint->setObjectName(QStringLiteral("frameFootprintAction"));
+    frameFootprint->setToolTip(tr("The shadow map with all the camera sees of the scene around it (F in the pane)"));
+    fitMap->setIcon(framingIcon(false));
+    frameFootprint->setIcon(framingIcon(true));
+    m_depthPane->addCaptionButton(fitMap);
+    m_depthPane->addCaptionButton(frameFootprint);
     view->addAction(m_densityAction);
     view->addAction(m_measureAction);
     view->addSeparator();
@@ -371,7 +423,7 @@ void MainWindow::measureFrames(int count)
     }
     m_measureLeft = count;
     m_measureAction->setEnabled(false);
-    statusBar()->showMessage(tr("Measuring %1 frames…").arg(count));
+    showStatusMessage(tr("Measuring %1 frames…").arg(count), 0);
     m_views[index(m_selected)]->redrawForMeasurement();
     if (m_compare)
         m_views[1 - index(m_selected)]->redrawForMeasurement();
@@ -380,22 +432,32 @@ void MainWindow::measureFrames(int count)
 void MainWindow::recordFrame(Side side)
 {
     const Renderer* renderer = m_views[index(side)]->renderer();
-    if (!renderer)
+    if (!renderer || !m_views[index(side)]->renderedSettings())
         return;
+    // One window of frame times per settings state: a frame of other settings says nothing
+    // about these. The camera is the view's, and an animated light moves every frame.
+    Settings state = *m_views[index(side)]->renderedSettings();
+    state.camera = {};
+    if (m_animationTimer.isActive())
+        state.light.position = {};
+    if (m_historyState[index(side)] != state) {
+        m_history[index(side)].clear();
+        m_historyState[index(side)] = state;
+    }
     m_history[index(side)].add(renderer->lastFrame());
     showFrameTimes();
     if (m_measureLeft > 0) {
         // Each side redraws itself (shadow pass included) until the selected one has its frames.
         if (side == m_selected && --m_measureLeft == 0) {
             m_measureAction->setEnabled(true);
+            // Short in the status bar; every pass with its spread stays in the accuracy dock's cost table.
             const FrameTimeHistory::Summary s = m_history[index(side)].summary();
-            statusBar()->showMessage(tr("%1 frames: frame %2 ms median, p10–p90 %3–%4 ms; shadow pass %5 ms; lit pass %6 ms")
-                                         .arg(s.frame.count)
-                                         .arg(s.frame.median, 0, 'f', 2)
-                                         .arg(s.frame.p10, 0, 'f', 2)
-                                         .arg(s.frame.p90, 0, 'f', 2)
-                                         .arg(s.shadow.median, 0, 'f', 2)
-                                         .arg(s.lit.median, 0, 'f', 2));
+            showStatusMessage(tr("%1 frames: %2 ms a frame (p10–p90 %3–%4) — see Accuracy → Cost")
+                                  .arg(s.frame.count)
+                                  .arg(s.frame.median, 0, 'f', 1)
+                                  .arg(s.frame.p10, 0, 'f', 1)
+                                  .arg(s.frame.p90, 0, 'f', 1),
+                              0);
         } else if (side == m_selected || m_compare) {
             m_views[index(side)]->redrawForMeasurement();
         }
@@ -461,9 +523,13 @@ QString MainWindow::timingToolTip() const
                              "when the light, the casters and the map did not change), the lit pass and the whole frame, each between "
                              "glFinish calls; on a software renderer (llvmpipe) that is CPU time (\"CPU\"). View → Measure 100 "
                              "Frames times the pass on every frame.");
+    const auto side = [this](Side side) {
+        const std::optional<Settings>& shown = m_views[index(side)]->renderedSettings();
+        return FrameTimeHistory::explanation(m_history[index(side)].summary(), !shown || shown->shadow.enabled);
+    };
     if (!m_compare)
-        return about;
-    return tr("Side A: %1\nSide B: %2\n\n%3").arg(timingText(Side::A), timingText(Side::B), about);
+        return tr("%1\n\n%2").arg(side(Side::A), about);
+    return tr("Side A: %1 %2\nSide B: %3 %4\n\n%5").arg(timingText(Side::A), side(Side::A), timingText(Side::B), side(Side::B), about);
 }
 
 void MainWindow::createStatusBar()
@@ -508,9 +574,30 @@ void MainWindow::createStatusBar()
         if (m_persistence == Persistence::Restore)
             m_autosave->setOpening(QFileInfo(path).absoluteFilePath());
     });
+    // Messages on the left, over the room the permanent labels leave, ending in "…" with the
+    // whole in the tooltip where they do not fit (a QStatusBar message is cut mid-word).
+    m_messageLabel = new ElidedLabel;
+    m_messageLabel->setObjectName(QStringLiteral("statusMessage"));
+    statusBar()->addWidget(m_messageLabel, 1);
+    m_messageTimer.setSingleShot(true);
+    connect(&m_messageTimer, &QTimer::timeout, this, [this] { m_messageLabel->setFullText({}); });
     statusBar()->addPermanentWidget(m_texelLabel);
     statusBar()->addPermanentWidget(m_timingLabel);
     statusBar()->addPermanentWidget(m_mapLabel);
+}
+
+void MainWindow::showStatusMessage(const QString& text, int timeoutMs)
+{
+    m_messageLabel->setFullText(text);
+    if (timeoutMs > 0)
+        m_messageTimer.start(timeoutMs);
+    else
+        m_messageTimer.stop();
+}
+
+QString MainWindow::statusMessage() const
+{
+    return m_messageLabel->fullText();
 }
 
 QAction* MainWindow::action(const QString& objectName) const
@@ -520,7 +607,6 @@ QAction* MainWindow::action(const QString& objectName) const
 
 QString MainWindow::openScene(const QString& path)
 {
-    Settings candidate = m_settings[index(m_selected)];
     QStringList warnings;
     try {
         Settings probe;
@@ -528,12 +614,7 @@ QString MainWindow::openScene(const QString& path)
         const Settings loaded = presetSettings(probe.scene);   // imports (cached) or throws
         if (!isPresetName(loaded.scene))
             warnings = loadSceneFile(loaded.scene)->warnings;
-        candidate.scene = loaded.scene;
-        candidate.light = loaded.light;
-        candidate.camera = loaded.camera;
-        candidate.bias = loaded.bias;
-        candidate.reference = loaded.reference;
-        setSettings(m_selected, candidate, tr("Open %1").arg(QFileInfo(path).fileName()));
+        setSettings(m_selected, movedToScene(m_settings[index(m_selected)], loaded), tr("Open %1").arg(QFileInfo(path).fileName()));
     } catch (const SettingsError& e) {
         return QString::fromUtf8(e.what());
     }
@@ -544,7 +625,7 @@ QString MainWindow::openScene(const QString& path)
         m_recentScenes.removeLast();
     updateRecentMenu();
     if (!warnings.isEmpty())
-        statusBar()->showMessage(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
+        showStatusMessage(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
     return QString();
 }
 
@@ -594,13 +675,13 @@ void MainWindow::sceneOpenFinished(const QString& path, const QString& error, bo
         pushSettings();
         m_dock->setSettings(m_settings[index(m_selected)]);
         if (!error.isEmpty())
-            statusBar()->showMessage(tr("The last session's scene cannot be read: %1 — showing the default scene").arg(error), 15000);
+            showStatusMessage(tr("The last session's scene cannot be read: %1 — showing the default scene").arg(error), 15000);
         if (!m_restoreQueue.isEmpty())
             m_opener->open(m_restoreQueue.first());
         return;
     }
     if (cancelled) {
-        statusBar()->showMessage(tr("Cancelled: %1 not opened").arg(name), 8000);
+        showStatusMessage(tr("Cancelled: %1 not opened").arg(name), 8000);
         return;
     }
     const QString failure = error.isEmpty() ? openScene(path) : error;
@@ -671,25 +752,45 @@ QStringList changedKeys(const Settings& a, const Settings& b)
 void MainWindow::setSettings(Side side, const Settings& settings, const QString& undoText)
 {
     ensureValid(settings);
-    SettingsChange::Sides before;
-    before[index(side)] = m_settings[index(side)];
-    m_settings[index(side)] = settings;
-    m_settings[1 - index(side)].camera = settings.camera;
+    const SettingsChange::Sides before = setSide(side, settings);
     pushSettings();
     m_dock->setSettings(m_settings[index(m_selected)]);
     recordChange(before, side, undoText);
 }
 
+SettingsChange::Sides MainWindow::setSide(Side side, const Settings& settings)
+{
+    const std::size_t i = index(side), other = 1 - i;
+    SettingsChange::Sides before;
+    before[i] = m_settings[i];
+    // One scene for both sides: the other follows onto a new one with its techniques kept,
+    // in the same undo step; where they do not fit the scene's light it takes this side's.
+    if (settings.scene != m_settings[i].scene && m_settings[other].scene != settings.scene) {
+        before[other] = m_settings[other];
+        try {
+            // The light and camera as this side has them; world-unit lengths from the scene's
+            // defaults where this side measures its bias in another unit.
+            Settings scene = settings;
+            if (scene.bias.space != BiasSpace::World)
+                scene.bias = presetSettings(settings.scene).bias;
+            m_settings[other] = movedToScene(m_settings[other], scene);
+            ensureValid(m_settings[other]);
+        } catch (const SettingsError&) {
+            m_settings[other] = settings;
+        }
+    }
+    m_settings[i] = settings;
+    m_settings[other].camera = settings.camera;
+    return before;
+}
+
 void MainWindow::applyEdit(const Settings& settings)
 {
-    SettingsChange::Sides before;
-    before[index(m_selected)] = m_settings[index(m_selected)];
-    m_settings[index(m_selected)] = settings;
-    m_settings[1 - index(m_selected)].camera = settings.camera;
+    const SettingsChange::Sides before = setSide(m_selected, settings);
     pushSettings();
     // Name the dock's two whole-side edits in the Edit menu; one key names itself ("Set bias.slope").
     QString text;
-    const bool wholeSide = changedKeys(*before[index(m_selected)], settings).size() > 1;
+    const bool wholeSide = changedKeys(*before[index(m_selected)], settings).size() > 1 || before[1 - index(m_selected)];
     if (wholeSide && settings.scene != before[index(m_selected)]->scene) {
         text = tr("Choose scene %1").arg(QFileInfo(settings.scene).fileName());
     } else if (wholeSide) {
@@ -785,6 +886,26 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event)
         || (event->type() == QEvent::KeyPress && !static_cast<QKeyEvent*>(event)->isAutoRepeat()))
         ++m_gesture;
     return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::turnLight(double azimuthDegrees, double elevationDegrees)
+{
+    // As the dock's direction fields edit it: one drag is one undo step ("Set light.position").
+    Settings turned = m_settings[index(m_selected)];
+    LightAngles angles = lightAngles(turned.light.position, turned.light.target, m_lightAzimuth);
+    angles.azimuth = std::remainder(angles.azimuth + azimuthDegrees, 360.0);
+    // Short of the pole, so the next drag still knows which way round it is.
+    angles.elevation = std::clamp(angles.elevation + elevationDegrees, -89.5, 89.5);
+    m_lightAzimuth = angles.azimuth;
+    turned.light.position = lightPosition(turned.light.target, angles);
+    try {
+        ensureValid(turned);
+    } catch (const SettingsError& e) {
+        showStatusMessage(tr("Cannot turn the light there: %1").arg(QString::fromUtf8(e.what())), 8000);
+        return;
+    }
+    applyEdit(turned);
+    m_dock->updateFrom(turned, {QStringLiteral("light.position")});
 }
 
 void MainWindow::setCamera(const CameraSettings& camera)
@@ -959,7 +1080,7 @@ QString MainWindow::saveScreenshot(ScreenshotDialog::Target target, const QStrin
     } catch (const OutputError& e) {
         return QString::fromStdString(e.what());
     }
-    statusBar()->showMessage(tr("Saved %1 (%2×%3)").arg(QDir::toNativeSeparators(path)).arg(image.width()).arg(image.height()), 8000);
+    showStatusMessage(tr("Saved %1 (%2×%3)").arg(QDir::toNativeSeparators(path)).arg(image.width()).arg(image.height()), 8000);
     return QString();
 }
 
@@ -1006,7 +1127,7 @@ QString MainWindow::importSettings(const QString& path)
     } catch (const SettingsError& e) {
         return QString::fromStdString(e.what());
     }
-    statusBar()->showMessage(tr("Imported %1").arg(QDir::toNativeSeparators(path)), 8000);
+    showStatusMessage(tr("Imported %1").arg(QDir::toNativeSeparators(path)), 8000);
     return QString();
 }
 
@@ -1021,7 +1142,7 @@ void MainWindow::exportSettingsInteractively()
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Export Settings"), error);
     else
-        statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 8000);
+        showStatusMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 8000);
 }
 
 void MainWindow::importSettingsInteractively()

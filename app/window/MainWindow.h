@@ -27,6 +27,7 @@ namespace shadowlab {
 
 class AccuracyDock;
 class DepthMapView;
+class ElidedLabel;
 class PropertiesDock;
 class SceneOpener;
 class SessionAutosave;
@@ -92,6 +93,8 @@ public:
     PropertiesDock* propertiesDock() const { return m_dock; }
     AccuracyDock* accuracyDock() const { return m_accuracyDock; }
     QAction* action(const QString& objectName) const;
+    // The status bar's message, whole (on screen it may end in "…"); empty when there is none.
+    QString statusMessage() const;
     // The undo history of each side: every settings change (dock edits, a sweep point or tuned
     // bias applied, reset, copy and swap, a scene or settings file opened) is a step; the camera
     // is the view's, not a setting one undoes. Edit > Undo works on the selected side's.
@@ -133,6 +136,12 @@ private:
     // Makes the change from `before` (the sides it holds) to the present settings a step of
     // `side`'s undo history.
     void recordChange(const SettingsChange::Sides& before, Side side, QString text = {}, bool mayMerge = false);
+    // Turns the selected side's light around its target (a Ctrl+drag in a scene view).
+    void turnLight(double azimuthDegrees, double elevationDegrees);
+    // In the status bar for `timeoutMs` (0: until the next message).
+    void showStatusMessage(const QString& text, int timeoutMs);
+    // Sets one side (the other follows onto its scene), returning what both were for the undo step.
+    SettingsChange::Sides setSide(Side side, const Settings& settings);
     void showUndoState(const SettingsChange::Sides& target, const SettingsChange::Sides& from);
     void setCamera(const CameraSettings& camera);
     void pushSettings();
@@ -181,6 +190,8 @@ private:
     QLabel* m_mapLabel = nullptr;
 
     QTimer m_animationTimer;
+    ElidedLabel* m_messageLabel = nullptr;
+    QTimer m_messageTimer;              // clears a message after its time
     QElapsedTimer m_animationClock;
     double m_animationSpeed = 30.0;     // degrees per second
 
@@ -201,6 +212,9 @@ private:
 
     static constexpr int kMeasuredFrames = 100;
     std::array<FrameTimeHistory, 2> m_history;  // rolling wall times per side, for the status bar
+    std::array<std::optional<Settings>, 2> m_historyState;
+    QString m_sizedScene;
+    double m_lightAzimuth = 0.0;    // kept while a drag passes over the light's pole       // the scene the dock's slider spans were last fitted to  // what those frames rendered (no camera)
     int m_measureLeft = 0;      // frames still to draw for Measure 100 Frames
     QAction* m_densityAction = nullptr;
     QAction* m_measureAction = nullptr;

@@ -4,6 +4,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "ArtifactPresets.h"
+#include "LightMath.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -12,12 +13,15 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QVBoxLayout>
@@ -144,6 +148,28 @@ const SettingKey& keyInfo(const QString& key)
     return *info;
 }
 
+const ShadowTechnique* techniqueNamed(const QString& key)
+{
+    const std::vector<ShadowTechnique>& all = shadowTechniques();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const ShadowTechnique& t) { return t.key == key; });
+    return it == all.end() ? nullptr : &*it;
+}
+
+// One filter's tooltip: its name, and a sentence or two of what it does and what it costs.
+QString choiceTooltip(const ShadowTechnique& technique)
+{
+    return QStringLiteral("<p><b>%1</b> (filter.mode=%2)</p><p>%3</p>").arg(technique.label.toHtmlEscaped(), technique.key, technique.help.toHtmlEscaped());
+}
+
+// Under the chosen filter's tooltip: where the others are explained, not all twelve at once.
+QString filterTooltipTail(const SettingKey& info)
+{
+    return QStringLiteral("<p><i>%1</i></p><p>Allowed: %2</p>")
+        .arg(QCoreApplication::translate("PropertiesDock", "Open the list and hover a filter for what it does and costs; Help → Shadow "
+                                                           "Artifacts compares them."),
+             info.range.toHtmlEscaped());
+}
+
 QString tooltipFor(const SettingKey& info)
 {
     return QStringLiteral("<p><b>%1</b> — %2</p><p>Allowed: %3</p>").arg(info.key, info.help.toHtmlEscaped(), info.range.toHtmlEscaped());
@@ -183,6 +209,8 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
         groups[QString::fromUtf8(title)] = addGroup(tr(title));
     for (const SettingKey& info : settingKeys()) {
         QGridLayout* grid = groups.at(groupOf(info.key));
+        if (info.key == u"light.position")
+            addDirection(grid);
         if (info.type == u"vec3")
             addVector(grid, info.key);
         else if (info.type == u"choice")
@@ -288,10 +316,16 @@ void PropertiesDock::applyPresetFix()
         markError(e.key(), QString::fromStdString(e.what()));
         return;
     }
+    // Disabled with the focus on it, the button would pass the focus on down the dock, and
+    // the scroll area would follow it away from the explanation and the fields just changed.
+    auto* scroll = static_cast<QScrollArea*>(widget());
+    const int scrolled = scroll->verticalScrollBar()->value();
+    m_fixButton->clearFocus();
     m_fixButton->setEnabled(false);
     m_fixButton->setText(tr("Fix Applied"));
     setSettings(candidate);
     accept(candidate, QString());
+    scroll->verticalScrollBar()->setValue(scrolled);
 }
 
 QGridLayout* PropertiesDock::addGroup(const QString& title)
@@ -391,32 +425,90 @@ void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
     addRow(grid, look.label, QString(), editor, std::move(field));
 }
 
+void PropertiesDock::addDirection(QGridLayout* grid)
+{
+    // A directional light is a direction: azimuth and elevation around its target, and the
+    // distance its manual volume's near and far count from. All three edit light.position.
+    auto* azimuth = new SliderSpinBox(-180.0, 180.0, 1);
+    auto* elevation = new SliderSpinBox(-90.0, 90.0, 1);
+    auto* distance = new SliderSpinBox(1e-6, 1e7, 2);
+    azimuth->setObjectName(QStringLiteral("light.azimuth"));
+    elevation->setObjectName(QStringLiteral("light.elevation"));
+    distance->setObjectName(QStringLiteral("light.distance"));
+    azimuth->setSuffix(QStringLiteral("°"));
+    elevation->setSuffix(QStringLiteral("°"));
+    distance->setSuffix(QStringLiteral(" wu"));
+    elevation->setSliderSpan(0.0, 90.0);
+    distance->setSliderSpan(0.5, 20.0, SliderSpinBox::Scale::Logarithmic);
+    azimuth->setToolTip(tr("<p><b>Azimuth</b> — the light's direction around the vertical through its target, in degrees: 0 from +z, "
+                           "90 from +x. Sets light.position. Ctrl+drag in the scene view turns the light.</p>"));
+    elevation->setToolTip(tr("<p><b>Elevation</b> — how high the light stands above the horizon, in degrees: 90 straight above. "
+                             "Sets light.position. Ctrl+drag in the scene view turns the light.</p>"));
+    distance->setToolTip(tr("<p><b>Distance</b> from light.target to light.position, in world units: where a manual volume's near and "
+                            "far count from; the direction alone decides the shadows.</p>"));
+    const auto apply = [this, azimuth, elevation, distance] {
+        const LightAngles angles{azimuth->value(), elevation->value(), distance->value()};
+        const glm::dvec3 p = lightPosition(m_pending.light.target, angles);
+        m_lastAzimuth = angles.azimuth;
+        edit(QStringLiteral("light.position"), QStringLiteral("%1,%2,%3").arg(p.x, 0, 'g', 12).arg(p.y, 0, 'g', 12).arg(p.z, 0, 'g', 12));
+    };
+    for (SliderSpinBox* box : {azimuth, elevation, distance})
+        connect(box, &SliderSpinBox::valueEdited, this, apply);
+    const auto load = [this, azimuth, elevation, distance](const Settings& s) {
+        const LightAngles angles = lightAngles(s.light.position, s.light.target, m_lastAzimuth);
+        m_lastAzimuth = angles.azimuth;
+        azimuth->setValue(angles.azimuth);
+        elevation->setValue(angles.elevation);
+        distance->setValue(angles.distance);
+    };
+    const std::pair<QString, SliderSpinBox*> rows[] = {{tr("Azimuth"), azimuth}, {tr("Elevation"), elevation}, {tr("Distance"), distance}};
+    for (const auto& [label, box] : rows) {
+        // Each its own row (hidden together for spot and point lights); the first one loads all three.
+        const QString key = QStringLiteral("light.direction.") + box->objectName().section(QLatin1Char('.'), 1);
+        addRow(grid, label, QString(), box, Field{key, nullptr, {box}, box == azimuth ? std::function<void(const Settings&)>(load) : [](const Settings&) {}});
+    }
+}
+
 void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
 {
     const SettingKey& info = keyInfo(key);
     auto* combo = new QComboBox;
     combo->setObjectName(key);
-    combo->addItems(info.choices);
-    if (key == u"filter.mode") {
-        for (const ShadowTechnique& t : shadowTechniques())
-            combo->setItemData(int(t.mode), t.help, Qt::ToolTipRole);
+    // Each choice's value is its key; filters read as people name them, the key beside it, and
+    // each says in its own tooltip what it does and costs.
+    for (const QString& choice : info.choices) {
+        const ShadowTechnique* technique = key == u"filter.mode" ? techniqueNamed(choice) : nullptr;
+        combo->addItem(technique ? QStringLiteral("%1 — %2").arg(technique->label, choice) : choice, choice);
+        if (technique)
+            combo->setItemData(combo->count() - 1, choiceTooltip(*technique), Qt::ToolTipRole);
     }
-    combo->setToolTip(tooltipFor(info));
-    connect(combo, &QComboBox::currentTextChanged, this, [this, key](const QString& text) {
+    const auto showTooltip = [combo, info = &info] {
+        if (const ShadowTechnique* technique = info->key == u"filter.mode" ? techniqueNamed(combo->currentData().toString()) : nullptr)
+            combo->setToolTip(choiceTooltip(*technique) + filterTooltipTail(*info));
+        else
+            combo->setToolTip(tooltipFor(*info));
+    };
+    showTooltip();
+    connect(combo, &QComboBox::currentIndexChanged, this, [this, combo, key, showTooltip] {
+        showTooltip();
         if (m_loading)
             return;
+        const QString value = combo->currentData().toString();
         if (key == u"scene")
-            editScene(text);
+            editScene(value);
         else
-            edit(key, text);
+            edit(key, value);
     });
-    Field field{key, nullptr, {combo}, [combo, key](const Settings& s) {
+    Field field{key, nullptr, {combo}, [combo, key, showTooltip](const Settings& s) {
                     const QSignalBlocker block(combo);
                     const QString value = settingValue(s, key);
                     // A loaded model or scene file joins the presets, so it can be chosen again.
-                    if (key == u"scene" && combo->findText(value) < 0)
-                        combo->addItem(value);
-                    combo->setCurrentText(value);
+                    if (combo->findData(value) < 0)
+                        combo->addItem(key == u"scene" ? QFileInfo(value).fileName() : value, value);
+                    combo->setCurrentIndex(combo->findData(value));
+                    if (key == u"scene")
+                        combo->setItemData(combo->currentIndex(), value, Qt::ToolTipRole);
+                    showTooltip();
                 }};
     addRow(grid, presentation(key).label, QString(), combo, std::move(field));
 }
@@ -484,12 +576,9 @@ void PropertiesDock::edit(const QString& key, const QString& value)
 void PropertiesDock::editScene(const QString& name)
 {
     // As the key's help says: a preset brings its own light and camera.
-    Settings candidate = m_pending;
+    Settings candidate;
     try {
-        const Settings preset = presetSettings(name);
-        candidate.scene = preset.scene;
-        candidate.light = preset.light;
-        candidate.camera = preset.camera;
+        candidate = movedToScene(m_pending, presetSettings(name));
     } catch (const SettingsError& e) {
         markError(QStringLiteral("scene"), QString::fromStdString(e.what()));
         return;
@@ -703,12 +792,51 @@ void PropertiesDock::updateDependentRows()
     for (QWidget* w : m_rows.value(QStringLiteral("light.falloff")))
         w->setVisible(m_pending.light.type == LightType::Spot);
     const bool directional = m_pending.light.type == LightType::Directional;
+    // A direction for a directional light, a place for the others.
+    for (QWidget* w : m_rows.value(QStringLiteral("light.position")))
+        w->setVisible(!directional);
+    for (const QString key : {"light.direction.azimuth", "light.direction.elevation", "light.direction.distance"}) {
+        for (QWidget* w : m_rows.value(key))
+            w->setVisible(directional);
+    }
     for (QWidget* w : m_rows.value(QStringLiteral("shadow.cascades")))
         w->setEnabled(directional);
     for (const QString key : {"shadow.split", "shadow.split_lambda", "shadow.distance", "shadow.blend"}) {
         for (QWidget* w : m_rows.value(key))
             w->setEnabled(directional && m_pending.shadow.cascades > 1);
     }
+}
+
+void PropertiesDock::setSceneSize(const glm::dvec3& centre, double radius)
+{
+    // The presentation's spans are the seed's; other scenes scale them by their size.
+    static const double seedRadius = [] {
+        const Bounds b = buildScene(QStringLiteral("seed")).modelBounds();
+        return glm::length(b.max - b.min) * 0.5;
+    }();
+    if (!(radius > 0.0) || !std::isfinite(radius))
+        return;
+    const double scale = radius / seedRadius;
+    for (const SettingKey& info : settingKeys()) {
+        const Look look = presentation(info.key);
+        if (look.unit != u" wu")
+            continue;
+        if (info.type == u"vec3") {
+            for (int i = 0; i < 3; ++i) {
+                auto* box = findChild<SliderSpinBox*>(info.key + QLatin1Char('.') + QLatin1Char("xyz"[i]));
+                if (!box)
+                    continue;
+                // Positions round the scene's centre; a light's or camera's target within it.
+                box->setSliderSpan(centre[i] + look.sliderLow * scale, centre[i] + look.sliderHigh * scale);
+                box->setSingleStep(std::max(1e-6, 0.1 * scale));
+            }
+        } else if (auto* box = findChild<SliderSpinBox*>(info.key)) {
+            box->setSliderSpan(look.sliderLow * scale, look.sliderHigh * scale, look.scale);
+            box->setSingleStep(std::max(1e-6, (look.sliderHigh - look.sliderLow) * scale / 200.0));
+        }
+    }
+    if (auto* distance = findChild<SliderSpinBox*>(QStringLiteral("light.distance")))
+        distance->setSliderSpan(0.5 * scale, 20.0 * scale, SliderSpinBox::Scale::Logarithmic);
 }
 
 void PropertiesDock::setAnimation(bool animate, double degreesPerSecond)
@@ -730,6 +858,8 @@ void PropertiesDock::updateFrom(const Settings& applied, const QStringList& keys
         applySetting(m_pending, key, settingValue(applied, key));
         if (const auto it = m_fields.find(key); it != m_fields.end())
             it->load(m_pending);
+        if (key.startsWith(u"light.position") || key.startsWith(u"light.target"))
+            m_fields[QStringLiteral("light.direction.azimuth")].load(m_pending);
     }
     m_loading = false;
 }

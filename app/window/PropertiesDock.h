@@ -2,6 +2,8 @@
 
 #include "LightFitting.h"
 
+#include <glm/vec3.hpp>
+
 #include <optional>
 
 #include "Settings.h"
@@ -53,6 +55,11 @@ public:
     // The fit warning shown at `key`, empty when there is none.
     QString warningText(const QString& key) const;
 
+    // The size of what casts shadows in the scene: sliders of world positions and lengths span
+    // what fits it (a city's light sits hundreds of units out, a small model's a few), centred
+    // on it; the spin boxes still take any allowed value.
+    void setSceneSize(const glm::dvec3& centre, double radius);
+
     // Shows the light animation state without emitting animationChanged().
     void setAnimation(bool animate, double degreesPerSecond);
     // Takes `keys` (and the camera) from `applied` into the fields without touching the others,
@@ -86,6 +93,7 @@ private:
     void addPresetButtons();
     void addNumber(QGridLayout* grid, const QString& key);
     void addVector(QGridLayout* grid, const QString& key);
+    void addDirection(QGridLayout* grid);
     void addChoice(QGridLayout* grid, const QString& key);
     void addBool(QGridLayout* grid, const QString& key, const QString& text);
     void addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field);
@@ -111,6 +119,7 @@ private:
     QLabel* m_presetNote = nullptr;
     QPushButton* m_fixButton = nullptr;
     QString m_lastPreset;
+    double m_lastAzimuth = 0.0;     // kept while the light stands straight above its target
 };
 
 } // namespace shadowlab

@@ -17,11 +17,58 @@
 #include <QPainter>
 #include <QWheelEvent>
 
+#include <algorithm>
+#include <cmath>
+
 namespace shadowlab {
 
 namespace {
 
 constexpr double kDegreesPerPixel = 0.4;
+
+// lit.frag's densityRamp (shaders/ramp.glsl), for the legend: screen pixels per shadow texel on
+// a log scale, blue under 1, green 1 to 2, yellow about 4, red from 8 up.
+QColor densityColour(double pixelsPerTexel)
+{
+    const double k = std::clamp(std::log2(std::max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);
+    const auto mix = [](const double* a, const double* b, double t) {
+        t = std::clamp(t, 0.0, 1.0);
+        return QColor::fromRgbF(float(a[0] + (b[0] - a[0]) * t), float(a[1] + (b[1] - a[1]) * t), float(a[2] + (b[2] - a[2]) * t));
+    };
+    static const double blue[] = {0.15, 0.35, 0.95}, green[] = {0.1, 0.8, 0.25}, yellow[] = {0.95, 0.85, 0.1}, red[] = {0.95, 0.15, 0.1};
+    if (k < 0.0)
+        return mix(green, blue, -k * 3.0);
+    return k < 0.5 ? mix(green, yellow, k < 0.1 ? 0.0 : (k - 0.1) / 0.4) : mix(yellow, red, (k - 0.5) * 2.0);
+}
+
+// What the texel-density tint means, in the view's bottom-left corner.
+void paintDensityLegend(QPainter& painter, const QSize& view)
+{
+    QFont font = painter.font();
+    font.setPixelSize(11);
+    painter.setFont(font);
+    const QFontMetrics metrics(font);
+    const QString title = QStringLiteral("screen pixels per shadow texel (red: blocky)");
+    const int barWidth = std::max(metrics.horizontalAdvance(title), 180);
+    const QRect box(8, view.height() - 8 - (metrics.height() * 2 + 22), barWidth + 16, metrics.height() * 2 + 22);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(20, 22, 28, 200));
+    painter.drawRoundedRect(box, 4, 4);
+    painter.setPen(QColor(230, 232, 238));
+    painter.drawText(QPoint(box.left() + 8, box.top() + 4 + metrics.ascent()), title);
+    const QRect bar(box.left() + 8, box.top() + 6 + metrics.height(), barWidth, 10);
+    for (int x = 0; x < bar.width(); ++x) {
+        const double pixels = std::exp2(-3.0 + 6.0 * (x + 0.5) / bar.width());     // 1/8 ... 8
+        painter.fillRect(QRect(bar.left() + x, bar.top(), 1, bar.height()), densityColour(pixels));
+    }
+    const std::pair<double, const char*> ticks[] = {{0.125, "⅛"}, {1.0, "1"}, {2.0, "2"}, {4.0, "4"}, {8.0, "8+"}};
+    for (const auto& [pixels, text] : ticks) {
+        const int x = bar.left() + int(std::lround((std::log2(pixels) + 3.0) / 6.0 * bar.width()));
+        const QString label = QString::fromUtf8(text);
+        const int w = metrics.horizontalAdvance(label);
+        painter.drawText(QPoint(std::clamp(x - w / 2, bar.left(), bar.right() - w), bar.bottom() + 2 + metrics.ascent()), label);
+    }
+}
 
 } // namespace
 
@@ -125,6 +172,12 @@ void SceneView::paintGL()
             }
         }
     }
+    if (m_rendered && m_rendered->shading.texelDensity) {
+        QOpenGLPaintDevice device(size() * devicePixelRatio());
+        device.setDevicePixelRatio(devicePixelRatio());
+        QPainter painter(&device);
+        paintDensityLegend(painter, size());
+    }
     if (!m_errorOverlay.isNull()) {
         // On a paint device of the view's framebuffer, not the widget: a widget painter is
         // redirected while the window is grabbed (screenshots), and the GL image covers it.
@@ -158,6 +211,12 @@ void SceneView::mouseMoveEvent(QMouseEvent* event)
     m_lastMouse = position;
     if (delta.isNull())
         return;
+    // Ctrl+drag turns the light around its target as a left drag orbits the camera: right is
+    // further round, up is higher.
+    if ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ControlModifier)) {
+        emit lightTurned(delta.x() * kDegreesPerPixel, -delta.y() * kDegreesPerPixel);
+        return;
+    }
     OrbitCamera camera(m_settings.camera, groundHeight());
     if (event->buttons() & Qt::LeftButton)
         camera.orbit(delta.x() * kDegreesPerPixel, delta.y() * kDegreesPerPixel);

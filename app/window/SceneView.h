@@ -54,6 +54,8 @@ signals:
     void frameRendered();
     void renderFailed(const QString& key, const QString& message);
     void cameraEdited(const shadowlab::CameraSettings& camera);
+    // Ctrl+drag: turn the light by these degrees of azimuth and elevation around its target.
+    void lightTurned(double azimuthDegrees, double elevationDegrees);
     void activated();   // pressed: the window selects this view's side
 
 protected:

@@ -19,13 +19,13 @@ QString settingsSummary(const Settings& settings)
         return QStringLiteral("%1 · shadows off").arg(toString(settings.shading.model));
     QString text = QStringLiteral("%1 · slope %2 · min %3 · %4 %5")
                        .arg(filterLabel(settings.filter))
-                       .arg(settings.bias.slope)
-                       .arg(settings.bias.min)
+                       .arg(settings.bias.slope, 0, 'g', 3)     // a caption, not the value: the dock has it whole
+                       .arg(settings.bias.min, 0, 'g', 3)
                        .arg(squareSize(settings.map.size), toString(settings.light.projection));
     if (settings.bias.cullFront)
         text += QStringLiteral(" · front faces culled");
     if (settings.bias.polygonFactor != 0.0 || settings.bias.polygonUnits != 0.0)
-        text += QStringLiteral(" · offset %1, %2").arg(settings.bias.polygonFactor).arg(settings.bias.polygonUnits);
+        text += QStringLiteral(" · offset %1, %2").arg(settings.bias.polygonFactor, 0, 'g', 3).arg(settings.bias.polygonUnits, 0, 'g', 4);
     return text;
 }
 

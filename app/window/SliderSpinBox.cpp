@@ -12,12 +12,69 @@
 
 namespace shadowlab {
 
+namespace {
+
+// Holds a value exactly (a spin box rounds what it is given to its decimals, so 0.00001 would
+// become 0.00) and shows it with the field's decimals, or with two significant digits where
+// those would read as zero.
+class PreciseSpinBox : public QDoubleSpinBox {
+public:
+    PreciseSpinBox(int shownDecimals, QWidget* parent) : QDoubleSpinBox(parent), m_shown(shownDecimals)
+    {
+        setDecimals(m_shown == 0 ? 0 : kStoredDecimals);
+    }
+
+    QString textFromValue(double value) const override { return SliderSpinBox::formatValue(value, m_shown, locale()); }
+
+    double valueFromText(const QString& text) const override
+    {
+        QString number = text;
+        number.remove(suffix()).remove(prefix());
+        bool ok = false;
+        const double v = locale().toDouble(number.trimmed(), &ok);
+        return ok ? v : value();
+    }
+
+    QValidator::State validate(QString& text, int& pos) const override
+    {
+        const QValidator::State state = QDoubleSpinBox::validate(text, pos);
+        if (state != QValidator::Invalid || m_shown == 0)
+            return state;
+        // Typed in the form shown (1e-05): acceptable when it reads as a number in range.
+        QString number = text;
+        number.remove(suffix()).remove(prefix());
+        bool ok = false;
+        const double v = locale().toDouble(number.trimmed(), &ok);
+        return ok && v >= minimum() && v <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+    }
+
+private:
+    static constexpr int kStoredDecimals = 12;
+    int m_shown;
+};
+
+} // namespace
+
+QString SliderSpinBox::formatValue(double value, int decimals, const QLocale& locale)
+{
+    if (decimals == 0 || value == 0.0)
+        return locale.toString(value, 'f', decimals);
+    const double magnitude = std::abs(value);
+    // One significant digit or none at the field's decimals (0.00 for 0.00001): show two.
+    if (magnitude < 10.0 * std::pow(10.0, -decimals)) {
+        const int needed = int(std::ceil(-std::log10(magnitude))) + 1;
+        if (needed > 6)
+            return locale.toString(value, 'g', 2);
+        return locale.toString(value, 'f', std::max(decimals, needed));
+    }
+    return locale.toString(value, 'f', decimals);
+}
+
 SliderSpinBox::SliderSpinBox(double minimum, double maximum, int decimals, QWidget* parent)
-    : QWidget(parent), m_slider(new QSlider(Qt::Horizontal, this)), m_spinBox(new QDoubleSpinBox(this)),
-      m_spanLow(minimum), m_spanHigh(maximum), m_integer(decimals == 0)
+    : QWidget(parent), m_slider(new QSlider(Qt::Horizontal, this)), m_spinBox(new PreciseSpinBox(decimals, this)),
+      m_spanLow(minimum), m_spanHigh(maximum), m_integer(decimals == 0), m_decimals(decimals)
 {
     m_spinBox->setRange(minimum, maximum);
-    m_spinBox->setDecimals(decimals);
     m_spinBox->setKeyboardTracking(false);   // apply a typed number on Enter, not per keystroke
     m_spinBox->setAccelerated(true);
     m_spinBox->setFixedWidth(112);
@@ -114,8 +171,11 @@ double SliderSpinBox::sliderValue(int position) const
                                              : m_spanLow + t * (m_spanHigh - m_spanLow);
     if (m_integer && m_scale == Scale::Logarithmic)
         v = std::exp2(std::round(std::log2(v)));   // sizes that double snap to powers of two
-    // Round to what the spin box shows, so the value emitted is the value displayed.
-    const double unit = std::pow(10.0, m_spinBox->decimals());
+    // Round to the field's decimals (finer where the span is small), so a drag emits values
+    // as they are shown.
+    const double span = std::abs(m_spanHigh - m_spanLow);
+    const int decimals = std::max(m_decimals, span > 0.0 ? int(std::ceil(-std::log10(span))) + 3 : m_decimals);
+    const double unit = std::pow(10.0, std::min(decimals, 12));
     return std::round(v * unit) / unit;
 }
 

@@ -3,6 +3,7 @@
 #include <QWidget>
 
 class QDoubleSpinBox;
+class QLocale;
 class QSlider;
 
 namespace shadowlab {
@@ -30,6 +31,10 @@ public:
     void setInvalid(bool invalid);
     bool isInvalid() const { return m_invalid; }
 
+    // `value` as a field with `decimals` shows it: at least two significant digits, so a
+    // small value never reads as 0.00.
+    static QString formatValue(double value, int decimals, const QLocale& locale);
+
     QSlider* slider() const { return m_slider; }
     QDoubleSpinBox* spinBox() const { return m_spinBox; }
 
@@ -48,6 +53,7 @@ private:
     double m_spanHigh;
     Scale m_scale = Scale::Linear;
     bool m_integer;
+    int m_decimals;                 // shown; the spin box holds the value exactly
     int m_steps = 1000;             // slider positions; one per value for short integer spans
     bool m_invalid = false;
     bool m_settingValue = false;

@@ -2,6 +2,8 @@
 
 #include <QFrame>
 
+class QAction;
+class QHBoxLayout;
 class QLabel;
 
 namespace shadowlab {
@@ -16,10 +18,14 @@ public:
 
     void setCaption(const QString& title, const QString& detail);
     void setHighlighted(bool highlighted);
+    // A small button for `action` at the caption strip's right end.
+    void addCaptionButton(QAction* action);
     QWidget* view() const { return m_view; }
 
 private:
     QWidget* m_view;
+    QWidget* m_strip;           // the caption and its buttons
+    QHBoxLayout* m_stripLayout;
     QLabel* m_caption;
     bool m_highlighted = false;
 };
