@@ -15,6 +15,7 @@ packages=(
                        # the man page, completion and docs made from the program's help
     assimp-testmodels  # test data: real and deliberately broken models
     librsvg2-bin       # install: the icon's PNG sizes, drawn from its SVG at build time
+    desktop-file-utils appstream  # install test: the desktop entry's and the metainfo's validators
     dpkg-dev file      # scripts/package.sh: CPack's .deb and its dependencies (dpkg-shlibdeps)
 )
 
