@@ -3,6 +3,7 @@
 #include "HeadlessPlatform.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QSurfaceFormat>
 
 namespace shadowlab {
@@ -40,6 +41,8 @@ void configureApplication()
     QCoreApplication::setOrganizationName(QStringLiteral("ShadowLab"));
     QCoreApplication::setApplicationName(QStringLiteral("ShadowLab"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SHADOWLAB_VERSION));
+    // The installed desktop entry (packaging/): how a Wayland desktop finds the window's icon and name.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.shadowlab.ShadowLab"));
 }
 
 } // namespace shadowlab

@@ -171,6 +171,22 @@ QByteArray boundIdentity(const QString& path, const QByteArray& claimed)
     return hash.result().toHex();
 }
 
+// Where this build put the worker, for the programs of the build tree (the tests' executables
+// sit apart from it). An installed program never reaches back into the tree it was built in,
+// so an install that misplaces the worker fails where it is tested, not on a user's machine.
+QString buildTreeWorker()
+{
+#ifdef SHADOWLAB_IMPORT_WORKER_BUILD
+    // Without a QCoreApplication there is no program path to ask; every program of ours has one.
+    const QString buildDir = QFileInfo(QStringLiteral(SHADOWLAB_BUILD_DIR)).canonicalFilePath();
+    const bool inBuildTree = !QCoreApplication::instance()
+        || (!buildDir.isEmpty() && (QCoreApplication::applicationDirPath() + u'/').startsWith(buildDir + u'/'));
+    if (inBuildTree)
+        return QStringLiteral(SHADOWLAB_IMPORT_WORKER_BUILD);
+#endif
+    return QString();
+}
+
 } // namespace
 
 QString importWorkerProgram()
@@ -182,9 +198,8 @@ QString importWorkerProgram()
         const QDir dir(QCoreApplication::applicationDirPath());
         candidates << dir.filePath(QLatin1String(kWorkerName)) << dir.filePath(QStringLiteral("../libexec/shadowlab/") + QLatin1String(kWorkerName));
     }
-#ifdef SHADOWLAB_IMPORT_WORKER_BUILD
-    candidates << QStringLiteral(SHADOWLAB_IMPORT_WORKER_BUILD);
-#endif
+    if (const QString built = buildTreeWorker(); !built.isEmpty())
+        candidates << built;
     for (const QString& candidate : candidates) {
         if (QFileInfo(candidate).isExecutable())
             return QFileInfo(candidate).absoluteFilePath();

@@ -35,8 +35,9 @@ public:
 // cancelled.
 Scene importModelIsolated(const QString& path, const ImportControl& control = {});
 
-// The worker's path: $SHADOWLAB_IMPORT_WORKER, else next to the running program (installed or
-// in the build tree), else where this build put it. Empty when none is there.
+// The worker's path: $SHADOWLAB_IMPORT_WORKER, else next to the running program or in
+// ../libexec/shadowlab from it (installed), else, for a program in the build tree, where this
+// build put it. Empty when none is there.
 QString importWorkerProgram();
 
 } // namespace shadowlab

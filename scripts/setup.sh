@@ -11,8 +11,12 @@ packages=(
     qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
     libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev libassimp-dev
     fonts-dejavu-core
-    python3            # scripts: the generated test mesh, the speed guard, the damaged-model survey
+    python3            # scripts: the generated test mesh, the speed guard, the damaged-model survey,
+                       # the man page, completion and docs made from the program's help
     assimp-testmodels  # test data: real and deliberately broken models
+    librsvg2-bin       # install: the icon's PNG sizes, drawn from its SVG at build time
+    desktop-file-utils appstream  # install test: the desktop entry's and the metainfo's validators
+    dpkg-dev file      # scripts/package.sh: CPack's .deb and its dependencies (dpkg-shlibdeps)
 )
 
 # OSMesa is optional (Mesa 25.1 removed it): the headless platform uses EGL, and OSMesa as well
