@@ -145,7 +145,11 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("arguments");
         QTest::addColumn<QString>("suggestion");
         const QString out = m_dir.filePath("never.png");
-        QTest::newRow("command") << QStringList{"rendr"} << "did you mean 'render'?";
+        QTest::newRow("command") << QStringList{"rendr"} << "'rendr' is not a command; did you mean 'render'?";
+        // Options after the word do not make it a model file to open, nor options of the window.
+        QTest::newRow("command with options") << QStringList{"rendr", "--scene", "seed"} << "'rendr' is not a command; did you mean 'render'?";
+        QTest::newRow("command with its own options") << QStringList{"benchh", "--frames", "10"} << "'benchh' is not a command; did you mean 'bench'?";
+        QTest::newRow("command asking for help") << QStringList{"rendr", "--help"} << "did you mean 'render'?";
         QTest::newRow("command swapped letters") << QStringList{"becnh"} << "did you mean 'bench'?";
         QTest::newRow("help of a mistyped command") << QStringList{"help", "reprot"} << "did you mean 'report'?";
         QTest::newRow("key") << QStringList{"render", "--out", out, "--set", "bias.sloep=0.1"} << "did you mean 'bias.slope'?";
@@ -183,6 +187,8 @@ private Q_SLOTS:
         QTest::newRow("file and --scene") << QStringList{models + "OBJ/box.obj", "--scene", "seed"} << "give one of them";
         QTest::newRow("two files") << QStringList{models + "OBJ/box.obj", models + "OBJ/box.obj"} << "unexpected argument";
         QTest::newRow("preset, no display") << QStringList{"--preset", "acne"} << "no display";
+        QTest::newRow("scene, no display") << QStringList{"--scene", "seed"} << "no display";
+        QTest::newRow("model alone, no display") << QStringList{models + "OBJ/box.obj"} << "no display";
         QTest::newRow("model, no display") << QStringList{models + "OBJ/box.obj", "--set", "map.size=1024"} << "no display";
     }
 
@@ -194,6 +200,17 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
+    }
+
+    // A word that is a file in the working folder is that file, though it reads like a command.
+    void aFileNamedLikeACommandIsOpened()
+    {
+        QFile box("/usr/share/assimp/models/OBJ/box.obj");
+        QVERIFY(box.open(QIODevice::ReadOnly));
+        QVERIFY(writeFile(m_dir.filePath("rendr"), box.readAll()));
+        const Run r = shadowlab({"rendr", "--set", "map.size=1024"}, m_dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(!r.err.contains("not a command") && r.err.contains("rendr"), qPrintable(r.err));
     }
 
     // The window measured before its picture: B's acne painted over B's view only.
