@@ -387,6 +387,34 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(m_dir.filePath("never")));
     }
 
+    // The defaults already sit on the knee of the acne-against-leak curve: tune says so and
+    // prints nothing to apply.
+    void tuneKeepsASettingAlreadyOnTheKnee()
+    {
+        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("already on the knee") && r.out.contains("nothing to change"), qPrintable(r.out));
+        QVERIFY2(!r.out.contains("--set"), qPrintable(r.out));
+    }
+
+    // No bias on front faces is acne everywhere: tune recommends a change, and what it
+    // recommends is a point of the curve it printed.
+    void tuneRecommendsAPointOfItsCurve()
+    {
+        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54", "--set", "bias.cull_front=false", "--set", "bias.slope=0",
+                                 "--set", "bias.min=0"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        static const QRegularExpression apply(R"(apply with: --set bias.space=\S+ --set bias.slope=(\S+) --set bias.min=(\S+))");
+        const QRegularExpressionMatch set = apply.match(r.out);
+        QVERIFY2(set.hasMatch() && !r.out.contains("already on the knee"), qPrintable(r.out));
+        static const QRegularExpression best(R"(^\s+(\S+)\s+(\S+)\s+\S+\s+\S+\s+<- best(, as set)?$)", QRegularExpression::MultilineOption);
+        const QRegularExpressionMatch onCurve = best.match(r.out);
+        QVERIFY2(onCurve.hasMatch(), qPrintable(r.out));
+        QCOMPARE(set.captured(1), onCurve.captured(1));
+        QCOMPARE(set.captured(2), onCurve.captured(2));
+        QVERIFY(set.captured(1).toDouble() > 0.0 || set.captured(2).toDouble() > 0.0);
+    }
+
     void benchLabelsItsColumnsAndAlignsThem()
     {
         const Run r = shadowlab({"bench", "--size", "96x64", "--frames", "3", "--warmup", "0", "--phase", "moving-light"});
