@@ -52,7 +52,7 @@ void printFronts(const std::vector<ReportRow>& rows)
     for (const QString& light : lights) {
         out() << "\nPareto front" << (lights.size() > 1 ? QStringLiteral(" of the %1").arg(light) : QString())
               << " (off it only when another is clearly faster and clearly more accurate):\n"
-              << "  " << QStringLiteral("configuration").leftJustified(kLabelWidth) << QStringLiteral("frame ms (p10-p90)").rightJustified(20)
+              << "  " << QStringLiteral("configuration").leftJustified(kLabelWidth) << QStringLiteral("frame ms (p10-p90)").rightJustified(24)
               << QStringLiteral("misclassified % (px)").rightJustified(26) << (area ? QStringLiteral("area MAE %").rightJustified(18) : QString())
               << "  front\n";
         std::vector<const ReportRow*> front;
@@ -70,7 +70,7 @@ void printFronts(const std::vector<ReportRow>& rows)
             if (r->areaFront)
                 which << QStringLiteral("area");
             out() << "  " << r->label.leftJustified(kLabelWidth, QLatin1Char(' '), true)
-                  << QStringLiteral("%1 (%2-%3)").arg(r->frame.median, 0, 'f', 2).arg(r->frame.p10, 0, 'f', 2).arg(r->frame.p90, 0, 'f', 2).rightJustified(20)
+                  << QStringLiteral("%1 (%2-%3)").arg(r->frame.median, 0, 'f', 2).arg(r->frame.p10, 0, 'f', 2).arg(r->frame.p90, 0, 'f', 2).rightJustified(24)
                   << QStringLiteral("%1 (%2 ± %3)").arg(100 * r->accuracy.hard.misclassified, 0, 'f', 4).arg(pixels, 0, 'f', 0)
                          .arg(errorNoisePixels(pixels), 0, 'f', 0).rightJustified(26)
                   << (area ? QStringLiteral("%1 ± %2").arg(100 * r->accuracy.area.mae, 0, 'f', 3)
