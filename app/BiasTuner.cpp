@@ -1,5 +1,6 @@
 #include "BiasTuner.h"
 
+#include "ErrorNoise.h"
 #include "Measurement.h"
 #include "Renderer.h"
 
@@ -32,6 +33,23 @@ std::vector<glm::dvec3> spreadPlacements(const LightSettings& light)
     return placements;
 }
 
+// The point of the front with the fewest misclassified pixels; of the points within the error
+// noise of it (as good, as far as can be told), the smallest bias, which detaches contact
+// shadows least. Always a point of the front, so "best" is a point on the curve shown.
+std::size_t knee(const std::vector<BiasCandidate>& candidates, const std::vector<std::size_t>& front)
+{
+    const auto pixels = [&](std::size_t i) { return candidates[i].misclassifiedPixels; };
+    const std::size_t fewest = *std::min_element(front.begin(), front.end(), [&](std::size_t a, std::size_t b) { return pixels(a) < pixels(b); });
+    std::size_t best = fewest;
+    for (const std::size_t i : front) {
+        const BiasCandidate& c = candidates[i];
+        const BiasCandidate& b = candidates[best];
+        if (!clearlyFewer(pixels(fewest), pixels(i)) && std::pair(c.slope + c.min, c.slope) < std::pair(b.slope + b.min, b.slope))
+            best = i;
+    }
+    return best;
+}
+
 } // namespace
 
 std::pair<std::vector<double>, std::vector<double>> BiasTuner::grid(BiasSpace space)
@@ -53,9 +71,13 @@ BiasTuner::BiasTuner(const Settings& settings, QSize size)
     const auto [slopes, mins] = grid(settings.bias.space);
     for (const double slope : slopes) {
         for (const double min : mins)
-            m_grid.push_back({slope, min, 0.0, 0.0});
+            m_grid.push_back({.slope = slope, .min = min});
     }
-    m_grid.push_back({settings.bias.slope, settings.bias.min, 0.0, 0.0});
+    m_candidates = m_grid.size();
+    const auto same = [&](const BiasCandidate& c) { return c.slope == settings.bias.slope && c.min == settings.bias.min; };
+    m_current = std::size_t(std::find_if(m_grid.begin(), m_grid.end(), same) - m_grid.begin());
+    if (m_current == m_grid.size())
+        m_grid.push_back({.slope = settings.bias.slope, .min = settings.bias.min});
 }
 
 void BiasTuner::step(Renderer& renderer)
@@ -72,6 +94,7 @@ void BiasTuner::step(Renderer& renderer)
     const AccuracyResult r = measureAccuracy(m_meter, renderer, s, m_size);
     c.falseShadow += r.hard.falseShadow / double(m_placements.size());
     c.falseLight += r.hard.falseLight / double(m_placements.size());
+    c.misclassifiedPixels += r.hard.misclassified * r.hard.pixels;
     ++m_step;
 }
 
@@ -80,8 +103,10 @@ BiasTuning BiasTuner::result() const
     BiasTuning t;
     t.space = m_settings.bias.space;
     t.placements = m_placements;
-    t.candidates.assign(m_grid.begin(), m_grid.end() - 1);
-    t.current = m_grid.back();
+    t.candidates.assign(m_grid.begin(), m_grid.begin() + std::ptrdiff_t(m_candidates));
+    t.current = m_grid[m_current];
+    if (m_current < m_candidates)
+        t.currentCandidate = m_current;
     for (std::size_t i = 0; i < t.candidates.size(); ++i) {
         const BiasCandidate& a = t.candidates[i];
         // Dominated: another is no worse on both and better on one, or the same on both with
@@ -99,16 +124,8 @@ BiasTuning BiasTuner::result() const
     std::sort(t.front.begin(), t.front.end(), [&](std::size_t a, std::size_t b) {
         return t.candidates[a].falseShadow < t.candidates[b].falseShadow;
     });
-    // Fewest misclassified; among equals (within a hundredth of a percent) the smaller bias,
-    // which detaches contact shadows least.
-    for (std::size_t i = 1; i < t.candidates.size(); ++i) {
-        const BiasCandidate& c = t.candidates[i];
-        const BiasCandidate& b = t.candidates[t.best];
-        const double margin = 1e-4;
-        if (c.misclassified() < b.misclassified() - margin
-            || (c.misclassified() <= b.misclassified() + margin && c.slope + c.min < b.slope + b.min))
-            t.best = i;
-    }
+    t.best = knee(t.candidates, t.front);
+    t.improves = clearlyFewer(t.candidates[t.best].misclassifiedPixels, t.current.misclassifiedPixels);
     return t;
 }
 

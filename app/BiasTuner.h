@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
+
 #include <vector>
 
 namespace shadowlab {
@@ -19,6 +21,7 @@ struct BiasCandidate {
     double min = 0.0;
     double falseShadow = 0.0;   // mean share of measured pixels over the placements: acne
     double falseLight = 0.0;    // ... peter panning and leaks
+    double misclassifiedPixels = 0.0;   // summed over the placements: the count its noise is known in (ErrorNoise.h)
     double misclassified() const { return falseShadow + falseLight; }
 };
 
@@ -29,8 +32,15 @@ struct BiasTuning {
     // The acne-against-leak trade-off: candidates no other beats on both false shadow and
     // false light, by increasing false shadow.
     std::vector<std::size_t> front;
-    std::size_t best = 0;                   // the knee: fewest misclassified, smaller bias on a tie
-    BiasCandidate current;                  // the settings as they were, measured the same way
+    // The knee, a point of the front: fewest misclassified pixels; among points within the
+    // error noise of the fewest, the smallest bias.
+    std::size_t best = 0;
+    // The settings as they were, measured the same way: the very candidate when the grid holds
+    // them, so the table and "as set" quote one measurement. It is the mean over the light
+    // placements at the tuner's size, not what one view at another size measures.
+    BiasCandidate current;
+    std::optional<std::size_t> currentCandidate;    // which candidate the current settings are, if any
+    bool improves = false;                  // best misclassifies clearly fewer pixels than current
 };
 
 // Searches the bias (bias.slope x bias.min, in the unit of bias.space) that misclassifies the
@@ -57,7 +67,9 @@ private:
     Settings m_settings;
     QSize m_size;
     std::vector<glm::dvec3> m_placements;
-    std::vector<BiasCandidate> m_grid;      // the candidates, then the current settings last
+    std::vector<BiasCandidate> m_grid;      // the candidates, then the current settings when off the grid
+    std::size_t m_candidates = 0;           // the grid's own points, first in m_grid
+    std::size_t m_current = 0;              // the current settings' index in m_grid
     AccuracyMeter m_meter;
     int m_step = 0;
 };

@@ -100,6 +100,10 @@ int main(int argc, char* argv[])
         shadowlab::cli::printUsage(shadowlab::cli::out());
         return shadowlab::cli::kExitOk;
     }
+    if (shadowlab::cli::isMistypedCommand(arguments)) {   // `rendr --help` too: not the usage and exit 0
+        QGuiApplication app(argc, argv);
+        return shadowlab::cli::unknownCommand(arguments.first());
+    }
     if (arguments.contains(QStringLiteral("--help")) || arguments.contains(QStringLiteral("-h"))) {
         shadowlab::cli::printUsage(shadowlab::cli::out());
         return shadowlab::cli::kExitOk;

@@ -1,6 +1,6 @@
 // The bias tuner against the ray-traced reference: its trade-off curve trades acne for leaks
 // and nothing else, it finds the fix when there is acne to fix, and the default bias sits on
-// the knee of every preset's curve.
+// the knee of every preset's curve, so the tuner recommends no change there.
 #include "Application.h"
 #include "BiasTuner.h"
 #include "HeadlessRenderer.h"
@@ -55,7 +55,9 @@ private Q_SLOTS:
         const BiasCandidate& best = t.candidates[t.best];
         qInfo("%s: defaults misclassify %.4f %%, the best of the grid (%g/%g) %.4f %%", qPrintable(scene), 100 * t.current.misclassified(),
               best.slope, best.min, 100 * best.misclassified());
-        QCOMPARE_LE(t.current.misclassified(), best.misclassified() + 1e-4);
+        QVERIFY(std::find(t.front.begin(), t.front.end(), t.best) != t.front.end());   // a point of the curve shown
+        // Nothing beyond the error noise to gain, so nothing to recommend.
+        QVERIFY2(!t.improves, qPrintable(QStringLiteral("%1 px as set, %2 px at best").arg(t.current.misclassifiedPixels).arg(best.misclassifiedPixels)));
     }
 
     // Front faces in the map and no bias: acne everywhere; the tuner finds a bias that removes
@@ -82,6 +84,30 @@ private Q_SLOTS:
         QCOMPARE_GT(t.current.falseShadow, 0.01);
         QCOMPARE_LT(best.misclassified(), 0.1 * t.current.misclassified());
         QVERIFY(best.slope > 0.0 || best.min > 0.0);
+        QVERIFY(t.improves);
+        QVERIFY(std::find(t.front.begin(), t.front.end(), t.best) != t.front.end());
+    }
+
+    // A current setting on the grid is that very candidate, measured once: what is quoted "as
+    // set" and what the table shows for it are one number.
+    void currentOnTheGridIsThatCandidate()
+    {
+        Settings s = presetSettings("seed");
+        s.bias.space = BiasSpace::World;
+        s.bias.slope = 0.05;
+        s.bias.min = 0.002;
+        BiasTuner tuner(s, QSize(96, 54));
+        const int steps = tuner.steps();
+        while (!tuner.done())
+            tuner.step(m_headless->renderer());
+        const BiasTuning t = tuner.result();
+        QCOMPARE(steps, int(t.candidates.size() * t.placements.size()));   // not measured a second time
+        QVERIFY(t.currentCandidate.has_value());
+        const BiasCandidate& c = t.candidates[*t.currentCandidate];
+        QCOMPARE(c.slope, 0.05);
+        QCOMPARE(c.min, 0.002);
+        QCOMPARE(t.current.misclassifiedPixels, c.misclassifiedPixels);
+        QCOMPARE(t.current.falseShadow, c.falseShadow);
     }
 
 private:

@@ -145,7 +145,11 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("arguments");
         QTest::addColumn<QString>("suggestion");
         const QString out = m_dir.filePath("never.png");
-        QTest::newRow("command") << QStringList{"rendr"} << "did you mean 'render'?";
+        QTest::newRow("command") << QStringList{"rendr"} << "'rendr' is not a command; did you mean 'render'?";
+        // Options after the word do not make it a model file to open, nor options of the window.
+        QTest::newRow("command with options") << QStringList{"rendr", "--scene", "seed"} << "'rendr' is not a command; did you mean 'render'?";
+        QTest::newRow("command with its own options") << QStringList{"benchh", "--frames", "10"} << "'benchh' is not a command; did you mean 'bench'?";
+        QTest::newRow("command asking for help") << QStringList{"rendr", "--help"} << "did you mean 'render'?";
         QTest::newRow("command swapped letters") << QStringList{"becnh"} << "did you mean 'bench'?";
         QTest::newRow("help of a mistyped command") << QStringList{"help", "reprot"} << "did you mean 'report'?";
         QTest::newRow("key") << QStringList{"render", "--out", out, "--set", "bias.sloep=0.1"} << "did you mean 'bias.slope'?";
@@ -183,6 +187,8 @@ private Q_SLOTS:
         QTest::newRow("file and --scene") << QStringList{models + "OBJ/box.obj", "--scene", "seed"} << "give one of them";
         QTest::newRow("two files") << QStringList{models + "OBJ/box.obj", models + "OBJ/box.obj"} << "unexpected argument";
         QTest::newRow("preset, no display") << QStringList{"--preset", "acne"} << "no display";
+        QTest::newRow("scene, no display") << QStringList{"--scene", "seed"} << "no display";
+        QTest::newRow("model alone, no display") << QStringList{models + "OBJ/box.obj"} << "no display";
         QTest::newRow("model, no display") << QStringList{models + "OBJ/box.obj", "--set", "map.size=1024"} << "no display";
     }
 
@@ -194,6 +200,17 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
+    }
+
+    // A word that is a file in the working folder is that file, though it reads like a command.
+    void aFileNamedLikeACommandIsOpened()
+    {
+        QFile box("/usr/share/assimp/models/OBJ/box.obj");
+        QVERIFY(box.open(QIODevice::ReadOnly));
+        QVERIFY(writeFile(m_dir.filePath("rendr"), box.readAll()));
+        const Run r = shadowlab({"rendr", "--set", "map.size=1024"}, m_dir.path());
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(!r.err.contains("not a command") && r.err.contains("rendr"), qPrintable(r.err));
     }
 
     // The window measured before its picture: B's acne painted over B's view only.
@@ -368,6 +385,34 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("broken") && r.err.contains("filter.kernel"), qPrintable(r.err));
         QVERIFY(!QFile::exists(m_dir.filePath("never")));
+    }
+
+    // The defaults already sit on the knee of the acne-against-leak curve: tune says so and
+    // prints nothing to apply.
+    void tuneKeepsASettingAlreadyOnTheKnee()
+    {
+        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("already on the knee") && r.out.contains("nothing to change"), qPrintable(r.out));
+        QVERIFY2(!r.out.contains("--set"), qPrintable(r.out));
+    }
+
+    // No bias on front faces is acne everywhere: tune recommends a change, and what it
+    // recommends is a point of the curve it printed.
+    void tuneRecommendsAPointOfItsCurve()
+    {
+        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54", "--set", "bias.cull_front=false", "--set", "bias.slope=0",
+                                 "--set", "bias.min=0"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        static const QRegularExpression apply(R"(apply with: --set bias.space=\S+ --set bias.slope=(\S+) --set bias.min=(\S+))");
+        const QRegularExpressionMatch set = apply.match(r.out);
+        QVERIFY2(set.hasMatch() && !r.out.contains("already on the knee"), qPrintable(r.out));
+        static const QRegularExpression best(R"(^\s+(\S+)\s+(\S+)\s+\S+\s+\S+\s+<- best(, as set)?$)", QRegularExpression::MultilineOption);
+        const QRegularExpressionMatch onCurve = best.match(r.out);
+        QVERIFY2(onCurve.hasMatch(), qPrintable(r.out));
+        QCOMPARE(set.captured(1), onCurve.captured(1));
+        QCOMPARE(set.captured(2), onCurve.captured(2));
+        QVERIFY(set.captured(1).toDouble() > 0.0 || set.captured(2).toDouble() > 0.0);
     }
 
     void benchLabelsItsColumnsAndAlignsThem()

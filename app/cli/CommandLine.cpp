@@ -2,6 +2,8 @@
 #include "Commands.h"
 #include "MessageText.h"
 
+#include <QFileInfo>
+
 namespace shadowlab::cli {
 
 namespace {
@@ -61,9 +63,20 @@ int runCommand(const QStringList& arguments)
     return kExitBadInput;
 }
 
+bool isMistypedCommand(const QStringList& arguments)
+{
+    if (arguments.isEmpty())
+        return false;
+    const QString& word = arguments.first();
+    return !word.startsWith(QLatin1Char('-')) && !isCommand(word) && !QFileInfo::exists(word) && !word.contains(QLatin1Char('/'))
+           && !word.contains(QLatin1Char('.'));
+}
+
 int unknownCommand(const QString& name)
 {
-    err() << "shadowlab: unknown command '" << displayText(name) << "'" << didYouMean(name, commandNames()) << "\n\n";
+    const QString match = closestMatch(name, commandNames());
+    err() << "shadowlab: '" << displayText(name) << "' is not a command"
+          << (match.isEmpty() ? QString() : QStringLiteral("; did you mean '%1'?").arg(match)) << "\n\n";
     printUsage(err());
     return kExitBadInput;
 }

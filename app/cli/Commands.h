@@ -26,6 +26,9 @@ QStringList commandNames();
 // The binary's usage (commands and their summaries) on `stream`: stdout when asked for,
 // stderr after a mistake.
 void printUsage(QTextStream& stream);
+// True when the first argument is a word that is no command, no option and no file, nor looks
+// like a path: a mistyped command, whatever follows it (`rendr --scene seed` names no model).
+bool isMistypedCommand(const QStringList& arguments);
 // Says `name` is no command (suggesting the nearest one) with the usage on stderr; returns 2.
 int unknownCommand(const QString& name);
 

@@ -9,7 +9,6 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QFileInfo>
 
 #include <optional>
 
@@ -31,10 +30,9 @@ bool takesValue(const QString& argument)
 
 int runExplorer(const QStringList& arguments)
 {
-    // A lone word that is neither an option nor a file (nor looks like one) is most likely a
-    // mistyped command.
-    if (arguments.size() == 1 && !arguments.first().startsWith(QLatin1Char('-')) && !QFileInfo::exists(arguments.first())
-        && !arguments.first().contains(QLatin1Char('/')) && !arguments.first().contains(QLatin1Char('.')))
+    // Before the word is taken for a model file: with options after it, it would be refused for
+    // what follows ("a file and --scene both name the scene") instead of for what it is.
+    if (isMistypedCommand(arguments))
         return unknownCommand(arguments.first());
 
     std::optional<Settings> settings;

@@ -1,5 +1,6 @@
 #include "AccuracyMeter.h"
 #include "CliSupport.h"
+#include "ErrorNoise.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
@@ -21,6 +22,64 @@ namespace {
 // The accuracy pass keeps float targets, world positions and two traced references per pixel,
 // about 90 bytes per pixel: 8.3 Mpixels (3840x2160) is about 750 MB.
 const SizeLimits kReportSize{{1, 1}, {3840, 2160}, QStringLiteral("report keeps about 90 bytes per pixel in memory")};
+
+// Flicker only where there is some: a column of zeros tells nothing row by row.
+void printFlicker(const std::vector<ReportRow>& rows)
+{
+    const auto flickers = [](const ReportRow& r) { return 100 * std::max(r.flicker.flicker, r.flicker.meanChange) >= 0.0005; };
+    const auto flickering = std::count_if(rows.begin(), rows.end(), flickers);
+    out() << "flicker (receiver pixels flipping per frame, camera walking " << kFlickerStepTexels << " texel a frame): ";
+    if (flickering == 0) {
+        out() << "no configuration flickers above 0.0005 %\n";
+        return;
+    }
+    out() << '\n';
+    for (const ReportRow& r : rows) {
+        if (flickers(r))
+            out() << "  " << r.label.leftJustified(36) << QString::number(100 * r.flicker.flicker, 'f', 3).rightJustified(8) << " %\n";
+    }
+    if (flickering < qsizetype(rows.size()))
+        out() << "  the other " << rows.size() - std::size_t(flickering) << " configurations flicker below 0.0005 %\n";
+}
+
+constexpr int kLabelWidth = 40;
+
+// Each light's fronts, error and cost, fastest first: the choices the report leaves a reader.
+void printFronts(const std::vector<ReportRow>& rows)
+{
+    const QStringList lights = lightsOf(rows);
+    const bool area = std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return measuredPixels(r, ErrorAxis::AreaMae) > 0; });
+    for (const QString& light : lights) {
+        out() << "\nPareto front" << (lights.size() > 1 ? QStringLiteral(" of the %1").arg(light) : QString())
+              << " (off it only when another is clearly faster and clearly more accurate):\n"
+              << "  " << QStringLiteral("configuration").leftJustified(kLabelWidth) << QStringLiteral("frame ms (p10-p90)").rightJustified(24)
+              << QStringLiteral("misclassified % (px)").rightJustified(26) << (area ? QStringLiteral("area MAE %").rightJustified(18) : QString())
+              << "  front\n";
+        std::vector<const ReportRow*> front;
+        for (const ReportRow& r : rows) {
+            if (r.light == light && (r.paretoFront || r.areaFront))
+                front.push_back(&r);
+        }
+        std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+        for (const ReportRow* r : front) {
+            const double pixels = errorPixels(*r, ErrorAxis::Misclassified);
+            const double areaPixels = std::max(1, measuredPixels(*r, ErrorAxis::AreaMae));
+            QStringList which;
+            if (r->paretoFront)
+                which << QStringLiteral("misclassified");
+            if (r->areaFront)
+                which << QStringLiteral("area");
+            out() << "  " << r->label.leftJustified(kLabelWidth, QLatin1Char(' '), true)
+                  << QStringLiteral("%1 (%2-%3)").arg(r->frame.median, 0, 'f', 2).arg(r->frame.p10, 0, 'f', 2).arg(r->frame.p90, 0, 'f', 2).rightJustified(24)
+                  << QStringLiteral("%1 (%2 ± %3)").arg(100 * r->accuracy.hard.misclassified, 0, 'f', 4).arg(pixels, 0, 'f', 0)
+                         .arg(errorNoisePixels(pixels), 0, 'f', 0).rightJustified(26)
+                  << (area ? QStringLiteral("%1 ± %2").arg(100 * r->accuracy.area.mae, 0, 'f', 3)
+                                 .arg(100 * errorNoisePixels(errorPixels(*r, ErrorAxis::AreaMae)) / areaPixels, 0, 'f', 3).rightJustified(18)
+                           : QString())
+                  << "  " << which.join(QStringLiteral(", ")) << '\n';
+        }
+    }
+}
 
 } // namespace
 
@@ -107,7 +166,7 @@ int runReport(const QStringList& arguments)
             rows[c].frame = summarize(runs[c].samples.wall);
         }
         progress.done();
-        markParetoFront(rows);
+        markParetoFronts(rows);
 
         ReportFacts facts;
         facts.scene = base.scene;
@@ -126,32 +185,9 @@ int runReport(const QStringList& arguments)
 
         out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
               << QString::number(raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
-        if (flickerFrames > 1) {
-            out() << "flicker (receiver pixels flipping per frame, camera walking " << kFlickerStepTexels << " texel a frame):\n";
-            for (const ReportRow& r : rows)
-                out() << "  " << r.label.leftJustified(36) << QString::number(100 * r.flicker.flicker, 'f', 3).rightJustified(8) << " %\n";
-        }
-        // Each light's front from fast to slow: the order a reader walks it in.
-        std::vector<const ReportRow*> front;
-        for (const ReportRow& r : rows) {
-            if (r.paretoFront)
-                front.push_back(&r);
-        }
-        std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
-        QStringList lights;
-        for (const ReportRow& r : rows) {
-            if (!lights.contains(r.light))
-                lights << r.light;
-        }
-        for (const QString& light : lights) {
-            out() << "Pareto front" << (lights.size() > 1 ? QStringLiteral(" of the %1").arg(light) : QString())
-                  << " (frame ms median, misclassified % against the hard reference):\n";
-            for (const ReportRow* r : front) {
-                if (r->light == light)
-                    out() << "  " << r->label.leftJustified(36) << QString::number(r->frame.median, 'f', 2).rightJustified(8) << " ms "
-                          << QString::number(100 * r->accuracy.hard.misclassified, 'f', 3).rightJustified(8) << " %\n";
-            }
-        }
+        if (flickerFrames > 1)
+            printFlicker(rows);
+        printFronts(rows);
         out() << "wrote " << QDir(directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
         return kExitOk;
     });

@@ -1,5 +1,6 @@
 #include "BiasTuner.h"
 #include "CliSupport.h"
+#include "ErrorNoise.h"
 #include "Commands.h"
 #include "HeadlessRenderer.h"
 #include "OutputFile.h"
@@ -23,7 +24,18 @@ QString percent(double share) { return QString::number(100.0 * share, 'f', 3); }
 QJsonObject candidateJson(const BiasCandidate& c)
 {
     return {{QStringLiteral("slope"), c.slope}, {QStringLiteral("min"), c.min}, {QStringLiteral("false_shadow"), c.falseShadow},
-            {QStringLiteral("false_light"), c.falseLight}, {QStringLiteral("misclassified"), c.misclassified()}};
+            {QStringLiteral("false_light"), c.falseLight}, {QStringLiteral("misclassified"), c.misclassified()},
+            {QStringLiteral("misclassified_pixels"), c.misclassifiedPixels}};
+}
+
+QString pixels(const BiasCandidate& c) { return QString::number(c.misclassifiedPixels, 'f', 0); }
+
+QString measured(const BiasCandidate& c)
+{
+    return QStringLiteral("slope %1, min %2: misclassified %3 % (%4 px; false shadow %5 %, false light %6 %)")
+        .arg(c.slope)
+        .arg(c.min)
+        .arg(percent(c.misclassified()), pixels(c), percent(c.falseShadow), percent(c.falseLight));
 }
 
 } // namespace
@@ -60,9 +72,12 @@ int runTune(const QStringList& arguments)
         progress.done();
         const BiasTuning t = tuner.result();
         const BiasCandidate& best = t.candidates[t.best];
+        // A change within the error noise buys nothing: the settings stay as they are.
         Settings tuned = settings;
-        tuned.bias.slope = best.slope;
-        tuned.bias.min = best.min;
+        if (t.improves) {
+            tuned.bias.slope = best.slope;
+            tuned.bias.min = best.min;
+        }
         if (parser.isSet(QStringLiteral("out")))
             saveSettingsFile(parser.value(QStringLiteral("out")), tuned);   // whole or not at all
 
@@ -81,6 +96,8 @@ int runTune(const QStringList& arguments)
                                                {QStringLiteral("light_placements"), placements},
                                                {QStringLiteral("current"), candidateJson(t.current)},
                                                {QStringLiteral("best"), candidateJson(best)},
+                                               {QStringLiteral("improves"), t.improves},
+                                               {QStringLiteral("noise_pixels"), errorNoisePixels(t.current.misclassifiedPixels)},
                                                {QStringLiteral("front"), front},
                                                {QStringLiteral("candidates"), all}})
                          .toJson(QJsonDocument::Indented);
@@ -94,17 +111,26 @@ int runTune(const QStringList& arguments)
                      .arg(QStringLiteral("false shadow"), 13).arg(QStringLiteral("false light"), 12);
         for (const std::size_t i : t.front) {
             const BiasCandidate& c = t.candidates[i];
+            QStringList marks;
+            if (i == t.best)
+                marks << QStringLiteral("best");
+            if (i == t.currentCandidate)
+                marks << QStringLiteral("as set");
             out() << QStringLiteral("  %1 %2 %3 %4%5\n").arg(c.slope, 8).arg(c.min, 8).arg(percent(c.falseShadow), 13)
-                         .arg(percent(c.falseLight), 12).arg(i == t.best ? QStringLiteral("   <- best") : QString());
+                         .arg(percent(c.falseLight), 12).arg(marks.isEmpty() ? QString() : QStringLiteral("   <- ") + marks.join(QStringLiteral(", ")));
         }
-        out() << '\n' << QStringLiteral("current  slope %1, min %2: misclassified %3 % (false shadow %4 %, false light %5 %)\n")
-                             .arg(t.current.slope).arg(t.current.min).arg(percent(t.current.misclassified()), percent(t.current.falseShadow),
-                                                                          percent(t.current.falseLight))
-              << QStringLiteral("best     slope %1, min %2: misclassified %3 % (false shadow %4 %, false light %5 %)\n")
-                     .arg(best.slope).arg(best.min).arg(percent(best.misclassified()), percent(best.falseShadow), percent(best.falseLight))
-              << "apply with: --set bias.space=" << unit << " --set bias.slope=" << best.slope << " --set bias.min=" << best.min << '\n';
+        out() << '\n' << "as set   " << measured(t.current) << '\n' << "best     " << measured(best) << '\n';
+        if (t.improves) {
+            out() << "apply with: --set bias.space=" << unit << " --set bias.slope=" << best.slope << " --set bias.min=" << best.min << '\n';
+        } else {
+            const auto noise = [](const BiasCandidate& c) { return QString::number(errorNoisePixels(c.misclassifiedPixels), 'f', 0); };
+            out() << QStringLiteral("the current setting is already on the knee: %1 px against the best point's %2 px differ by less than "
+                                    "their noise (±%3 and ±%4 px); nothing to change\n")
+                         .arg(pixels(t.current), pixels(best), noise(t.current), noise(best));
+        }
         if (parser.isSet(QStringLiteral("out")))
-            out() << "wrote " << QFileInfo(parser.value(QStringLiteral("out"))).absoluteFilePath() << '\n';
+            out() << "wrote " << QFileInfo(parser.value(QStringLiteral("out"))).absoluteFilePath()
+                  << (t.improves ? QString() : QStringLiteral(" (the settings as set)")) << '\n';
         return kExitOk;
     });
 }

@@ -1,5 +1,6 @@
 #include "ReportWriter.h"
 
+#include "ErrorNoise.h"
 #include "MessageText.h"
 #include "OutputFile.h"
 #include "SettingsKeys.h"
@@ -12,11 +13,14 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLocale>
 #include <QSysInfo>
 #include <QThread>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <numeric>
 
 namespace shadowlab {
 
@@ -108,12 +112,41 @@ QString percentText(double v)
     return text;
 }
 
-// An inline SVG scatter plot of `value(row)` (in percent, on a log axis) against frame time,
-// each light's Pareto front (on time and misclassified share) marked and, when `joinFront`,
-// joined in its colour; labels placed where they hide nothing.
-QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle,
-              const std::function<double(const ReportRow&)>& value, bool joinFront)
+bool onFront(const ReportRow& r, ErrorAxis axis)
 {
+    return axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront;
+}
+
+// The error's noise band (ErrorNoise.h) in percent of the pixels measured: {low, high}.
+std::pair<double, double> noiseBand(const ReportRow& r, ErrorAxis axis)
+{
+    const double n = errorPixels(r, axis), band = errorNoisePixels(n), pixels = std::max(1, measuredPixels(r, axis));
+    return {100.0 * std::max(0.0, n - band) / pixels, 100.0 * (n + band) / pixels};
+}
+
+// The area MAE's ± (ErrorNoise.h) in percent.
+double areaNoisePercent(const ReportRow& r)
+{
+    return 100.0 * errorNoisePixels(errorPixels(r, ErrorAxis::AreaMae)) / std::max(1, measuredPixels(r, ErrorAxis::AreaMae));
+}
+
+// "±3 px, 0.0017 % of 176,553 pixels": what the smallest band means for these rows.
+QString smallestBandText(const std::vector<ReportRow>& rows, ErrorAxis axis)
+{
+    int pixels = 0;
+    for (const ReportRow& r : rows)
+        pixels = std::max(pixels, measuredPixels(r, axis));
+    const double band = errorNoisePixels(0.0);
+    return QStringLiteral("±%1 px is %2 % of %3 measured pixels").arg(band).arg(percentText(100.0 * band / std::max(1, pixels)), QLocale(QLocale::English).toString(pixels));
+}
+
+// An inline SVG scatter plot of each row's error on `axis` (in percent, on a log axis) against
+// frame time, with both noises as bars (p10–p90 across, the error's band up and down); each
+// light's Pareto front on that axis marked, joined in its colour and labelled, with the
+// defaults and the tutorial; labels placed where they hide nothing.
+QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle, ErrorAxis axis)
+{
+    const auto value = [axis](const ReportRow& r) { return 100.0 * errorShare(r, axis); };
     const double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
     double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
     for (const ReportRow& r : rows) {
@@ -176,18 +209,20 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
     auto colour = [&](const ReportRow& r) { return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]); };
     // Each light's front, from fast to slow.
     for (const QString& light : lights) {
-        std::vector<const ReportRow*> front;
-        for (const ReportRow& r : rows) {
-            if (r.paretoFront && r.light == light)
-                front.push_back(&r);
+        // The line steps down through the front points that beat every faster one; the points that
+        // tie with them are on the front as well, as large dots, but a line through every tie
+        // would zig-zag.
+        std::vector<const ReportRow*> steps;
+        for (const ReportRow* r : frontOf(rows, light, axis)) {
+            if (steps.empty() || value(*r) < value(*steps.back()))
+                steps.push_back(r);
         }
-        std::sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
-        if (!joinFront || front.size() < 2)
+        if (steps.size() < 2)
             continue;
         QString points;
-        for (const ReportRow* r : front)
+        for (const ReportRow* r : steps)
             points += QStringLiteral("%1,%2 ").arg(px(r->frame.median)).arg(py(value(*r)));
-        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), colour(*front.front()));
+        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), colour(*steps.front()));
     }
     std::vector<Box> taken;
     for (const ReportRow& r : rows) {
@@ -197,14 +232,22 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
                    .arg(y)
                    .arg(px(r.frame.p90))
                    .arg(colour(r));
+        if (measuredPixels(r, axis) > 0) {
+            const auto [low, high] = noiseBand(r, axis);
+            svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
+                       .arg(x)
+                       .arg(py(std::min(high, yMax)))
+                       .arg(py(low))
+                       .arg(colour(r));
+        }
         taken.push_back({x - 6, y - 6, x + 6, y + 6});  // labels keep off the points too
     }
     for (const ReportRow& r : rows) {
         svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7 ms (p10 %8, p90 %9), %10 %</title></circle>")
                    .arg(px(r.frame.median))
                    .arg(py(value(r)))
-                   .arg(r.paretoFront ? 6 : 4)
-                   .arg(colour(r), r.paretoFront ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(onFront(r, axis) ? 6 : 4)
+                   .arg(colour(r), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
                    .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(value(r)));
     }
     // Labels for the front and the two reference configurations, first fit wins: right, left,
@@ -216,7 +259,7 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
             labelled.push_back(&r);
     }
     for (const ReportRow& r : rows) {
-        if (r.paretoFront && !r.defaults && !r.tutorial)
+        if (onFront(r, axis) && !r.defaults && !r.tutorial)
             labelled.push_back(&r);
     }
     for (const ReportRow* r : labelled) {
@@ -265,6 +308,92 @@ QString errorFigure(const QString& title, const ReportRow& row)
     return figure;
 }
 
+// The table of every configuration. A column of errors that is zero in every row says one thing
+// for all of them: it becomes a sentence under the table.
+QString configurationTable(const std::vector<ReportRow>& rows, const QStringList& lights)
+{
+    struct Column {
+        QString heading;
+        std::function<double(const ReportRow&)> percent;
+    };
+    const std::vector<Column> errors{
+        {QStringLiteral("false shadow %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.falseShadow; }},
+        {QStringLiteral("false light %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.falseLight; }},
+        {QStringLiteral("MAE %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.mae; }},
+        {QStringLiteral("RMSE %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.rmse; }},
+        {QStringLiteral("area RMSE %"), [](const ReportRow& r) { return 100 * r.accuracy.area.rmse; }},
+    };
+    std::vector<const Column*> shown;
+    QStringList zero;
+    for (const Column& c : errors) {
+        const bool allZero = std::all_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return c.percent(r) < 0.0005; });
+        if (allZero)
+            zero << c.heading.chopped(2);
+        else
+            shown.push_back(&c);
+    }
+    const bool area = std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return measuredPixels(r, ErrorAxis::AreaMae) > 0; });
+
+    QString table = QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1<th>on the front</th><th>frame ms (p10–p90)</th>"
+                                   "<th>shadow pass ms</th><th>lit pass ms</th><th>misclassified %</th><th>misclassified px</th>")
+                        .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString());
+    if (area)
+        table += QStringLiteral("<th>area MAE %</th>");
+    for (const Column* c : shown)
+        table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
+    table += QStringLiteral("</tr>");
+    for (const ReportRow& r : rows) {
+        QStringList fronts;
+        if (r.paretoFront)
+            fronts << QStringLiteral("misclassified");
+        if (r.areaFront)
+            fronts << QStringLiteral("area");
+        const double misclassified = errorPixels(r, ErrorAxis::Misclassified);
+        table += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6 (%7–%8)</td><td>%9</td>")
+                     .arg(r.paretoFront || r.areaFront ? QStringLiteral(" class=\"front\"") : QString())
+                     .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label),
+                          lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(r.light) + 1) : QString(), fronts.join(QStringLiteral(", ")))
+                     .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), number(r.shadowPass.median, 2));
+        table += QStringLiteral("<td>%1</td><td>%2</td><td>%3 ± %4</td>")
+                     .arg(number(r.litPass.median, 2), percentText(100 * r.accuracy.hard.misclassified), number(misclassified, 0),
+                          number(errorNoisePixels(misclassified), 0));
+        if (area)
+            table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
+        for (const Column* c : shown)
+            table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
+        table += QStringLiteral("</tr>");
+    }
+    table += QStringLiteral("</table>");
+    if (!zero.isEmpty())
+        table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
+    return table;
+}
+
+// The configurations whose shadow flickers; one sentence when none does.
+QString flickerSection(const std::vector<ReportRow>& rows)
+{
+    const int frames = std::accumulate(rows.begin(), rows.end(), 0, [](int m, const ReportRow& r) { return std::max(m, r.flicker.frames); });
+    QString section = QStringLiteral("<h2>Flicker</h2>");
+    if (frames == 0)
+        return section + QStringLiteral("<p>Not measured (--flicker-frames 0).</p>");
+    const auto flickers = [](const ReportRow& r) { return 100 * std::max(r.flicker.flicker, r.flicker.meanChange) >= 0.0005; };
+    const auto flickering = std::count_if(rows.begin(), rows.end(), flickers);
+    section += QStringLiteral("<p>The camera the light is fitted to walks %1 frames in sub-texel steps while the measured pixels stay put: "
+                              "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.")
+                   .arg(frames);
+    if (flickering == 0)
+        return section + QStringLiteral(" No configuration flickers above 0.0005 % on either.</p>");
+    section += flickering < qsizetype(rows.size()) ? QStringLiteral(" The other %1 configurations flicker below 0.0005 % on both.</p>").arg(rows.size() - std::size_t(flickering))
+                                                   : QStringLiteral("</p>");
+    section += QStringLiteral("<table><tr><th>configuration</th><th>flips %</th><th>worst pair %</th><th>mean change %</th></tr>");
+    for (const ReportRow& r : rows) {
+        if (flickers(r))
+            section += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
+                           .arg(html(r.label), number(100 * r.flicker.flicker, 3), number(100 * r.flicker.worstPair, 3), number(100 * r.flicker.meanChange, 3));
+    }
+    return section + QStringLiteral("</table>");
+}
+
 } // namespace
 
 QString lightDescription(const Settings& settings)
@@ -308,19 +437,6 @@ QImage zoomOnErrors(const QImage& errors, int factor)
     return image.copy(bestX, bestY, cw, ch).scaled(cw * factor, ch * factor, Qt::IgnoreAspectRatio, Qt::FastTransformation);
 }
 
-void markParetoFront(std::vector<ReportRow>& rows)
-{
-    auto beats = [](const ReportRow& b, const ReportRow& a) {
-        const double eb = b.accuracy.hard.misclassified, ea = a.accuracy.hard.misclassified;
-        const bool clearlyFaster = b.frame.p90 < a.frame.p10;
-        const bool clearlySlower = b.frame.p10 > a.frame.p90;
-        return (eb <= ea && clearlyFaster) || (eb < ea && !clearlySlower);
-    };
-    for (ReportRow& a : rows) {
-        a.paretoFront = std::none_of(rows.begin(), rows.end(), [&](const ReportRow& b) { return &a != &b && b.light == a.light && beats(b, a); });
-    }
-}
-
 QString machineFacts()
 {
     QString cpu;
@@ -356,7 +472,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     // visibility), as the page shows them; every column says its unit.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
-                                 "flicker_pct,flicker_change_pct\n");
+                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct\n");
     QJsonArray jsonRows;
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
@@ -366,7 +482,9 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            number(r.frame.median), number(r.frame.p10), number(r.frame.p90), number(100 * h.misclassified, 4),
                            number(100 * h.falseShadow, 4), number(100 * h.falseLight, 4), number(100 * h.mae, 4), number(100 * h.rmse, 4),
                            number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light),
-                           number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4)}
+                           number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4),
+                           number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
+                           r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
@@ -378,6 +496,9 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
                                     {QStringLiteral("pareto_front"), r.paretoFront},
+                                    {QStringLiteral("area_pareto_front"), r.areaFront},
+                                    {QStringLiteral("misclassified_noise_px"), errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified))},
+                                    {QStringLiteral("area_mae_noise_pct"), areaNoisePercent(r)},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
                                                                             {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
                                                                             {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},
@@ -401,11 +522,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     writeFile(dir.filePath(QStringLiteral("report.json")), QJsonDocument(json).toJson(QJsonDocument::Indented));
 
     // The lights in order of appearance: each has its own front and colour.
-    QStringList lights;
-    for (const ReportRow& r : rows) {
-        if (!lights.contains(r.light))
-            lights << r.light;
-    }
+    const QStringList lights = lightsOf(rows);
     const ReportRow* best = nullptr;
     const ReportRow* worst = nullptr;
     for (const ReportRow& r : rows) {
@@ -421,7 +538,7 @@ body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:
 h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
 .grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
-.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.grid.minor{stroke:#f4f4f4}
+.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
 .label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
 td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
@@ -455,40 +572,21 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
         page += QStringLiteral("</p>");
     }
     page += QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
-    page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"),
-                  [](const ReportRow& r) { return 100.0 * r.accuracy.hard.misclassified; }, true);
+    page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
     page += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
-    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), [](const ReportRow& r) { return 100.0 * r.accuracy.area.mae; }, false);
-    page += QStringLiteral("<p>Large dots joined by a line: the Pareto front of each light on time and misclassified share. A configuration "
-                           "leaves the front only when another is at least as accurate and faster beyond both p10–p90 spreads (the bars), "
-                           "or more accurate and not slower beyond them, so timing noise does not move it. Identical configurations "
-                           "are measured once, their names joined with “=”.</p>");
-
-    page += QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1<th>shadow pass ms</th><th>lit pass ms</th><th>frame ms (p10–p90)</th>"
-                           "<th>misclassified %</th><th>false shadow %</th><th>false light %</th><th>MAE %</th><th>RMSE %</th><th>area MAE %</th><th>area RMSE %</th></tr>")
-                .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString());
-    for (const ReportRow& r : rows) {
-        const ErrorMetrics& h = r.accuracy.hard;
-        page += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6</td><td>%7 (%8–%9)</td>")
-                    .arg(r.paretoFront ? QStringLiteral(" class=\"front\"") : QString())
-                    .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label),
-                         lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(r.light) + 1) : QString())
-                    .arg(number(r.shadowPass.median, 2), number(r.litPass.median, 2), number(r.frame.median, 2), number(r.frame.p10, 2),
-                         number(r.frame.p90, 2));
-        page += QStringLiteral("<td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td><td>%7</td></tr>")
-                    .arg(number(100 * h.misclassified, 3), number(100 * h.falseShadow, 3), number(100 * h.falseLight, 3), number(100 * h.mae, 3),
-                         number(100 * h.rmse, 3), number(100 * r.accuracy.area.mae, 3), number(100 * r.accuracy.area.rmse, 3));
-    }
-    page += QStringLiteral("</table>");
-    page += QStringLiteral("<h2>Flicker</h2><p>The camera the light is fitted to walks in sub-texel steps while the measured pixels stay put: "
-                           "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.</p>"
-                           "<table><tr><th>configuration</th><th>flips %</th><th>worst pair %</th><th>mean change %</th><th>frames</th></tr>");
-    for (const ReportRow& r : rows) {
-        page += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
-                    .arg(html(r.label), number(100 * r.flicker.flicker, 3), number(100 * r.flicker.worstPair, 3), number(100 * r.flicker.meanChange, 3))
-                    .arg(r.flicker.frames);
-    }
-    page += QStringLiteral("</table>");
+    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
+    page += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
+                           "are more accurate than every faster one. A configuration leaves "
+                           "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
+                           "other's p10; the bars across) and clearly more accurate (their error bands apart; the bars up and down). "
+                           "Configurations that tie on either axis stay on the front together. An error is a count of pixels (MAE "
+                           "times the pixels measured, as fully wrong pixels), and a count n is known to n ± max(3, 2√n): a sub-texel "
+                           "move of camera or light slides the pixels along every shadow edge in or out of error, scattering a count "
+                           "by about √n, and fewer than a few pixels are not resolved at all (%1). Identical configurations are "
+                           "measured once, their names joined with “=”.</p>")
+                .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)));
+    page += configurationTable(rows, lights);
+    page += flickerSection(rows);
     if (best && worst) {
         page += QStringLiteral("<h2>Error images</h2><p class=\"key\">Against the hard reference:<span style=\"background:#eb28c8\"></span>false shadow (acne)"
                                "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks). Beside each, the part of the frame "
