@@ -15,6 +15,9 @@ struct FlickerResult {
     double meanChange = 0.0;    // mean |change of visibility| per receiver pixel and pair (soft filters flicker by degrees)
     int frames = 0;
     int pixels = 0;             // receiver pixels facing the light in the first frame
+    // Steps of the walk in which the light's maps moved. 0 with frames > 1: the casters, not the
+    // camera, bound the fitted volume here, so this camera cannot show shimmer at all.
+    int mapMoves = 0;
 };
 
 // Flips between consecutive buffers of the same pixels (same size, same measuring camera);

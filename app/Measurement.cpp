@@ -69,17 +69,31 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
     Settings still = settings;
     if (!path.empty())
         still.camera = path.front();
+    // Whether the maps moved at all: every view's shadow matrix, frame to frame.
+    const auto matrices = [&renderer] {
+        std::vector<glm::dmat4> m{renderer.lightFrame().shadowMatrix};
+        for (const LightFrame& frame : renderer.shadowViews().frames)
+            m.push_back(frame.shadowMatrix);
+        return m;
+    };
+    std::vector<glm::dmat4> last;
+    int moves = 0;
     try {
         for (const CameraSettings& camera : path) {
             renderer.setFitCamera(camera);
             frames.push_back(renderer.renderVisibility(still, size));
+            const std::vector<glm::dmat4> now = matrices();
+            moves += !last.empty() && now != last ? 1 : 0;
+            last = now;
         }
     } catch (...) {
         renderer.setFitCamera(std::nullopt);
         throw;
     }
     renderer.setFitCamera(std::nullopt);
-    return measureFlicker(frames);
+    FlickerResult result = measureFlicker(frames);
+    result.mapMoves = moves;
+    return result;
 }
 
 std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels)

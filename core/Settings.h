@@ -90,7 +90,7 @@ struct FilterSettings {
     int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf
     int taps = 16;                          // [8, 64]; Poisson taps of FilterMode::Poisson and Pcss
     double radius = 2.5;                    // texels, [0.5, 32]; used by FilterMode::Poisson
-    // pcf and poisson skip their taps where a min/max depth mip of the map says the whole
+    // pcf, poisson and pcss skip their taps where a min/max depth mip of the map says the whole
     // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
     // costs more with every shadow pass than the skipped taps save (`shadowlab report`).
     bool earlyOut = false;

@@ -391,7 +391,7 @@ std::vector<Entry> makeEntries()
     for (const TechniqueParameter& parameter : techniqueParameters())
         e.push_back(parameterKey(parameter));
     e.push_back(boolKey("filter.early_out", [](auto& s) -> auto& { return s.filter.earlyOut; },
-                        "Penumbra-only filtering: pcf and poisson skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
+                        "Penumbra-only filtering: pcf, poisson and pcss skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
     e.push_back(choiceKey<MomentFormat>("moments.format", kMomentFormatNames, [](auto& s) -> auto& { return s.moments.format; },
                                         "Bits per channel of the moments map (moment techniques): 16 halves memory and bandwidth, but "
                                         "holds only small exponents (evsm <= 5.54, esm <= 11.08) and needs a larger filter.moment_bias; "

@@ -410,6 +410,19 @@ private Q_SLOTS:
         QVERIFY(!m_dock->findChild<QWidget*>(QStringLiteral("tuningChart"))->isVisible());
         m_dock->setSettings(presetSettings(QStringLiteral("seed")));
     }
+
+    // The defaults are on the knee: the tuner says so, draws its curve, and offers nothing to
+    // apply; the figures it quotes say what they are the mean of.
+    void tuningTheDefaultsOffersNothingToApply()
+    {
+        m_dock->setSettings(presetSettings(QStringLiteral("seed")));
+        QTest::mouseClick(button("tuneButton"), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([&] { return !m_dock->isBusy(); }, kTimeoutMs));
+        const QString status = label("status")->text();
+        QVERIFY2(status.contains(QStringLiteral("already on the knee")) && status.contains(QStringLiteral("light directions")), qPrintable(status));
+        QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("tuningChart"))->isVisible());
+        QVERIFY(!button("applyTuningButton")->isEnabled());
+    }
 };
 
 SHADOWLAB_TEST_MAIN(TestAccuracyDock)

@@ -200,7 +200,9 @@ private slots:
         for (ReportRow& r : rows) {
             r.accuracy.hard.falseShadow = r.accuracy.hard.misclassified;   // no false light anywhere
             r.flicker.frames = 8;                                          // measured, and none flickers
+            r.flicker.mapMoves = 7;
         }
+        rows[2].flicker.mapMoves = 0;                                      // ... one because its maps never moved
         markParetoFronts(rows);
         QTemporaryDir dir;
         ReportFacts facts;
@@ -212,6 +214,7 @@ private slots:
         const QString page = QString::fromUtf8(file.readAll());
 
         QVERIFY(page.contains("No configuration flickers above 0.0005 %"));
+        QVERIFY2(page.contains("In 1 of 3 configurations the light's maps did not move at all"), "a zero that measured nothing says so");
         QVERIFY(!page.contains("<th>flips %</th>"));
         QVERIFY(!page.contains("<th>false light %</th>") && page.contains("<th>false shadow %</th>"));
         QVERIFY(page.contains("Every configuration has false light"));

@@ -381,6 +381,14 @@ QString flickerSection(const std::vector<ReportRow>& rows)
     section += QStringLiteral("<p>The camera the light is fitted to walks %1 frames in sub-texel steps while the measured pixels stay put: "
                               "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.")
                    .arg(frames);
+    // Flicker of 0 means nothing where the maps never moved: say which it is.
+    const auto still = std::count_if(rows.begin(), rows.end(), [](const ReportRow& r) { return r.flicker.frames > 1 && r.flicker.mapMoves == 0; });
+    if (still > 0)
+        section += QStringLiteral(" In %1 of %2 configurations the light's maps did not move at all during the walk: the casters, not the "
+                                  "camera's view, bound the fitted volume, so this camera cannot show shimmer there (a camera whose view cuts "
+                                  "the shadows, or the city, can).")
+                       .arg(still)
+                       .arg(rows.size());
     if (flickering == 0)
         return section + QStringLiteral(" No configuration flickers above 0.0005 % on either.</p>");
     section += flickering < qsizetype(rows.size()) ? QStringLiteral(" The other %1 configurations flicker below 0.0005 % on both.</p>").arg(rows.size() - std::size_t(flickering))
@@ -502,7 +510,8 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
                                                                             {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
                                                                             {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},
-                                                                            {QStringLiteral("frames"), r.flicker.frames}}}});
+                                                                            {QStringLiteral("frames"), r.flicker.frames},
+                                                                            {QStringLiteral("map_moves"), r.flicker.mapMoves}}}});
     }
     writeFile(dir.filePath(QStringLiteral("report.csv")), csv.toUtf8());
 

@@ -204,6 +204,7 @@ void AccuracyController::tuneBias()
     // A small image: the tuner renders every candidate at every light direction.
     const QSize size = measureSize().scaled(QSize(320, 320), Qt::KeepAspectRatio).expandedTo(QSize(16, 16));
     m_tuner = std::make_unique<BiasTuner>(settings(), size);
+    m_tunedSize = size;
     m_tuneCancelled = false;
     emit busyChanged(true);
     emit progressChanged(0, m_tuner->steps());
@@ -238,13 +239,24 @@ void AccuracyController::tuneStep()
     }
     m_tuning = m_tuner->result();
     const BiasCandidate& best = m_tuning->candidates[m_tuning->best];
-    finish(tr("Best bias (%1 units): slope %2, min %3 — misclassified %4 %, against %5 % as set.")
-               .arg(toString(m_tuning->space))
-               .arg(best.slope)
-               .arg(best.min)
-               .arg(100.0 * best.misclassified(), 0, 'f', 3)
-               .arg(100.0 * m_tuning->current.misclassified(), 0, 'f', 3),
-           false);
+    // Both figures are the tuner's own: the mean over its light directions at its size, not
+    // the accuracy table's one view at the window's.
+    const QString over = tr("mean over %1 light directions at %2×%3").arg(m_tuning->placements.size()).arg(m_tunedSize.width()).arg(m_tunedSize.height());
+    if (!m_tuning->improves) {
+        finish(tr("The bias as set is already on the knee: no bias on the curve misclassifies clearly fewer pixels (%1 % as set, %2).")
+                   .arg(100.0 * m_tuning->current.misclassified(), 0, 'f', 3)
+                   .arg(over),
+               false);
+    } else {
+        finish(tr("Best bias (%1 units): slope %2, min %3 — misclassified %4 %, against %5 % as set (%6).")
+                   .arg(toString(m_tuning->space))
+                   .arg(best.slope)
+                   .arg(best.min)
+                   .arg(100.0 * best.misclassified(), 0, 'f', 3)
+                   .arg(100.0 * m_tuning->current.misclassified(), 0, 'f', 3)
+                   .arg(over),
+               false);
+    }
     emit tuningFinished();
 }
 

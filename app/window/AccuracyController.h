@@ -161,6 +161,7 @@ private:
     std::unique_ptr<BiasTuner> m_tuner;     // while tuning
     bool m_tuneCancelled = false;
     std::optional<BiasTuning> m_tuning;
+    QSize m_tunedSize;                      // the size the tuner measured at
     // The last references traced, newest first: one per side's light placement.
     std::vector<std::pair<ReferenceKey, ReferenceVisibility>> m_references;
     static constexpr std::size_t kCachedReferences = 2;

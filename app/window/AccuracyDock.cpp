@@ -191,7 +191,8 @@ void AccuracyDock::showTuning()
 {
     const auto& t = m_controller->tuning();
     m_tuningChart->setVisible(t.has_value());
-    m_applyTuningButton->setEnabled(t.has_value());
+    // Nothing to apply when the bias as set is already as good as any on the curve.
+    m_applyTuningButton->setEnabled(t && t->improves);
     if (!t)
         return;
     // The acne-against-leak trade-off: each point a bias no other beats on both.
@@ -226,7 +227,7 @@ void AccuracyDock::showTuning()
     m_tuningChart->setChart(chart);
     delete old;
     m_tuningChart->setVisible(true);
-    m_applyTuningButton->setEnabled(true);
+    m_applyTuningButton->setEnabled(t->improves);
 }
 
 void AccuracyDock::updateButtons()

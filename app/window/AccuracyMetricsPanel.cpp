@@ -153,6 +153,7 @@ AccuracyMetricsPanel::Row* AccuracyMetricsPanel::addRow(QGridLayout* grid, const
 {
     auto row = std::make_unique<Row>();
     row->kind = kind;
+    row->toolTip = toolTip;
     auto* nameLabel = new QLabel(name);
     nameLabel->setToolTip(toolTip);
     nameLabel->setWordWrap(true);   // three columns of numbers in compare mode leave a narrow dock little room
@@ -263,6 +264,17 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     put(*m_hardMae, values([](const M& x) { return std::optional(x.hard.mae); }), stale, 5e-5);
     put(*m_hardRmse, values([](const M& x) { return std::optional(x.hard.rmse); }), stale, 5e-5);
     put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale, 0.0);
+    // A zero that measured nothing: the maps stood still through the walk.
+    for (std::size_t s = 0; s < std::min<std::size_t>(controller.sideCount(), 2); ++s) {
+        const auto& m = controller.measurement(s);
+        m_flicker->values[s]->setToolTip(m_flicker->toolTip);
+        if (m && m->flicker.frames > 1 && m->flicker.mapMoves == 0) {
+            m_flicker->values[s]->setText(tr("still"));   // short: the tooltip says why
+            m_flicker->values[s]->setToolTip(tr("The light's maps did not move while the camera walked: the casters, not the view, bound "
+                                                "the fitted volume, so this view cannot show shimmer. Move the camera so its view cuts "
+                                                "the shadows, or try the city."));
+        }
+    }
     // The area reference is a Monte Carlo estimate: a difference within its noise floor is noise.
     double floor = 5e-5;
     for (int s = 0; s < 2; ++s)

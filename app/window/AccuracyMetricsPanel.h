@@ -46,6 +46,7 @@ private:
     struct Row {
         Kind kind;
         std::array<QLabel*, 3> values{};
+        QString toolTip;
     };
     Row* addRow(QGridLayout* grid, const QString& objectName, const QString& name, const QString& toolTip, Kind kind);
     // Fills `row` from both sides' values (nullopt: not measured); `noise` is the size of a
