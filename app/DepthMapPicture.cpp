@@ -242,8 +242,8 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         // The label at the polygon's lowest point on screen, kept inside the pane.
         const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
         // The longest that fits: a narrow pane (compare mode) still reads what it is.
-        const QString text = cut ? fitting(metrics, {QStringLiteral("what the camera sees (beyond the frame: View → Frame Camera Footprint, F)"),
-                                                     QStringLiteral("what the camera sees (beyond the frame: F)"), QStringLiteral("what the camera sees")},
+        const QString text = cut ? fitting(metrics, {QStringLiteral("what the camera sees (it goes on beyond the frame)"),
+                                                     QStringLiteral("what the camera sees (and beyond)"), QStringLiteral("what the camera sees")},
                                            std::max(0, area.width() - 8))
                                  : fitting(metrics, {QStringLiteral("what the camera sees")}, std::max(0, area.width() - 8));
         const double width = metrics.horizontalAdvance(text);

@@ -48,7 +48,7 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
 {
     const QString bleeding = QStringLiteral("filter.bleeding"), bias = QStringLiteral("filter.moment_bias");
     const QString positive = QStringLiteral("filter.exponent_positive"), negative = QStringLiteral("filter.exponent_negative");
-    t.push_back({FilterMode::Vsm, QStringLiteral("vsm"), QStringLiteral("VSM (variance, 2 moments)"),
+    t.push_back({FilterMode::Vsm, QStringLiteral("vsm"), QStringLiteral("VSM (2 moments)"),
                  QStringLiteral("vsm (2 moments, 1 filtered tap): variance shadow maps; blurred and mipmapped like a texture, "
                                 "but light bleeds where occluders overlap at different depths"),
                  QStringLiteral("shadow/vsm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias},
@@ -77,7 +77,7 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
                  momentDefines, momentUniforms, plainLabel("msm"),
                  {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
                   momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})}});
-    t.push_back({FilterMode::Esm, QStringLiteral("esm"), QStringLiteral("ESM (exponential, 1 moment)"),
+    t.push_back({FilterMode::Esm, QStringLiteral("esm"), QStringLiteral("ESM (1 moment)"),
                  QStringLiteral("esm (1 moment exp(c d), 1 filtered tap): exponential shadow maps; the cheapest filterable map, "
                                 "but lit near contacts where receiver and occluder are closer than about 1/c of the depth range"),
                  QStringLiteral("shadow/esm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {positive},
@@ -89,7 +89,7 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
 std::vector<ShadowTechnique> makeTechniques()
 {
     std::vector<ShadowTechnique> t;
-    t.push_back({FilterMode::Hard, QStringLiteral("hard"), QStringLiteral("Hard (1 tap)"),
+    t.push_back({FilterMode::Hard, QStringLiteral("hard"), QStringLiteral("Hard"),
                  QStringLiteral("hard (1 tap): one comparison per pixel; aliased, blocky edges, the cheapest"),
                  QStringLiteral("shadow/hard.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
                  noDefines, noUniforms, plainLabel("hard"), {{QStringLiteral("hard"), {QStringLiteral("filter.mode=hard")}}}});
@@ -104,15 +104,15 @@ std::vector<ShadowTechnique> makeTechniques()
                   {QStringLiteral("pcf 5x5"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=5")}},
                   {QStringLiteral("pcf 7x7"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}}},
                  true});
-    t.push_back({FilterMode::PcfDither4, QStringLiteral("pcf-dither4"), QStringLiteral("PCF dithered (4 taps)"),
+    t.push_back({FilterMode::PcfDither4, QStringLiteral("pcf-dither4"), QStringLiteral("PCF dithered 4"),
                  QStringLiteral("pcf-dither4 (4 dithered taps): a 4 x 4 footprint in 4 lookups, placed per 2 x 2 pixel block"),
                  QStringLiteral("shadow/pcf-dither4.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
                  noDefines, noUniforms, plainLabel("pcf-dither4"), {{QStringLiteral("pcf-dither4"), {QStringLiteral("filter.mode=pcf-dither4")}}}});
-    t.push_back({FilterMode::Pcf64, QStringLiteral("pcf64"), QStringLiteral("PCF 8×8 (64 taps)"),
+    t.push_back({FilterMode::Pcf64, QStringLiteral("pcf64"), QStringLiteral("PCF 8×8"),
                  QStringLiteral("pcf64 (8 x 8 taps): the smoothest and most expensive box"),
                  QStringLiteral("shadow/pcf64.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
                  noDefines, noUniforms, plainLabel("pcf64"), {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}}});
-    t.push_back({FilterMode::HwBilinear, QStringLiteral("hw-bilinear"), QStringLiteral("Hardware bilinear (1 tap)"),
+    t.push_back({FilterMode::HwBilinear, QStringLiteral("hw-bilinear"), QStringLiteral("Hardware bilinear"),
                  QStringLiteral("hw-bilinear (hardware compare, bilinear): one tap that blends four comparisons; smooth edges for the cost of one"),
                  QStringLiteral("shadow/hw-bilinear.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareLinear}, {},
                  noDefines, noUniforms, plainLabel("hw-bilinear"), {{QStringLiteral("hw-bilinear"), {QStringLiteral("filter.mode=hw-bilinear")}}}});
@@ -129,7 +129,7 @@ std::vector<ShadowTechnique> makeTechniques()
                   {QStringLiteral("poisson 32 r5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=32"),
                                                      QStringLiteral("filter.radius=5")}}},
                  true});
-    t.push_back({FilterMode::Pcss, QStringLiteral("pcss"), QStringLiteral("PCSS (contact-hardening)"),
+    t.push_back({FilterMode::Pcss, QStringLiteral("pcss"), QStringLiteral("PCSS (soft)"),
                  QStringLiteral("pcss (16 + filter.taps taps): percentage-closer soft shadows of a disk light of light.radius; "
                                 "a blocker search, then a Poisson filter as wide as the penumbra there"),
                  QStringLiteral("shadow/pcss.glsl"), ShadowMapKind::RawDepth, {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},

@@ -529,6 +529,17 @@ private Q_SLOTS:
         QCOMPARE(window.undoStack(Side::A)->count(), steps + 1);
         QVERIFY(window.settings(Side::A).camera == before.camera);     // the drag turned the light, not the view
         QTRY_VERIFY(std::abs(azimuth->value() - dragged.azimuth) < 1e-6);
+
+        // As a spot light, the place the fields show is where the direction put it.
+        auto* type = dock->findChild<QComboBox*>("light.type");
+        type->setCurrentIndex(type->findData(QStringLiteral("spot")));
+        QVERIFY(window.settings(Side::A).light.type == LightType::Spot);
+        const glm::dvec3 placed = window.settings(Side::A).light.position;
+        for (int i = 0; i < 3; ++i) {
+            auto* box = dock->findChild<SliderSpinBox*>(QStringLiteral("light.position.") + QLatin1Char("xyz"[i]));
+            QVERIFY(box->isVisibleTo(dock));
+            QVERIFY2(std::abs(box->value() - placed[i]) < 1e-6, qPrintable(QStringLiteral("%1 shows %2, is %3").arg(i).arg(box->value()).arg(placed[i])));
+        }
     }
 
     void init() { if (!m_headless) m_headless = std::make_unique<HeadlessRenderer>(); }

@@ -2,6 +2,8 @@
 
 #include "AccuracyController.h"
 #include "AccuracyMetricsPanel.h"
+#include "NoteLabel.h"
+#include "SettingsKeys.h"
 #include "SweepChartPanel.h"
 
 #include <QHBoxLayout>
@@ -67,9 +69,12 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     m_tuningChart = new QChartView;
     m_tuningChart->setObjectName(QStringLiteral("tuningChart"));
     m_tuningChart->setRenderHint(QPainter::Antialiasing);
-    m_tuningChart->setMinimumHeight(180);
+    m_tuningChart->setMinimumHeight(240);
     m_tuningChart->setVisible(false);
     layout->addWidget(m_tuningChart);
+    m_tuningResult = noteLabel(QStringLiteral("tuningResult"));
+    m_tuningResult->setVisible(false);
+    layout->addWidget(m_tuningResult);
 
     auto* scroll = new QScrollArea;
     scroll->setWidget(content);
@@ -191,6 +196,7 @@ void AccuracyDock::showTuning()
 {
     const auto& t = m_controller->tuning();
     m_tuningChart->setVisible(t.has_value());
+    m_tuningResult->setVisible(t.has_value());
     // Nothing to apply when the bias as set is already as good as any on the curve.
     m_applyTuningButton->setEnabled(t && t->improves);
     if (!t)
@@ -220,6 +226,14 @@ void AccuracyDock::showTuning()
     }
     chart->axes(Qt::Horizontal).front()->setRange(0.0, std::max(maxShadow * 1.15, 0.001));
     chart->axes(Qt::Vertical).front()->setRange(0.0, std::max(maxLight * 1.15, 0.001));
+    // Few, short tick labels: a narrow dock otherwise elides every one to "…".
+    for (QAbstractAxis* axis : chart->axes()) {
+        if (auto* value = qobject_cast<QValueAxis*>(axis)) {
+            value->setTickCount(4);
+            value->setLabelFormat(QStringLiteral("%.2g"));
+        }
+    }
+    chart->setMargins(QMargins(4, 4, 4, 4));
     chart->axes(Qt::Horizontal).front()->setTitleText(tr("false shadow % (acne)"));
     chart->axes(Qt::Vertical).front()->setTitleText(tr("false light % (leaks)"));
     chart->legend()->setAlignment(Qt::AlignBottom);
@@ -228,6 +242,19 @@ void AccuracyDock::showTuning()
     delete old;
     m_tuningChart->setVisible(true);
     m_applyTuningButton->setEnabled(t->improves);
+    // What the curve says, under it, where it stays while the status line moves on.
+    const BiasCandidate& knee = t->candidates[t->best];
+    m_tuningResult->setText(t->improves ? tr("Best on the curve: slope %1, min %2 (%3 units), %4 % misclassified against %5 % as set. "
+                                             "Apply tuned bias sets it.")
+                                              .arg(knee.slope)
+                                              .arg(knee.min)
+                                              .arg(toString(t->space))
+                                              .arg(100.0 * knee.misclassified(), 0, 'f', 3)
+                                              .arg(100.0 * t->current.misclassified(), 0, 'f', 3)
+                                        : tr("The bias as set (%1 % misclassified) is already on the knee: no point of the curve is "
+                                             "clearly better, so there is nothing to apply.")
+                                              .arg(100.0 * t->current.misclassified(), 0, 'f', 3));
+    m_tuningResult->setVisible(true);
 }
 
 void AccuracyDock::updateButtons()

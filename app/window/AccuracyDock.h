@@ -74,6 +74,7 @@ private:
     QPushButton* m_tuneButton = nullptr;
     QPushButton* m_applyTuningButton = nullptr;
     QChartView* m_tuningChart = nullptr;   // false shadow against false light of the tuned grid
+    QLabel* m_tuningResult = nullptr;      // what the curve says: the best point, or nothing to apply
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     AccuracyMetricsPanel* m_metrics = nullptr;

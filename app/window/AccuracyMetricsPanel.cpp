@@ -346,12 +346,17 @@ void AccuracyMetricsPanel::showFrameTimes(const std::vector<FrameTimeHistory::Su
         if (frame[s] && !shadow[s])
             m_shadowPass->values[s]->setText(tr("cached"));
     }
-    m_costInfo->setText(frames == 0 ? tr("No frames yet.")
-                                    : tr("Medians of the last %1 frames since the settings changed%2; \"same\" within half the "
-                                         "p10–p90 spread, \"…\" until each side has %3 frames.")
-                                          .arg(frames)
-                                          .arg(cpuTime ? tr(", CPU time (software renderer)") : QString())
-                                          .arg(kFramesToCompare));
+    const QString cpu = cpuTime ? tr(", CPU time (software renderer)") : QString();
+    if (frames == 0)
+        m_costInfo->setText(tr("No frames yet."));
+    else if (sides.size() > 1)
+        m_costInfo->setText(tr("Medians of the last %1 frames since the settings changed%2; \"same\" within half the p10–p90 spread, "
+                               "\"…\" until each side has %3 frames.")
+                                .arg(frames)
+                                .arg(cpu)
+                                .arg(kFramesToCompare));
+    else
+        m_costInfo->setText(tr("Medians of the last %1 frames since the settings changed%2.").arg(frames).arg(cpu));
     // A pass median over fewer frames than the frame's: say so, or it reads larger than the frame.
     QStringList partial;
     for (std::size_t s = 0; s < std::min<std::size_t>(sides.size(), 2); ++s) {

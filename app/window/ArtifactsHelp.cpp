@@ -88,7 +88,7 @@ ArtifactsHelp::ArtifactsHelp(QWidget* parent) : QDialog(parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(browser);
     layout->addWidget(buttons);
-    resize(720, 640);
+    resize(780, 680);     // two pictures side by side in a list item, with no sideways scrolling
 }
 
 const std::map<QString, QImage>& ArtifactsHelp::pictures()

@@ -23,7 +23,7 @@ public:
     // The presets rendered as the dialog shows them, NAME and NAME-fixed, drawn once per run on
     // an offscreen renderer; empty where no GL context can be had.
     static const std::map<QString, QImage>& pictures();
-    static constexpr int kPictureWidth = 320, kPictureHeight = 180;
+    static constexpr int kPictureWidth = 288, kPictureHeight = 162;
 
 signals:
     // A preset link was clicked: show that artifact.

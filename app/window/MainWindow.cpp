@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "AccuracyDock.h"
+#include "AccuracyMetricsPanel.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "ElidedLabel.h"
@@ -494,6 +495,15 @@ QString MainWindow::compareTimingText() const
         return QString();
     const Renderer* renderer = m_views[0]->renderer();
     const bool cpu = renderer && isSoftwareRenderer(renderer->rendererString());
+    // As the accuracy dock: no difference until each side has frames enough to tell one.
+    constexpr int enough = AccuracyMetricsPanel::kFramesToCompare;
+    if (a.frame.count < enough || b.frame.count < enough)
+        return tr("frame A: %1 · B: %2 · measuring (%3 and %4 of %5 frames)")
+            .arg(a.frame.median, 0, 'f', 1)
+            .arg(b.frame.median, 0, 'f', 1)
+            .arg(a.frame.count)
+            .arg(b.frame.count)
+            .arg(enough);
     return tr("frame A: %1 · B: %2 · B − A: %3 ms%4 · medians")
         .arg(a.frame.median, 0, 'f', 1)
         .arg(b.frame.median, 0, 'f', 1)

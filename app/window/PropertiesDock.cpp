@@ -298,12 +298,12 @@ void PropertiesDock::applyPreset(const QString& name)
     Settings candidate;
     try {
         candidate = applyArtifactPreset(artifactPreset(name), m_pending);
-        showPreset(name);
     } catch (const SettingsError& e) {
         markError(QStringLiteral("scene"), QString::fromStdString(e.what()));
         return;
     }
     setSettings(candidate);
+    showPreset(name);   // after: a preset on another scene would otherwise withdraw its own note
     accept(candidate, QString());
 }
 
@@ -541,6 +541,9 @@ void PropertiesDock::addBool(QGridLayout* grid, const QString& key, const QStrin
 
 void PropertiesDock::setSettings(const Settings& settings)
 {
+    // A preset's sentences are about its scene: on another one they no longer say what is shown.
+    if (settings.scene != m_pending.scene)
+        hidePreset();
     m_pending = settings;
     m_loading = true;
     for (const Field& field : std::as_const(m_fields))
@@ -553,8 +556,18 @@ void PropertiesDock::setSettings(const Settings& settings)
         showFit(*m_lastFit, settings.light);
 }
 
+void PropertiesDock::hidePreset()
+{
+    m_presetNote->setVisible(false);
+    m_fixButton->setVisible(false);
+    m_lastPreset.clear();
+}
+
 void PropertiesDock::setSideName(const QString& name)
 {
+    if (name != m_sideName)
+        hidePreset();   // they were about the other side's settings
+    m_sideName = name;
     m_sideLabel->setVisible(!name.isEmpty());
     m_sideLabel->setText(tr("<b>Editing side %1</b> — click a view to edit the other").arg(name));
 }
@@ -604,8 +617,9 @@ void PropertiesDock::resetToDefaults()
 void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
 {
     m_pending = candidate;
-    // light.type and light.projection set each other: both fields show the result.
-    for (const QString linked : {"light.type", "light.projection"}) {
+    // light.type and light.projection set each other, and the direction and the position are
+    // two views of light.position (one of them hidden): every one shows the result.
+    for (const QString linked : {"light.type", "light.projection", "light.position", "light.direction.azimuth"}) {
         if (const auto it = m_fields.find(linked); it != m_fields.end())
             it->load(m_pending);
     }

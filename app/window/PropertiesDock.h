@@ -105,6 +105,7 @@ private:
     void clearErrors();
     void markError(const QString& key, const QString& message);
     void updateDependentRows();
+    void hidePreset();
 
     QStringList m_warned;       // keys showing a fit warning
     std::optional<FittedLight> m_lastFit;   // of the newest frame
@@ -119,6 +120,7 @@ private:
     QLabel* m_presetNote = nullptr;
     QPushButton* m_fixButton = nullptr;
     QString m_lastPreset;
+    QString m_sideName;
     double m_lastAzimuth = 0.0;     // kept while the light stands straight above its target
 };
 

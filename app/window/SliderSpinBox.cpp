@@ -4,6 +4,7 @@
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSlider>
 
@@ -24,7 +25,13 @@ public:
         setDecimals(m_shown == 0 ? 0 : kStoredDecimals);
     }
 
-    QString textFromValue(double value) const override { return SliderSpinBox::formatValue(value, m_shown, locale()); }
+    QString textFromValue(double value) const override
+    {
+        // No group separators: "1275.36 wu" fits the field where "1,275.36 wu" is cut.
+        QLocale plain = locale();
+        plain.setNumberOptions(plain.numberOptions() | QLocale::OmitGroupSeparator);
+        return SliderSpinBox::formatValue(value, m_shown, plain);
+    }
 
     double valueFromText(const QString& text) const override
     {
@@ -77,7 +84,7 @@ SliderSpinBox::SliderSpinBox(double minimum, double maximum, int decimals, QWidg
     m_spinBox->setRange(minimum, maximum);
     m_spinBox->setKeyboardTracking(false);   // apply a typed number on Enter, not per keystroke
     m_spinBox->setAccelerated(true);
-    m_spinBox->setFixedWidth(112);
+    m_spinBox->setFixedWidth(118);
     m_spinBox->setAlignment(Qt::AlignRight);
 
     // The wheel scrolls the dock until the field is clicked or tabbed to.
