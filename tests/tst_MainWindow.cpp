@@ -209,7 +209,8 @@ void tst_MainWindow::dockSliderChangesTheScene_data()
     QTest::addColumn<int>("presses");
     QTest::addColumn<bool>("depthMapChanges");
 
-    QTest::newRow("light x") << QString() << QStringLiteral("light.position.x") << int(Qt::Key_PageUp) << 3 << true;
+    QTest::newRow("light azimuth") << QString() << QStringLiteral("light.azimuth") << int(Qt::Key_PageUp) << 3 << true;
+    QTest::newRow("spot light x") << QStringLiteral("light.type=spot") << QStringLiteral("light.position.x") << int(Qt::Key_PageUp) << 3 << true;
     QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.cull_front=false;bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
                                            << false;
     QTest::newRow("pcf kernel to 9") << QStringLiteral("filter.mode=pcf") << QStringLiteral("filter.kernel") << int(Qt::Key_End) << 1

@@ -669,6 +669,11 @@ void PropertiesDock::clearErrors()
 
 void PropertiesDock::markError(const QString& key, const QString& message)
 {
+    // A directional light's place is edited, and its refusals shown, at its direction's fields.
+    if (key == u"light.position" && m_pending.light.type == LightType::Directional) {
+        markError(QStringLiteral("light.direction.distance"), message.startsWith(key + QStringLiteral(": ")) ? message : key + QStringLiteral(": ") + message);
+        return;
+    }
     auto it = m_fields.find(key);
     if (it == m_fields.end())
         return;
