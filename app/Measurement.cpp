@@ -73,6 +73,10 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
         for (const CameraSettings& camera : path) {
             renderer.setFitCamera(camera);
             frames.push_back(renderer.renderVisibility(still, size));
+            // Flicker reads the shadow term alone: the light terms of every frame held would
+            // nearly double what the walk keeps in memory.
+            frames.back().ambientLight = {};
+            frames.back().directLight = {};
         }
     } catch (...) {
         renderer.setFitCamera(std::nullopt);
