@@ -1,10 +1,24 @@
 #include "AccuracyMeter.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 
 namespace shadowlab {
 
 AccuracyMeter::AccuracyMeter(ReferenceOptions options) : m_options(options) {}
+
+GreyImage shadedLuma(const VisibilityBuffer& buffer, const std::vector<float>& visibility)
+{
+    GreyImage image{buffer.size.width(), buffer.size.height(), std::vector<float>(std::size_t(buffer.pixelCount()), 0.0f)};
+    const std::size_t n = std::min({image.values.size(), visibility.size(), buffer.ambientLight.size(), buffer.directLight.size()});
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3 lit = glm::dvec3(buffer.ambientLight[i]) + double(visibility[i]) * glm::dvec3(buffer.directLight[i]);
+        const glm::dvec3 shown = glm::clamp(lit, 0.0, 1.0);
+        image.values[i] = float(0.299 * shown.r + 0.587 * shown.g + 0.114 * shown.b);
+    }
+    return image;
+}
 
 AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const ReferenceVisibility& reference)
 {
@@ -18,6 +32,13 @@ AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const Refere
     result.hard = compareVisibility(measured, reference.hard, counts);
     if (!reference.area.empty())
         result.area = compareVisibility(measured, reference.area, counts);
+    // Shaded with the reference where it was traced (light-facing pixels), as measured elsewhere.
+    std::vector<float> referenceShade = measured;
+    for (std::size_t i = 0; i < counts.size() && i < reference.hard.size(); ++i) {
+        if (counts[i])
+            referenceShade[i] = reference.hard[i];
+    }
+    result.ssim = meanSsim(shadedLuma(buffer, measured), shadedLuma(buffer, referenceShade));
     result.areaNoiseFloor = reference.areaNoiseFloor;
     result.frame = buffer.image;
     result.hardErrors = errorImage(buffer.image, measured, reference.hard, counts);

@@ -3,6 +3,7 @@
 #include "Scene.h"
 #include "ShadowMetrics.h"
 #include "ShadowReference.h"
+#include "Ssim.h"
 #include "VisibilityBuffer.h"
 
 #include <QImage>
@@ -17,6 +18,9 @@ namespace shadowlab {
 struct AccuracyResult {
     ErrorMetrics hard;              // against one shadow ray per pixel
     ErrorMetrics area;              // against the disk light (pixels == 0 when not traced)
+    // The frame as a person sees it, shaded with the measured shadow term, against the same
+    // frame shaded with the hard reference's: their mean SSIM (Ssim.h) on luma, 1 when alike.
+    double ssim = 1.0;
     QImage frame;                   // the shaded frame that was measured
     QImage hardErrors;              // false shadow / false light over the greyed frame
     double areaNoiseFloor = 0.0;
@@ -25,9 +29,17 @@ struct AccuracyResult {
 };
 
 // The one comparison of a measured shadow term with its reference, used by the accuracy dock,
-// `report` and the tests: metrics against the hard and (when traced) the area reference, and
-// the error image over the measured frame. Only light-facing pixels count.
+// `report` and the tests: metrics against the hard and (when traced) the area reference, the
+// SSIM of the frame against it shaded with the hard reference, and the error image over the
+// measured frame. Only light-facing pixels count; the SSIM covers the whole frame, where the
+// rest is alike.
 AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const ReferenceVisibility& reference);
+
+// `buffer`'s frame shaded again from its light terms with `visibility` (one entry a pixel):
+// ambient + visibility * direct per channel, clamped to 1 as the display clamps it, as luma
+// Y' = 0.299 R + 0.587 G + 0.114 B (the weights the SSIM paper's images were made grey with).
+// Pixels without light terms are 0.
+GreyImage shadedLuma(const VisibilityBuffer& buffer, const std::vector<float>& visibility);
 
 // Measures a renderer's shadow term against the ray-traced reference for the same pixels.
 // The reference depends only on scene, camera, image size and light placement (not on map

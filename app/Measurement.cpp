@@ -82,6 +82,10 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
         for (const CameraSettings& camera : path) {
             renderer.setFitCamera(camera);
             frames.push_back(renderer.renderVisibility(still, size));
+            // Flicker reads the shadow term alone: the light terms of every frame held would
+            // nearly double what the walk keeps in memory.
+            frames.back().ambientLight = {};
+            frames.back().directLight = {};
             const std::vector<glm::dmat4> now = matrices();
             moves += !last.empty() && now != last ? 1 : 0;
             last = now;

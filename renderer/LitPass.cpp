@@ -178,13 +178,16 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     state.depthTest = true;
     state.cullFace = GL_BACK;
     applyPassState(m_gl, state);
-    m_gl->glClearColor(0.11f, 0.12f, 0.15f, 1.0f);
+    const GLfloat clearColour[4] = {0.11f, 0.12f, 0.15f, 1.0f};
+    m_gl->glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
     m_gl->glClearDepth(1.0);
     m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (measure) {
         const GLfloat background[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // mask 0: no surface
         m_gl->glClearBufferfv(GL_COLOR, 1, background);
         m_gl->glClearBufferfv(GL_COLOR, 2, background);
+        m_gl->glClearBufferfv(GL_COLOR, 3, clearColour);    // the background shaded again is itself
+        m_gl->glClearBufferfv(GL_COLOR, 4, background);
     }
 
     p.program.bind();

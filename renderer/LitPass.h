@@ -23,9 +23,11 @@ public:
     explicit LitPass(GlFunctions* gl);
 
     // Draws into `target`, which must have a depth buffer. `map` may be null when shadows are off.
-    // With `measure` the target must also have two RGBA32F attachments, which receive the
-    // camera-relative position and shadow visibility, and the geometric normal and a mask
-    // (1 facing the light, 2 facing away, 0 background). Returns the number of draw calls.
+    // With `measure` the target must also have four RGBA32F attachments, which receive the
+    // camera-relative position and shadow visibility, the geometric normal and a mask
+    // (1 facing the light, 2 facing away, 0 background), and the ambient and direct light that
+    // the colour is made of (ambient + visibility * direct; the background's ambient is the
+    // clear colour). Returns the number of draw calls.
     // `depthRange` is the min/max depth mip of `map` for penumbra-only filtering; it must be
     // current (built from the map as it is) whenever usesDepthRange(settings). `moments` is the
     // moments map a moment technique reads (its sampler ShadowSampler::Moments); `map` still

@@ -40,15 +40,19 @@ RenderTarget MeasureTarget::ensure(QSize size)
     GlTexture color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size, "colour");
     GlTexture position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "position, visibility");
     GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "normal, mask");
+    GlTexture ambient = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "ambient light");
+    GlTexture direct = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "direct light");
     GlTexture depth = makeAttachment(m_gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, size, "depth");
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     labelGlObject(GlLabelKind::Framebuffer, framebuffer.id(), QStringLiteral("measurement"));
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, position.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, ambient.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT4, GL_TEXTURE_2D, direct.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
-    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    m_gl->glDrawBuffers(3, buffers);
+    const GLenum buffers[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
+    m_gl->glDrawBuffers(5, buffers);
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE)
@@ -60,6 +64,8 @@ RenderTarget MeasureTarget::ensure(QSize size)
     m_color = std::move(color);
     m_position = std::move(position);
     m_normal = std::move(normal);
+    m_ambient = std::move(ambient);
+    m_direct = std::move(direct);
     m_depth = std::move(depth);
     m_size = size;
     return {m_framebuffer.id(), m_size};
@@ -73,6 +79,8 @@ VisibilityBuffer MeasureTarget::read(const glm::dvec3& cameraPosition) const
     const int w = m_size.width(), h = m_size.height();
     b.positionVisibility.resize(std::size_t(w) * std::size_t(h));
     b.normalMask.resize(b.positionVisibility.size());
+    b.ambientLight.resize(b.positionVisibility.size());
+    b.directLight.resize(b.positionVisibility.size());
     b.image = QImage(m_size, QImage::Format_RGBA8888);
 
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer.id());
@@ -83,12 +91,18 @@ VisibilityBuffer MeasureTarget::read(const glm::dvec3& cameraPosition) const
     m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, b.positionVisibility.data());
     m_gl->glReadBuffer(GL_COLOR_ATTACHMENT2);
     m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, b.normalMask.data());
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT3);
+    m_gl->glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, b.ambientLight.data());
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT4);
+    m_gl->glReadPixels(0, 0, w, h, GL_RGB, GL_FLOAT, b.directLight.data());
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 
     // GL rows run bottom to top; images and everything else here run top to bottom.
     b.image = b.image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
     flipRows(b.positionVisibility, w, h);
     flipRows(b.normalMask, w, h);
+    flipRows(b.ambientLight, w, h);
+    flipRows(b.directLight, w, h);
     return b;
 }
 

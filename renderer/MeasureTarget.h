@@ -8,8 +8,9 @@
 
 namespace shadowlab {
 
-// A framebuffer with an RGBA8 colour, two RGBA32F measurement attachments and depth, for the
-// lit pass's MEASURE variant.
+// A framebuffer with an RGBA8 colour, four RGBA32F measurement attachments (position and
+// visibility, normal and mask, ambient and direct light) and depth, for the lit pass's MEASURE
+// variant.
 class MeasureTarget {
 public:
     explicit MeasureTarget(GlFunctions* gl);
@@ -24,6 +25,8 @@ private:
     GlTexture m_color;
     GlTexture m_position;
     GlTexture m_normal;
+    GlTexture m_ambient;
+    GlTexture m_direct;
     GlTexture m_depth;
     QSize m_size;
 };

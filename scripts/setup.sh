@@ -17,6 +17,7 @@ packages=(
     librsvg2-bin       # install: the icon's PNG sizes, drawn from its SVG at build time
     desktop-file-utils appstream  # install test: the desktop entry's and the metainfo's validators
     dpkg-dev file      # scripts/package.sh: CPack's .deb and its dependencies (dpkg-shlibdeps)
+    chromium           # report test: the HTML report opened, printed and pictured headless
 )
 
 # OSMesa is optional (Mesa 25.1 removed it): the headless platform uses EGL, and OSMesa as well

@@ -1,7 +1,8 @@
 // Lit pass: Blinn-Phong or Phong with a diffuse texture; the light term is scaled by the
 // shadow visibility from the filter in shadow_filters.glsl. Ambient stays in shadow.
-// With MEASURE the same shadow term also goes to two float targets for the accuracy
-// measurement, so what is measured is exactly what is shaded.
+// With MEASURE the same shadow term also goes to float targets for the accuracy
+// measurement, so what is measured is exactly what is shaded, and with it the light terms
+// that the shadow term scales, so the frame can be shaded again with the reference's.
 // With TEXEL_DENSITY receivers inside the light's volume are tinted by how many screen pixels
 // one shadow texel covers (densityRamp), from the screen-space derivatives of the map position.
 #include "shadow_filters.glsl"
@@ -32,6 +33,8 @@ layout(location = 0) out vec4 fragColor;
 #ifdef MEASURE
 layout(location = 1) out vec4 measuredPosition;    // camera-relative position, visibility
 layout(location = 2) out vec4 measuredNormal;      // geometric normal, 1 facing the light / 2 away / 3 not receiving
+layout(location = 3) out vec3 measuredAmbient;     // the frame is ambient + visibility * direct, so it can be
+layout(location = 4) out vec3 measuredDirect;      // shaded again with the reference's visibility
 #endif
 
 vec3 directionToLight(vec3 position)
@@ -170,5 +173,7 @@ void main()
         geometric = -geometric;
     measuredPosition = vec4(vPosition, visibility);
     measuredNormal = vec4(geometric, !uReceives ? 3.0 : (dot(normal, toLight) > 0.0 ? 1.0 : 2.0));
+    measuredAmbient = ambient;
+    measuredDirect = direct;
 #endif
 }

@@ -58,6 +58,51 @@ private Q_SLOTS:
         QCOMPARE(qRed(e.pixel(2, 0)), qGreen(e.pixel(2, 0)));                // right: grey
     }
 
+    // The frame shaded again from its light terms: ambient + V * direct, clamped as shown.
+    void shadedLumaClampsAsTheDisplay()
+    {
+        VisibilityBuffer buffer;
+        buffer.size = QSize(3, 1);
+        buffer.ambientLight = {glm::vec3(0.3f), glm::vec3(0.3f), glm::vec3(0.1f, 0.2f, 0.3f)};
+        buffer.directLight = {glm::vec3(1.0f), glm::vec3(1.0f), glm::vec3(0.5f, 0.0f, 0.2f)};
+        const GreyImage lit = shadedLuma(buffer, {1.0f, 0.0f, 0.5f});
+        QCOMPARE(lit.width, 3);
+        QCOMPARE(lit.values[0], 1.0f);                          // 1.3 is shown as white
+        QVERIFY(qAbs(lit.values[1] - 0.3f) < 1e-6f);            // in shadow: ambient alone
+        QVERIFY(qAbs(lit.values[2] - (0.299f * 0.35f + 0.587f * 0.2f + 0.114f * 0.4f)) < 1e-6f);
+    }
+
+    // The light terms the lit pass writes make the very frame it shows, so the frame shaded
+    // with the reference's visibility is that frame with only its shadows changed; and acne
+    // spoils that picture far more than the defaults do.
+    void frameShadedWithTheReferenceRanksAcneWorse()
+    {
+        HeadlessRenderer headless;
+        const QSize size(320, 180);
+        const VisibilityBuffer buffer = headless.renderer().renderVisibility(presetSettings("seed"), size);
+        std::vector<float> measured(std::size_t(buffer.pixelCount()));
+        for (int i = 0; i < buffer.pixelCount(); ++i)
+            measured[std::size_t(i)] = buffer.visibility(i);
+        const GreyImage relit = shadedLuma(buffer, measured);
+        double worst = 0.0;
+        for (int y = 0; y < size.height(); ++y) {
+            for (int x = 0; x < size.width(); ++x) {
+                const QRgb shown = buffer.image.pixel(x, y);
+                const double luma = (0.299 * qRed(shown) + 0.587 * qGreen(shown) + 0.114 * qBlue(shown)) / 255.0;
+                worst = std::max(worst, std::abs(luma - double(relit.values[std::size_t(y * size.width() + x)])));
+            }
+        }
+        // 8-bit rounding of the frame, and a step of dithering where a driver dithers.
+        QVERIFY2(worst <= 1.5 / 255.0, qPrintable(QString("the frame differs from its light terms by %1").arg(worst)));
+
+        AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
+        const AccuracyResult defaults = measureAccuracy(meter, headless.renderer(), presetSettings("seed"), size);
+        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        qInfo("SSIM against the frame shaded with the reference: defaults %.5f, no bias %.5f", defaults.ssim, acne.ssim);
+        QVERIFY(defaults.ssim > 0.95 && defaults.ssim < 1.0);
+        QVERIFY(1.0 - acne.ssim > 10.0 * (1.0 - defaults.ssim));
+    }
+
     void hardReferenceMatchesTheAnalyticShadow()
     {
         // A square board of half-size 1 at y = 1 (turned 30 degrees about y) over the plane

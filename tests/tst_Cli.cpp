@@ -6,6 +6,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -375,6 +376,44 @@ private Q_SLOTS:
             QVERIFY(page.contains(label));
         QVERIFY(page.contains("<svg") && page.contains("data:image/png;base64,"));
         QVERIFY(!page.contains("http://") || page.contains("xmlns=\"http://www.w3.org/2000/svg\"")); // self-contained
+    }
+
+    // The perceptual column, last in every format: acne spoils the picture, the defaults
+    // hardly do, and the CSV, JSON and page agree on it.
+    void reportRanksAcneWorseOnSsim()
+    {
+        const QString sweep = m_dir.filePath("ssim-sweep.json");
+        QVERIFY(writeFile(sweep, R"([{"label": "defaults", "set": {}},
+                    {"label": "acne", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0, "filter.mode": "hard"}}])"));
+        const QString dir = m_dir.filePath("ssim-report");
+        const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "1", "--warmup", "0",
+                                 "--area-samples", "1", "--flicker-frames", "0", "--out", dir});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+
+        QFile csv(dir + "/report.csv");
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines[0].endsWith(",area_mae_noise_pct,dssim"), qPrintable(lines[0]));
+        const double defaults = lines[1].split(',').last().toDouble(), acne = lines[2].split(',').last().toDouble();
+        QVERIFY2(defaults >= 0.0 && acne > 3.0 * defaults && acne > 0.01, qPrintable(QString("DSSIM defaults %1, acne %2").arg(defaults).arg(acne)));
+
+        QFile json(dir + "/report.json");
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QJsonArray rows = QJsonDocument::fromJson(json.readAll()).object().value("rows").toArray();
+        QCOMPARE(rows.size(), 2);
+        for (int i = 0; i < 2; ++i) {
+            const QJsonObject row = rows[i].toObject();
+            QVERIFY(qAbs(row.value("dssim").toDouble() - lines[i + 1].split(',').last().toDouble()) < 1e-5);
+            QVERIFY(qAbs(row.value("mean_ssim").toDouble() + row.value("dssim").toDouble() - 1.0) < 1e-9);
+        }
+
+        QFile html(dir + "/report.html");
+        QVERIFY(html.open(QIODevice::ReadOnly));
+        const QString page = QString::fromUtf8(html.readAll());
+        QVERIFY(page.contains(">DSSIM</th></tr>"));
+        const QRegularExpressionMatch acneRow = QRegularExpression(">acne</td>.*?<td>([0-9.]+)</td></tr>").match(page);
+        QVERIFY2(acneRow.hasMatch() && qAbs(acneRow.captured(1).toDouble() - acne) < 1e-5, qPrintable(acneRow.captured(0)));
     }
 
     void reportRejectsABadSweep()

@@ -19,9 +19,10 @@ namespace shadowlab::cli {
 
 namespace {
 
-// The accuracy pass keeps float targets, world positions and two traced references per pixel,
-// about 90 bytes per pixel: 8.3 Mpixels (3840x2160) is about 750 MB.
-const SizeLimits kReportSize{{1, 1}, {3840, 2160}, QStringLiteral("report keeps about 90 bytes per pixel in memory")};
+// The accuracy pass keeps float targets, world positions, the light terms and two traced
+// references per pixel, and the SSIM's local moments for a moment, about 150 bytes per pixel:
+// 8.3 Mpixels (3840x2160) is about 1.2 GB.
+const SizeLimits kReportSize{{1, 1}, {3840, 2160}, QStringLiteral("report keeps about 150 bytes per pixel in memory")};
 
 // Flicker only where there is some: a column of zeros tells nothing row by row.
 void printFlicker(const std::vector<ReportRow>& rows)

@@ -124,6 +124,13 @@ std::pair<double, double> noiseBand(const ReportRow& r, ErrorAxis axis)
     return {100.0 * std::max(0.0, n - band) / pixels, 100.0 * (n + band) / pixels};
 }
 
+// 1 - mean SSIM of the frame against it shaded with the reference: 0 when alike, an error
+// that grows like the others.
+double dssim(const ReportRow& r)
+{
+    return 1.0 - r.accuracy.ssim;
+}
+
 // The area MAE's ± (ErrorNoise.h) in percent.
 double areaNoisePercent(const ReportRow& r)
 {
@@ -341,7 +348,7 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
         table += QStringLiteral("<th>area MAE %</th>");
     for (const Column* c : shown)
         table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
-    table += QStringLiteral("</tr>");
+    table += QStringLiteral("<th>DSSIM</th></tr>");
     for (const ReportRow& r : rows) {
         QStringList fronts;
         if (r.paretoFront)
@@ -361,9 +368,11 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
             table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
         for (const Column* c : shown)
             table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
-        table += QStringLiteral("</tr>");
+        table += QStringLiteral("<td>%1</td></tr>").arg(number(dssim(r), 5));
     }
-    table += QStringLiteral("</table>");
+    table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
+                            "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
+                            "picture.</p>");
     if (!zero.isEmpty())
         table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
     return table;
@@ -477,10 +486,11 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     const QDir dir(directory);
 
     // Times in ms, errors in percent of the measured pixels (MAE and RMSE in percent of full
-    // visibility), as the page shows them; every column says its unit.
+    // visibility), as the page shows them; every column says its unit, but dssim (1 - mean
+    // SSIM), a plain number.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
-                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct\n");
+                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim\n");
     QJsonArray jsonRows;
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
@@ -492,7 +502,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                            number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light),
                            number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4),
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
-                           r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4)}
+                           r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
@@ -507,6 +517,8 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("area_pareto_front"), r.areaFront},
                                     {QStringLiteral("misclassified_noise_px"), errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified))},
                                     {QStringLiteral("area_mae_noise_pct"), areaNoisePercent(r)},
+                                    {QStringLiteral("mean_ssim"), r.accuracy.ssim},
+                                    {QStringLiteral("dssim"), dssim(r)},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
                                                                             {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
                                                                             {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},

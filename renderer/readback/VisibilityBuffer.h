@@ -20,6 +20,11 @@ struct VisibilityBuffer {
     std::vector<glm::vec4> positionVisibility;  // camera-relative xyz, shadow visibility in w
     std::vector<glm::vec4> normalMask;          // geometric normal xyz, Mask in w
     QImage image;                               // the shaded frame itself
+    // The lit pass's light before the shadow term, per pixel: the frame is ambient + visibility
+    // * direct (clamped by the display; the view's tints aside), so that it can be shaded again
+    // with another visibility. The background's ambient is the clear colour.
+    std::vector<glm::vec3> ambientLight;
+    std::vector<glm::vec3> directLight;
 
     int pixelCount() const { return size.width() * size.height(); }
     Mask mask(int i) const { return Mask(int(normalMask[std::size_t(i)].w + 0.5f)); }

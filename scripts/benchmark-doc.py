@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Writes docs/benchmark.md from the reports scripts/benchmark.sh made: REPORTS/<scene>/<light>/
+report.json and report.html. A table per scene, the machine and GL renderer named, the best of
+each light said in one line, and each report's two Pareto charts cut out of its page as
+stand-alone SVG files under OUT/benchmark/."""
+import argparse
+import json
+import os
+import re
+
+
+def standalone_charts(page):
+    """The page's inline SVG charts, each with the page's style sheet and a white ground so that
+    it reads on its own (an <img> of an SVG sees no style of the page around it)."""
+    style = re.search(r"<style>(.*?)</style>", page, re.S).group(1)
+    charts = []
+    for svg in re.findall(r'<svg viewBox="0 0 (\d+) (\d+)" class="chart"[^>]*>(.*?)</svg>', page, re.S):
+        width, height, body = svg
+        charts.append('<svg xmlns="http://www.w3.org/2000/svg" width="%s" height="%s" viewBox="0 0 %s %s">'
+                      '<style>text{font-family:DejaVu Sans,sans-serif}%s</style><rect width="100%%" height="100%%" fill="#fff"/>%s</svg>\n'
+                      % (width, height, width, height, style, body))
+    return charts
+
+
+def percent(value, decimals=3):
+    return "%.*f" % (decimals, value)
+
+
+def front(row):
+    marks = [name for name, key in (("misclassified", "pareto_front"), ("area", "area_pareto_front")) if row[key]]
+    return ", ".join(marks)
+
+
+def scene_table(reports):
+    lines = ["| light | technique | misclassified % | false shadow % | false light % | area MAE % | DSSIM | frame ms (p10–p90) | shadow pass ms | lit pass ms | on the front |",
+             "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
+    for light, report in reports:
+        for row in report["rows"]:
+            hard, frame = row["hard_reference"], row["frame_wall"]
+            lines.append("| %s | %s | %s | %s | %s | %s ± %s | %.5f | %.1f (%.1f–%.1f) | %.1f | %.1f | %s |" % (
+                light, row["label"], percent(hard["misclassified_pct"]), percent(hard["false_shadow_pct"]), percent(hard["false_light_pct"]),
+                percent(row["area_reference"]["mae_pct"]), percent(row["area_mae_noise_pct"]), row["dssim"], frame["median_ms"],
+                frame["p10_ms"], frame["p90_ms"], row["shadow_pass_wall"]["median_ms"], row["lit_pass_wall"]["median_ms"], front(row)))
+    return lines
+
+
+def best_line(light, report):
+    rows = report["rows"]
+    fastest = min(rows, key=lambda r: r["frame_wall"]["median_ms"])
+    hard = min(rows, key=lambda r: r["hard_reference"]["misclassified_pct"])
+    area = min(rows, key=lambda r: r["area_reference"]["mae_pct"])
+    ssim = min(rows, key=lambda r: r["dssim"])
+    return ("- %s light: fastest %s (%.1f ms), fewest misclassified %s (%.3f %%), closest to the area light %s (MAE %.3f %%), "
+            "best DSSIM %s (%.5f)." % (light, fastest["label"], fastest["frame_wall"]["median_ms"], hard["label"],
+                                       hard["hard_reference"]["misclassified_pct"], area["label"], area["area_reference"]["mae_pct"],
+                                       ssim["label"], ssim["dssim"]))
+
+
+def median(values):
+    ordered = sorted(values)
+    middle = len(ordered) // 2
+    return ordered[middle] if len(ordered) % 2 else (ordered[middle - 1] + ordered[middle]) / 2
+
+
+def disagreements(scene, light, report):
+    """Rows whose picture is far worse than their light's typical one (DSSIM at least 10 times the
+    median) while their count of misclassified pixels is not (at most twice the median): errors
+    that stay under the 0.5 threshold, such as a moire of partial shadow, which only the picture
+    shows."""
+    rows = report["rows"]
+    typical_dssim = median([r["dssim"] for r in rows])
+    typical_count = median([r["hard_reference"]["misclassified_pct"] for r in rows])
+    return ["- %s, %s light: %s has DSSIM %.5f (the median %.5f) at %.3f %% misclassified (the median %.3f %%)." % (
+                scene, light, r["label"], r["dssim"], typical_dssim, r["hard_reference"]["misclassified_pct"], typical_count)
+            for r in rows
+            if r["dssim"] >= 10 * typical_dssim and r["hard_reference"]["misclassified_pct"] <= 2 * max(typical_count, 0.001)]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--reports", required=True)
+    parser.add_argument("--out", required=True, help="folder for benchmark.md and benchmark/")
+    parser.add_argument("--seconds", type=int, required=True, help="the whole run")
+    parser.add_argument("--command", required=True, help="the command line, as the page names it")
+    parser.add_argument("--scenes", nargs="+", required=True, help="scene folders of REPORTS in their order")
+    parser.add_argument("--lights", nargs="+", required=True, help="light folders of each scene in their order")
+    args = parser.parse_args()
+
+    pictures = os.path.join(args.out, "benchmark")
+    os.makedirs(pictures, exist_ok=True)
+    for old in os.listdir(pictures):
+        if old.endswith(".svg"):
+            os.remove(os.path.join(pictures, old))
+
+    first = None
+    sections = []
+    disagreeing = []
+    for scene in args.scenes:
+        reports = []
+        for light in args.lights:
+            folder = os.path.join(args.reports, scene, light)
+            with open(os.path.join(folder, "report.json"), encoding="utf-8") as f:
+                report = json.load(f)
+            with open(os.path.join(folder, "report.html"), encoding="utf-8") as f:
+                charts = standalone_charts(f.read())
+            for kind, chart in zip(("misclassified", "area"), charts):
+                with open(os.path.join(pictures, "%s-%s-%s.svg" % (scene, light, kind)), "w", encoding="utf-8") as f:
+                    f.write(chart)
+            reports.append((light, report))
+            disagreeing += disagreements(scene, light, report)
+            first = first or report
+        seconds = sum(r["seconds"] for _, r in reports)
+        section = ["## %s" % scene, "",
+                   "Scene `%s`, %d light-facing pixels measured under the directional light; %.0f s for its %d reports." % (
+                       os.path.basename(reports[0][1]["scene"]), reports[0][1]["rows"][0]["hard_reference"]["pixels"], seconds, len(reports)), ""]
+        section += scene_table(reports) + [""]
+        section += [best_line(light, report) for light, report in reports] + [""]
+        for light, _ in reports:
+            section.append("![%s, %s light: misclassified pixels against frame time](benchmark/%s-%s-misclassified.svg)" % (scene, light, scene, light))
+            section.append("![%s, %s light: MAE against the area light, against frame time](benchmark/%s-%s-area.svg)" % (scene, light, scene, light))
+            section.append("")
+        sections += section
+
+    minutes, seconds = divmod(args.seconds, 60)
+    page = ["# Benchmark: every shadow technique under every light type", "",
+            "Made by `%s` (`shadowlab report` of each technique at its defaults, one report per scene and light type); "
+            "regenerate it with that command, not by hand." % args.command, "",
+            "- Machine: %s" % first["machine"],
+            "- GL renderer: %s" % first["renderer"],
+            "- Image %s, %d timed frames per configuration after %d warm-up, the shadow pass redrawn every frame; "
+            "times are wall-clock milliseconds around `glFinish` (CPU time on a software rasteriser), medians with p10–p90."
+            % (first["size"], first["frames"], first["warmup"]),
+            "- Errors against an Embree ray-traced reference of the same pixels: misclassified pixels (|V − V_ref| > 0.5) split "
+            "into false shadow and false light against one shadow ray a pixel; MAE against a disk light of radius %g traced with "
+            "%d rays a pixel (its noise floor is why no technique reaches 0); DSSIM = 1 − mean SSIM (Wang et al. 2004; 11 × 11 "
+            "Gaussian window, σ 1.5, K1 0.01, K2 0.03, on luma) of the frame against the same frame shaded with the hard "
+            "reference's visibility." % (first["light_radius"], first["area_samples_per_pixel"]),
+            "- DSSIM compares with the hard reference, so a soft shadow (pcss, a wide kernel) scores worse by design there; "
+            "how close a shadow comes to the soft one of a disk light is the area MAE.",
+            "- A row is on the front when no other is both clearly faster and clearly more accurate (see the report's page).",
+            "- The whole run took %d min %02d s." % (minutes, seconds), "",
+            "## Where the picture and the pixel count disagree", "",
+            "Rows whose DSSIM is at least ten times their light's median while their misclassified share is at most twice "
+            "its median: an error that stays under the 0.5 threshold of a misclassified pixel, such as a moiré of partial "
+            "shadow over a lit floor, which only the picture shows.", ""]
+    page += (disagreeing or ["- None: every picture that differs also differs in its count."]) + [""]
+    with open(os.path.join(args.out, "benchmark.md"), "w", encoding="utf-8") as f:
+        f.write("\n".join(page + sections))
+
+
+if __name__ == "__main__":
+    main()
