@@ -12,6 +12,7 @@
 #include "SliderSpinBox.h"
 #include "PropertiesDock.h"
 #include "RayTracer.h"
+#include "Renderer.h"
 #include "SceneFileError.h"
 #include "SceneLibrary.h"
 #include "SceneLoader.h"
@@ -29,6 +30,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <memory>
+
 using namespace shadowlab;
 
 namespace {
@@ -38,6 +41,22 @@ const QString kModels = kTestModels;
 QString model(const QString& relative)
 {
     return kModels + relative;
+}
+
+// Whether side A of `window` has drawn the scene `name` (a file opens in the background).
+bool drawsScene(const MainWindow& window, const QString& name)
+{
+    const Renderer* renderer = window.sceneView(MainWindow::Side::A)->renderer();
+    return renderer && renderer->scene() && renderer->scene()->name == name;
+}
+
+// A shown explorer window at its default size, with no session read or written.
+std::unique_ptr<MainWindow> shownWindow()
+{
+    auto window = std::make_unique<MainWindow>(MainWindow::Persistence::None);
+    window->resize(1200, 750);
+    window->show();
+    return window;
 }
 
 std::size_t triangleCount(const Scene& scene, bool withGround = false)
@@ -395,8 +414,7 @@ private Q_SLOTS:
         QCOMPARE(window.recentScenes(), QStringList{good});
         QVERIFY(window.action("openSceneAction"));
         QCOMPARE(window.action("openSceneAction")->shortcut(), QKeySequence(QKeySequence::Open));
-        QTRY_VERIFY(window.sceneView(MainWindow::Side::A)->renderer() && window.sceneView(MainWindow::Side::A)->renderer()->scene()
-                    && window.sceneView(MainWindow::Side::A)->renderer()->scene()->name == good);
+        QTRY_VERIFY(drawsScene(window, good));
         // A bad file after a good one keeps the good one.
         QVERIFY(!window.openScene("/nonexistent.glb").isEmpty());
         QCOMPARE(window.settings(MainWindow::Side::A).scene, good);
@@ -420,9 +438,8 @@ private Q_SLOTS:
     void compareModeOpensAModelForBothSides()
     {
         using Side = MainWindow::Side;
-        MainWindow window(MainWindow::Persistence::None);
-        window.resize(1200, 750);
-        window.show();
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         window.setCompareMode(true);
         window.selectSide(Side::B);
@@ -449,8 +466,7 @@ private Q_SLOTS:
         QVERIFY(opened.bias.space == BiasSpace::Texel);
         QCOMPARE(opened.bias.slope, 1.5);
         QVERIFY2(a.shadow.distance > seedA.shadow.distance, "the cascades' reach follows the model's size");
-        QTRY_VERIFY(window.sceneView(Side::A)->renderer() && window.sceneView(Side::A)->renderer()->scene()
-                    && window.sceneView(Side::A)->renderer()->scene()->name == engine);
+        QTRY_VERIFY(drawsScene(window, engine));
 
         // One undo step brings the seed back on both sides.
         window.undoStack(Side::B)->undo();
@@ -479,14 +495,12 @@ private Q_SLOTS:
     void lightControlsFitTheScene()
     {
         using Side = MainWindow::Side;
-        MainWindow window(MainWindow::Persistence::None);
-        window.resize(1200, 750);
-        window.show();
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         const QString engine = model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
         QCOMPARE(window.openScene(engine), QString());
-        QTRY_VERIFY(window.sceneView(Side::A)->renderer() && window.sceneView(Side::A)->renderer()->scene()
-                    && window.sceneView(Side::A)->renderer()->scene()->name == engine);
+        QTRY_VERIFY(drawsScene(window, engine));
         PropertiesDock* dock = window.propertiesDock();
         QTRY_VERIFY(dock->findChild<SliderSpinBox*>("light.target.x")->slider()->maximum() > 0);
         // No slider of a position sits pinned at an end of its span.
