@@ -62,7 +62,8 @@ RenderTarget HeadlessRenderer::targetOfSize(QSize size)
     makeCurrent();
     if (!m_framebuffer || m_framebuffer->size() != size) {
         m_framebuffer.reset();
-        m_framebuffer = std::make_unique<QOpenGLFramebufferObject>(size, QOpenGLFramebufferObject::Depth, GL_TEXTURE_2D, GL_RGBA8);
+        // With stencil, like a window's: the lit pass masks where lookups can find a caster.
+        m_framebuffer = std::make_unique<QOpenGLFramebufferObject>(size, QOpenGLFramebufferObject::CombinedDepthStencil, GL_TEXTURE_2D, GL_RGBA8);
         if (!m_framebuffer->isValid()) {
             m_framebuffer.reset();
             throw SettingsError(QStringLiteral("size"), QStringLiteral("the driver cannot make a %1x%2 framebuffer; choose a smaller size")

@@ -18,6 +18,10 @@ struct FrameStats {
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
     int litDraws = 0;
+    // Of the lit pass's draws, those of receivers that no caster reaches, shaded without a
+    // shadow lookup (core/ShadowReach.h), and whether it masked straddling receivers by stencil.
+    int litPlainDraws = 0;
+    bool litReachMasked = false;
     double texelWorldSize = 0.0;        // world units covered by one shadow-map texel, as rendered (after light.fit)
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame

@@ -13,6 +13,7 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(s
         m_bounds.extend(m_objectBounds.back());
     }
     for (const Mesh& mesh : m_scene.meshes) {
+        m_meshPlanes.push_back(flatPlane(mesh));
         GpuMesh g{makeVertexArray(gl), makeBuffer(gl), makeBuffer(gl), GLsizei(mesh.indices.size())};
         gl->glBindVertexArray(g.vertexArray.id());
         gl->glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
@@ -40,7 +41,7 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_scene(std::move(s
         gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, image.constBits());
         gl->glGenerateMipmap(GL_TEXTURE_2D);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);

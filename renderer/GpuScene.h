@@ -4,6 +4,7 @@
 #include "Scene.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -20,6 +21,8 @@ public:
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
     // scene().bounds(), computed once: Scene::bounds() visits every vertex.
     const Bounds& bounds() const { return m_bounds; }
+    // flatPlane() of scene().meshes[mesh], computed once at upload.
+    const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
     // Binds the object's vertex array and draws it.
     void draw(const SceneObject& object) const;
     // The diffuse texture the object's colour is multiplied by (its base colour multiplies it).
@@ -37,6 +40,7 @@ private:
     Scene m_scene;
     std::vector<GpuMesh> m_meshes;
     std::vector<Bounds> m_objectBounds;
+    std::vector<std::optional<MeshPlane>> m_meshPlanes;
     Bounds m_bounds;
     std::array<GlTexture, 3> m_textures;   // Checker, Wood, Flat (white)
     std::vector<GlTexture> m_images;

@@ -21,6 +21,10 @@ namespace {
 constexpr GLuint kDiffuseUnit = 0;
 constexpr GLuint kShadowUnit = 1;
 
+// Above this share of the frame a mask saves less than drawing the straddling receivers twice
+// costs (both halves still run every vertex and set up every triangle).
+constexpr double kMaxMaskShare = 0.6;
+
 } // namespace
 
 LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
@@ -59,11 +63,17 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
 
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
-QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth)
+QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
 {
     QStringList defines;
+    // Without lookups (shadows off, or receivers out of reach) no technique, bias or early-out
+    // code is compiled, so every technique shares that variant.
+    const bool lookups = settings.shadow.enabled && !outOfReach;
     const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
-    defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
+    if (lookups)
+        defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
+    else
+        defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"");
     if (settings.shadow.enabled)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
@@ -77,13 +87,13 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
     }
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
-    if (settings.bias.space == BiasSpace::Depth)
+    if (lookups && settings.bias.space == BiasSpace::Depth)
         defines << QStringLiteral("BIAS_DEPTH");
-    else if (settings.bias.space == BiasSpace::Texel)
+    else if (lookups && settings.bias.space == BiasSpace::Texel)
         defines << QStringLiteral("BIAS_TEXEL");
-    if (settings.bias.receiverPlane)
+    if (lookups && settings.bias.receiverPlane)
         defines << QStringLiteral("RECEIVER_PLANE");
-    if (usesDepthRange(settings))
+    if (lookups && usesDepthRange(settings))
         defines << QStringLiteral("EARLY_OUT");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
@@ -99,9 +109,9 @@ bool LitPass::usesDepthRange(const Settings& settings)
     return settings.shadow.enabled && settings.filter.earlyOut && shadowTechnique(settings.filter.mode).penumbraOnly;
 }
 
-LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth)
+LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
 {
-    const QStringList defines = variantDefines(settings, measure, reversedDepth);
+    const QStringList defines = variantDefines(settings, measure, reversedDepth, outOfReach);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
@@ -160,6 +170,133 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
     }
 }
 
+void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+                               const ShadowMap* map, bool readsRange, const DepthRangePass* depthRange)
+{
+    p.program.bind();
+    p.program.set(p.diffuse, int(kDiffuseUnit));
+    // Camera-relative: differences of large coordinates are taken in double here, not in float
+    // on the GPU.
+    p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
+    p.program.set(p.lightDirection, glm::vec3(light.direction));
+    if (settings.light.type == LightType::Spot) {
+        const double half = glm::radians(settings.light.fov) * 0.5;
+        p.program.set(p.techniqueUniform("uSpotCone"), glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff)))));
+    }
+    if (map == nullptr)
+        return;
+    // World size of a texel (at unit distance for a perspective light), the wider axis, with
+    // the fitted volume the map was rendered with.
+    const double texel = texelWorldSize(light.volume, map->size());
+    const double biasScale = settings.bias.space == BiasSpace::Texel ? texel : 1.0;
+    p.program.set(p.biasSlope, float(settings.bias.slope * biasScale));
+    p.program.set(p.biasMin, float(settings.bias.min * biasScale));
+    for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
+        p.program.set(p.techniqueUniform(u.name), u.value);
+    p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
+    p.program.set(p.shadowUvWorld, glm::vec2(float(light.volume.width()), float(light.volume.height())));
+    p.program.set(p.shadowDepthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
+    p.program.set(p.normalOffset, float(settings.bias.normal * texel));
+    p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
+    if (usesShadowViews(settings)) {
+        if (m_views == nullptr || m_views->frames.empty())
+            throw RenderError(QStringLiteral("the light's views (cascades or cube faces) were not fitted before the lit pass"));
+        setViewUniforms(p, camera, settings, *map);
+    }
+    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    for (std::size_t i = 0; i < samplers.size(); ++i) {
+        const bool readsMoments = samplers[i] == ShadowSampler::Moments;
+        p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap,
+                      int(kShadowUnit + GLuint(i)));
+    }
+    if (readsRange) {
+        p.program.set(p.depthRange, int(kShadowUnit + GLuint(samplers.size())));
+        p.program.set(p.depthRangeLevels, depthRange->levels());
+    }
+}
+
+bool LitPass::boundTargetHasStencil() const
+{
+    GLint framebuffer = 0;
+    m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+    const GLenum attachment = framebuffer == 0 ? GL_STENCIL : GL_STENCIL_ATTACHMENT;
+    GLint type = GL_NONE;
+    m_gl->glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type == GL_NONE)
+        return false;
+    GLint bits = 0;
+    m_gl->glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &bits);
+    return bits > 0;
+}
+
+void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
+{
+    if (!m_maskProgram) {
+        m_maskProgram = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), QStringList());
+        m_maskMatrix = m_maskProgram->uniform("uLightModelViewProjection");
+        m_maskVertexArray = makeVertexArray(m_gl);
+        m_maskVertices = makeBuffer(m_gl);
+        m_gl->glBindVertexArray(m_maskVertexArray.id());
+        m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_maskVertices.id());
+        labelGlObject(GlLabelKind::VertexArray, m_maskVertexArray.id(), QStringLiteral("shadow reach mask"));
+        m_gl->glEnableVertexAttribArray(0);
+        m_gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    }
+    m_gl->glBindVertexArray(m_maskVertexArray.id());
+    if (m_maskGeneration != m_reach->generation) {
+        // Twelve triangles a box, relative to the first box's first corner so that float keeps
+        // the precision of a scene far from the origin.
+        static constexpr int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        std::vector<glm::vec3> triangles;
+        m_maskOrigin = m_reach->boxes.front().worldCorners()[0];
+        for (const ReachBox& box : m_reach->boxes) {
+            const std::array<glm::dvec3, 8> corners = box.worldCorners();
+            for (const auto& face : kFaces) {
+                for (int k : {0, 1, 2, 0, 2, 3})
+                    triangles.emplace_back(corners[std::size_t(face[k])] - m_maskOrigin);
+            }
+        }
+        m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_maskVertices.id());
+        m_gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(glm::vec3)), triangles.data(), GL_STATIC_DRAW);
+        m_maskVertexCount = GLsizei(triangles.size());
+        m_maskGeneration = m_reach->generation;
+    }
+    // Every face, front and back, with no depth test: a pixel is marked when its ray passes
+    // through a box in front of the near plane, which holds for every surface point inside one.
+    PassState state;
+    state.depthTest = false;
+    state.depthWrite = false;
+    applyPassState(m_gl, state);
+    m_gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    m_gl->glEnable(GL_STENCIL_TEST);
+    m_gl->glStencilFunc(GL_ALWAYS, 1, 0xff);
+    m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    m_gl->glEnable(GL_SCISSOR_TEST);
+    m_gl->glScissor(pixels.x(), pixels.y(), pixels.width(), pixels.height());
+    m_maskProgram->bind();
+    m_maskProgram->set(m_maskMatrix, glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), m_maskOrigin)));
+    m_gl->glDrawArrays(GL_TRIANGLES, 0, m_maskVertexCount);
+    m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+}
+
+void LitPass::drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+                          const std::vector<std::pair<double, std::size_t>>& order)
+{
+    const auto& objects = scene.scene().objects;
+    const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    for (const auto& [distance, i] : order) {
+        const SceneObject& object = objects[i];
+        p.program.set(p.model, glm::mat4(toCamera * object.model));
+        p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
+        p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
+        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
+        p.program.set(p.baseColour, object.baseColour);
+        p.program.set(p.receives, int(object.receivesShadow));
+        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
+        scene.draw(object);
+    }
+}
+
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
                     const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
                     const MomentsMap* moments)
@@ -170,82 +307,13 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     const bool readsRange = usesDepthRange(settings) && map != nullptr;
     if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
         throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
-    Program& p = programFor(settings, measure, light.reversedDepth);
+    const bool shadows = settings.shadow.enabled && map != nullptr;
+    const auto& objects = scene.scene().objects;
+    const bool reachKnown = shadows && m_reach != nullptr && m_reach->objects.size() == objects.size();
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    PassState state;
-    state.viewport = QRect(QPoint(0, 0), target.size);
-    state.depthTest = true;
-    state.cullFace = GL_BACK;
-    applyPassState(m_gl, state);
-    const GLfloat clearColour[4] = {0.11f, 0.12f, 0.15f, 1.0f};
-    m_gl->glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
-    m_gl->glClearDepth(1.0);
-    m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (measure) {
-        const GLfloat background[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // mask 0: no surface
-        m_gl->glClearBufferfv(GL_COLOR, 1, background);
-        m_gl->glClearBufferfv(GL_COLOR, 2, background);
-        m_gl->glClearBufferfv(GL_COLOR, 3, clearColour);    // the background shaded again is itself
-        m_gl->glClearBufferfv(GL_COLOR, 4, background);
-    }
-
-    p.program.bind();
-    p.program.set(p.diffuse, int(kDiffuseUnit));
-    // Camera-relative: differences of large coordinates are taken in double here, not in float
-    // on the GPU.
-    const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
-    p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
-    p.program.set(p.lightDirection, glm::vec3(light.direction));
-    if (settings.light.type == LightType::Spot) {
-        const double half = glm::radians(settings.light.fov) * 0.5;
-        p.program.set(p.techniqueUniform("uSpotCone"), glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff)))));
-    }
-
-    const bool shadows = settings.shadow.enabled && map != nullptr;
-    if (shadows) {
-        // World size of a texel (at unit distance for a perspective light), the wider axis, with
-        // the fitted volume the map was rendered with.
-        const double texel = texelWorldSize(light.volume, map->size());
-        const double biasScale = settings.bias.space == BiasSpace::Texel ? texel : 1.0;
-        p.program.set(p.biasSlope, float(settings.bias.slope * biasScale));
-        p.program.set(p.biasMin, float(settings.bias.min * biasScale));
-        for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
-            p.program.set(p.techniqueUniform(u.name), u.value);
-        p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
-        p.program.set(p.shadowUvWorld, glm::vec2(float(light.volume.width()), float(light.volume.height())));
-        p.program.set(p.shadowDepthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
-        p.program.set(p.normalOffset, float(settings.bias.normal * texel));
-        p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
-        if (usesShadowViews(settings)) {
-            if (m_views == nullptr || m_views->frames.empty())
-                throw RenderError(QStringLiteral("the light's views (cascades or cube faces) were not fitted before the lit pass"));
-            setViewUniforms(p, camera, settings, *map);
-        }
-        // Each sampler the technique's row asks for reads the map on a unit of its own.
-        const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
-        for (std::size_t i = 0; i < samplers.size(); ++i) {
-            const GLuint unit = kShadowUnit + GLuint(i);
-            const bool readsMoments = samplers[i] == ShadowSampler::Moments;
-            p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap, int(unit));
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, readsMoments ? moments->texture() : map->texture());
-            m_gl->glBindSampler(unit, readsMoments ? moments->sampler() : map->sampler(samplers[i]));
-        }
-        if (readsRange) {
-            const GLuint unit = kShadowUnit + GLuint(samplers.size());
-            p.program.set(p.depthRange, int(unit));
-            p.program.set(p.depthRangeLevels, depthRange->levels());
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, depthRange->texture());
-            m_gl->glBindSampler(unit, 0);
-        }
-    }
-    m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
-
     // Nearest first, so the depth test rejects hidden pixels before they are shaded: on a
     // software rasteriser every shaded pixel costs, and the ground plane is behind everything.
-    const auto& objects = scene.scene().objects;
     m_drawOrder.clear();
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const Bounds& bounds = scene.objectBounds(i);
@@ -255,20 +323,105 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         m_drawOrder.emplace_back(glm::length(nearest - camera.position), i);
     }
     std::sort(m_drawOrder.begin(), m_drawOrder.end());
-
-    int draws = 0;
-    for (const auto& [distance, i] : m_drawOrder) {
-        const SceneObject& object = objects[i];
-        p.program.set(p.model, glm::mat4(toCamera * object.model));
-        p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
-        p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
-        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
-        p.program.set(p.baseColour, object.baseColour);
-        p.program.set(p.receives, int(object.receivesShadow));
-        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
-        scene.draw(object);
-        ++draws;
+    // Which receivers need a lookup: those the reach touches; those that straddle it only inside
+    // its stencil mask, when a mask is worth drawing.
+    m_lookupOrder.clear();
+    m_maskedLookupOrder.clear();
+    m_maskedPlainOrder.clear();
+    m_plainOrder.clear();
+    const bool mask = reachKnown && !m_reach->boxes.empty() && m_reach->partlyCount() > 0 && m_reach->screenShare <= kMaxMaskShare
+        && boundTargetHasStencil();
+    for (const auto& entry : m_drawOrder) {
+        const Reach reach = reachKnown ? m_reach->objects[entry.second] : Reach::Inside;
+        if (reach == Reach::Outside) {
+            m_plainOrder.push_back(entry);
+        } else if (reach == Reach::Partly && mask) {
+            m_maskedLookupOrder.push_back(entry);
+            m_maskedPlainOrder.push_back(entry);
+        } else {
+            m_lookupOrder.push_back(entry);
+        }
     }
+    m_reachUse = ReachUse{int(m_lookupOrder.size() + m_maskedLookupOrder.size()), int(m_plainOrder.size() + m_maskedPlainOrder.size()), mask};
+
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.depthTest = true;
+    state.cullFace = GL_BACK;
+    applyPassState(m_gl, state);
+    const GLfloat clearColour[4] = {0.11f, 0.12f, 0.15f, 1.0f};
+    m_gl->glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
+    m_gl->glClearDepth(1.0);
+    m_gl->glClearStencil(0);
+    m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    if (measure) {
+        const GLfloat background[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // mask 0: no surface
+        m_gl->glClearBufferfv(GL_COLOR, 1, background);
+        m_gl->glClearBufferfv(GL_COLOR, 2, background);
+        m_gl->glClearBufferfv(GL_COLOR, 3, clearColour);    // the background shaded again is itself
+        m_gl->glClearBufferfv(GL_COLOR, 4, background);
+    }
+    // The lookups' draws stay inside the reach's rectangle on screen, so the rasteriser skips
+    // the rest of the frame for them (a pixel of margin for rounding).
+    QRect reachPixels;
+    if (mask) {
+        const glm::dvec4 r = m_reach->screenRect;
+        const QSize size = target.size;
+        const int x0 = std::max(int(std::floor((r.x + 1.0) * 0.5 * size.width())) - 1, 0);
+        const int y0 = std::max(int(std::floor((r.y + 1.0) * 0.5 * size.height())) - 1, 0);
+        const int x1 = std::min(int(std::ceil((r.z + 1.0) * 0.5 * size.width())) + 1, size.width());
+        const int y1 = std::min(int(std::ceil((r.w + 1.0) * 0.5 * size.height())) + 1, size.height());
+        reachPixels = QRect(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+        drawReachMask(camera, reachPixels);
+        applyPassState(m_gl, state);
+    }
+
+    if (shadows) {
+        // Each sampler the technique's row asks for reads the map on a unit of its own.
+        const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+        for (std::size_t i = 0; i < samplers.size(); ++i) {
+            const GLuint unit = kShadowUnit + GLuint(i);
+            const bool readsMoments = samplers[i] == ShadowSampler::Moments;
+            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+            m_gl->glBindTexture(GL_TEXTURE_2D, readsMoments ? moments->texture() : map->texture());
+            m_gl->glBindSampler(unit, readsMoments ? moments->sampler() : map->sampler(samplers[i]));
+        }
+        if (readsRange) {
+            const GLuint unit = kShadowUnit + GLuint(samplers.size());
+            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+            m_gl->glBindTexture(GL_TEXTURE_2D, depthRange->texture());
+            m_gl->glBindSampler(unit, 0);
+        }
+    }
+    m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
+
+    const ShadowMap* shadowMap = shadows ? map : nullptr;
+    if (!m_lookupOrder.empty() || !m_maskedLookupOrder.empty()) {
+        Program& lookup = programFor(settings, measure, light.reversedDepth);
+        setFrameUniforms(lookup, camera, light, settings, shadowMap, readsRange, depthRange);
+        drawObjects(lookup, scene, camera, light, m_lookupOrder);
+        if (!m_maskedLookupOrder.empty()) {
+            m_gl->glEnable(GL_STENCIL_TEST);
+            m_gl->glStencilFunc(GL_EQUAL, 1, 0xff);
+            m_gl->glEnable(GL_SCISSOR_TEST);
+            m_gl->glScissor(reachPixels.x(), reachPixels.y(), reachPixels.width(), reachPixels.height());
+            drawObjects(lookup, scene, camera, light, m_maskedLookupOrder);
+            m_gl->glDisable(GL_SCISSOR_TEST);
+            m_gl->glDisable(GL_STENCIL_TEST);
+        }
+    }
+    if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
+        Program& plain = programFor(settings, measure, light.reversedDepth, true);
+        setFrameUniforms(plain, camera, light, settings, shadowMap, readsRange, depthRange);
+        drawObjects(plain, scene, camera, light, m_plainOrder);
+        if (!m_maskedPlainOrder.empty()) {
+            m_gl->glEnable(GL_STENCIL_TEST);
+            m_gl->glStencilFunc(GL_NOTEQUAL, 1, 0xff);
+            drawObjects(plain, scene, camera, light, m_maskedPlainOrder);
+            m_gl->glDisable(GL_STENCIL_TEST);
+        }
+    }
+    const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());
 
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);

@@ -7,6 +7,7 @@
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
+#include "ShadowReach.h"
 #include "ShadowViewFrames.h"
 
 #include <map>
@@ -40,13 +41,27 @@ public:
     // technique that can skip its taps).
     static bool usesDepthRange(const Settings& settings);
 
-    // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
-    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false);
+    // The #defines that select the variant for `settings` (exposed for tests and diagnostics);
+    // `outOfReach`: the variant for receivers no caster reaches, which takes no lookup.
+    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
     // The views the next render() reads when the settings use several (usesShadowViews()):
     // cascades or cube faces in the tiles of `map`. Null: none. Not owned; must outlive render().
     void setShadowViews(const ShadowViewFrames* views) { m_views = views; }
+    // Where the next render()'s lookups can find a caster, per object of the scene (computed by
+    // the Renderer with the fit): receivers out of reach are shaded without a lookup, and those
+    // that straddle it are drawn twice under a stencil mask of the reach where the target has a
+    // stencil buffer. Null: every receiver looks up. Not owned; must outlive render().
+    void setShadowReach(const ShadowReach* reach) { m_reach = reach; }
+    // What the last render() did with the reach: receivers drawn with and without a lookup, and
+    // whether it drew the stencil mask.
+    struct ReachUse {
+        int lookupDraws = 0;
+        int plainDraws = 0;
+        bool masked = false;
+    };
+    const ReachUse& lastReachUse() const { return m_reachUse; }
 
 private:
     struct Program {
@@ -59,13 +74,36 @@ private:
         GLint techniqueUniform(const QByteArray& name);
     };
 
-    Program& programFor(const Settings& settings, bool measure, bool reversedDepth);
+    Program& programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach = false);
     void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map);
+    void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings, const ShadowMap* map,
+                          bool readsRange, const DepthRangePass* depthRange);
+    // Whether the framebuffer bound now has stencil bits.
+    bool boundTargetHasStencil() const;
+    // Marks the reach's boxes in the stencil buffer (1 inside) within `pixels`, colour and
+    // depth untouched.
+    void drawReachMask(const CameraFrame& camera, const QRect& pixels);
+    void drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+                     const std::vector<std::pair<double, std::size_t>>& order);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;
     std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
+    // The same split by what the reach says: looked up everywhere, looked up inside the mask,
+    // shaded without a lookup outside the mask, shaded without a lookup everywhere.
+    std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
+    const ShadowReach* m_reach = nullptr;
+    ReachUse m_reachUse;
+    // The mask's program (the shadow pass's: positions through one matrix, no colour) and its
+    // boxes, uploaded when the reach changes.
+    std::unique_ptr<ShaderProgram> m_maskProgram;
+    GLint m_maskMatrix = -1;
+    GlVertexArray m_maskVertexArray;
+    GlBuffer m_maskVertices;
+    GLsizei m_maskVertexCount = 0;
+    int m_maskGeneration = -1;                  // the reach the uploaded boxes were made from
+    glm::dvec3 m_maskOrigin{0.0};               // the boxes' vertices are relative to it
 };
 
 } // namespace shadowlab

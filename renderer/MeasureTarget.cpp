@@ -42,7 +42,8 @@ RenderTarget MeasureTarget::ensure(QSize size)
     GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "normal, mask");
     GlTexture ambient = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "ambient light");
     GlTexture direct = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "direct light");
-    GlTexture depth = makeAttachment(m_gl, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, size, "depth");
+    // With stencil: the lit pass masks where a shadow lookup can find a caster (core/ShadowReach.h).
+    GlTexture depth = makeAttachment(m_gl, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, size, "depth, stencil");
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     labelGlObject(GlLabelKind::Framebuffer, framebuffer.id(), QStringLiteral("measurement"));
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
@@ -50,7 +51,7 @@ RenderTarget MeasureTarget::ensure(QSize size)
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, ambient.id(), 0);
     m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT4, GL_TEXTURE_2D, direct.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
     const GLenum buffers[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
     m_gl->glDrawBuffers(5, buffers);
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);

@@ -74,6 +74,36 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         m_fit = std::move(fitted);
         m_fitInputs = std::move(inputs);
         ++m_fitCount;
+        // Where lookups can find a caster follows the fit, and so is kept with it.
+        const int generation = m_reach.generation + 1;
+        m_reach = ShadowReach{};
+        if (settings.shadow.enabled) {
+            const Scene& scene = m_scene->scene();
+            std::vector<ReachObject> objects;
+            objects.reserve(scene.objects.size());
+            // The shadow pass culls front faces (bias.cull_front) of depth maps only.
+            const bool culls = settings.bias.cullFront && !moments;
+            for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+                const SceneObject& object = scene.objects[i];
+                ReachObject r{m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, std::nullopt, std::nullopt};
+                if (const std::optional<MeshPlane>& plane = m_scene->meshPlane(object.mesh); culls && plane) {
+                    // Through the model matrix by two edges, so a mirroring one turns the winding too.
+                    const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+                    const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
+                    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
+                    const glm::dvec3 origin = world(plane->point);
+                    const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
+                    if (glm::length(normal) > 0.0) {
+                        r.culledPlanePoint = origin;
+                        r.culledPlaneNormal = glm::normalize(normal);
+                    }
+                }
+                objects.push_back(r);
+            }
+            const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
+            m_reach = shadowlab::shadowReach(settings, frames, settings.map.size, objects, camera);
+        }
+        m_reach.generation = generation;
     }
     const FittedLight& fit = m_fit;
     const ShadowViewFrames& views = m_views;
@@ -301,8 +331,11 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     lit.start();
     m_litTimer.begin();
     m_litPass.setShadowViews(&m_views);
+    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
                                       m_depthRange.get(), m_momentsMap.get());
+    stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
+    stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
@@ -324,8 +357,11 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     const RenderTarget target = m_measureTarget->ensure(size);
     m_litTimer.begin();
     m_litPass.setShadowViews(&m_views);
+    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
                                       true, m_depthRange.get(), m_momentsMap.get());
+    stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
+    stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
     finishTiming(TimingMode::Finish, stats);
     m_stats = stats;

@@ -16,6 +16,7 @@
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
+#include "ShadowReach.h"
 #include "ShadowTechnique.h"
 #include "ShadowViewFrames.h"
 
@@ -89,6 +90,11 @@ public:
     // reset with nullopt: what flicker measures, the shadow maps following a moving camera while
     // the measured pixels stay put.
     void setFitCamera(std::optional<CameraSettings> camera) { m_fitCamera = std::move(camera); }
+    // Where the lookups of the last frame could find a caster (core/ShadowReach.h).
+    const ShadowReach& shadowReach() const { return m_reach; }
+    // Whether the lit pass shades receivers out of the casters' reach without a lookup (on by
+    // default; the frame is the same either way, which the tests check with this off).
+    void setSkipsOutOfReach(bool skips) { m_skipsOutOfReach = skips; }
     // Forces the next render() to redraw the shadow map.
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
@@ -174,6 +180,8 @@ private:
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
     FittedLight m_fit;
+    ShadowReach m_reach;            // computed with the fit
+    bool m_skipsOutOfReach = true;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;

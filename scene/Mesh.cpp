@@ -6,6 +6,48 @@
 #include <algorithm>
 #include <cmath>
 
+namespace shadowlab {
+
+std::optional<MeshPlane> flatPlane(const Mesh& mesh)
+{
+    // The normal of the largest triangle: the one rounding disturbs least.
+    const auto position = [&](std::uint32_t i) { return glm::dvec3(mesh.vertices.at(i).position); };
+    glm::dvec3 normal(0.0);
+    double largest = 0.0;
+    glm::dvec3 lo(0.0), hi(0.0);
+    for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+        const glm::dvec3 p(mesh.vertices[k].position);
+        lo = k == 0 ? p : glm::min(lo, p);
+        hi = k == 0 ? p : glm::max(hi, p);
+    }
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a = position(mesh.indices[t]);
+        const glm::dvec3 n = glm::cross(position(mesh.indices[t + 1]) - a, position(mesh.indices[t + 2]) - a);
+        if (glm::length(n) > largest) {
+            largest = glm::length(n);
+            normal = n;
+        }
+    }
+    if (largest <= 0.0 || mesh.vertices.empty())
+        return std::nullopt;
+    normal /= largest;
+    const glm::dvec3 point = position(mesh.indices[0]);
+    // Flat to a millionth of its size, and every triangle with area turned the same way.
+    const double tolerance = 1e-6 * std::max(glm::length(hi - lo), 1e-30);
+    for (const Vertex& v : mesh.vertices) {
+        if (std::abs(glm::dot(glm::dvec3(v.position) - point, normal)) > tolerance)
+            return std::nullopt;
+    }
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a = position(mesh.indices[t]);
+        if (glm::dot(glm::cross(position(mesh.indices[t + 1]) - a, position(mesh.indices[t + 2]) - a), normal) < 0.0)
+            return std::nullopt;
+    }
+    return MeshPlane{point, normal};
+}
+
+} // namespace shadowlab
+
 namespace shadowlab::meshes {
 
 namespace {

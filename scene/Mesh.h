@@ -3,6 +3,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
+
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +22,16 @@ struct Mesh {
     std::vector<std::uint32_t> indices;
     bool convex = false;        // no part can shadow another part (the light fit uses this)
 };
+
+// A flat one-sided mesh (a ground, a wall): a point on the plane all its triangles lie in and
+// the unit normal their winding gives, every triangle facing the same way. Nullopt for any
+// other mesh. A light on the front side sees every triangle's front face, so culling front
+// faces leaves nothing of it in the shadow map.
+struct MeshPlane {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0, 1.0, 0.0};
+};
+std::optional<MeshPlane> flatPlane(const Mesh& mesh);
 
 namespace meshes {
 

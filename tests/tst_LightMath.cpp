@@ -5,6 +5,7 @@
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowReach.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -602,6 +603,77 @@ private Q_SLOTS:
         QVERIFY(isOutsideFrustum(f.viewProjection, aboveNear, false));
         QVERIFY(!isOutsideFrustum(f.viewProjection, aboveNear, true));
         QVERIFY(isOutsideFrustum(f.viewProjection, Bounds{}, true));
+    }
+
+    // The reach of a light straight above a ground with one cube: the cube's column, grown by
+    // the filter's taps; the ground straddles it, a box off to the side is out of it, and the
+    // culled ground itself casts nothing from above but does from below.
+    void reachIsTheCastersColumns()
+    {
+        Settings s = presetSettings("seed");
+        s.light.position = {0.0, 10.0, 0.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 5.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 20.0;
+        const LightFrame light = computeLightFrame(s.light);
+        CameraSettings cameraSettings;
+        cameraSettings.position = {0.0, 6.0, 8.0};
+        cameraSettings.target = {0.0, 0.0, 0.0};
+        const Bounds scene{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}};
+        const CameraFrame camera = computeCameraFrame(cameraSettings, 16.0 / 9.0, scene);
+        const Bounds groundBounds{{-5.0, 0.0, -5.0}, {5.0, 0.0, 5.0}};
+        std::vector<ReachObject> objects{
+            {groundBounds, true, true, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)},
+            {Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, true, true, std::nullopt, std::nullopt},
+            {Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, false, true, std::nullopt, std::nullopt},
+        };
+        const ShadowReach reach = shadowReach(s, {light}, 1024, objects, camera);
+        QCOMPARE(int(reach.boxes.size()), 1);
+        const ReachBox& box = reach.boxes.front();
+        const double texel = 1.0 / 1024.0;
+        const double grown = *tapReachTexels(s) * texel;
+        // The cube spans 0.1 of the 10-unit map square around its centre.
+        QVERIFY(std::abs((box.uvMax.x - box.uvMin.x) - (0.1 + 2.0 * grown)) < 1e-9);
+        QVERIFY(box.depthMin > 0.0);                       // from the cube's top, not the near plane
+        QCOMPARE(reach.objects[0], Reach::Partly);
+        QCOMPARE(reach.objects[1], Reach::Inside);
+        QCOMPARE(reach.objects[2], Reach::Outside);
+        QVERIFY(reach.screenShare > 0.0 && reach.screenShare < 0.2);
+
+        // A light below sees the ground's back: it is drawn and reaches everything on it.
+        s.light.position = {0.0, -10.0, 0.1};
+        const ShadowReach below = shadowReach(s, {computeLightFrame(s.light)}, 1024, objects, camera);
+        QCOMPARE(int(below.boxes.size()), 1);
+        QVERIFY(below.boxes.front().uvMax.x - below.boxes.front().uvMin.x > 0.99);
+
+        // Wider taps reach further; pcss and mipmapped moments may read anywhere.
+        Settings wide = s;
+        wide.filter.mode = FilterMode::Pcf;
+        wide.filter.kernel = 9;
+        QVERIFY(*tapReachTexels(wide) > *tapReachTexels(s));
+        wide.filter.mode = FilterMode::Pcss;
+        QVERIFY(!tapReachTexels(wide));
+        wide.filter.mode = FilterMode::Vsm;
+        wide.moments.mipmaps = true;
+        QVERIFY(!tapReachTexels(wide));
+        // A receiver-plane tap may compare deeper than the receiver: no depth cut then.
+        wide.filter.mode = FilterMode::Pcf;
+        wide.bias.receiverPlane = true;
+        QVERIFY(!referencesStayNearer(wide));
+        wide.bias.receiverPlane = false;
+        QVERIFY(referencesStayNearer(wide));
+    }
+
+    // Nothing casts: no box, and every receiver is out of reach.
+    void reachOfNothingIsEmpty()
+    {
+        Settings s = presetSettings("seed");
+        const LightFrame light = computeLightFrame(s.light);
+        const CameraFrame camera = computeCameraFrame(s.camera, 1.5, Bounds{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}});
+        const ShadowReach reach = shadowReach(s, {light}, 2048, {{Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, false, true, {}, {}}}, camera);
+        QVERIFY(reach.boxes.empty());
+        QCOMPARE(reach.objects.front(), Reach::Outside);
     }
 };
 

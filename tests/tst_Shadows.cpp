@@ -441,11 +441,13 @@ private Q_SLOTS:
     void onlyTheVariantInUseIsCompiled()
     {
         HeadlessRenderer fresh;
-        fresh.renderFrame(presetSettings("seed"), kSize);
-        QCOMPARE(fresh.renderer().compiledLitVariants(), 1);
-        fresh.renderFrame(seedWith({"filter.mode=pcf64"}), kSize);
+        // The technique's, and the one without a lookup for receivers out of the casters' reach,
+        // which every technique shares.
         fresh.renderFrame(presetSettings("seed"), kSize);
         QCOMPARE(fresh.renderer().compiledLitVariants(), 2);
+        fresh.renderFrame(seedWith({"filter.mode=pcf64"}), kSize);
+        fresh.renderFrame(presetSettings("seed"), kSize);
+        QCOMPARE(fresh.renderer().compiledLitVariants(), 3);
     }
 
     void badSettingsKeepTheLastGoodState()
@@ -500,6 +502,100 @@ private Q_SLOTS:
             }
         QVERIFY2(hi - lo > 100, qPrintable(QString("perspective depth spans only %1..%2").arg(lo).arg(hi)));
         QVERIFY(maxChannelDifference(ortho, perspective) > 30);
+    }
+
+    // Receivers no caster reaches are shaded without a lookup, and those that straddle the
+    // reach are drawn twice under its stencil mask: the frame and the measured shadow term must
+    // be exactly what a lookup everywhere gives, for every technique, light, bias and scene.
+    void outOfReachShadingChangesNothing_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        for (const ShadowTechnique& t : shadowTechniques())
+            QTest::newRow(qPrintable(QStringLiteral("seed, ") + t.key)) << "seed" << QStringList{"filter.mode=" + t.key};
+        QTest::newRow("ground in the map") << "seed" << QStringList{"bias.cull_front=false"};
+        QTest::newRow("no bias") << "seed" << QStringList{"bias.cull_front=false", "bias.slope=0", "bias.min=0"};
+        QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"};
+        QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true", "bias.cull_front=false"};
+        QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"};
+        QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"};
+        QTest::newRow("reversed depth") << "seed" << QStringList{"map.format=depth32f"};
+        QTest::newRow("small map") << "seed" << QStringList{"map.size=64", "filter.mode=pcf", "filter.kernel=9"};
+        QTest::newRow("polygon offset") << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=2", "bias.polygon_units=4"};
+        QTest::newRow("mipmapped vsm") << "seed" << QStringList{"filter.mode=vsm", "moments.mipmaps=true"};
+        QTest::newRow("pcss early out") << "seed" << QStringList{"filter.mode=pcss", "filter.early_out=true"};
+        QTest::newRow("pcf early out") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=5", "filter.early_out=true"};
+        QTest::newRow("spot") << "seed" << QStringList{"light.type=spot"};
+        QTest::newRow("spot, normal offset") << "seed" << QStringList{"light.type=spot", "bias.normal=2", "filter.mode=pcf"};
+        QTest::newRow("point") << "seed" << QStringList{"light.type=point"};
+        QTest::newRow("point, pcf") << "seed" << QStringList{"light.type=point", "filter.mode=pcf", "bias.cull_front=false"};
+        QTest::newRow("cascades") << "seed" << QStringList{"shadow.cascades=3"};
+        QTest::newRow("perspective") << "seed" << QStringList{"light.projection=perspective", "light.fov=70"};
+        QTest::newRow("light straight above") << "seed" << QStringList{"light.position=0,6,0"};
+        QTest::newRow("grazing light") << "seed" << QStringList{"light.position=-9,0.4,-1"};
+        QTest::newRow("light below the ground") << "seed" << QStringList{"light.position=-2,-4,-1"};
+        QTest::newRow("manual volume") << "seed" << QStringList{"light.fit=manual"};
+        QTest::newRow("camera low and close") << "seed" << QStringList{"camera.position=2.5,0.3,2.5", "camera.target=0,0.5,0"};
+        QTest::newRow("camera from below") << "seed" << QStringList{"camera.position=1,-3,4"};
+        QTest::newRow("camera inside the reach") << "seed" << QStringList{"camera.position=-1.2,2.5,-0.6", "camera.target=0,0,0"};
+        QTest::newRow("texel density") << "seed" << QStringList{"shading.texel_density=true"};
+        QTest::newRow("phong") << "seed" << QStringList{"shading.model=phong"};
+        for (const QString& name : sceneNames()) {
+            if (name != QLatin1String("seed"))
+                QTest::newRow(qPrintable(name)) << name << QStringList{};
+        }
+        QTest::newRow("city, spot") << "city" << QStringList{"light.type=spot"};
+        QTest::newRow("torus, pcss") << "torus" << QStringList{"filter.mode=pcss"};
+    }
+
+    void outOfReachShadingChangesNothing()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        Settings settings = presetSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(settings, a);
+        Renderer& renderer = m_headless->renderer();
+        renderer.setSkipsOutOfReach(false);
+        const QImage everywhere = m_headless->renderScene(settings, kSize);
+        const VisibilityBuffer measuredEverywhere = renderer.renderVisibility(settings, kSize);
+        renderer.setSkipsOutOfReach(true);
+        const QImage skipping = m_headless->renderScene(settings, kSize);
+        const FrameStats stats = renderer.lastFrame();
+        const VisibilityBuffer measuredSkipping = renderer.renderVisibility(settings, kSize);
+        int differing = 0;
+        for (int y = 0; y < kSize.height(); ++y)
+            for (int x = 0; x < kSize.width(); ++x)
+                differing += everywhere.pixel(x, y) != skipping.pixel(x, y);
+        QVERIFY2(differing == 0, qPrintable(QStringLiteral("%1 pixels differ (%2 of %3 draws without a lookup%4)")
+                                               .arg(differing).arg(stats.litPlainDraws).arg(stats.litDraws)
+                                               .arg(stats.litReachMasked ? QStringLiteral(", masked") : QString())));
+        int visibilityDiffers = 0;
+        for (std::size_t i = 0; i < measuredEverywhere.positionVisibility.size(); ++i)
+            visibilityDiffers += measuredEverywhere.positionVisibility[i].w != measuredSkipping.positionVisibility[i].w;
+        QCOMPARE(visibilityDiffers, 0);
+    }
+
+    // Seed's ground is out of reach except around the cubes' columns: it is drawn with and
+    // without a lookup under the mask, and a scene where nothing casts needs no lookup at all.
+    void lookupsOnlyWhereACasterReaches()
+    {
+        m_headless->renderScene(presetSettings("seed"), kSize);
+        const ShadowReach& reach = m_headless->renderer().shadowReach();
+        QVERIFY(!reach.boxes.empty());
+        QCOMPARE(reach.partlyCount(), 1);                   // the ground
+        QVERIFY(reach.screenShare < 0.5);
+        const FrameStats& stats = m_headless->renderer().lastFrame();
+        QVERIFY(stats.litReachMasked);
+        QCOMPARE(stats.litPlainDraws, 1);
+        // Shadows of the cubes only: no caster at all.
+        Scene ground = buildScene("seed");
+        ground.objects.resize(1);
+        m_headless->renderer().setScene(ground);
+        m_headless->renderScene(presetSettings("seed"), kSize);
+        QVERIFY(m_headless->renderer().shadowReach().boxes.empty());
+        QCOMPARE(m_headless->renderer().lastFrame().litPlainDraws, m_headless->renderer().lastFrame().litDraws);
+        m_headless->renderer().setScene(std::nullopt);
     }
 
     void everyPresetRenders()

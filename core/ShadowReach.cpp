@@ -1,0 +1,308 @@
+#include "ShadowReach.h"
+
+#include <glm/common.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cmath>
+
+#include <algorithm>
+
+namespace shadowlab {
+
+namespace {
+
+// A box's image in a view's texture space: xy and depth bounds of its corners, or nothing when
+// it lies wholly behind a perspective light (where every receiver is lit). `straddles` when
+// some corners are behind and some in front: its image is then unbounded.
+struct TextureFootprint {
+    bool empty = true;
+    bool straddles = false;
+    glm::dvec3 min{0.0}, max{0.0};
+};
+
+TextureFootprint footprint(const Bounds& bounds, const glm::dmat4& shadowMatrix)
+{
+    TextureFootprint f;
+    if (bounds.isEmpty())
+        return f;
+    int behind = 0;
+    Bounds image;
+    for (const glm::dvec3& corner : bounds.corners()) {
+        const glm::dvec4 p = shadowMatrix * glm::dvec4(corner, 1.0);
+        if (p.w <= 1e-12) {
+            ++behind;
+            continue;
+        }
+        image.extend(glm::dvec3(p) / p.w);
+    }
+    if (behind == 8)
+        return f;
+    f.empty = false;
+    f.straddles = behind > 0;
+    f.min = image.min;
+    f.max = image.max;
+    return f;
+}
+
+// Whether the light of `view` sees only front faces of the object's culled plane, so that the
+// shadow pass draws none of it.
+bool culledFrom(const ReachObject& object, const LightFrame& view)
+{
+    if (!object.culledPlanePoint || !object.culledPlaneNormal)
+        return false;
+    const glm::dvec3& n = *object.culledPlaneNormal;
+    const double scale = glm::length(object.bounds.max - object.bounds.min) + glm::length(view.position - *object.culledPlanePoint);
+    return view.perspective ? glm::dot(n, view.position - *object.culledPlanePoint) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
+}
+
+bool finite(const glm::dvec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+std::optional<double> tapReachTexels(const Settings& settings)
+{
+    const FilterSettings& filter = settings.filter;
+    double taps = 1.0;      // a nearest tap may round to the neighbour; a bilinear one reads 2 x 2
+    switch (filter.mode) {
+    case FilterMode::Hard:
+    case FilterMode::HwBilinear:
+        break;
+    case FilterMode::Pcf:
+        taps += (filter.kernel - 1) / 2;
+        break;
+    case FilterMode::PcfDither4:
+        taps += 2.5;
+        break;
+    case FilterMode::Pcf64:
+        taps += 3.5;
+        break;
+    case FilterMode::Poisson:
+        taps += filter.radius;
+        break;
+    case FilterMode::Pcss:
+        return std::nullopt;    // its blocker search spans up to half the map
+    case FilterMode::Vsm:
+    case FilterMode::Evsm2:
+    case FilterMode::Evsm4:
+    case FilterMode::Msm:
+    case FilterMode::Esm:
+        // A coarse mip or an anisotropic footprint may average texels far from the pixel.
+        if (settings.moments.mipmaps || settings.moments.anisotropy > 1)
+            return std::nullopt;
+        taps += settings.moments.blur / 2 + 1;  // the blur spread each caster's moments
+        break;
+    }
+    // The normal offset moves the lookup point by bias.normal texels (more at a perspective
+    // light's grazing angles), and two texels of margin for rounding.
+    return taps + 1.5 * settings.bias.normal + 2.0;
+}
+
+bool referencesStayNearer(const Settings& settings)
+{
+    if (settings.bias.normal > 0.0 && settings.light.projection == LightProjection::Perspective)
+        return false;
+    switch (settings.filter.mode) {
+    case FilterMode::Hard:
+    case FilterMode::HwBilinear:
+        return true;
+    case FilterMode::Pcf:
+    case FilterMode::PcfDither4:
+    case FilterMode::Pcf64:
+        return !settings.bias.receiverPlane;
+    case FilterMode::Poisson:
+    case FilterMode::Pcss:
+    case FilterMode::Vsm:
+    case FilterMode::Evsm2:
+    case FilterMode::Evsm4:
+    case FilterMode::Msm:
+    case FilterMode::Esm:
+        return false;
+    }
+    return false;
+}
+
+std::array<glm::dvec3, 8> ReachBox::worldCorners() const
+{
+    std::array<glm::dvec3, 8> corners;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 texture((i & 1) ? uvMax.x : uvMin.x, (i & 2) ? uvMax.y : uvMin.y, (i & 4) ? 1.0 : depthMin, 1.0);
+        const glm::dvec4 world = textureToWorld * texture;
+        corners[std::size_t(i)] = glm::dvec3(world) / world.w;
+    }
+    return corners;
+}
+
+int ShadowReach::outsideCount() const
+{
+    return int(std::count(objects.begin(), objects.end(), Reach::Outside));
+}
+
+int ShadowReach::partlyCount() const
+{
+    return int(std::count(objects.begin(), objects.end(), Reach::Partly));
+}
+
+namespace {
+
+struct UvRect {
+    glm::dvec2 min, max;
+    double depth = 0.0;     // the nearest caster's depth
+
+    bool overlaps(const UvRect& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
+    void extend(const UvRect& o)
+    {
+        min = glm::min(min, o.min);
+        max = glm::max(max, o.max);
+        depth = std::min(depth, o.depth);
+    }
+};
+
+// One rectangle per caster is the tightest reach; overlapping ones are merged, and past
+// kMaxReachBoxes the union of all stands (a mask of thousands of columns saves nothing).
+constexpr std::size_t kMaxReachBoxes = 16;
+
+std::vector<UvRect> mergedRects(std::vector<UvRect> rects)
+{
+    // Overlapping rectangles become one, until none overlap (a few dozen at most get here).
+    for (bool merged = rects.size() <= 4 * kMaxReachBoxes; merged;) {
+        merged = false;
+        for (std::size_t i = 0; i < rects.size() && !merged; ++i) {
+            for (std::size_t j = i + 1; j < rects.size(); ++j) {
+                if (rects[i].overlaps(rects[j])) {
+                    rects[i].extend(rects[j]);
+                    rects.erase(rects.begin() + std::ptrdiff_t(j));
+                    merged = true;
+                    break;
+                }
+            }
+        }
+    }
+    if (rects.size() > kMaxReachBoxes) {
+        UvRect all = rects.front();
+        for (const UvRect& r : rects)
+            all.extend(r);
+        rects.assign(1, all);
+    }
+    return rects;
+}
+
+} // namespace
+
+ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
+                        const std::vector<ReachObject>& objects, const CameraFrame& camera)
+{
+    ShadowReach reach;
+    const std::optional<double> texels = tapReachTexels(settings);
+    const double grow = texels ? *texels / double(std::max(mapSize, 1)) : 1.0;
+    const bool nearerIsLit = referencesStayNearer(settings);
+    // Per view: each caster's footprint, grown by the taps' reach, within the map's square
+    // (outside it every tap reads the lit border).
+    std::vector<std::vector<ReachBox>> perView;
+    for (const LightFrame& view : views) {
+        std::vector<UvRect> rects;
+        bool anywhere = false;
+        for (const ReachObject& object : objects) {
+            if (!object.casts || culledFrom(object, view))
+                continue;
+            const TextureFootprint f = footprint(object.bounds, view.shadowMatrix);
+            if (f.empty)
+                continue;
+            anywhere = anywhere || f.straddles || !texels;
+            // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
+            const double depth = nearerIsLit ? std::clamp(f.min.z - 1e-4, 0.0, 1.0) : 0.0;
+            UvRect r{glm::clamp(glm::dvec2(f.min) - grow, 0.0, 1.0), glm::clamp(glm::dvec2(f.max) + grow, 0.0, 1.0), depth};
+            if (r.min.x < r.max.x && r.min.y < r.max.y)
+                rects.push_back(r);
+        }
+        if (anywhere)
+            rects.assign(1, UvRect{glm::dvec2(0.0), glm::dvec2(1.0), 0.0});
+        std::vector<ReachBox> boxes;
+        const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
+        for (const UvRect& r : mergedRects(std::move(rects))) {
+            ReachBox box;
+            box.textureToWorld = textureToWorld;
+            box.uvMin = r.min;
+            box.uvMax = r.max;
+            box.depthMin = r.depth;
+            for (const glm::dvec3& c : box.worldCorners()) {
+                if (!finite(c)) {
+                    // A degenerate light matrix: no box can be drawn, so every receiver looks up.
+                    reach.boxes.clear();
+                    reach.objects.assign(objects.size(), Reach::Outside);
+                    for (std::size_t i = 0; i < objects.size(); ++i)
+                        reach.objects[i] = objects[i].receives ? Reach::Inside : Reach::Outside;
+                    return reach;
+                }
+            }
+            boxes.push_back(box);
+            reach.boxes.push_back(box);
+        }
+        perView.push_back(std::move(boxes));
+    }
+
+    // Each receiver against each view's boxes, in that view's texture space.
+    reach.objects.assign(objects.size(), Reach::Outside);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (!objects[i].receives)
+            continue;
+        Reach r = Reach::Outside;
+        for (std::size_t v = 0; v < views.size() && r != Reach::Inside; ++v) {
+            if (perView[v].empty())
+                continue;
+            const TextureFootprint f = footprint(objects[i].bounds, views[v].shadowMatrix);
+            if (f.empty)
+                continue;
+            if (f.straddles) {
+                r = Reach::Partly;
+                continue;
+            }
+            for (const ReachBox& box : perView[v]) {
+                const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
+                    || f.max.z < box.depthMin || f.min.z > 1.0;
+                const bool within = f.min.x >= box.uvMin.x && f.max.x <= box.uvMax.x && f.min.y >= box.uvMin.y && f.max.y <= box.uvMax.y
+                    && f.min.z >= box.depthMin && f.max.z <= 1.0;
+                if (within) {
+                    r = Reach::Inside;
+                    break;
+                }
+                if (!apart)
+                    r = Reach::Partly;
+            }
+        }
+        reach.objects[i] = r;
+    }
+
+    // What share of the frame the boxes may cover: their corners' bounding rectangle on screen.
+    double share = 0.0;
+    glm::dvec2 all0(1.0), all1(-1.0);
+    for (const ReachBox& box : reach.boxes) {
+        glm::dvec2 lo(1.0), hi(-1.0);
+        bool behind = false;
+        for (const glm::dvec3& c : box.worldCorners()) {
+            const glm::dvec4 clip = camera.viewProjection * glm::dvec4(c, 1.0);
+            if (clip.w <= 1e-9) {
+                behind = true;
+                break;
+            }
+            lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+            hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+        }
+        if (behind) {
+            lo = glm::dvec2(-1.0);
+            hi = glm::dvec2(1.0);
+        }
+        lo = glm::clamp(lo, -1.0, 1.0);
+        hi = glm::clamp(hi, -1.0, 1.0);
+        share += std::max(hi.x - lo.x, 0.0) * std::max(hi.y - lo.y, 0.0) / 4.0;
+        all0 = glm::min(all0, lo);
+        all1 = glm::max(all1, hi);
+    }
+    reach.screenShare = std::min(share, 1.0);
+    reach.screenRect = reach.boxes.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
+    return reach;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "Bounds.h"
+#include "LightMath.h"
+#include "Settings.h"
+
+#include <glm/vec2.hpp>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace shadowlab {
+
+// Where a shadow lookup can find anything but the lit border or the far plane: in each view of
+// the light, the casters' footprint on the map, grown by how far the filter's taps reach, over
+// the view's whole depth. A receiver outside every such box is lit whatever it reads, so the lit
+// pass shades it without a lookup (a variant without one, and a stencil mask of the boxes where
+// an object straddles them): the same frame for less work where casters are few.
+
+// How far from the lookup point, in texels of the map, the taps of `settings`' filter read,
+// with the normal offset and a margin for rounding; nullopt where the filter may read anywhere
+// in the map (pcss's blocker search, mipmapped or anisotropic moments).
+std::optional<double> tapReachTexels(const Settings& settings);
+// Whether every tap of `settings` compares a reference no deeper than the receiver itself, so
+// that a receiver nearer the light than every caster is lit: false where the receiver's plane
+// or a grown bias moves a tap's reference (wide filters, pcss), for moments, and for a normal
+// offset under a perspective light (off its axis the offset can move the lookup deeper).
+bool referencesStayNearer(const Settings& settings);
+
+// One view's reach: a box in that view's shadow-texture space (xy in map uv, z conventional
+// depth from its casters' nearest, or 0, to the far plane).
+struct ReachBox {
+    glm::dvec2 uvMin{0.0}, uvMax{1.0};
+    double depthMin = 0.0;
+    glm::dmat4 textureToWorld{1.0};     // inverse of the view's shadowMatrix
+    std::array<glm::dvec3, 8> worldCorners() const;
+};
+
+enum class Reach { Outside, Partly, Inside };
+
+struct ShadowReach {
+    std::vector<ReachBox> boxes;        // empty: nothing can shadow anything
+    std::vector<Reach> objects;         // per scene object, receivers only (non-receivers: Outside)
+    // Share of the viewport the boxes may cover (their projected corners' bounding rectangle,
+    // 1 where a corner is behind the camera): a mask that covers most of the frame saves less
+    // than drawing the straddling objects twice costs.
+    double screenShare = 1.0;
+    // The boxes' corners' bounding rectangle in normalised device coordinates (min x, min y,
+    // max x, max y): the frame outside it needs no lookup. The whole [-1, 1] square where a
+    // corner is behind the camera.
+    glm::dvec4 screenRect{-1.0, -1.0, 1.0, 1.0};
+    int generation = 0;                 // set by whoever keeps it: changes whenever the boxes may have
+    int outsideCount() const;
+    int partlyCount() const;
+};
+
+struct ReachObject {
+    Bounds bounds;                      // world
+    bool casts = false;
+    bool receives = false;
+    // A flat one-sided caster whose front faces the shadow pass culls (bias.cull_front): the
+    // world plane its triangles face out of. From a light on that side nothing of it is drawn.
+    std::optional<glm::dvec3> culledPlanePoint, culledPlaneNormal;
+};
+
+// The reach of a light with the views `views` (one frame per view; their shadowMatrix), over
+// maps of `mapSize` texels a side, for the receivers and casters in `objects`, seen by `camera`.
+ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
+                        const std::vector<ReachObject>& objects, const CameraFrame& camera);
+
+} // namespace shadowlab
