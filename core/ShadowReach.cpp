@@ -192,7 +192,7 @@ std::vector<UvRect> mergedRects(std::vector<UvRect> rects)
 } // namespace
 
 ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
-                        const std::vector<ReachObject>& objects, const CameraFrame& camera)
+                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
 {
     ShadowReach reach;
     const std::optional<double> texels = tapReachTexels(settings);
@@ -204,7 +204,7 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
     for (const LightFrame& view : views) {
         std::vector<UvRect> rects;
         bool anywhere = false;
-        for (const ReachObject& object : objects) {
+        for (const ReachObject& object : casters) {
             if (!object.casts || culledFrom(object, view))
                 continue;
             const TextureFootprint f = footprint(object.bounds, view.shadowMatrix);

@@ -41,7 +41,7 @@ enum class Reach { Outside, Partly, Inside };
 
 struct ShadowReach {
     std::vector<ReachBox> boxes;        // empty: nothing can shadow anything
-    std::vector<Reach> objects;         // per scene object, receivers only (non-receivers: Outside)
+    std::vector<Reach> objects;         // per receiver given (those that receive no shadow: Outside)
     // Share of the viewport the boxes may cover (their projected corners' bounding rectangle,
     // 1 where a corner is behind the camera): a mask that covers most of the frame saves less
     // than drawing the straddling objects twice costs.
@@ -65,8 +65,10 @@ struct ReachObject {
 };
 
 // The reach of a light with the views `views` (one frame per view; their shadowMatrix), over
-// maps of `mapSize` texels a side, for the receivers and casters in `objects`, seen by `camera`.
+// maps of `mapSize` texels a side, of the objects in `casters` (those that cast), and where
+// each of `receivers` (those that receive) lies against it, seen by `camera`. The two lists
+// may differ in granularity: casters one by one for tight columns, receivers as drawn.
 ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
-                        const std::vector<ReachObject>& objects, const CameraFrame& camera);
+                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& receivers, const CameraFrame& camera);
 
 } // namespace shadowlab

@@ -67,13 +67,11 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
 
     m_program.bind();
     int draws = 0;
-    const auto& objects = scene.scene().objects;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const SceneObject& object = objects[i];
-        if (!object.castsShadow || isOutsideFrustum(light.viewProjection, scene.objectBounds(i), clampDepth))
+    for (const DrawItem& item : scene.drawItems()) {
+        if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, clampDepth))
             continue;
-        m_program.set(m_mvpLocation, glm::mat4(light.depthViewProjection * object.model));
-        scene.draw(object);
+        m_program.set(m_mvpLocation, glm::mat4(light.depthViewProjection * item.model));
+        scene.draw(item);
         ++draws;
     }
 

@@ -36,7 +36,6 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowWorld(program.uniform("uShadowWorld")),
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
-      baseColour(program.uniform("uBaseColour")),
       receives(program.uniform("uReceives")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
@@ -282,18 +281,17 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
 void LitPass::drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                           const std::vector<std::pair<double, std::size_t>>& order)
 {
-    const auto& objects = scene.scene().objects;
+    const auto& items = scene.drawItems();
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     for (const auto& [distance, i] : order) {
-        const SceneObject& object = objects[i];
-        p.program.set(p.model, glm::mat4(toCamera * object.model));
-        p.program.set(p.normalMatrix, glm::mat3(glm::inverseTranspose(glm::dmat3(object.model))));
-        p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * object.model));
-        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * object.model));
-        p.program.set(p.baseColour, object.baseColour);
-        p.program.set(p.receives, int(object.receivesShadow));
-        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(object));
-        scene.draw(object);
+        const DrawItem& item = items[i];
+        p.program.set(p.model, glm::mat4(toCamera * item.model));
+        p.program.set(p.normalMatrix, glm::mat3(item.normalMatrix));
+        p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * item.model));
+        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * item.model));
+        p.program.set(p.receives, int(item.receivesShadow));
+        m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
+        scene.draw(item);
     }
 }
 
@@ -308,15 +306,15 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
         throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
     const bool shadows = settings.shadow.enabled && map != nullptr;
-    const auto& objects = scene.scene().objects;
-    const bool reachKnown = shadows && m_reach != nullptr && m_reach->objects.size() == objects.size();
+    const auto& items = scene.drawItems();
+    const bool reachKnown = shadows && m_reach != nullptr && m_reach->objects.size() == items.size();
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     // Nearest first, so the depth test rejects hidden pixels before they are shaded: on a
     // software rasteriser every shaded pixel costs, and the ground plane is behind everything.
     m_drawOrder.clear();
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const Bounds& bounds = scene.objectBounds(i);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const Bounds& bounds = items[i].bounds;
         if (isOutsideFrustum(camera.viewProjection, bounds, false))
             continue;
         const glm::dvec3 nearest = glm::clamp(camera.position, bounds.min, bounds.max);

@@ -68,7 +68,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, baseColour, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
+        GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);

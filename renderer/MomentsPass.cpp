@@ -85,13 +85,11 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     // that gap as light).
     Program& p = begin(light, settings, map, tile);
     int draws = 0;
-    const auto& objects = scene.scene().objects;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const SceneObject& object = objects[i];
-        if (!object.castsShadow || isOutsideFrustum(light.viewProjection, scene.objectBounds(i), true))
+    for (const DrawItem& item : scene.drawItems()) {
+        if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, true))
             continue;
-        p.program.set(p.mvp, glm::mat4(light.depthViewProjection * object.model));
-        scene.draw(object);
+        p.program.set(p.mvp, glm::mat4(light.depthViewProjection * item.model));
+        scene.draw(item);
         ++draws;
     }
     m_gl->glBindVertexArray(0);

@@ -101,7 +101,10 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
                 objects.push_back(r);
             }
             const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
-            m_reach = shadowlab::shadowReach(settings, frames, settings.map.size, objects, camera);
+            std::vector<ReachObject> receivers;
+            for (const DrawItem& item : m_scene->drawItems())
+                receivers.push_back({item.bounds, item.castsShadow, item.receivesShadow, std::nullopt, std::nullopt});
+            m_reach = shadowlab::shadowReach(settings, frames, settings.map.size, objects, receivers, camera);
         }
         m_reach.generation = generation;
     }

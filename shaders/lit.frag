@@ -13,10 +13,10 @@
 in vec3 vPosition;
 in vec3 vNormal;
 in vec2 vUv;
+in vec3 vColour;            // multiplies the texture: white for presets, a material's base colour for models
 in vec4 vShadowCoord;
 
 uniform sampler2D uDiffuse;
-uniform vec3 uBaseColour;   // multiplies the texture: white for presets, a material's base colour for models
 uniform bool uReceives;     // false: the object is always lit
 uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
@@ -129,7 +129,7 @@ void main()
     float texelsPerPixel = sqrt(abs(tx.x * ty.y - tx.y * ty.x));
     bool inMap = vShadowCoord.w > 0.0 && all(greaterThanEqual(mapCoord.xy, vec2(0.0))) && all(lessThanEqual(mapCoord.xy, vec2(1.0)));
 #endif
-    vec3 albedo = texture(uDiffuse, vUv).rgb * uBaseColour;
+    vec3 albedo = texture(uDiffuse, vUv).rgb * vColour;
     vec3 normal = normalize(vNormal);
     vec3 toLight = directionToLight(vPosition);
     vec3 toEye = normalize(-vPosition);

@@ -4,6 +4,7 @@
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec3 aColour;   // the base colour: per vertex in a batch, else a constant
 
 uniform mat4 uModel;            // object -> world, translated so the camera is at the origin
 uniform mat3 uNormalMatrix;
@@ -15,6 +16,7 @@ uniform float uNormalOffset;    // world units to move along the normal (per uni
 out vec3 vPosition;             // camera-relative world position
 out vec3 vNormal;
 out vec2 vUv;
+out vec3 vColour;
 out vec4 vShadowCoord;
 
 void main()
@@ -23,6 +25,7 @@ void main()
     vPosition = vec3(uModel * position);
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
+    vColour = aColour;
     // Normal offset: look the shadow up from a point moved off the surface by a few texels,
     // so the lookup clears the surface's own depth where a depth bias would need to be huge.
     // Homogeneous coordinates make the offset a separate term (w = 0), which keeps the exact

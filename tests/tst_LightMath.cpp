@@ -628,7 +628,7 @@ private Q_SLOTS:
             {Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, true, true, std::nullopt, std::nullopt},
             {Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, false, true, std::nullopt, std::nullopt},
         };
-        const ShadowReach reach = shadowReach(s, {light}, 1024, objects, camera);
+        const ShadowReach reach = shadowReach(s, {light}, 1024, objects, objects, camera);
         QCOMPARE(int(reach.boxes.size()), 1);
         const ReachBox& box = reach.boxes.front();
         const double texel = 1.0 / 1024.0;
@@ -643,7 +643,7 @@ private Q_SLOTS:
 
         // A light below sees the ground's back: it is drawn and reaches everything on it.
         s.light.position = {0.0, -10.0, 0.1};
-        const ShadowReach below = shadowReach(s, {computeLightFrame(s.light)}, 1024, objects, camera);
+        const ShadowReach below = shadowReach(s, {computeLightFrame(s.light)}, 1024, objects, objects, camera);
         QCOMPARE(int(below.boxes.size()), 1);
         QVERIFY(below.boxes.front().uvMax.x - below.boxes.front().uvMin.x > 0.99);
 
@@ -671,7 +671,8 @@ private Q_SLOTS:
         Settings s = presetSettings("seed");
         const LightFrame light = computeLightFrame(s.light);
         const CameraFrame camera = computeCameraFrame(s.camera, 1.5, Bounds{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}});
-        const ShadowReach reach = shadowReach(s, {light}, 2048, {{Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, false, true, {}, {}}}, camera);
+        const std::vector<ReachObject> objects{{Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, false, true, {}, {}}};
+        const ShadowReach reach = shadowReach(s, {light}, 2048, objects, objects, camera);
         QVERIFY(reach.boxes.empty());
         QCOMPARE(reach.objects.front(), Reach::Outside);
     }

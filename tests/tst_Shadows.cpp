@@ -11,6 +11,8 @@
 #include "ShaderProgram.h"
 #include "ShadowTechnique.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QtTest>
 
 using namespace shadowlab;
@@ -596,6 +598,57 @@ private Q_SLOTS:
         QVERIFY(m_headless->renderer().shadowReach().boxes.empty());
         QCOMPARE(m_headless->renderer().lastFrame().litPlainDraws, m_headless->renderer().lastFrame().litDraws);
         m_headless->renderer().setScene(std::nullopt);
+    }
+
+    // The city's thousands of buildings are drawn in batches: draws stay far below the objects
+    // and do not grow with them, in the lit pass and the shadow pass.
+    void manyObjectsAreDrawnInBatches()
+    {
+        int draws[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            Settings s = presetSettings("city");
+            applyAssignment(s, k == 0 ? "scene=city:2000" : "scene=city:8000");
+            m_headless->renderer().invalidateShadowMap();
+            m_headless->renderScene(s, kSize);
+            const FrameStats& stats = m_headless->renderer().lastFrame();
+            QVERIFY2(stats.shadowPassRendered, "the first frame of a scene draws its map");
+            QVERIFY2(stats.shadowDraws < 200, qPrintable(QString::number(stats.shadowDraws)));
+            QVERIFY2(stats.litDraws < 260, qPrintable(QString::number(stats.litDraws)));
+            draws[k] = stats.shadowDraws;
+        }
+        QVERIFY2(draws[1] <= draws[0] + 10, qPrintable(QStringLiteral("%1 draws for 2,000 buildings, %2 for 8,000").arg(draws[0]).arg(draws[1])));
+    }
+
+    // A batch bakes each object's placement into its vertices: a mirroring placement keeps its
+    // front faces (the winding turns with it), so mirrored cubes look like the cubes they are.
+    void batchesKeepMirroredObjectsWhole()
+    {
+        const auto grid = [](bool mirrored) {
+            Scene scene = buildScene("seed");
+            const SceneObject cube = scene.objects.at(1);
+            scene.objects.resize(1);
+            for (int i = 0; i < 80; ++i) {
+                SceneObject c = cube;
+                c.texture = TextureKind::Flat;
+                c.model = glm::translate(glm::dmat4(1.0), glm::dvec3(-4.0 + (i % 10) * 0.9, 0.3, -3.0 + (i / 10) * 0.8));
+                c.model = glm::scale(c.model, glm::dvec3(mirrored && i % 2 ? -0.25 : 0.25, 0.25, 0.25));
+                scene.objects.push_back(c);
+            }
+            return scene;
+        };
+        Settings s = presetSettings("seed");
+        m_headless->renderer().setScene(grid(false));
+        const QImage plain = m_headless->renderScene(s, kSize);
+        QVERIFY(m_headless->renderer().lastFrame().litDraws < 40);
+        m_headless->renderer().setScene(grid(true));
+        const QImage mirrored = m_headless->renderScene(s, kSize);
+        m_headless->renderer().setScene(std::nullopt);
+        int differing = 0;
+        for (int y = 0; y < kSize.height(); ++y)
+            for (int x = 0; x < kSize.width(); ++x)
+                differing += probe::luminance(plain, {x, y}) - probe::luminance(mirrored, {x, y}) > 8.0
+                    || probe::luminance(mirrored, {x, y}) - probe::luminance(plain, {x, y}) > 8.0;
+        QVERIFY2(differing < 20, qPrintable(QStringLiteral("%1 pixels differ").arg(differing)));
     }
 
     void everyPresetRenders()
