@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace shadowlab {
@@ -53,6 +54,15 @@ RayTracer::~RayTracer()
         rtcReleaseDevice(m_device);
 }
 
+namespace {
+
+float farLimit(double tFar)
+{
+    return tFar < double(std::numeric_limits<float>::max()) ? float(tFar) : std::numeric_limits<float>::infinity();
+}
+
+} // namespace
+
 bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, double tFar) const
 {
     const glm::dvec3 o = from - m_origin;
@@ -66,11 +76,49 @@ bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, do
     ray.dir_y = float(direction.y);
     ray.dir_z = float(direction.z);
     ray.tnear = 0.0f;
-    ray.tfar = tFar < double(std::numeric_limits<float>::max()) ? float(tFar) : std::numeric_limits<float>::infinity();
+    ray.tfar = farLimit(tFar);
     ray.mask = 0xFFFFFFFFu;
     rtcOccluded1(m_scene, &context, &ray);
     // Embree marks an occluded ray by setting tfar to -inf.
     return ray.tfar < 0.0f;
+}
+
+} // namespace shadowlab
+
+namespace shadowlab {
+
+int RayTracer::occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const
+{
+    constexpr int kLanes = 16;
+    const glm::dvec3 o = from - m_origin;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    int blocked = 0;
+    for (int first = 0; first < count; first += kLanes) {
+        alignas(64) RTCRay16 rays{};
+        alignas(64) int valid[kLanes];
+        const int lanes = std::min(kLanes, count - first);
+        for (int k = 0; k < kLanes; ++k) {
+            valid[k] = k < lanes ? -1 : 0;
+            if (k >= lanes)
+                continue;
+            const glm::dvec3& d = directions[first + k];
+            rays.org_x[k] = float(o.x);
+            rays.org_y[k] = float(o.y);
+            rays.org_z[k] = float(o.z);
+            rays.dir_x[k] = float(d.x);
+            rays.dir_y[k] = float(d.y);
+            rays.dir_z[k] = float(d.z);
+            rays.tnear[k] = 0.0f;
+            rays.tfar[k] = farLimit(tFar);
+            rays.mask[k] = 0xFFFFFFFFu;
+        }
+        rtcOccluded16(valid, m_scene, &context, &rays);
+        for (int k = 0; k < lanes; ++k)
+            blocked += rays.tfar[k] < 0.0f;
+    }
+    return blocked;
 }
 
 } // namespace shadowlab

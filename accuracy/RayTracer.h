@@ -20,6 +20,10 @@ public:
 
     // Is anything hit on the segment origin + t * direction, t in (0, tFar)? World coordinates.
     bool occluded(const glm::dvec3& from, const glm::dvec3& direction, double tFar) const;
+    // How many of the `count` segments from + t * directions[i], t in (0, tFar), hit anything:
+    // occluded() for each, traced 16 at a time, as rays from one point toward one light share
+    // most of their way through the scene.
+    int occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const;
 
     const glm::dvec3& origin() const { return m_origin; }
     int triangleCount() const { return m_triangles; }

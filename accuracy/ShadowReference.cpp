@@ -87,6 +87,7 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
         if (cancel && cancel->load())
             return;
         std::int64_t rowRays = 0;
+        std::vector<glm::dvec3> directions(options.area ? std::size_t(n * n) : 0);
         for (int x = 0; x < width; ++x) {
             const int i = y * width + x;
             if (buffer.mask(i) != VisibilityBuffer::FacingLight)
@@ -113,24 +114,16 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
 
             if (!options.area)
                 continue;
-            int unoccluded = 0;
             for (int s = 0; s < n * n; ++s) {
                 const std::uint32_t h = hash(std::uint32_t(i) * 9781u + std::uint32_t(s) * 6271u);
                 const double su = (double(s % n) + unitFloat(h)) / n;
                 const double sv = (double(s / n) + unitFloat(hash(h))) / n;
                 const glm::dvec2 d = concentricDisk(su, sv) * options.lightRadius;
                 const glm::dvec3 offset = u * d.x + v * d.y;
-                bool blocked;
-                if (light.perspective) {
-                    const glm::dvec3 samplePoint = light.position + offset;
-                    blocked = tracer.occluded(from, samplePoint - from, 1.0);
-                } else {
-                    // A directional light of the angular size the disk has seen from the target.
-                    const glm::dvec3 toDisk = -light.direction * light.targetDistance + offset;
-                    blocked = tracer.occluded(from, toDisk, 1e30);
-                }
-                unoccluded += !blocked;
+                // A directional light: of the angular size the disk has seen from the target.
+                directions[std::size_t(s)] = light.perspective ? light.position + offset - from : -light.direction * light.targetDistance + offset;
             }
+            const int unoccluded = n * n - tracer.occludedCount(from, directions.data(), n * n, light.perspective ? 1.0 : 1e30);
             rowRays += n * n;
             result.area[std::size_t(i)] = float(unoccluded) / float(n * n);
         }

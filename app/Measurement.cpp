@@ -3,6 +3,9 @@
 #include "Renderer.h"
 #include "SceneLibrary.h"
 
+#include <algorithm>
+#include <numeric>
+
 namespace shadowlab {
 
 AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const Settings& settings, QSize size,
@@ -12,63 +15,115 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
     return meter.measure(buffer, *renderer.scene(), renderer.lightFrame(), settings, progress);
 }
 
+namespace {
+
+// One frame of `run`, the `index`th of its camera path.
+void renderRunFrame(TimedRun& run, QSize size, int index)
+{
+    HeadlessRenderer& h = *run.headless;
+    if (run.moving)
+        h.renderer().invalidateShadowMap();
+    if (!run.cameraPath.empty()) {
+        Settings moved = run.settings;
+        moved.camera = run.cameraPath[std::size_t(index) % run.cameraPath.size()];
+        h.renderFrame(moved, size, TimingMode::Finish);
+    } else {
+        h.renderFrame(run.settings, size, TimingMode::Finish);
+    }
+}
+
+void recordFrame(FrameSamples& s, const FrameStats& f)
+{
+    s.last = f;
+    if (f.shadowPassRendered) {
+        s.shadow.push_back(f.shadowPassMs);
+        s.shadowWall.push_back(f.shadowPassWallMs);
+        if (f.blurPassWallMs > 0.0)
+            s.blurWall.push_back(f.blurPassWallMs);
+        ++s.shadowPassesRun;
+        s.shadowDraws = f.shadowDraws;
+    }
+    if (s.viewWall.size() < f.viewRendered.size()) {
+        s.viewWall.resize(f.viewRendered.size());
+        s.viewPassesRun.resize(f.viewRendered.size(), 0);
+        s.viewDraws.resize(f.viewRendered.size(), 0);
+    }
+    for (std::size_t v = 0; v < f.viewRendered.size(); ++v) {
+        if (f.viewRendered[v]) {
+            s.viewWall[v].push_back(f.viewWallMs[v]);
+            ++s.viewPassesRun[v];
+            s.viewDraws[v] = f.viewDraws[v];
+        }
+    }
+    s.lit.push_back(f.litPassMs);
+    s.litWall.push_back(f.litPassWallMs);
+    s.wall.push_back(f.frameWallMs);
+}
+
+} // namespace
+
 void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int frames, const std::function<void(double)>& progress)
 {
     for (int i = 0; i < warmup + frames; ++i) {
         for (TimedRun& run : runs) {
-            HeadlessRenderer& h = *run.headless;
             if (run.settleFirst)
-                h.renderFrame(run.settings, size, TimingMode::Finish);
-            if (run.moving)
-                h.renderer().invalidateShadowMap();
-            if (!run.cameraPath.empty()) {
-                Settings moved = run.settings;
-                moved.camera = run.cameraPath[std::size_t(i) % run.cameraPath.size()];
-                h.renderFrame(moved, size, TimingMode::Finish);
-            } else {
-                h.renderFrame(run.settings, size, TimingMode::Finish);
-            }
-            if (i < warmup)
-                continue;
-            const FrameStats& f = h.renderer().lastFrame();
-            FrameSamples& s = run.samples;
-            s.last = f;
-            if (f.shadowPassRendered) {
-                s.shadow.push_back(f.shadowPassMs);
-                s.shadowWall.push_back(f.shadowPassWallMs);
-                if (f.blurPassWallMs > 0.0)
-                    s.blurWall.push_back(f.blurPassWallMs);
-                ++s.shadowPassesRun;
-                s.shadowDraws = f.shadowDraws;
-            }
-            if (s.viewWall.size() < f.viewRendered.size()) {
-                s.viewWall.resize(f.viewRendered.size());
-                s.viewPassesRun.resize(f.viewRendered.size(), 0);
-                s.viewDraws.resize(f.viewRendered.size(), 0);
-            }
-            for (std::size_t v = 0; v < f.viewRendered.size(); ++v) {
-                if (f.viewRendered[v]) {
-                    s.viewWall[v].push_back(f.viewWallMs[v]);
-                    ++s.viewPassesRun[v];
-                    s.viewDraws[v] = f.viewDraws[v];
-                }
-            }
-            s.lit.push_back(f.litPassMs);
-            s.litWall.push_back(f.litPassWallMs);
-            s.wall.push_back(f.frameWallMs);
+                run.headless->renderFrame(run.settings, size, TimingMode::Finish);
+            renderRunFrame(run, size, i);
+            if (i >= warmup)
+                recordFrame(run.samples, run.headless->renderer().lastFrame());
         }
         if (progress)
             progress(double(i + 1) / double(warmup + frames));
     }
 }
 
-FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size)
+void timeUntilSteady(std::vector<TimedRun>& runs, QSize size, int warmup, const SteadyTiming& rule, const std::function<void(double)>& progress)
 {
-    std::vector<VisibilityBuffer> frames;
-    frames.reserve(path.size());
-    Settings still = settings;
-    if (!path.empty())
-        still.camera = path.front();
+    const int batch = std::max(1, rule.batch);
+    std::vector<int> rendered(runs.size(), 0);      // frames of each run's camera path so far
+    std::vector<bool> steady(runs.size(), false);
+    for (bool first = true; std::find(steady.begin(), steady.end(), false) != steady.end(); first = false) {
+        for (std::size_t r = 0; r < runs.size(); ++r) {
+            if (steady[r])
+                continue;
+            TimedRun& run = runs[r];
+            // The first visit's warm-up takes the switch as well.
+            if (first && warmup > 0) {
+                for (int i = 0; i < warmup; ++i)
+                    renderRunFrame(run, size, rendered[r]++);
+            } else if (run.settleFirst) {
+                run.headless->renderFrame(run.settings, size, TimingMode::Finish);
+            }
+            for (int i = 0; i < batch && int(run.samples.wall.size()) < rule.maximum; ++i) {
+                renderRunFrame(run, size, rendered[r]++);
+                recordFrame(run.samples, run.headless->renderer().lastFrame());
+            }
+            steady[r] = timingIsSteady(run.samples.wall, rule);
+        }
+        if (progress) {
+            double done = 0.0;
+            for (std::size_t r = 0; r < runs.size(); ++r)
+                done += steady[r] ? 1.0 : std::min(1.0, double(runs[r].samples.wall.size()) / std::max(1, rule.maximum));
+            progress(done / double(runs.size()));
+        }
+    }
+}
+
+namespace {
+
+// The smallest image of `size`'s aspect ratio (640x360: 16x9). The light's fit reads the
+// aspect, never the pixels, so the maps placed for it are those of `size`, for far less
+// rendering and read-back.
+QSize sameAspect(QSize size)
+{
+    const int divisor = std::gcd(size.width(), size.height());
+    return divisor > 0 ? size / divisor : size;
+}
+
+// Renders `still` at `size` with the light fitted to each camera of `path` in turn, keeping
+// the frames when asked; returns in how many steps the light's maps moved.
+int walkPath(Renderer& renderer, const Settings& still, const std::vector<CameraSettings>& path, QSize size, std::vector<VisibilityBuffer>* frames)
+{
     // Whether the maps moved at all: every view's shadow matrix, frame to frame.
     const auto matrices = [&renderer] {
         std::vector<glm::dmat4> m{renderer.lightFrame().shadowMatrix};
@@ -81,11 +136,14 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
     try {
         for (const CameraSettings& camera : path) {
             renderer.setFitCamera(camera);
-            frames.push_back(renderer.renderVisibility(still, size));
-            // Flicker reads the shadow term alone: the light terms of every frame held would
-            // nearly double what the walk keeps in memory.
-            frames.back().ambientLight = {};
-            frames.back().directLight = {};
+            VisibilityBuffer frame = renderer.renderVisibility(still, size);
+            if (frames) {
+                // Flicker reads the shadow term alone: the light terms of every frame held
+                // would nearly double what the walk keeps in memory.
+                frame.ambientLight = {};
+                frame.directLight = {};
+                frames->push_back(std::move(frame));
+            }
             const std::vector<glm::dmat4> now = matrices();
             moves += !last.empty() && now != last ? 1 : 0;
             last = now;
@@ -95,6 +153,29 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
         throw;
     }
     renderer.setFitCamera(std::nullopt);
+    return moves;
+}
+
+} // namespace
+
+FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size, FlickerWalk walk)
+{
+    Settings still = settings;
+    if (!path.empty())
+        still.camera = path.front();
+    std::vector<VisibilityBuffer> frames;
+    // Maps that stay put over the walk draw the same shadow term at the same points every
+    // frame, so nothing flickers: one frame at `size` counts the receivers, and the walk is
+    // rendered small.
+    if (walk == FlickerWalk::WhereMapsMove && path.size() > 1 && sameAspect(size) != size
+        && walkPath(renderer, still, path, sameAspect(size), nullptr) == 0) {
+        walkPath(renderer, still, {path.front()}, size, &frames);
+        FlickerResult result = measureFlicker(frames);
+        result.frames = int(path.size());
+        return result;
+    }
+    frames.reserve(path.size());
+    const int moves = walkPath(renderer, still, path, size, &frames);
     FlickerResult result = measureFlicker(frames);
     result.mapMoves = moves;
     return result;
@@ -102,7 +183,7 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
 
 std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels)
 {
-    renderer.renderVisibility(settings, size);
+    renderer.renderVisibility(settings, sameAspect(size));
     const double texel = renderer.lastFrame().texelWorldSize;
     return cameraPath(settings.camera, frames, texel * texels);
 }

@@ -5,6 +5,7 @@
 #include "FrameStats.h"
 #include "HeadlessRenderer.h"
 #include "SampleStats.h"
+#include "SteadyTiming.h"
 
 #include <functional>
 #include <vector>
@@ -51,16 +52,29 @@ struct TimedRun {
 void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int frames,
                      const std::function<void(double)>& progress = {});
 
+// `report`'s timing: each run visited in turn, as in timeInterleaved(), but for a batch of
+// frames a visit (`rule.batch`, after one untimed frame that takes the switch from the run
+// before, or on the first visit `warmup` untimed frames), until its frame times are steady under `rule`
+// (SteadyTiming.h). Runs that are steady drop out; the rest go on, up to rule.maximum frames.
+// `progress` (0..1) is called after each round.
+void timeUntilSteady(std::vector<TimedRun>& runs, QSize size, int warmup, const SteadyTiming& rule,
+                     const std::function<void(double)>& progress = {});
+
 // The camera walk flicker is measured over (report and the accuracy dock): frames, and the
 // step in texels of the finest map, under a texel, where an unstabilised map shimmers and a
 // snapped one should not move at all.
 inline constexpr int kFlickerFrames = 8;
 inline constexpr double kFlickerStepTexels = 0.37;
 
+// Whether the flicker walk renders every frame at full size even where the light's maps stay
+// put (and so cannot flicker), or only where they move.
+enum class FlickerWalk { WhereMapsMove, EveryFrame };
+
 // Shimmer of `settings` over `path`: every frame measured from the path's first camera (the
 // same pixels, the same world points) while the light's maps are fitted to the path's camera
 // of that frame, so any change of the shadow term is the maps' doing. Throws like render().
-FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size);
+FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const std::vector<CameraSettings>& path, QSize size,
+                             FlickerWalk walk = FlickerWalk::WhereMapsMove);
 
 // The scene's camera path in steps of `texels` of the light's finest map (its first cascade),
 // a fraction for sub-texel motion: what flicker is measured over.

@@ -103,6 +103,49 @@ private Q_SLOTS:
         QVERIFY(1.0 - acne.ssim > 10.0 * (1.0 - defaults.ssim));
     }
 
+    // The area reference traces its rays 16 at a time: each answer is the one a single ray
+    // gives, at grazing edges too, for any count (a part packet included) and either light.
+    void packetsAnswerAsSingleRays_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::newRow("seed") << "seed";
+        QTest::newRow("cubes") << "cubes";
+        QTest::newRow("torus") << "torus";
+    }
+
+    void packetsAnswerAsSingleRays()
+    {
+        QFETCH(QString, scene);
+        HeadlessRenderer headless;
+        for (const char* projection : {"ortho", "perspective"}) {
+            const Settings settings = presetWith(scene, {QStringLiteral("light.projection=%1").arg(projection)});
+            const VisibilityBuffer buffer = headless.renderer().renderVisibility(settings, QSize(160, 90));
+            const LightFrame& light = headless.renderer().lightFrame();
+            const RayTracer tracer(*headless.renderer().scene(), buffer.cameraPosition);
+            const double tFar = light.perspective ? 1.0 : 1e30;
+            int blockedRays = 0, rays = 0;
+            for (int i = 0, point = 0; i < buffer.pixelCount(); i += 7) {
+                if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                    continue;
+                const glm::dvec3 from = buffer.worldPosition(i) + buffer.normal(i) * 1e-3;
+                const glm::dvec3 toLight = light.perspective ? light.position - from : -light.direction * light.targetDistance;
+                const int count = 1 + point++ % 37;
+                std::vector<glm::dvec3> directions;
+                int single = 0;
+                for (int k = 0; k < count; ++k) {
+                    const double angle = 2.399963 * k, r = 0.25 * std::sqrt((k + 0.5) / count);   // a disk of radius 0.25
+                    directions.push_back(toLight + glm::dvec3(r * std::cos(angle), 0.0, r * std::sin(angle)));
+                    single += tracer.occluded(from, directions.back(), tFar);
+                }
+                QCOMPARE(tracer.occludedCount(from, directions.data(), count, tFar), single);
+                blockedRays += single;
+                rays += count;
+            }
+            QVERIFY2(blockedRays > 100 && blockedRays < rays - 100,   // both answers, many times
+                     qPrintable(QString("%1 light: %2 of %3 rays blocked").arg(projection).arg(blockedRays).arg(rays)));
+        }
+    }
+
     void hardReferenceMatchesTheAnalyticShadow()
     {
         // A square board of half-size 1 at y = 1 (turned 30 degrees about y) over the plane

@@ -339,6 +339,43 @@ private Q_SLOTS:
         qInfo().noquote() << numbers;
     }
 
+    // The walk renders at full size only where the maps move; where they stay put its answer
+    // (nothing flickers, the same receivers) is the one every frame rendered gives.
+    void flickerWalkSkipsOnlyStillMaps_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<bool>("stabilize");
+        QTest::addColumn<bool>("moves");
+        QTest::newRow("seed, stabilised: snapped, the maps stay put") << "seed" << true << false;
+        QTest::newRow("seed, unstabilised") << "seed" << false << true;
+        QTest::newRow("city, unstabilised") << "city" << false << true;
+    }
+
+    void flickerWalkSkipsOnlyStillMaps()
+    {
+        QFETCH(QString, scene);
+        QFETCH(bool, stabilize);
+        QFETCH(bool, moves);
+        m_headless->renderer().setScene(std::nullopt);
+        const QSize size(320, 180);
+        Settings s = presetSettings(scene);
+        s.light.stabilize = stabilize;
+        if (cityBuildingCount(scene) > 0)
+            s.shadow.distance = 300.0;
+        Renderer& renderer = m_headless->renderer();
+        const std::vector<CameraSettings> path = subTexelPath(renderer, s, size, kFlickerFrames, kFlickerStepTexels);
+        const FlickerResult every = measureFlicker(renderer, s, path, size, FlickerWalk::EveryFrame);
+        const FlickerResult skipped = measureFlicker(renderer, s, path, size, FlickerWalk::WhereMapsMove);
+        QCOMPARE(every.mapMoves > 0, moves);
+        QCOMPARE(skipped.mapMoves, every.mapMoves);
+        QCOMPARE(skipped.frames, every.frames);
+        QCOMPARE(skipped.pixels, every.pixels);
+        QCOMPARE(skipped.flicker, every.flicker);
+        QCOMPARE(skipped.worstPair, every.worstPair);
+        QCOMPARE(skipped.meanChange, every.meanChange);
+        QVERIFY(every.pixels > 1000);
+    }
+
     // A light inside a caster: everything it could light is behind the caster's walls.
     // A light on a receiver: grazing everything, still finite. Neither gives NaN.
     void degenerateLightPlacementsAreClear_data()

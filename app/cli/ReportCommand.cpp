@@ -98,8 +98,12 @@ int runReport(const QStringList& arguments)
                                          "(default: default)."),
                           QStringLiteral("name|file.json"), QStringLiteral("default")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
-        parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration (default 30)."), QStringLiteral("n"),
+        parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration at most (default 30)."), QStringLiteral("n"),
                           QStringLiteral("30")});
+        parser.addOption({QStringLiteral("min-frames"),
+                          QStringLiteral("Timed frames per configuration at least; timing stops there once its median and p10-p90 hold "
+                                         "from batch to batch (default 8; as many as --frames: always that many)."),
+                          QStringLiteral("n"), QStringLiteral("8")});
         parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
         parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
                           QStringLiteral("n"), QStringLiteral("16")});
@@ -115,6 +119,7 @@ int runReport(const QStringList& arguments)
         const Settings base = settingsFromOptions(parser);
         const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kReportSize);
         const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
+        const int minFrames = std::min(frames, parseCount(parser.value(QStringLiteral("min-frames")), QStringLiteral("min-frames"), 1, 10000));
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
         const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
         // Every entry is checked before any work starts; identical configurations are measured once.
@@ -152,14 +157,17 @@ int runReport(const QStringList& arguments)
             noiseFloor = std::max(noiseFloor, row.accuracy.areaNoiseFloor);
             rows.push_back(std::move(row));
         }
-        // ...then their time, one frame of each in turn, so a slow spell of a shared machine
-        // lands on every configuration alike. The shadow pass runs every frame. Each measured
-        // frame follows an unmeasured one of the same configuration, so the switch from the
+        // ...then their time, a batch of frames of each in turn, so a slow spell of a shared
+        // machine lands on every configuration alike. The shadow pass runs every frame. Each
+        // batch follows an unmeasured frame of the same configuration, so the switch from the
         // previous configuration (a shadow map of another size to allocate) is not timed.
         std::vector<TimedRun> runs;
         for (const SweepConfiguration& configuration : sweep)
             runs.push_back({&headless, configuration.settings, true, true, {}, {}});
-        timeInterleaved(runs, size, warmup, frames,
+        SteadyTiming rule;
+        rule.minimum = minFrames;
+        rule.maximum = frames;
+        timeUntilSteady(runs, size, warmup, rule,
                         [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
         for (std::size_t c = 0; c < sweep.size(); ++c) {
             rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
@@ -173,6 +181,7 @@ int runReport(const QStringList& arguments)
         facts.scene = base.scene;
         facts.size = size;
         facts.frames = frames;
+        facts.minFrames = minFrames;
         facts.warmup = warmup;
         facts.renderer = headless.renderer().rendererString();
         facts.machine = machineFacts();

@@ -511,6 +511,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
                                     {QStringLiteral("shadow_pass_wall"), statsJson(r.shadowPass)},
                                     {QStringLiteral("lit_pass_wall"), statsJson(r.litPass)},
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
+                                    {QStringLiteral("frames"), r.frame.count},
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
                                     {QStringLiteral("pareto_front"), r.paretoFront},
@@ -530,6 +531,7 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     const QJsonObject json{{QStringLiteral("scene"), facts.scene},
                            {QStringLiteral("size"), QStringLiteral("%1x%2").arg(facts.size.width()).arg(facts.size.height())},
                            {QStringLiteral("frames"), facts.frames},
+                           {QStringLiteral("min_frames"), facts.minFrames},
                            {QStringLiteral("warmup"), facts.warmup},
                            {QStringLiteral("renderer"), facts.renderer},
                            {QStringLiteral("machine"), facts.machine},
@@ -576,7 +578,8 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
                        .arg(html(facts.scene))
                        .arg(facts.size.width())
                        .arg(facts.size.height())
-                       .arg(facts.frames)
+                       .arg(facts.minFrames < facts.frames ? QStringLiteral("%1–%2 (until its median and p10–p90 held)").arg(facts.minFrames).arg(facts.frames)
+                                                       : QString::number(facts.frames))
                        .arg(facts.warmup)
                        .arg(html(facts.renderer), html(facts.machine))
                        .arg(facts.areaSamplesPerPixel)

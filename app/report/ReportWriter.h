@@ -14,7 +14,8 @@ namespace shadowlab {
 struct ReportFacts {
     QString scene;
     QSize size;
-    int frames = 0;
+    int frames = 0;             // timed frames per configuration at most...
+    int minFrames = 0;          // ...and at least, where its times held sooner
     int warmup = 0;
     QString renderer;
     QString machine;            // CPU, cores, memory, OS, Qt and Embree versions
