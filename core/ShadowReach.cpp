@@ -3,9 +3,8 @@
 #include <glm/common.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 
 namespace shadowlab {
 
@@ -55,6 +54,15 @@ bool culledFrom(const ReachObject& object, const LightFrame& view)
     return view.perspective ? glm::dot(n, view.position - *object.culledPlanePoint) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
 }
 
+// No boxes: every receiver looks up, as without a reach.
+ShadowReach lookupsEverywhere(const std::vector<ReachObject>& receivers)
+{
+    ShadowReach reach;
+    for (const ReachObject& r : receivers)
+        reach.objects.push_back(r.receives ? Reach::Inside : Reach::Outside);
+    return reach;
+}
+
 bool finite(const glm::dvec3& v)
 {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -89,20 +97,19 @@ std::optional<double> tapReachTexels(const Settings& settings)
     case FilterMode::Evsm4:
     case FilterMode::Msm:
     case FilterMode::Esm:
-        // A coarse mip or an anisotropic footprint may average texels far from the pixel.
-        if (settings.moments.mipmaps || settings.moments.anisotropy > 1)
-            return std::nullopt;
-        taps += settings.moments.blur / 2 + 1;  // the blur spread each caster's moments
-        break;
+        // Filtered moments read lit only to within their bias and bleeding reduction (msm's
+        // mix toward the moments of depths 0 and 1 leaves 1 - bias/2 where nothing was drawn),
+        // and a coarse mip or an anisotropic footprint averages texels far from the pixel.
+        return std::nullopt;
     }
-    // The normal offset moves the lookup point by bias.normal texels (more at a perspective
-    // light's grazing angles), and two texels of margin for rounding.
-    return taps + 1.5 * settings.bias.normal + 2.0;
+    // Two texels of margin for rounding. The normal offset is the view's own (shadowReach).
+    return taps + 2.0;
 }
 
 bool referencesStayNearer(const Settings& settings)
 {
-    if (settings.bias.normal > 0.0 && settings.light.projection == LightProjection::Perspective)
+    // A negative polygon offset pulls the stored depths toward the light, past the casters'.
+    if (settings.bias.polygonFactor < 0.0 || settings.bias.polygonUnits < 0.0)
         return false;
     switch (settings.filter.mode) {
     case FilterMode::Hard:
@@ -128,7 +135,7 @@ std::array<glm::dvec3, 8> ReachBox::worldCorners() const
 {
     std::array<glm::dvec3, 8> corners;
     for (int i = 0; i < 8; ++i) {
-        const glm::dvec4 texture((i & 1) ? uvMax.x : uvMin.x, (i & 2) ? uvMax.y : uvMin.y, (i & 4) ? 1.0 : depthMin, 1.0);
+        const glm::dvec4 texture((i & 1) ? uvMax.x : uvMin.x, (i & 2) ? uvMax.y : uvMin.y, (i & 4) ? depthMax : depthMin, 1.0);
         const glm::dvec4 world = textureToWorld * texture;
         corners[std::size_t(i)] = glm::dvec3(world) / world.w;
     }
@@ -202,6 +209,19 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
     // (outside it every tap reads the lit border).
     std::vector<std::vector<ReachBox>> perView;
     for (const LightFrame& view : views) {
+        // The normal offset moves each lookup off its receiver by up to bias.normal texels of
+        // the wider axis: on the narrower one, and in depth, by that length over their spans.
+        // Receivers outside the map or beyond the far plane may look up inside: the boxes grow
+        // past both by as much. Off a perspective light's axis the shift has no small bound.
+        glm::dvec2 offsetUv(0.0);
+        double offsetDepth = 0.0;
+        if (settings.bias.normal > 0.0) {
+            if (view.perspective)
+                return lookupsEverywhere(objects);
+            const double length = settings.bias.normal * texelWorldSize(view.volume, mapSize);
+            offsetUv = length / glm::max(glm::dvec2(view.volume.width(), view.volume.height()), glm::dvec2(1e-300));
+            offsetDepth = length / std::max(view.volume.farPlane - view.volume.nearPlane, 1e-300);
+        }
         std::vector<UvRect> rects;
         bool anywhere = false;
         for (const ReachObject& object : casters) {
@@ -212,13 +232,13 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
                 continue;
             anywhere = anywhere || f.straddles || !texels;
             // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
-            const double depth = nearerIsLit ? std::clamp(f.min.z - 1e-4, 0.0, 1.0) : 0.0;
-            UvRect r{glm::clamp(glm::dvec2(f.min) - grow, 0.0, 1.0), glm::clamp(glm::dvec2(f.max) + grow, 0.0, 1.0), depth};
+            const double depth = nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : 0.0;
+            UvRect r{glm::clamp(glm::dvec2(f.min) - grow, 0.0, 1.0) - offsetUv, glm::clamp(glm::dvec2(f.max) + grow, 0.0, 1.0) + offsetUv, depth};
             if (r.min.x < r.max.x && r.min.y < r.max.y)
                 rects.push_back(r);
         }
         if (anywhere)
-            rects.assign(1, UvRect{glm::dvec2(0.0), glm::dvec2(1.0), 0.0});
+            rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0});
         std::vector<ReachBox> boxes;
         const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
         for (const UvRect& r : mergedRects(std::move(rects))) {
@@ -227,15 +247,10 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
             box.uvMin = r.min;
             box.uvMax = r.max;
             box.depthMin = r.depth;
+            box.depthMax = 1.0 + offsetDepth + 1e-4;
             for (const glm::dvec3& c : box.worldCorners()) {
-                if (!finite(c)) {
-                    // A degenerate light matrix: no box can be drawn, so every receiver looks up.
-                    reach.boxes.clear();
-                    reach.objects.assign(objects.size(), Reach::Outside);
-                    for (std::size_t i = 0; i < objects.size(); ++i)
-                        reach.objects[i] = objects[i].receives ? Reach::Inside : Reach::Outside;
-                    return reach;
-                }
+                if (!finite(c))
+                    return lookupsEverywhere(objects);  // a degenerate light matrix: no box to draw
             }
             boxes.push_back(box);
             reach.boxes.push_back(box);
@@ -261,9 +276,9 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
             }
             for (const ReachBox& box : perView[v]) {
                 const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
-                    || f.max.z < box.depthMin || f.min.z > 1.0;
+                    || f.max.z < box.depthMin || f.min.z > box.depthMax;
                 const bool within = f.min.x >= box.uvMin.x && f.max.x <= box.uvMax.x && f.min.y >= box.uvMin.y && f.max.y <= box.uvMax.y
-                    && f.min.z >= box.depthMin && f.max.z <= 1.0;
+                    && f.min.z >= box.depthMin && f.max.z <= box.depthMax;
                 if (within) {
                     r = Reach::Inside;
                     break;

@@ -19,20 +19,22 @@ namespace shadowlab {
 // an object straddles them): the same frame for less work where casters are few.
 
 // How far from the lookup point, in texels of the map, the taps of `settings`' filter read,
-// with the normal offset and a margin for rounding; nullopt where the filter may read anywhere
-// in the map (pcss's blocker search, mipmapped or anisotropic moments).
+// with a margin for rounding; nullopt where the filter may read anywhere in the map (pcss's
+// blocker search) or reads lit only approximately where nothing was drawn (moments).
 std::optional<double> tapReachTexels(const Settings& settings);
 // Whether every tap of `settings` compares a reference no deeper than the receiver itself, so
 // that a receiver nearer the light than every caster is lit: false where the receiver's plane
-// or a grown bias moves a tap's reference (wide filters, pcss), for moments, and for a normal
-// offset under a perspective light (off its axis the offset can move the lookup deeper).
+// or a grown bias moves a tap's reference (wide filters, pcss), for moments, and where a
+// negative polygon offset pulls the stored depths nearer than the casters.
 bool referencesStayNearer(const Settings& settings);
 
 // One view's reach: a box in that view's shadow-texture space (xy in map uv, z conventional
-// depth from its casters' nearest, or 0, to the far plane).
+// depth from its casters' nearest, or 0, to the far plane; past the map's square and the far
+// plane by what the normal offset moves a lookup).
 struct ReachBox {
     glm::dvec2 uvMin{0.0}, uvMax{1.0};
     double depthMin = 0.0;
+    double depthMax = 1.0;
     glm::dmat4 textureToWorld{1.0};     // inverse of the view's shadowMatrix
     std::array<glm::dvec3, 8> worldCorners() const;
 };
@@ -50,7 +52,7 @@ struct ShadowReach {
     // max x, max y): the frame outside it needs no lookup. The whole [-1, 1] square where a
     // corner is behind the camera.
     glm::dvec4 screenRect{-1.0, -1.0, 1.0, 1.0};
-    int generation = 0;                 // set by whoever keeps it: changes whenever the boxes may have
+    int generation = 0;                 // set by whoever keeps it: a new value whenever the boxes may have changed
     int outsideCount() const;
     int partlyCount() const;
 };

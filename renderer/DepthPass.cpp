@@ -71,7 +71,7 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
         if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, clampDepth))
             continue;
         m_program.set(m_mvpLocation, glm::mat4(light.depthViewProjection * item.model));
-        scene.draw(item);
+        scene.draw(item, false);
         ++draws;
     }
 

@@ -189,11 +189,11 @@ void GpuScene::buildDrawItems()
     }
 }
 
-void GpuScene::draw(const DrawItem& item) const
+void GpuScene::draw(const DrawItem& item, bool colour) const
 {
     const GpuMesh& mesh = item.batch ? m_batches.at(std::size_t(item.mesh)) : m_meshes.at(std::size_t(item.mesh));
     m_gl->glBindVertexArray(mesh.vertexArray.id());
-    if (!item.batch)
+    if (colour && !item.batch)
         m_es->glVertexAttrib3f(3, item.baseColour.r, item.baseColour.g, item.baseColour.b);
     m_gl->glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
 }

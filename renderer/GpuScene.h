@@ -44,9 +44,9 @@ public:
     const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
     // What the passes draw: every object once, alone or in a batch.
     const std::vector<DrawItem>& drawItems() const { return m_items; }
-    // Binds the item's vertex array and draws it; an object's base colour is set as the
-    // constant of attribute 3.
-    void draw(const DrawItem& item) const;
+    // Binds the item's vertex array and draws it; with `colour`, an object's base colour is set
+    // as the constant of attribute 3 (the passes that read positions only leave it alone).
+    void draw(const DrawItem& item, bool colour = true) const;
     // The diffuse texture the object's colour is multiplied by (its base colour multiplies it).
     GLuint texture(const SceneObject& object) const;
     GLuint texture(const DrawItem& item) const { return texture(m_scene.objects.at(item.objects.front())); }

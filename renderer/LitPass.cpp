@@ -262,11 +262,14 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
     }
     // Every face, front and back, with no depth test: a pixel is marked when its ray passes
     // through a box in front of the near plane, which holds for every surface point inside one.
+    // Depth clamp: a box is not clipped at the camera's near or far plane either.
     PassState state;
     state.depthTest = false;
     state.depthWrite = false;
+    state.depthClamp = true;
     applyPassState(m_gl, state);
     m_gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    m_gl->glStencilMask(0xff);
     m_gl->glEnable(GL_STENCIL_TEST);
     m_gl->glStencilFunc(GL_ALWAYS, 1, 0xff);
     m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
@@ -351,6 +354,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     m_gl->glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
     m_gl->glClearDepth(1.0);
     m_gl->glClearStencil(0);
+    m_gl->glStencilMask(0xff);
     m_gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (measure) {
         const GLfloat background[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // mask 0: no surface

@@ -89,7 +89,7 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
         if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, true))
             continue;
         p.program.set(p.mvp, glm::mat4(light.depthViewProjection * item.model));
-        scene.draw(item);
+        scene.draw(item, false);
         ++draws;
     }
     m_gl->glBindVertexArray(0);

@@ -76,36 +76,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         ++m_fitCount;
         // Where lookups can find a caster follows the fit, and so is kept with it.
         const int generation = m_reach.generation + 1;
-        m_reach = ShadowReach{};
-        if (settings.shadow.enabled) {
-            const Scene& scene = m_scene->scene();
-            std::vector<ReachObject> objects;
-            objects.reserve(scene.objects.size());
-            // The shadow pass culls front faces (bias.cull_front) of depth maps only.
-            const bool culls = settings.bias.cullFront && !moments;
-            for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-                const SceneObject& object = scene.objects[i];
-                ReachObject r{m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, std::nullopt, std::nullopt};
-                if (const std::optional<MeshPlane>& plane = m_scene->meshPlane(object.mesh); culls && plane) {
-                    // Through the model matrix by two edges, so a mirroring one turns the winding too.
-                    const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-                    const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
-                    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
-                    const glm::dvec3 origin = world(plane->point);
-                    const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
-                    if (glm::length(normal) > 0.0) {
-                        r.culledPlanePoint = origin;
-                        r.culledPlaneNormal = glm::normalize(normal);
-                    }
-                }
-                objects.push_back(r);
-            }
-            const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
-            std::vector<ReachObject> receivers;
-            for (const DrawItem& item : m_scene->drawItems())
-                receivers.push_back({item.bounds, item.castsShadow, item.receivesShadow, std::nullopt, std::nullopt});
-            m_reach = shadowlab::shadowReach(settings, frames, settings.map.size, objects, receivers, camera);
-        }
+        m_reach = settings.shadow.enabled ? reachOf(settings, camera, multiView, reversed) : ShadowReach{};
         m_reach.generation = generation;
     }
     const FittedLight& fit = m_fit;
@@ -178,6 +149,38 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_light = light;
     m_camera = camera;
     m_viewSettings = settings;
+}
+
+ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camera, bool multiView, bool reversed) const
+{
+    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
+    const Scene& scene = m_scene->scene();
+    std::vector<ReachObject> objects;
+    objects.reserve(scene.objects.size());
+    // The shadow pass culls front faces (bias.cull_front) of depth maps only.
+    const bool culls = settings.bias.cullFront && !moments;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        ReachObject r{.bounds = m_scene->objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow};
+        if (const std::optional<MeshPlane>& plane = m_scene->meshPlane(object.mesh); culls && plane) {
+            // Through the model matrix by two edges, so a mirroring one turns the winding too.
+            const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+            const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
+            const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
+            const glm::dvec3 origin = world(plane->point);
+            const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
+            if (glm::length(normal) > 0.0) {
+                r.culledPlanePoint = origin;
+                r.culledPlaneNormal = glm::normalize(normal);
+            }
+        }
+        objects.push_back(r);
+    }
+    const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
+    std::vector<ReachObject> receivers;
+    for (const DrawItem& item : m_scene->drawItems())
+        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow});
+    return shadowlab::shadowReach(settings, frames, settings.map.size, objects, receivers, camera);
 }
 
 void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, bool multiView,

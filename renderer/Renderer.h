@@ -112,6 +112,9 @@ private:
     // views) and the fit the window shows.
     void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, bool multiView,
                   ShadowViewFrames& views, FittedLight& fit) const;
+    // Where the lookups of the fitted views can find a caster: casters one by one (a flat
+    // one-sided one whose front faces the pass culls as its plane), receivers as drawn.
+    ShadowReach reachOf(const Settings& settings, const CameraFrame& camera, bool multiView, bool reversed) const;
 
     // Everything the shadow map depends on; the pass is skipped while this stays equal.
     struct ShadowKey {

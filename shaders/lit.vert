@@ -17,6 +17,9 @@ out vec3 vPosition;             // camera-relative world position
 out vec3 vNormal;
 out vec2 vUv;
 out vec3 vColour;
+// Receivers straddling the shadow reach are drawn by two variants of this shader, each on
+// its side of a stencil mask: the same depth from both.
+invariant gl_Position;
 out vec4 vShadowCoord;
 
 void main()
