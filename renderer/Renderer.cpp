@@ -161,7 +161,7 @@ ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camer
     const bool culls = settings.bias.cullFront && !moments;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        ReachObject r{.bounds = m_scene->objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow};
+        ReachObject r{.bounds = m_scene->objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}};
         if (const std::optional<MeshPlane>& plane = m_scene->meshPlane(object.mesh); culls && plane) {
             // Through the model matrix by two edges, so a mirroring one turns the winding too.
             const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
@@ -179,7 +179,7 @@ ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camer
     const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : m_scene->drawItems())
-        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow});
+        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}});
     return shadowlab::shadowReach(settings, frames, settings.map.size, objects, receivers, camera);
 }
 
