@@ -108,9 +108,10 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     gReceiverSlope = abs(det) > 1e-20 ? vec2(dx.z * dy.y - dx.y * dy.z, dx.x * dy.z - dx.z * dy.x) / det : vec2(0.0);
 #endif
     float visibility = visibilityWithoutLookup(coord, dot(normal, toLight));
-    // A loop run once or not at all rather than a branch: a software rasteriser (llvmpipe)
-    // shades a group of pixels together and runs both sides of a branch, but leaves a loop once
-    // no pixel of the group is still in it, so pixels that need no lookup cost nothing here.
+    // A loop run once or not at all, meant to let a group of pixels that needs no lookup skip
+    // it. On Mesa 22.3's llvmpipe it does not (nor does a branch): the body runs for the whole
+    // group, measured. Receivers no caster reaches skip it by being drawn with a variant that
+    // has no lookup at all (core/ShadowReach.h); on a GPU this costs nothing.
     for (int lookups = visibility < 0.0 ? 1 : 0; lookups > 0; --lookups)
         visibility = shadowLookup(normal, toLight);
     return visibility;
