@@ -54,6 +54,14 @@ bool culledFrom(const ReachObject& object, const LightFrame& view)
     return view.perspective ? glm::dot(n, view.position - *object.culledPlanePoint) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
 }
 
+// The map depth (conventional, [0, 1] from near to far) of a point `distance` along a
+// perspective view's axis.
+double perspectiveDepthAt(const LightFrame& view, double distance)
+{
+    const glm::dvec4 clip = view.projection * glm::dvec4(0.0, 0.0, -distance, 1.0);
+    return clip.z / clip.w * 0.5 + 0.5;
+}
+
 // No boxes: every receiver looks up, as without a reach.
 ShadowReach lookupsEverywhere(const std::vector<ReachObject>& receivers)
 {
@@ -222,6 +230,10 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
             offsetUv = length / glm::max(glm::dvec2(view.volume.width(), view.volume.height()), glm::dvec2(1e-300));
             offsetDepth = length / std::max(view.volume.farPlane - view.volume.nearPlane, 1e-300);
         }
+        // The far face a little beyond the far plane, for rounding: in depth for an ortho view,
+        // in distance for a perspective one, whose depth reaches only just past 1 at infinity
+        // (with a near plane close to the light, a depth of 1 + 1e-4 lies behind the light).
+        const double farFace = view.perspective ? perspectiveDepthAt(view, view.volume.farPlane * 1.001) : 1.0 + offsetDepth + 1e-4;
         std::vector<UvRect> rects;
         bool anywhere = false;
         for (const ReachObject& object : casters) {
@@ -247,7 +259,7 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
             box.uvMin = r.min;
             box.uvMax = r.max;
             box.depthMin = r.depth;
-            box.depthMax = 1.0 + offsetDepth + 1e-4;
+            box.depthMax = farFace;
             for (const glm::dvec3& c : box.worldCorners()) {
                 if (!finite(c))
                     return lookupsEverywhere(objects);  // a degenerate light matrix: no box to draw

@@ -2,6 +2,7 @@
 // cubes occlude (worked out by casting rays at the cubes) are dark, the rest of the plane is
 // lit, acne appears without bias and not with the defaults, filters soften the edge.
 #include "Application.h"
+#include "ArtifactPresets.h"
 #include "HeadlessRenderer.h"
 #include "LitPass.h"
 #include "RenderProbe.h"
@@ -556,6 +557,17 @@ private Q_SLOTS:
         for (const QString& name : sceneNames()) {
             if (name != QLatin1String("seed"))
                 QTest::newRow(qPrintable(name)) << name << QStringList{} << true;
+        }
+        // Every artifact preset and its fix: the settings chosen to show what goes wrong.
+        for (const ArtifactPreset& preset : artifactPresets()) {
+            for (bool fixed : {false, true}) {
+                const Settings settings = fixed ? artifactPresetFixed(preset) : artifactPresetSettings(preset);
+                QStringList assignments;
+                for (const SettingKey& key : settingKeys())
+                    assignments << key.key + QLatin1Char('=') + settingValue(settings, key.key);
+                QTest::newRow(qPrintable(QStringLiteral("preset %1%2").arg(preset.name, fixed ? QStringLiteral(", fixed") : QString())))
+                    << settings.scene << assignments << true;
+            }
         }
         QTest::newRow("city, spot") << "city" << QStringList{"light.type=spot"} << true;
         QTest::newRow("city, normal offset") << "city" << QStringList{"bias.normal=3", "filter.mode=pcf"} << true;
