@@ -1,6 +1,6 @@
 #include "Application.h"
 #include "HeadlessPlatform.h"
-#include "cli/CliSupport.h"
+#include "CliSupport.h"
 #include "cli/Commands.h"
 
 #include <QApplication>

@@ -2,7 +2,7 @@
 // (then validated), a report sweep file (every entry applied to the defaults), and lines of
 // --set key=value. Refusals (SettingsError, UsageError) are the expected outcome for most
 // inputs; a crash, a sanitizer report, an uncaught exception or a hang is a bug.
-#include "CliSupport.h"
+#include "SettingsOptions.h"
 #include "ReportSweep.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
@@ -40,7 +40,7 @@ void asSweepFile(const QByteArray& bytes, const Settings& base)
             applySweepEntry(base, entry);
     } catch (const SettingsError& e) {
         (void)e.what();
-    } catch (const cli::UsageError& e) {
+    } catch (const UsageError& e) {
         (void)e.what();
     }
 }

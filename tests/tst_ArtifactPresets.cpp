@@ -3,7 +3,7 @@
 // several light directions, and the fix its sentence names takes it away again.
 #include "Application.h"
 #include "ArtifactPresets.h"
-#include "ArtifactsHelp.h"
+#include "ArtifactsPage.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "ReferenceAgreement.h"
@@ -151,13 +151,13 @@ private slots:
     // Help → Shadow Artifacts shows each artifact and its fix as the program renders them.
     void helpShowsEachArtifactAndItsFix()
     {
-        const std::map<QString, QImage>& pictures = ArtifactsHelp::pictures();
+        const std::map<QString, QImage>& pictures = artifactPictures();
         QCOMPARE(pictures.size(), artifactPresets().size() * 2);
-        const QString page = ArtifactsHelp::html(true);
+        const QString page = artifactsPageHtml(true);
         for (const ArtifactPreset& preset : artifactPresets()) {
             const QImage& artifact = pictures.at(preset.name);
             const QImage& fixed = pictures.at(preset.name + QStringLiteral("-fixed"));
-            QCOMPARE(artifact.size(), QSize(ArtifactsHelp::kPictureWidth, ArtifactsHelp::kPictureHeight));
+            QCOMPARE(artifact.size(), QSize(kArtifactPictureWidth, kArtifactPictureHeight));
             // The fix shows: the two pictures differ somewhere visibly.
             int differing = 0;
             for (int y = 0; y < artifact.height(); ++y) {
@@ -167,7 +167,7 @@ private slots:
             QVERIFY2(differing > 10, qPrintable(QStringLiteral("%1: %2 pixels differ").arg(preset.name).arg(differing)));
             QVERIFY(page.contains(QStringLiteral("artifact:%1-fixed").arg(preset.name)));
         }
-        QVERIFY(!ArtifactsHelp::html(false).contains(QStringLiteral("<img")));
+        QVERIFY(!artifactsPageHtml(false).contains(QStringLiteral("<img")));
     }
 };
 

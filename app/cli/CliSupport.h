@@ -1,6 +1,7 @@
 #pragma once
 
 #include "LightFitting.h"
+#include "SettingsOptions.h"
 
 #include "FrameStats.h"
 #include "MessageText.h"
@@ -23,12 +24,6 @@ constexpr int kExitFailure = 1;     // the program failed (driver, or I/O while 
 constexpr int kExitBadInput = 2;    // the user asked for something impossible (including an output path that
                                     // cannot be written, found before any work); nothing was done
 
-// Bad command-line input that is not a setting (a malformed --size, a missing option).
-class UsageError : public std::runtime_error {
-public:
-    explicit UsageError(const QString& message) : std::runtime_error(escapeControlCharacters(message).toStdString()) {}
-};
-
 QTextStream& out();
 QTextStream& err();
 
@@ -40,34 +35,13 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
 // The parser's help with its usage line naming `shadowlab <command>`, not the binary's path.
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
 
-// Adds --scene, --set (repeatable), --settings, --preset, --import-time-limit and
-// --import-memory-limit to `parser`.
-void addSettingsOptions(QCommandLineParser& parser);
-void addImportOptions(QCommandLineParser& parser);  // --import-time-limit, --import-memory-limit
-// The import limits those options give, made the process's (ImportLimits.h); throws
-// SettingsError naming the option. settingsFromOptions() calls it first.
-void applyImportOptions(const QCommandLineParser& parser);
-
-// The settings those options describe: the scene's preset (from --set scene=..., --scene, the
-// file's "scene", the artifact preset's scene, or "seed", in that order), then the artifact
-// preset's keys, then the JSON file, then every --set in order.
-// Throws SettingsError; warnings of validate() are printed to stderr.
+// readSettingsOptions() (SettingsOptions.h) with its warnings printed on stderr.
 Settings settingsFromOptions(const QCommandLineParser& parser);
 
 // "shadow texel: 0.0195 world units as set, 0.0132 fitted (light.fit=scene)": what fitting bought.
 QString formatTexelLine(const FrameStats& stats);
 // The light fit's warnings (receivers a manual volume cuts, ...) on stderr, after `context`.
 void printFitWarnings(const FittedLight& fit, const QString& context = {});
-
-// "1280x720" -> QSize within [minimum, maximum] (each side); throws UsageError naming the
-// option, the command's limits and what they are for.
-struct SizeLimits {
-    QSize minimum{1, 1};
-    QSize maximum;
-    QString reason;     // why the maximum, e.g. "report keeps ~90 bytes per pixel in memory"
-};
-QSize parseSize(const QString& text, const QString& option, const SizeLimits& limits);
-int parseCount(const QString& text, const QString& option, int minimum, int maximum);
 
 // A one-line progress bar with the time left, redrawn in place on stderr; only on a terminal.
 class ProgressBar {

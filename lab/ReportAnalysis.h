@@ -3,6 +3,10 @@
 #include "AccuracyMeter.h"
 #include "Flicker.h"
 #include "SampleStats.h"
+#include "Settings.h"
+
+#include <QImage>
+#include <QSize>
 
 #include <QString>
 #include <QStringList>
@@ -48,5 +52,37 @@ QStringList lightsOf(const std::vector<ReportRow>& rows);
 
 // The rows of `light` on the front of `axis`, fastest first.
 std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const QString& light, ErrorAxis axis);
+
+// 1 - mean SSIM of the frame against it shaded with the reference: 0 when alike, an error
+// that grows like the others.
+double dssim(const ReportRow& row);
+// The area MAE's ± (ErrorNoise.h) in percent.
+double areaNoisePercent(const ReportRow& row);
+
+struct ReportFacts {
+    QString scene;
+    QSize size;
+    int frames = 0;             // timed frames per configuration at most...
+    int minFrames = 0;          // ...and at least, where its times held sooner
+    int warmup = 0;
+    QString renderer;
+    QString machine;            // CPU, cores, memory, OS, Qt and Embree versions
+    int areaSamplesPerPixel = 0;
+    double lightRadius = 0.0;
+    double areaNoiseFloor = 0.0;
+    double raysPerSecond = 0.0;
+    int referenceComputations = 0;
+    double seconds = 0.0;       // the whole run
+};
+
+// "ortho light at (-2, 4, -1) towards (0, 0, 0)": what makes two rows' errors comparable.
+QString lightDescription(const Settings& settings);
+
+// The part of an error image (ShadowMetrics' errorImage()) where its misclassified pixels are
+// densest, enlarged `factor` times without smoothing; a null image when it has none.
+QImage zoomOnErrors(const QImage& errors, int factor = 4);
+
+// CPU model, cores, memory, OS, Qt and Embree versions, one line.
+QString machineFacts();
 
 } // namespace shadowlab

@@ -1,0 +1,454 @@
+#include "ReportWriter.h"
+
+#include "ErrorNoise.h"
+#include "MessageText.h"
+#include "ReportFormat.h"
+
+#include <QBuffer>
+#include <QLocale>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+
+namespace shadowlab {
+
+using reportformat::number;
+
+namespace {
+
+QString html(QString text)
+{
+    return text.toHtmlEscaped();
+}
+
+QString pngDataUri(const QImage& image)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    return QStringLiteral("data:image/png;base64,") + QString::fromLatin1(bytes.toBase64());
+}
+
+constexpr double kCharWidth = 6.4;     // of the 11 px label font, generous, for placing labels
+constexpr double kLabelHeight = 13.0;
+
+// Colours of the lights' fronts and points, in the order the lights first appear.
+const char* const kLightColours[] = {"#e8710a", "#1a73e8", "#188038", "#a142f4", "#d93025", "#12a4af", "#9e6a03", "#5f6368"};
+
+struct Box {
+    double x0, y0, x1, y1;
+    bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+// Ticks for a log axis from `lo` to `hi` (powers of ten): 1, 2 and 5 of each decade when
+// there are few decades, the decades alone otherwise.
+std::vector<double> logTicks(double lo, double hi)
+{
+    std::vector<double> ticks;
+    const int decades = int(std::lround(std::log10(hi / lo)));
+    for (double d = lo; d <= hi * 1.0001; d *= 10.0) {
+        for (double m : {1.0, 2.0, 5.0}) {
+            if ((m == 1.0 || decades <= 3) && d * m <= hi * 1.0001)
+                ticks.push_back(d * m);
+        }
+    }
+    return ticks;
+}
+
+QString percentText(double v)
+{
+    // Enough digits for the value's size, never an exponent: 0.001 %, 0.02 %, 1.5 %, 40 %.
+    const int decimals = v <= 0.0 ? 0 : std::clamp(1 - int(std::floor(std::log10(v))), 0, 4);
+    QString text = QString::number(v, 'f', decimals);
+    if (text.contains(QLatin1Char('.'))) {
+        while (text.endsWith(QLatin1Char('0')))
+            text.chop(1);
+        if (text.endsWith(QLatin1Char('.')))
+            text.chop(1);
+    }
+    return text;
+}
+
+bool onFront(const ReportRow& r, ErrorAxis axis)
+{
+    return axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront;
+}
+
+// The error's noise band (ErrorNoise.h) in percent of the pixels measured: {low, high}.
+std::pair<double, double> noiseBand(const ReportRow& r, ErrorAxis axis)
+{
+    const double n = errorPixels(r, axis), band = errorNoisePixels(n), pixels = std::max(1, measuredPixels(r, axis));
+    return {100.0 * std::max(0.0, n - band) / pixels, 100.0 * (n + band) / pixels};
+}
+
+// "±3 px, 0.0017 % of 176,553 pixels": what the smallest band means for these rows.
+QString smallestBandText(const std::vector<ReportRow>& rows, ErrorAxis axis)
+{
+    int pixels = 0;
+    for (const ReportRow& r : rows)
+        pixels = std::max(pixels, measuredPixels(r, axis));
+    const double band = errorNoisePixels(0.0);
+    return QStringLiteral("±%1 px is %2 % of %3 measured pixels").arg(band).arg(percentText(100.0 * band / std::max(1, pixels)), QLocale(QLocale::English).toString(pixels));
+}
+
+// An inline SVG scatter plot of each row's error on `axis` (in percent, on a log axis) against
+// frame time, with both noises as bars (p10–p90 across, the error's band up and down); each
+// light's Pareto front on that axis marked, joined in its colour and labelled, with the
+// defaults and the tutorial; labels placed where they hide nothing.
+QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle, ErrorAxis axis)
+{
+    const auto value = [axis](const ReportRow& r) { return 100.0 * errorShare(r, axis); };
+    const double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
+    double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
+    for (const ReportRow& r : rows) {
+        xMax = std::max(xMax, r.frame.p90);
+        const double v = value(r);
+        if (v > 0.0) {
+            yLow = yLow > 0.0 ? std::min(yLow, v) : v;
+            yHigh = std::max(yHigh, v);
+        }
+    }
+    // Round ticks: a step of 1, 2 or 5 times a power of ten, about five of them.
+    const double rough = (xMax > 0.0 ? xMax * 1.05 : 1.0) / 5.0;
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    const double xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
+    const int xTicks = int(std::ceil(xMax * 1.05 / xStep));
+    xMax = xStep * xTicks;
+    const int xDecimals = std::max(0, -int(std::floor(std::log10(xStep))));
+    // Whole decades around the values: one outlier at 40 % leaves 0.01 % readable.
+    const double yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
+    double yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
+    if (yMax <= yMin)
+        yMax = yMin * 10.0;
+    // 0 % has no place on a log axis: it gets a line of its own below the lowest decade.
+    const bool anyZero = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return value(r) <= 0.0; });
+    const double zeroBand = anyZero ? 22.0 : 0.0;
+    auto px = [&](double x) { return left + x / xMax * (w - left - right); };
+    auto py = [&](double y) {
+        if (y <= 0.0)
+            return h - bottom;
+        const double t = std::log10(std::max(y, yMin) / yMin) / std::log10(yMax / yMin);
+        return h - bottom - zeroBand - t * (h - top - bottom - zeroBand);
+    };
+
+    QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(w).arg(h);
+    for (int i = 0; i <= xTicks; ++i) {
+        const double x = xStep * i;
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(px(x)).arg(top).arg(h - bottom);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, xDecimals));
+    }
+    if (anyZero) {
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(py(0.0)).arg(w - right);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 %</text>").arg(left - 6).arg(py(0.0) + 4);
+    }
+    for (double y : logTicks(yMin, yMax)) {
+        const bool decade = std::abs(std::log10(y) - std::round(std::log10(y))) < 1e-9;
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"%4\"/>")
+                   .arg(left)
+                   .arg(py(y))
+                   .arg(w - right)
+                   .arg(decade ? QStringLiteral("grid") : QStringLiteral("grid minor"));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(py(y) + 4).arg(percentText(y));
+    }
+    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms; median, bar p10–p90)</text>")
+               .arg((left + w - right) / 2)
+               .arg(h - 10);
+    svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2 (log scale)</text>")
+               .arg((top + h - bottom) / 2)
+               .arg(html(yTitle));
+
+    auto colour = [&](const ReportRow& r) { return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]); };
+    // Each light's front, from fast to slow.
+    for (const QString& light : lights) {
+        // The line steps down through the front points that beat every faster one; the points that
+        // tie with them are on the front as well, as large dots, but a line through every tie
+        // would zig-zag.
+        std::vector<const ReportRow*> steps;
+        for (const ReportRow* r : frontOf(rows, light, axis)) {
+            if (steps.empty() || value(*r) < value(*steps.back()))
+                steps.push_back(r);
+        }
+        if (steps.size() < 2)
+            continue;
+        QString points;
+        for (const ReportRow* r : steps)
+            points += QStringLiteral("%1,%2 ").arg(px(r->frame.median)).arg(py(value(*r)));
+        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), colour(*steps.front()));
+    }
+    std::vector<Box> taken;
+    for (const ReportRow& r : rows) {
+        const double x = px(r.frame.median), y = py(value(r));
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
+                   .arg(px(r.frame.p10))
+                   .arg(y)
+                   .arg(px(r.frame.p90))
+                   .arg(colour(r));
+        if (measuredPixels(r, axis) > 0) {
+            const auto [low, high] = noiseBand(r, axis);
+            svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
+                       .arg(x)
+                       .arg(py(std::min(high, yMax)))
+                       .arg(py(low))
+                       .arg(colour(r));
+        }
+        taken.push_back({x - 6, y - 6, x + 6, y + 6});  // labels keep off the points too
+    }
+    for (const ReportRow& r : rows) {
+        svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7 ms (p10 %8, p90 %9), %10 %</title></circle>")
+                   .arg(px(r.frame.median))
+                   .arg(py(value(r)))
+                   .arg(onFront(r, axis) ? 6 : 4)
+                   .arg(colour(r), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(value(r)));
+    }
+    // Labels for the front and the two reference configurations, first fit wins: right, left,
+    // above, below the point; a label that fits nowhere is left out (the point's tooltip and
+    // the table still name it).
+    std::vector<const ReportRow*> labelled;
+    for (const ReportRow& r : rows) {
+        if (r.defaults || r.tutorial)
+            labelled.push_back(&r);
+    }
+    for (const ReportRow& r : rows) {
+        if (onFront(r, axis) && !r.defaults && !r.tutorial)
+            labelled.push_back(&r);
+    }
+    for (const ReportRow* r : labelled) {
+        const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
+        const double tw = kCharWidth * text.size(), x = px(r->frame.median), y = py(value(*r));
+        // Beside the point first, then further up or down with a leader line.
+        std::vector<Box> candidates;
+        for (int away = 0; away < 5; ++away) {
+            const double dy = 4 + away * (kLabelHeight + 2);
+            for (double side : {1.0, -1.0}) {
+                const double x0 = side > 0 ? x + 8 : x - 8 - tw;
+                candidates.push_back({x0, y - dy - kLabelHeight, x0 + tw, y - dy});
+                candidates.push_back({x0, y + dy, x0 + tw, y + dy + kLabelHeight});
+            }
+        }
+        for (const Box& b : candidates) {
+            const bool inside = b.x0 >= left + 2 && b.x1 <= w - right && b.y0 >= top && b.y1 <= h - bottom;
+            if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); }))
+                continue;
+            if (b.y1 < y - 4 - kLabelHeight || b.y0 > y + 4 + kLabelHeight) {
+                const double ly = b.y1 < y ? b.y1 : b.y0;
+                svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%4\" class=\"leader\"/>")
+                           .arg(x)
+                           .arg(y)
+                           .arg(b.x0 > x ? b.x0 : b.x1)
+                           .arg(ly);
+            }
+            taken.push_back(b);
+            svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"label\">%3</text>").arg(b.x0).arg(b.y1 - 3).arg(html(text));
+            break;
+        }
+    }
+    return svg + QStringLiteral("</svg>");
+}
+
+// A figure with the whole error image and the part where its errors are densest, enlarged.
+QString errorFigure(const QString& title, const ReportRow& row)
+{
+    QString figure = QStringLiteral("<figure><img alt=\"%1\" src=\"%2\"><figcaption>%3: %1 — %4 % misclassified (%5 % false shadow, %6 % false light)</figcaption></figure>")
+                         .arg(html(row.label), pngDataUri(row.accuracy.hardErrors), html(title), percentText(100 * row.accuracy.hard.misclassified),
+                              percentText(100 * row.accuracy.hard.falseShadow), percentText(100 * row.accuracy.hard.falseLight));
+    const QImage zoom = zoomOnErrors(row.accuracy.hardErrors);
+    figure += zoom.isNull() ? QStringLiteral("<figure><figcaption>%1: no misclassified pixels to zoom on</figcaption></figure>").arg(html(title))
+                            : QStringLiteral("<figure><img class=\"zoom\" alt=\"%1, zoomed\" src=\"%2\"><figcaption>%3, where its errors are densest, 4× enlarged</figcaption></figure>")
+                                  .arg(html(row.label), pngDataUri(zoom), html(title));
+    return figure;
+}
+
+// The table of every configuration. A column of errors that is zero in every row says one thing
+// for all of them: it becomes a sentence under the table.
+QString configurationTable(const std::vector<ReportRow>& rows, const QStringList& lights)
+{
+    struct Column {
+        QString heading;
+        std::function<double(const ReportRow&)> percent;
+    };
+    const std::vector<Column> errors{
+        {QStringLiteral("false shadow %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.falseShadow; }},
+        {QStringLiteral("false light %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.falseLight; }},
+        {QStringLiteral("MAE %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.mae; }},
+        {QStringLiteral("RMSE %"), [](const ReportRow& r) { return 100 * r.accuracy.hard.rmse; }},
+        {QStringLiteral("area RMSE %"), [](const ReportRow& r) { return 100 * r.accuracy.area.rmse; }},
+    };
+    std::vector<const Column*> shown;
+    QStringList zero;
+    for (const Column& c : errors) {
+        const bool allZero = std::all_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return c.percent(r) < 0.0005; });
+        if (allZero)
+            zero << c.heading.chopped(2);
+        else
+            shown.push_back(&c);
+    }
+    const bool area = std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return measuredPixels(r, ErrorAxis::AreaMae) > 0; });
+
+    QString table = QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1<th>on the front</th><th>frame ms (p10–p90)</th>"
+                                   "<th>shadow pass ms</th><th>lit pass ms</th><th>misclassified %</th><th>misclassified px</th>")
+                        .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString());
+    if (area)
+        table += QStringLiteral("<th>area MAE %</th>");
+    for (const Column* c : shown)
+        table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
+    table += QStringLiteral("<th>DSSIM</th></tr>");
+    for (const ReportRow& r : rows) {
+        QStringList fronts;
+        if (r.paretoFront)
+            fronts << QStringLiteral("misclassified");
+        if (r.areaFront)
+            fronts << QStringLiteral("area");
+        const double misclassified = errorPixels(r, ErrorAxis::Misclassified);
+        table += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6 (%7–%8)</td><td>%9</td>")
+                     .arg(r.paretoFront || r.areaFront ? QStringLiteral(" class=\"front\"") : QString())
+                     .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label),
+                          lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(r.light) + 1) : QString(), fronts.join(QStringLiteral(", ")))
+                     .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), number(r.shadowPass.median, 2));
+        table += QStringLiteral("<td>%1</td><td>%2</td><td>%3 ± %4</td>")
+                     .arg(number(r.litPass.median, 2), percentText(100 * r.accuracy.hard.misclassified), number(misclassified, 0),
+                          number(errorNoisePixels(misclassified), 0));
+        if (area)
+            table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
+        for (const Column* c : shown)
+            table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
+        table += QStringLiteral("<td>%1</td></tr>").arg(number(dssim(r), 5));
+    }
+    table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
+                            "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
+                            "picture.</p>");
+    if (!zero.isEmpty())
+        table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
+    return table;
+}
+
+// The configurations whose shadow flickers; one sentence when none does.
+QString flickerSection(const std::vector<ReportRow>& rows)
+{
+    const int frames = std::accumulate(rows.begin(), rows.end(), 0, [](int m, const ReportRow& r) { return std::max(m, r.flicker.frames); });
+    QString section = QStringLiteral("<h2>Flicker</h2>");
+    if (frames == 0)
+        return section + QStringLiteral("<p>Not measured (--flicker-frames 0).</p>");
+    const auto flickers = [](const ReportRow& r) { return 100 * std::max(r.flicker.flicker, r.flicker.meanChange) >= 0.0005; };
+    const auto flickering = std::count_if(rows.begin(), rows.end(), flickers);
+    section += QStringLiteral("<p>The camera the light is fitted to walks %1 frames in sub-texel steps while the measured pixels stay put: "
+                              "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.")
+                   .arg(frames);
+    // Flicker of 0 means nothing where the maps never moved: say which it is.
+    const auto still = std::count_if(rows.begin(), rows.end(), [](const ReportRow& r) { return r.flicker.frames > 1 && r.flicker.mapMoves == 0; });
+    if (still > 0)
+        section += QStringLiteral(" In %1 of %2 configurations the light's maps did not move at all during the walk: the casters, not the "
+                                  "camera's view, bound the fitted volume, so this camera cannot show shimmer there (a camera whose view cuts "
+                                  "the shadows, or the city, can).")
+                       .arg(still)
+                       .arg(rows.size());
+    if (flickering == 0)
+        return section + QStringLiteral(" No configuration flickers above 0.0005 % on either.</p>");
+    section += flickering < qsizetype(rows.size()) ? QStringLiteral(" The other %1 configurations flicker below 0.0005 % on both.</p>").arg(rows.size() - std::size_t(flickering))
+                                                   : QStringLiteral("</p>");
+    section += QStringLiteral("<table><tr><th>configuration</th><th>flips %</th><th>worst pair %</th><th>mean change %</th></tr>");
+    for (const ReportRow& r : rows) {
+        if (flickers(r))
+            section += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
+                           .arg(html(r.label), number(100 * r.flicker.flicker, 3), number(100 * r.flicker.worstPair, 3), number(100 * r.flicker.meanChange, 3));
+    }
+    return section + QStringLiteral("</table>");
+}
+
+} // namespace
+
+QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& facts)
+{
+    // The lights in order of appearance: each has its own front and colour.
+    const QStringList lights = lightsOf(rows);
+    const ReportRow* best = nullptr;
+    const ReportRow* worst = nullptr;
+    for (const ReportRow& r : rows) {
+        if (!best || r.accuracy.hard.misclassified < best->accuracy.hard.misclassified)
+            best = &r;
+        if (!worst || r.accuracy.hard.misclassified > worst->accuracy.hard.misclassified)
+            worst = &r;
+    }
+
+    QString page = QStringLiteral(R"(<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>ShadowLab report: %1</title>
+<style>
+body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:#222;background:#fafafa}
+h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
+.facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
+.grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
+.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
+.label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
+table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
+td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
+.images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}.images img.zoom{image-rendering:pixelated}
+.lights span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle;border-radius:6px}
+.key span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle}
+</style></head><body>
+<h1>Shadow error against run time: %1</h1>
+<p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
+Renderer: %6<br>Machine: %7<br>
+Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10 %);
+%11 Mrays/s; traced %12 time(s) for %13 configurations. Whole run: %14 s.</p>
+)")
+                       .arg(html(facts.scene))
+                       .arg(facts.size.width())
+                       .arg(facts.size.height())
+                       .arg(facts.minFrames < facts.frames ? QStringLiteral("%1–%2 (until its median and p10–p90 held)").arg(facts.minFrames).arg(facts.frames)
+                                                       : QString::number(facts.frames))
+                       .arg(facts.warmup)
+                       .arg(html(facts.renderer), html(facts.machine))
+                       .arg(facts.areaSamplesPerPixel)
+                       .arg(facts.lightRadius)
+                       .arg(percentText(100 * facts.areaNoiseFloor))
+                       .arg(number(facts.raysPerSecond * 1e-6, 2))
+                       .arg(facts.referenceComputations)
+                       .arg(rows.size())
+                       .arg(number(facts.seconds, 1));
+    if (lights.size() > 1) {
+        page += QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable):");
+        for (qsizetype i = 0; i < lights.size(); ++i)
+            page += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
+        page += QStringLiteral("</p>");
+    }
+    page += QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
+    page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
+    page += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
+    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
+    page += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
+                           "are more accurate than every faster one. A configuration leaves "
+                           "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
+                           "other's p10; the bars across) and clearly more accurate (their error bands apart; the bars up and down). "
+                           "Configurations that tie on either axis stay on the front together. An error is a count of pixels (MAE "
+                           "times the pixels measured, as fully wrong pixels), and a count n is known to n ± max(3, 2√n): a sub-texel "
+                           "move of camera or light slides the pixels along every shadow edge in or out of error, scattering a count "
+                           "by about √n, and fewer than a few pixels are not resolved at all (%1). Identical configurations are "
+                           "measured once, their names joined with “=”.</p>")
+                .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)));
+    page += configurationTable(rows, lights);
+    page += flickerSection(rows);
+    if (best && worst) {
+        page += QStringLiteral("<h2>Error images</h2><p class=\"key\">Against the hard reference:<span style=\"background:#eb28c8\"></span>false shadow (acne)"
+                               "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks). Beside each, the part of the frame "
+                               "where its errors are densest, enlarged.</p>");
+        std::vector<std::pair<QString, const ReportRow*>> shown;
+        for (const ReportRow& r : rows) {
+            if (r.defaults)
+                shown.emplace_back(QStringLiteral("Defaults"), &r);
+        }
+        for (const ReportRow& r : rows) {
+            if (r.tutorial)
+                shown.emplace_back(QStringLiteral("Tutorial configuration"), &r);
+        }
+        shown.emplace_back(QStringLiteral("Most accurate"), best);
+        shown.emplace_back(QStringLiteral("Least accurate"), worst);
+        for (const auto& [title, row] : shown)
+            page += QStringLiteral("<div class=\"images\">") + errorFigure(title, *row) + QStringLiteral("</div>");
+    }
+    page += QStringLiteral("</body></html>\n");
+    return page.toUtf8();
+}
+
+} // namespace shadowlab

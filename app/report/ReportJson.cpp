@@ -1,0 +1,75 @@
+#include "ReportWriter.h"
+
+#include "ErrorNoise.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace shadowlab {
+
+namespace {
+
+QJsonObject statsJson(const SampleStats& s)
+{
+    return {{QStringLiteral("median_ms"), s.median}, {QStringLiteral("p10_ms"), s.p10}, {QStringLiteral("p90_ms"), s.p90}};
+}
+
+QJsonObject metricsJson(const ErrorMetrics& m)
+{
+    return {{QStringLiteral("pixels"), m.pixels},
+            {QStringLiteral("misclassified_pct"), 100 * m.misclassified},
+            {QStringLiteral("false_shadow_pct"), 100 * m.falseShadow},
+            {QStringLiteral("false_light_pct"), 100 * m.falseLight},
+            {QStringLiteral("mae_pct"), 100 * m.mae},
+            {QStringLiteral("rmse_pct"), 100 * m.rmse}};
+}
+
+} // namespace
+
+QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
+{
+    QJsonArray jsonRows;
+    for (const ReportRow& r : rows) {
+        const ErrorMetrics& h = r.accuracy.hard;
+        const ErrorMetrics& a = r.accuracy.area;
+        jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
+                                    {QStringLiteral("settings"), QJsonArray::fromStringList(r.assignments)},
+                                    {QStringLiteral("light"), r.light},
+                                    {QStringLiteral("shadow_pass_wall"), statsJson(r.shadowPass)},
+                                    {QStringLiteral("lit_pass_wall"), statsJson(r.litPass)},
+                                    {QStringLiteral("frame_wall"), statsJson(r.frame)},
+                                    {QStringLiteral("frames"), r.frame.count},
+                                    {QStringLiteral("hard_reference"), metricsJson(h)},
+                                    {QStringLiteral("area_reference"), metricsJson(a)},
+                                    {QStringLiteral("pareto_front"), r.paretoFront},
+                                    {QStringLiteral("area_pareto_front"), r.areaFront},
+                                    {QStringLiteral("misclassified_noise_px"), errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified))},
+                                    {QStringLiteral("area_mae_noise_pct"), areaNoisePercent(r)},
+                                    {QStringLiteral("mean_ssim"), r.accuracy.ssim},
+                                    {QStringLiteral("dssim"), dssim(r)},
+                                    {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
+                                                                            {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
+                                                                            {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},
+                                                                            {QStringLiteral("frames"), r.flicker.frames},
+                                                                            {QStringLiteral("map_moves"), r.flicker.mapMoves}}}});
+    }
+    const QJsonObject json{{QStringLiteral("scene"), facts.scene},
+                           {QStringLiteral("size"), QStringLiteral("%1x%2").arg(facts.size.width()).arg(facts.size.height())},
+                           {QStringLiteral("frames"), facts.frames},
+                           {QStringLiteral("min_frames"), facts.minFrames},
+                           {QStringLiteral("warmup"), facts.warmup},
+                           {QStringLiteral("renderer"), facts.renderer},
+                           {QStringLiteral("machine"), facts.machine},
+                           {QStringLiteral("area_samples_per_pixel"), facts.areaSamplesPerPixel},
+                           {QStringLiteral("light_radius"), facts.lightRadius},
+                           {QStringLiteral("area_noise_floor_pct"), 100 * facts.areaNoiseFloor},
+                           {QStringLiteral("rays_per_second"), facts.raysPerSecond},
+                           {QStringLiteral("reference_computations"), facts.referenceComputations},
+                           {QStringLiteral("seconds"), facts.seconds},
+                           {QStringLiteral("rows"), jsonRows}};
+    return QJsonDocument(json).toJson(QJsonDocument::Indented);
+
+}
+
+} // namespace shadowlab

@@ -1,0 +1,162 @@
+#include "ReportAnalysis.h"
+
+#include "ErrorNoise.h"
+#include "SettingsKeys.h"
+
+#include <embree3/rtcore_config.h>
+
+#include <QFile>
+#include <QSysInfo>
+#include <QThread>
+
+#include <algorithm>
+
+namespace shadowlab {
+
+namespace {
+
+const ErrorMetrics& metrics(const ReportRow& row, ErrorAxis axis)
+{
+    return axis == ErrorAxis::Misclassified ? row.accuracy.hard : row.accuracy.area;
+}
+
+bool clearlyFaster(const SampleStats& a, const SampleStats& b)
+{
+    return a.p90 < b.p10;
+}
+
+bool beats(const ReportRow& b, const ReportRow& a, ErrorAxis axis)
+{
+    return b.light == a.light && clearlyFaster(b.frame, a.frame) && clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
+}
+
+void markFront(std::vector<ReportRow>& rows, ErrorAxis axis, bool ReportRow::*flag)
+{
+    for (ReportRow& a : rows) {
+        const bool measured = measuredPixels(a, axis) > 0;
+        a.*flag = measured && std::none_of(rows.begin(), rows.end(), [&](const ReportRow& b) { return beats(b, a, axis); });
+    }
+}
+
+} // namespace
+
+double errorShare(const ReportRow& row, ErrorAxis axis)
+{
+    const ErrorMetrics& m = metrics(row, axis);
+    return axis == ErrorAxis::Misclassified ? m.misclassified : m.mae;
+}
+
+int measuredPixels(const ReportRow& row, ErrorAxis axis)
+{
+    return metrics(row, axis).pixels;
+}
+
+double errorPixels(const ReportRow& row, ErrorAxis axis)
+{
+    return errorShare(row, axis) * measuredPixels(row, axis);
+}
+
+void markParetoFronts(std::vector<ReportRow>& rows)
+{
+    markFront(rows, ErrorAxis::Misclassified, &ReportRow::paretoFront);
+    markFront(rows, ErrorAxis::AreaMae, &ReportRow::areaFront);
+}
+
+QStringList lightsOf(const std::vector<ReportRow>& rows)
+{
+    QStringList lights;
+    for (const ReportRow& r : rows) {
+        if (!lights.contains(r.light))
+            lights << r.light;
+    }
+    return lights;
+}
+
+std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const QString& light, ErrorAxis axis)
+{
+    std::vector<const ReportRow*> front;
+    for (const ReportRow& r : rows) {
+        if (r.light == light && (axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront))
+            front.push_back(&r);
+    }
+    std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    return front;
+}
+
+double dssim(const ReportRow& r)
+{
+    return 1.0 - r.accuracy.ssim;
+}
+
+double areaNoisePercent(const ReportRow& r)
+{
+    return 100.0 * errorNoisePixels(errorPixels(r, ErrorAxis::AreaMae)) / std::max(1, measuredPixels(r, ErrorAxis::AreaMae));
+}
+
+QString lightDescription(const Settings& settings)
+{
+    auto vec = [&](const QString& key) { return QStringLiteral("(%1)").arg(settingValue(settings, key).replace(QLatin1Char(','), QStringLiteral(", "))); };
+    return QStringLiteral("%1 light at %2 towards %3")
+        .arg(toString(settings.light.projection), vec(QStringLiteral("light.position")), vec(QStringLiteral("light.target")));
+}
+
+QImage zoomOnErrors(const QImage& errors, int factor)
+{
+    if (errors.isNull() || factor < 1)
+        return {};
+    const QImage image = errors.convertToFormat(QImage::Format_RGB32);
+    const int w = image.width(), h = image.height();
+    // Summed-area table of misclassified pixels (coloured; everything else is grey).
+    std::vector<int> sum(std::size_t(w + 1) * std::size_t(h + 1), 0);
+    auto at = [&](int x, int y) -> int& { return sum[std::size_t(y) * std::size_t(w + 1) + std::size_t(x)]; };
+    for (int y = 0; y < h; ++y) {
+        const auto* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+        for (int x = 0; x < w; ++x) {
+            const bool error = qRed(line[x]) != qGreen(line[x]) || qGreen(line[x]) != qBlue(line[x]);
+            at(x + 1, y + 1) = at(x, y + 1) + at(x + 1, y) - at(x, y) + (error ? 1 : 0);
+        }
+    }
+    if (at(w, h) == 0)
+        return {};
+    const int cw = std::max(1, w / factor), ch = std::max(1, h / factor);
+    const int step = std::max(1, std::min(cw, ch) / 8);
+    int bestX = 0, bestY = 0, best = -1;
+    for (int y = 0; y + ch <= h; y += step) {
+        for (int x = 0; x + cw <= w; x += step) {
+            const int count = at(x + cw, y + ch) - at(x, y + ch) - at(x + cw, y) + at(x, y);
+            if (count > best) {
+                best = count;
+                bestX = x;
+                bestY = y;
+            }
+        }
+    }
+    return image.copy(bestX, bestY, cw, ch).scaled(cw * factor, ch * factor, Qt::IgnoreAspectRatio, Qt::FastTransformation);
+}
+
+QString machineFacts()
+{
+    QString cpu;
+    QFile cpuinfo(QStringLiteral("/proc/cpuinfo"));
+    if (cpuinfo.open(QIODevice::ReadOnly)) {
+        for (const QByteArray& line : cpuinfo.readAll().split('\n')) {
+            if (line.startsWith("model name")) {
+                cpu = QString::fromUtf8(line.mid(line.indexOf(':') + 1)).trimmed();
+                break;
+            }
+        }
+    }
+    QString memory;
+    QFile meminfo(QStringLiteral("/proc/meminfo"));
+    if (meminfo.open(QIODevice::ReadOnly)) {
+        const QByteArray first = meminfo.readLine();
+        memory = QStringLiteral("%1 GiB").arg(first.split(':').value(1).trimmed().split(' ').value(0).toDouble() / (1024.0 * 1024.0), 0, 'f', 1);
+    }
+    return QStringLiteral("%1, %2 cores, %3 memory, %4, Qt %5, Embree %6")
+        .arg(cpu.isEmpty() ? QSysInfo::currentCpuArchitecture() : cpu)
+        .arg(QThread::idealThreadCount())
+        .arg(memory.isEmpty() ? QStringLiteral("?") : memory, QSysInfo::prettyProductName(), QString::fromLatin1(qVersion()),
+             QStringLiteral(RTC_VERSION_STRING));
+}
+
+} // namespace shadowlab
