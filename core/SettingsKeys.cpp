@@ -642,9 +642,6 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (s.shadow.cascades > 1 && s.light.type != LightType::Directional)
         error("shadow.cascades", QStringLiteral("cascades split a directional light's map; with light.type=%1 set shadow.cascades=1")
                                      .arg(toString(s.light.type)));
-    if (s.filter.earlyOut && usesShadowViews(s))
-        error("filter.early_out", QStringLiteral("penumbra-only filtering reads a single map's min/max mip; turn filter.early_out off with "
-                                                 "cascades or a point light"));
     if (shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments && s.moments.mipmaps && usesShadowViews(s))
         error("moments.mipmaps", QStringLiteral("the mip levels of a map holding several views (cascades or a point light's faces) would "
                                                 "blend neighbouring views; set moments.mipmaps=false, or shadow.cascades=1 with a "

@@ -36,6 +36,15 @@ bool usesShadowViews(const Settings& settings)
     return settings.light.type == LightType::Point || (settings.light.type == LightType::Directional && settings.shadow.cascades > 1);
 }
 
+ShadowTileGrid shadowTileGrid(const Settings& settings)
+{
+    if (settings.light.type == LightType::Point)
+        return {3, 2};
+    if (usesShadowViews(settings))
+        return {std::min(settings.shadow.cascades, 2), (settings.shadow.cascades + 1) / 2};
+    return {};
+}
+
 std::vector<double> cascadeSplits(CascadeSplit scheme, double lambda, double nearPlane, double farPlane, int count)
 {
     count = std::max(count, 1);
@@ -141,12 +150,13 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
 ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect)
 {
     ShadowViewSet set;
+    const ShadowTileGrid grid = shadowTileGrid(settings);
+    set.columns = grid.columns;
+    set.rows = grid.rows;
     const LightSettings& light = settings.light;
     const int mapSize = settings.map.size;
     if (light.type == LightType::Point) {
         set.cube = true;
-        set.columns = 3;
-        set.rows = 2;
         const double distance = std::max(glm::length(light.target - light.position), 1e-9);
         const double fov = cubeFaceFov(mapSize);
         for (std::size_t face = 0; face < cubeFaceAxes().size(); ++face) {
@@ -170,8 +180,6 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
     if (light.type == LightType::Directional && settings.shadow.cascades > 1) {
         set.cascaded = true;
         const int count = settings.shadow.cascades;
-        set.columns = std::min(count, 2);
-        set.rows = (count + 1) / 2;
         const double farthest = std::max(std::min(settings.shadow.distance, camera.farPlane), camera.nearPlane * (1.0 + 1e-6));
         const std::vector<double> splits = cascadeSplits(settings.shadow.split, settings.shadow.splitLambda, camera.nearPlane, farthest, count);
         const double safeAspect = std::isfinite(aspect) && aspect > 0.0 ? aspect : 1.0;

@@ -34,6 +34,13 @@ struct ShadowViewSet {
 // Whether `settings` render more than one view (cascades > 1 or a point light).
 bool usesShadowViews(const Settings& settings);
 
+// The tiles of the shared texture the light's views need: 3 x 2 cube faces, cascades two to a
+// row, 1 x 1 for one map.
+struct ShadowTileGrid {
+    int columns = 1, rows = 1;
+};
+ShadowTileGrid shadowTileGrid(const Settings& settings);
+
 // count + 1 view depths from nearPlane to farPlane (both > 0, near < far): where each cascade
 // starts and ends. Uniform slices are equal in depth, logarithmic ones in ratio, practical ones
 // are lambda * logarithmic + (1 - lambda) * uniform. Finite and increasing for any finite input.

@@ -29,38 +29,43 @@ DepthRangePass::DepthRangePass(GlFunctions* gl, Contents contents)
     m_gl->glBindVertexArray(0);
 }
 
-QPoint DepthRangePass::levelOrigin(int levelZeroSize, int level)
-{
-    // Level k >= 1 ends at w0 - (w0 >> k) <= where level k + 1 starts, w0 - 2 (w0 >> (k + 1)).
-    return level == 0 ? QPoint(0, 0) : QPoint(levelZeroSize, levelZeroSize - 2 * levelSize(levelZeroSize, level));
-}
-
-void DepthRangePass::allocate(int mapSize)
+void DepthRangePass::allocate(QSize mapSize)
 {
     // Level 0 covers 4 x 4 map texels a texel, rounding up, so it covers every map texel; the rest follow GL's
-    // rule for a complete mip chain (halving, rounded down), whose odd leftovers the pass folds
-    // into the last texel. Level 0 is drawn straight into the atlas; the chain holds levels 1 and
-    // up (its level j is level j + 1), each drawn from the one before and then copied over.
-    const int levelZero = levelZeroSize(mapSize);
-    int levels = 1;
-    while (levelSize(levelZero, levels - 1) > 1)
-        ++levels;
+    // rule for a complete mip chain (halving each axis, rounded down, to 1), whose odd leftovers
+    // the pass folds into the last texel. Level 0 is drawn straight into the atlas; the chain
+    // holds levels 1 and up (its level j is level j + 1), each drawn from the one before and
+    // then copied over.
+    const QSize levelZero((mapSize.width() + kLevelZeroBlock - 1) / kLevelZeroBlock, (mapSize.height() + kLevelZeroBlock - 1) / kLevelZeroBlock);
+    m_origins = {QPoint(0, 0)};
+    m_sizes = {levelZero};
+    int columnWidth = 0, columnHeight = 0;
+    while (m_sizes.back() != QSize(1, 1) && int(m_sizes.size()) < kMaxLevels) {
+        const int level = int(m_sizes.size());
+        const QSize size(std::max(levelZero.width() >> level, 1), std::max(levelZero.height() >> level, 1));
+        m_origins.emplace_back(levelZero.width(), columnHeight);
+        m_sizes.push_back(size);
+        columnWidth = std::max(columnWidth, size.width());
+        columnHeight += size.height();
+    }
+    const QSize atlas(levelZero.width() + columnWidth, std::max(levelZero.height(), columnHeight));
 
     m_atlas = makeTexture(m_gl);
     m_gl->glBindTexture(GL_TEXTURE_2D, m_atlas.id());
-    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, levelZero + levelSize(levelZero, 1), levelZero, 0, GL_RG, GL_FLOAT, nullptr);
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, atlas.width(), atlas.height(), 0, GL_RG, GL_FLOAT, nullptr);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     labelGlObject(GlLabelKind::Texture, m_atlas.id(), QStringLiteral("shadow map min/max depth atlas"));
 
     m_chain = makeTexture(m_gl);
-    if (levels > 1) {
+    if (levels() > 1) {
         m_gl->glBindTexture(GL_TEXTURE_2D, m_chain.id());
-        for (int level = 1; level < levels; ++level) {
-            const int size = levelSize(levelZero, level);
-            m_gl->glTexImage2D(GL_TEXTURE_2D, level - 1, GL_RG32F, size, size, 0, GL_RG, GL_FLOAT, nullptr);
+        for (int level = 1; level < levels(); ++level) {
+            const QSize size = levelSize(level);
+            m_gl->glTexImage2D(GL_TEXTURE_2D, level - 1, GL_RG32F, size.width(), size.height(), 0, GL_RG, GL_FLOAT, nullptr);
         }
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels() - 2);
         // Read with texelFetch only; nearest filtering keeps every level complete.
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -68,13 +73,13 @@ void DepthRangePass::allocate(int mapSize)
     }
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_mapSize = mapSize;
-    m_levels = levels;
 }
 
 void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
 {
-    if (!m_atlas || map.size() != m_mapSize)
-        allocate(map.size());
+    const QSize mapSize(map.width(), map.height());
+    if (!m_atlas || mapSize != m_mapSize)
+        allocate(mapSize);
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
@@ -82,9 +87,8 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     m_gl->glActiveTexture(GL_TEXTURE0 + kSourceUnit);
 
-    const int levelZero = levelZeroSize(map.size());
-    for (int level = 0; level < m_levels; ++level) {
-        const int size = levelSize(levelZero, level);
+    for (int level = 0; level < levels(); ++level) {
+        const QSize size = levelSize(level);
         if (level == 0)
             m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
         else
@@ -95,12 +99,13 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
                 throw RenderError(QStringLiteral("the min/max depth mip's framebuffer is incomplete (status 0x%1)").arg(status, 0, 16));
         }
         PassState state;
-        state.viewport = QRect(0, 0, size, size);
+        state.viewport = QRect(QPoint(0, 0), size);
         applyPassState(m_gl, state);
         ShaderProgram& program = level == 0 ? *m_fromDepth : *m_fromRange;
         program.bind();
         program.set(program.uniform("uSource"), int(kSourceUnit));
-        program.set(program.uniform("uSourceSize"), level == 0 ? map.size() : levelSize(levelZero, level - 1));
+        const QSize source = level == 0 ? mapSize : levelSize(level - 1);
+        m_gl->glUniform2i(program.uniform("uSourceSize"), source.width(), source.height());
         if (level == 0 && m_contents == Contents::Written)
             program.set(program.uniform("uEmpty"), reversedDepth ? 0.0f : 1.0f);
         if (level == 0) {
@@ -120,16 +125,17 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
     }
 
     // Levels 1 and up into their places in the atlas.
-    if (m_levels > 1) {
+    if (levels() > 1) {
         m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_atlasFramebuffer.id());
         labelGlObject(GlLabelKind::Framebuffer, m_atlasFramebuffer.id(), QStringLiteral("depth range atlas"));
         m_gl->glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
         m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer.id());
-        for (int level = 1; level < m_levels; ++level) {
+        for (int level = 1; level < levels(); ++level) {
             m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_chain.id(), level - 1);
-            const int size = levelSize(levelZero, level);
-            const QPoint at = levelOrigin(levelZero, level);
-            m_gl->glBlitFramebuffer(0, 0, size, size, at.x(), at.y(), at.x() + size, at.y() + size, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            const QSize size = levelSize(level);
+            const QPoint at = levelOrigin(level);
+            m_gl->glBlitFramebuffer(0, 0, size.width(), size.height(), at.x(), at.y(), at.x() + size.width(), at.y() + size.height(),
+                                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
         }
         m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     }
@@ -141,13 +147,13 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
 
 std::optional<std::pair<float, float>> DepthRangePass::readTotal()
 {
-    if (!m_atlas || m_levels < 1)
+    if (!m_atlas || levels() < 1)
         return std::nullopt;
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_atlasFramebuffer.id());
     m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_atlas.id(), 0);
-    const QPoint top = levelOrigin((m_mapSize + kLevelZeroBlock - 1) / kLevelZeroBlock, m_levels - 1);
+    const QPoint top = levelOrigin(levels() - 1);
     float range[2] = {0.0f, 0.0f};
     m_gl->glReadPixels(top.x(), top.y(), 1, 1, GL_RG, GL_FLOAT, range);
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));

@@ -5,11 +5,13 @@
 #include "ShadowMap.h"
 
 #include <QPoint>
+#include <QSize>
 
 #include <algorithm>
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace shadowlab {
 
@@ -21,9 +23,14 @@ namespace shadowlab {
 // pass reads: a level chosen per pixel then never depends on the driver fetching a level per
 // pixel (llvmpipe picks one level for each 2 x 2 quad of pixels).
 //
-// Atlas layout, with w0 the size of level 0 (the map's size over 4, rounded up) and level k of
-// size w0 >> k: level 0 at (0, 0); level k >= 1 at (w0, w0 - 2 (w0 >> k)), a column to its right
-// (shaders/shadow_filters.glsl, rangeTexel, reads the same rule).
+// The map is every tile at once (a light's views side by side): a range texel near a tile's
+// edge may take in a neighbour's texels too, which only widens its range, so a verdict drawn
+// from it still holds for the taps, which stay inside their tile.
+//
+// Atlas layout, with w0 the size of level 0 (the map's width and height over 4, rounded up) and
+// level k of size max(w0 >> k, 1) on each axis: level 0 at (0, 0); levels 1 and up stacked in a
+// column to its right, level 1 at its bottom (levelOrigin(); the lit pass reads the same table,
+// shaders/shadow_filters.glsl, rangeTexel).
 //
 // With Contents::Written texels nothing was drawn into (the far plane, or 0 in a reversed map)
 // take no part, and readTotal() gives the nearest and farthest depth the map really holds: what
@@ -40,18 +47,18 @@ public:
     // was written. Stalls until the build is done; for a view, once per shadow pass.
     std::optional<std::pair<float, float>> readTotal();
 
-    // The atlas: RG32F, (w0 + w0 / 2) x w0, read with texelFetch at level 0.
+    // The atlas: RG32F, read with texelFetch at level 0.
     GLuint texture() const { return m_atlas.id(); }
-    int levels() const { return m_levels; }
+    int levels() const { return int(m_origins.size()); }
+    // Where level `level` lies in the atlas, and its size.
+    QPoint levelOrigin(int level) const { return m_origins[std::size_t(level)]; }
+    QSize levelSize(int level) const { return m_sizes[std::size_t(level)]; }
 
     static constexpr int kLevelZeroBlock = 4;   // map texels per side of a level-0 texel
-    static int levelZeroSize(int mapSize) { return (mapSize + kLevelZeroBlock - 1) / kLevelZeroBlock; }
-    // Where level `level` starts in the atlas, and its size (square).
-    static QPoint levelOrigin(int levelZeroSize, int level);
-    static int levelSize(int levelZeroSize, int level) { return std::max(levelZeroSize >> level, 1); }
+    static constexpr int kMaxLevels = 16;       // the lit pass's table (a 2^17-texel map)
 
 private:
-    void allocate(int mapSize);
+    void allocate(QSize mapSize);
 
     GlFunctions* m_gl;
     Contents m_contents;
@@ -62,8 +69,9 @@ private:
     GlFramebuffer m_atlasFramebuffer;
     GlTexture m_chain;  // the mip chain the passes build, level by level
     GlTexture m_atlas;
-    int m_mapSize = 0;
-    int m_levels = 0;
+    QSize m_mapSize;
+    std::vector<QPoint> m_origins;
+    std::vector<QSize> m_sizes;
 };
 
 } // namespace shadowlab

@@ -41,8 +41,6 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowDepth(program.uniform("uShadowDepth")),
       shadowMoments(program.uniform("uShadowMoments")),
       shadowTexel(program.uniform("uShadowTexel")),
-      shadowUvWorld(program.uniform("uShadowUvWorld")),
-      shadowDepthRange(program.uniform("uShadowDepthRange")),
       depthRange(program.uniform("uDepthRange")),
       depthRangeLevels(program.uniform("uDepthRangeLevels")),
       lightPosition(program.uniform("uLightPosition")),
@@ -151,7 +149,7 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
     m_gl->glUniform2fv(p.techniqueUniform("uShadowViewUvWorld"), count, &uvWorld[0][0]);
     m_gl->glUniform2fv(p.techniqueUniform("uShadowViewDepth"), count, &depthRange[0][0]);
     m_gl->glUniform1fv(p.techniqueUniform("uShadowViewTexel"), count, texels.data());
-    p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));
+    p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));   // several views
     if (views.set.cascaded) {
         glm::vec4 far(0.0f), blendStart(0.0f);
         for (int i = 0; i < count && i < 4; ++i) {
@@ -184,24 +182,19 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     }
     if (map == nullptr)
         return;
-    // World size of a texel (at unit distance for a perspective light), the wider axis, with
-    // the fitted volume the map was rendered with.
-    const double texel = texelWorldSize(light.volume, map->size());
-    const double biasScale = settings.bias.space == BiasSpace::Texel ? texel : 1.0;
-    p.program.set(p.biasSlope, float(settings.bias.slope * biasScale));
-    p.program.set(p.biasMin, float(settings.bias.min * biasScale));
+    // The bias as set: a bias in texels is scaled by each view's texel in the shader.
+    p.program.set(p.biasSlope, float(settings.bias.slope));
+    p.program.set(p.biasMin, float(settings.bias.min));
     for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
         p.program.set(p.techniqueUniform(u.name), u.value);
     p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
-    p.program.set(p.shadowUvWorld, glm::vec2(float(light.volume.width()), float(light.volume.height())));
-    p.program.set(p.shadowDepthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
-    p.program.set(p.normalOffset, float(settings.bias.normal * texel));
+    // One view's position is taken in the vertex stage, with the normal offset in world units
+    // from its texel (at unit distance for a perspective light), the wider axis.
+    p.program.set(p.normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));
     p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
-    if (usesShadowViews(settings)) {
-        if (m_views == nullptr || m_views->frames.empty())
-            throw RenderError(QStringLiteral("the light's views (cascades or cube faces) were not fitted before the lit pass"));
-        setViewUniforms(p, camera, settings, *map);
-    }
+    if (m_views == nullptr || m_views->frames.empty())
+        throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
+    setViewUniforms(p, camera, settings, *map);
     const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
     for (std::size_t i = 0; i < samplers.size(); ++i) {
         const bool readsMoments = samplers[i] == ShadowSampler::Moments;
@@ -211,6 +204,13 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     if (readsRange) {
         p.program.set(p.depthRange, int(kShadowUnit + GLuint(samplers.size())));
         p.program.set(p.depthRangeLevels, depthRange->levels());
+        std::vector<GLint> levels;
+        for (int level = 0; level < depthRange->levels(); ++level) {
+            const QPoint at = depthRange->levelOrigin(level);
+            const QSize size = depthRange->levelSize(level);
+            levels.insert(levels.end(), {at.x(), at.y(), size.width(), size.height()});
+        }
+        m_gl->glUniform4iv(p.techniqueUniform("uDepthRangeLevel"), depthRange->levels(), levels.data());
     }
 }
 

@@ -46,8 +46,8 @@ public:
     static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
-    // The views the next render() reads when the settings use several (usesShadowViews()):
-    // cascades or cube faces in the tiles of `map`. Null: none. Not owned; must outlive render().
+    // The light's views the next render() reads (one map, cascades or cube faces, each in its
+    // tile of `map`); needed when shadows are on. Not owned; must outlive render().
     void setShadowViews(const ShadowViewFrames* views) { m_views = views; }
     // Where the next render()'s lookups can find a caster, per object of the scene (computed by
     // the Renderer with the fit): receivers out of reach are shaded without a lookup, and those
@@ -68,7 +68,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, shadowUvWorld, shadowDepthRange, depthRange, depthRangeLevels;
+        GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin;
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);

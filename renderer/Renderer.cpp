@@ -39,18 +39,16 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
         m_warnedNoReversedDepth = true;
     }
-    const bool multiView = usesShadowViews(settings);
-    const int columns = multiView ? (settings.light.type == LightType::Point ? 3 : std::min(settings.shadow.cascades, 2)) : 1;
-    const int rows = multiView ? (settings.light.type == LightType::Point ? 2 : (settings.shadow.cascades + 1) / 2) : 1;
+    const ShadowTileGrid grid = shadowTileGrid(settings);
     if (settings.shadow.enabled) {
-        m_shadowMap.ensureTiles(settings.map.size, columns, rows, settings.map.format, reversed);
+        m_shadowMap.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
         if (moments) {
             if (!m_momentsMap) {
                 m_momentsMap = std::make_unique<MomentsMap>(m_gl);
                 m_momentsPass = std::make_unique<MomentsPass>(m_gl);
                 m_momentsBlur = std::make_unique<MomentsBlurPass>(m_gl);
             }
-            m_momentsMap->ensureTiles(settings.map.size, columns, rows, settings.moments.format, settings.moments.mipmaps,
+            m_momentsMap->ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, settings.moments.mipmaps,
                                       settings.moments.anisotropy);
         }
     }
@@ -69,69 +67,26 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     if (!m_fitInputs || !(*m_fitInputs == inputs)) {
         ShadowViewFrames views;
         FittedLight fitted;
-        fitViews(settings, camera, aspect, reversed, multiView, views, fitted);
+        fitViews(settings, camera, aspect, reversed, views, fitted);
         m_views = std::move(views);
         m_fit = std::move(fitted);
         m_fitInputs = std::move(inputs);
         ++m_fitCount;
         // Where lookups can find a caster follows the fit, and so is kept with it.
         const int generation = m_reach.generation + 1;
-        m_reach = settings.shadow.enabled ? reachOf(settings, camera, multiView, reversed) : ShadowReach{};
+        m_reach = settings.shadow.enabled ? reachOf(settings, camera) : ShadowReach{};
         m_reach.generation = generation;
     }
     const FittedLight& fit = m_fit;
     const ShadowViewFrames& views = m_views;
-    const LightFrame light = multiView ? views.frames.front() : computeLightFrame(settings.light, fit.volume, reversed);
+    const LightFrame& light = views.frames.front();
     stats.texelWorldSizeBeforeFit = fit.texelBefore;
     stats.texelWorldSize = fit.texelAfter;
     stats.lightFitted = fit.fitted;
     stats.reversedDepth = reversed;
 
-    if (settings.shadow.enabled && multiView) {
+    if (settings.shadow.enabled)
         renderViews(settings, timing, stats);
-    } else if (settings.shadow.enabled) {
-        m_viewVolumes.clear();
-        const ShadowKey key = shadowKey(settings, fit.volume, reversed);
-        if (m_shadowKey != key && !fit.anythingToShadow) {
-            // Nothing can shadow anything seen: no pass, only a map that reads lit everywhere.
-            if (moments)
-                m_momentsPass->clear(light, settings, *m_momentsMap);
-            else
-                m_depthPass.clear(m_shadowMap, reversed);
-            m_shadowKey = key;
-            ++m_mapGeneration;
-        } else if (m_shadowKey != key) {
-            QElapsedTimer wall;
-            wall.start();
-            m_shadowTimer.begin();
-            if (moments) {
-                // Moments pass, blur and mips, timed together as the shadow pass.
-                stats.shadowDraws = m_momentsPass->render(*m_scene, light, settings, *m_momentsMap);
-                QElapsedTimer blur;
-                if (timing == TimingMode::Finish) {
-                    m_gl->glFinish();
-                    blur.start();
-                }
-                m_momentsBlur->render(*m_momentsMap, settings.moments.blur);
-                m_shadowTimer.end();
-                if (timing == TimingMode::Finish) {
-                    m_gl->glFinish();
-                    stats.blurPassWallMs = double(blur.nsecsElapsed()) * 1e-6;
-                }
-            } else {
-                stats.shadowDraws = m_depthPass.render(*m_scene, light, settings.bias, m_shadowMap);
-                m_shadowTimer.end();
-            }
-            if (timing == TimingMode::Finish) {
-                m_gl->glFinish();
-                stats.shadowPassWallMs = double(wall.nsecsElapsed()) * 1e-6;
-            }
-            m_shadowKey = key;
-            ++m_mapGeneration;
-            stats.shadowPassRendered = true;
-            ++m_shadowPassCount;
-        }
-    }
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
     // filtering is turned on over a map it was not built from. Timed with the shadow pass.
     if (LitPass::usesDepthRange(settings) && m_depthRangeGeneration != m_mapGeneration) {
@@ -151,7 +106,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_viewSettings = settings;
 }
 
-ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camera, bool multiView, bool reversed) const
+ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camera) const
 {
     const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
     const Scene& scene = m_scene->scene();
@@ -176,15 +131,14 @@ ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camer
         }
         objects.push_back(r);
     }
-    const std::vector<LightFrame> frames = multiView ? m_views.frames : std::vector<LightFrame>{computeLightFrame(settings.light, m_fit.volume, reversed)};
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : m_scene->drawItems())
         receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}});
-    return shadowlab::shadowReach(settings, frames, settings.map.size, objects, receivers, camera);
+    return shadowlab::shadowReach(settings, m_views.frames, settings.map.size, objects, receivers, camera);
 }
 
-void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, bool multiView,
-                        ShadowViewFrames& views, FittedLight& fit) const
+void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, ShadowViewFrames& views,
+                        FittedLight& fit) const
 {
     const Scene& scene = m_scene->scene();
     // Receivers and casters as the scene's objects say.
@@ -197,26 +151,24 @@ void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, dou
     views.camera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, m_scene->bounds()) : camera;
     views.set = fitShadowViews(settings, objects, views.camera, aspect);
     fit = views.set.views.front().fit;
-    if (multiView) {
-        // The fit the window and warnings show: the first view's volume, every view's warnings,
-        // and something to shadow when any view has.
-        for (std::size_t i = 1; i < views.set.views.size(); ++i) {
-            const FittedLight& other = views.set.views[i].fit;
-            fit.anythingToShadow = fit.anythingToShadow || other.anythingToShadow;
-            fit.cutShare = std::max(fit.cutShare, other.cutShare);
-            for (const SettingsIssue& warning : other.warnings) {
-                if (std::none_of(fit.warnings.begin(), fit.warnings.end(), [&](const SettingsIssue& w) { return w.key == warning.key; }))
-                    fit.warnings.push_back(warning);
-            }
+    // The fit the window and warnings show: the first view's volume, every view's warnings,
+    // and something to shadow when any view has.
+    for (std::size_t i = 1; i < views.set.views.size(); ++i) {
+        const FittedLight& other = views.set.views[i].fit;
+        fit.anythingToShadow = fit.anythingToShadow || other.anythingToShadow;
+        fit.cutShare = std::max(fit.cutShare, other.cutShare);
+        for (const SettingsIssue& warning : other.warnings) {
+            if (std::none_of(fit.warnings.begin(), fit.warnings.end(), [&](const SettingsIssue& w) { return w.key == warning.key; }))
+                fit.warnings.push_back(warning);
         }
-        for (const ShadowView& view : views.set.views)
-            views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, reversed));
     }
+    for (const ShadowView& view : views.set.views)
+        views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, reversed));
 }
 
-Renderer::ShadowKey Renderer::shadowKey(const Settings& settings, const LightVolume& volume, bool reversed) const
+Renderer::ShadowKey Renderer::shadowKey(const Settings& settings, bool reversed) const
 {
-    ShadowKey key{m_sceneGeneration, volume, reversed, settings.map.size, settings.map.format,
+    ShadowKey key{m_sceneGeneration, reversed, settings.map.size, settings.map.format,
                   settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits,
                   m_shadowMap.columns(), m_shadowMap.rows()};
     if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments) {
@@ -238,29 +190,29 @@ void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameSta
 {
     const bool reversed = m_shadowMap.reversedDepth();
     const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
-    // What all views share: when it changes, every view is drawn again.
-    const ShadowKey shared = shadowKey(settings, LightVolume{}, reversed);
+    // What all views share: when it changes, every view is drawn or cleared again.
+    const ShadowKey shared = shadowKey(settings, reversed);
     const std::size_t count = m_views.set.views.size();
+    bool fresh = false;
     if (m_shadowKey != shared || m_viewVolumes.size() != count) {
         m_viewVolumes.assign(count, std::nullopt);
-        // A fresh map: every tile reads lit until drawn.
-        if (moments)
-            m_momentsPass->clear(m_views.frames.front(), settings, *m_momentsMap);
-        else
-            m_depthPass.clear(m_shadowMap, reversed);
         m_shadowKey = shared;
-        ++m_mapGeneration;
+        fresh = true;
     }
-    stats.viewRendered.assign(count, false);
-    stats.viewDraws.assign(count, 0);
-    stats.viewWallMs.assign(count, 0.0);
+    // Per view only for a light of several; one view's figures are the shadow pass's.
+    const bool perView = count > 1;
+    if (perView) {
+        stats.viewRendered.assign(count, false);
+        stats.viewDraws.assign(count, 0);
+        stats.viewWallMs.assign(count, 0.0);
+    }
     const int size = m_shadowMap.size();
     // Nothing to shadow: the tile reads lit, and stays so until the view has something.
     const auto wantedVolume = [this](std::size_t i) {
         const FittedLight& fit = m_views.set.views[i].fit;
         return fit.anythingToShadow ? std::optional<LightVolume>(fit.volume) : std::nullopt;
     };
-    bool any = false;
+    bool any = fresh;
     for (std::size_t i = 0; i < count; ++i)
         any = any || m_viewVolumes[i] != wantedVolume(i);
     if (!any)
@@ -268,42 +220,60 @@ void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameSta
     m_shadowTimer.begin();
     QElapsedTimer total;
     total.start();
+    bool drawn = false;
     for (std::size_t i = 0; i < count; ++i) {
         const ShadowView& view = m_views.set.views[i];
         const QRect tile(view.column * size, view.row * size, size, size);
         const std::optional<LightVolume> wanted = wantedVolume(i);
-        if (m_viewVolumes[i] == wanted)
+        if (!fresh && m_viewVolumes[i] == wanted)
             continue;
         QElapsedTimer wall;
         wall.start();
-        if (moments) {
-            // The view's moments, blurred within its tile (the map's mips would mix the
-            // views, so settings refuse them here).
-            if (wanted) {
-                stats.viewDraws[i] = m_momentsPass->render(*m_scene, m_views.frames[i], settings, *m_momentsMap, tile);
-                m_momentsBlur->render(*m_momentsMap, settings.moments.blur, tile);
-            } else {
-                m_momentsPass->clear(m_views.frames[i], settings, *m_momentsMap, tile);
+        int draws = 0;
+        if (moments && wanted) {
+            draws = m_momentsPass->render(*m_scene, m_views.frames[i], settings, *m_momentsMap, tile);
+            // The view's moments blurred within its tile (and the mips of a single view's map:
+            // those of several would mix the views, which settings refuse).
+            QElapsedTimer blur;
+            if (timing == TimingMode::Finish) {
+                m_gl->glFinish();
+                blur.start();
             }
+            m_momentsBlur->render(*m_momentsMap, settings.moments.blur, tile);
+            if (timing == TimingMode::Finish) {
+                m_gl->glFinish();
+                stats.blurPassWallMs += double(blur.nsecsElapsed()) * 1e-6;
+            }
+        } else if (moments) {
+            m_momentsPass->clear(m_views.frames[i], settings, *m_momentsMap, tile);
         } else if (wanted) {
-            stats.viewDraws[i] = m_depthPass.renderTile(*m_scene, m_views.frames[i], settings.bias, m_shadowMap, tile);
+            draws = m_depthPass.renderTile(*m_scene, m_views.frames[i], settings.bias, m_shadowMap, tile);
         } else {
             m_depthPass.clearTile(m_shadowMap, reversed, tile);
         }
-        if (timing == TimingMode::Finish) {
+        if (timing == TimingMode::Finish && perView) {
             m_gl->glFinish();
             stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
         }
+        if (perView) {
+            stats.viewRendered[i] = true;
+            stats.viewDraws[i] = draws;
+        }
         m_viewVolumes[i] = wanted;
-        stats.viewRendered[i] = true;
-        stats.shadowDraws += stats.viewDraws[i];
+        stats.shadowDraws += draws;
+        drawn = drawn || wanted.has_value();
     }
     m_shadowTimer.end();
     ++m_mapGeneration;
+    // A map only cleared (nothing to shadow anywhere) is no shadow pass.
+    if (!drawn)
+        return;
     stats.shadowPassRendered = true;
     ++m_shadowPassCount;
-    if (timing == TimingMode::Finish)
+    if (timing == TimingMode::Finish) {
+        m_gl->glFinish();
         stats.shadowPassWallMs = double(total.nsecsElapsed()) * 1e-6;
+    }
 }
 
 void Renderer::finishTiming(TimingMode timing, FrameStats& stats)

@@ -106,20 +106,21 @@ private:
     // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
     void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
     void finishTiming(TimingMode timing, FrameStats& stats);
-    // The shadow pass of a light with several views: each view whose volume changed.
+    // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
+    // whose volume changed, or every view when what they share did.
     void renderViews(const Settings& settings, TimingMode timing, FrameStats& stats);
-    // Fits the light's views to what the camera sees: the views, their light frames (several
-    // views) and the fit the window shows.
-    void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, bool multiView,
-                  ShadowViewFrames& views, FittedLight& fit) const;
+    // Fits the light's views to what the camera sees: the views, their light frames and the fit
+    // the window shows.
+    void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, ShadowViewFrames& views,
+                  FittedLight& fit) const;
     // Where the lookups of the fitted views can find a caster: casters one by one (a flat
     // one-sided one whose front faces the pass culls as its plane), receivers as drawn.
-    ShadowReach reachOf(const Settings& settings, const CameraFrame& camera, bool multiView, bool reversed) const;
+    ShadowReach reachOf(const Settings& settings, const CameraFrame& camera) const;
 
-    // Everything the shadow map depends on; the pass is skipped while this stays equal.
+    // Everything the shadow map depends on but the views' volumes; while it and they stay
+    // equal, the pass is skipped.
     struct ShadowKey {
         int sceneGeneration = 0;
-        LightVolume volume;         // after fitting
         bool reversedDepth = false;
         int mapSize = 0;
         DepthFormat format = DepthFormat::Depth24;
@@ -140,9 +141,8 @@ private:
 
         bool operator==(const ShadowKey&) const = default;
     };
-    // What the map drawn for `settings` and `volume` depends on (an empty volume: what all of
-    // several views share).
-    ShadowKey shadowKey(const Settings& settings, const LightVolume& volume, bool reversed) const;
+    // What every view's tile of the map drawn for `settings` depends on, but its volume.
+    ShadowKey shadowKey(const Settings& settings, bool reversed) const;
 
     GlFunctions* m_gl;
     ShadowMap m_shadowMap;
@@ -163,8 +163,8 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowKey> m_shadowKey;
-    // With several views: each view's volume as last drawn (nullopt: cleared or never drawn),
-    // redrawn only when it changes; m_shadowKey then holds what all views share.
+    // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
+    // m_shadowKey holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;
     ShadowViewFrames m_views;
     // What the last fit was computed from (Renderer::prepareFrame).

@@ -8,7 +8,7 @@
 // level 0, or the mip chain, whose base level the pass sets to that level (texelFetch's level
 // counts from the base level).
 uniform sampler2D uSource;
-uniform int uSourceSize;    // of the level read (the atlas is wider than its level 0)
+uniform ivec2 uSourceSize;  // of the level read (the atlas is wider than its level 0)
 #ifdef WRITTEN_ONLY
 // What an empty texel holds (1, or 0 in a reversed map): it counts as no depth at all, so
 // level 0 and up hold the range of the written texels only (min > max where there are none).

@@ -31,7 +31,7 @@ uniform float uMomentBias;          // least variance (vsm; evsm relative to the
 float momentDepth(float reference)
 {
 #if defined(LIGHT_PERSPECTIVE) || defined(REVERSED_Z)
-    float n = uShadowDepthRange.x, f = uShadowDepthRange.y;
+    float n = gShadowDepthRange.x, f = gShadowDepthRange.y;
     return clamp((shadowDistance(reference) - n) / (f - n), 0.0, 1.0);
 #else
     return clamp(reference, 0.0, 1.0);  // an ortho light's depth is already linear

@@ -7,18 +7,10 @@
 
 uniform sampler2DShadow uShadowMap;
 uniform vec2 uShadowTexel;      // 1 / map size
-#ifdef SHADOW_VIEWS
-// Several views share the map (shadow_views.glsl): these follow the view a pixel reads, set
-// before it calls filterShadow, and taps are kept inside that view's tile.
-vec2 gShadowUvWorld;
-vec2 gShadowDepthRange;
-vec4 gShadowTile;               // min xy, max xy in map uv
-#define uShadowUvWorld gShadowUvWorld
-#define uShadowDepthRange gShadowDepthRange
-#else
-uniform vec2 uShadowUvWorld;    // world size of the map's [0, 1] square (perspective: at unit distance)
-uniform vec2 uShadowDepthRange; // near and far of the light volume, world units along its axis
-#endif
+// The view a pixel reads (shadow_lookup.glsl), set before it calls filterShadow.
+vec2 gShadowUvWorld = vec2(1.0);    // world size of the map's [0, 1] square (perspective: at unit distance)
+vec2 gShadowDepthRange = vec2(0.0, 1.0);    // near and far of the view's volume, world units along its axis
+vec4 gShadowTile = vec4(0.0, 0.0, 1.0, 1.0);    // its tile, half a texel in: min xy, max xy in map uv
 
 // The receiver, for the wide filters; set by the lit pass before it calls filterShadow.
 float gShadowW = 1.0;           // the receiver's clip w (its distance along a perspective light's axis)
@@ -39,7 +31,7 @@ float shadowDistance(float depth)
 #ifdef REVERSED_Z
     depth = 1.0 - depth;
 #endif
-    float n = uShadowDepthRange.x, f = uShadowDepthRange.y;
+    float n = gShadowDepthRange.x, f = gShadowDepthRange.y;
 #ifdef LIGHT_PERSPECTIVE
     return n * f / (f - depth * (f - n));
 #else
@@ -51,9 +43,9 @@ float shadowDistance(float depth)
 float tapWorldLength(vec2 offset)
 {
 #ifdef LIGHT_PERSPECTIVE
-    return length(offset * uShadowUvWorld) * gShadowW;
+    return length(offset * gShadowUvWorld) * gShadowW;
 #else
-    return length(offset * uShadowUvWorld);
+    return length(offset * gShadowUvWorld);
 #endif
 }
 
@@ -124,14 +116,13 @@ const vec2 kPoissonDisk[64] = vec2[64](
 // min (r) and max (g) depth of 2^(k+2) x 2^(k+2) map texels.
 uniform sampler2D uDepthRange;
 uniform int uDepthRangeLevels;
+uniform ivec4 uDepthRangeLevel[16];     // each level's origin in the atlas and its size
 
 // Level `level`'s texel `p` (clamped to the level), in the atlas's layout.
 vec2 rangeTexel(int level, ivec2 p)
 {
-    int levelZero = textureSize(uDepthRange, 0).y;
-    int size = max(levelZero >> level, 1);
-    ivec2 origin = level == 0 ? ivec2(0) : ivec2(levelZero, levelZero - 2 * size);
-    return texelFetch(uDepthRange, origin + min(p, ivec2(size - 1)), 0).rg;
+    ivec4 at = uDepthRangeLevel[level];
+    return texelFetch(uDepthRange, at.xy + min(p, at.zw - 1), 0).rg;
 }
 
 // Penumbra-only filtering: 1 when every nearest-texel tap within `radius` (uv, per axis) of

@@ -269,47 +269,51 @@ private Q_SLOTS:
     // leftovers of sizes that are not powers of two.
     void depthRangeBoundsTheMap_data()
     {
-        QTest::addColumn<int>("mapSize");
+        QTest::addColumn<QStringList>("assignments");
         for (const int size : {2048, 1000, 333, 17})
-            QTest::newRow(qPrintable(QString::number(size))) << size;
+            QTest::newRow(qPrintable(QString::number(size))) << QStringList{QString("map.size=%1").arg(size)};
+        // Several views side by side: a 2 x 2 and a 3 x 2 map of tiles.
+        QTest::newRow("4 cascades of 500") << QStringList{"map.size=500", "shadow.cascades=4"};
+        QTest::newRow("cube of 256") << QStringList{"map.size=256", "light.type=point", "light.projection=perspective"};
     }
 
     void depthRangeBoundsTheMap()
     {
-        QFETCH(int, mapSize);
+        QFETCH(QStringList, assignments);
         Renderer& r = m_headless->renderer();
-        m_headless->renderFrame(with("seed", {"filter.mode=pcf", "filter.early_out=true", QString("map.size=%1").arg(mapSize)}), kSize);
+        m_headless->renderFrame(with("seed", QStringList{"filter.mode=pcf", "filter.early_out=true"} + assignments), kSize);
         QVERIFY(r.depthRange());
         m_headless->makeCurrent();
         GlFunctions* gl = m_headless->functions();
-        std::vector<float> depth(std::size_t(mapSize) * std::size_t(mapSize));
+        const int width = r.shadowMap().width(), height = r.shadowMap().height();
+        std::vector<float> depth(std::size_t(width) * std::size_t(height));
         gl->glBindTexture(GL_TEXTURE_2D, r.shadowMap().texture());
         gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
         // The atlas holds every level side by side (DepthRangePass.h).
         gl->glBindTexture(GL_TEXTURE_2D, r.depthRange()->texture());
-        GLint atlasWidth = 0, levelZero = 0;
+        GLint atlasWidth = 0, atlasHeight = 0;
         gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &atlasWidth);
-        gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &levelZero);
-        QCOMPARE(levelZero, (mapSize + 3) / 4);
-        std::vector<glm::vec2> atlas(std::size_t(atlasWidth) * std::size_t(levelZero));
+        gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &atlasHeight);
+        QCOMPARE(r.depthRange()->levelSize(0), QSize((width + 3) / 4, (height + 3) / 4));
+        QCOMPARE(r.depthRange()->levelSize(r.depthRange()->levels() - 1), QSize(1, 1));
+        std::vector<glm::vec2> atlas(std::size_t(atlasWidth) * std::size_t(atlasHeight));
         gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_RG, GL_FLOAT, atlas.data());
         int bad = 0;
+        std::vector<QRect> placed;
         for (int level = 0; level < r.depthRange()->levels(); ++level) {
-            const int size = DepthRangePass::levelSize(levelZero, level);
-            const QPoint origin = DepthRangePass::levelOrigin(levelZero, level);
-            QVERIFY(origin.x() + size <= atlasWidth && origin.y() + size <= levelZero);
-            std::vector<glm::vec2> range(std::size_t(size) * std::size_t(size));
-            for (int y = 0; y < size; ++y) {
-                for (int x = 0; x < size; ++x)
-                    range[std::size_t(y) * std::size_t(size) + std::size_t(x)] =
-                        atlas[std::size_t(origin.y() + y) * std::size_t(atlasWidth) + std::size_t(origin.x() + x)];
-            }
+            const QSize size = r.depthRange()->levelSize(level);
+            const QPoint origin = r.depthRange()->levelOrigin(level);
+            const QRect rect(origin, size);
+            QVERIFY(QRect(0, 0, atlasWidth, atlasHeight).contains(rect));
+            for (const QRect& other : placed)
+                QVERIFY2(!other.intersects(rect), qPrintable(QString("level %1 overlaps another").arg(level)));
+            placed.push_back(rect);
             const int cover = 4 << level;   // map texels per texel side
-            for (int y = 0; y < mapSize; ++y) {
-                for (int x = 0; x < mapSize; ++x) {
-                    const int tx = std::min(x / cover, size - 1), ty = std::min(y / cover, size - 1);
-                    const glm::vec2 r2 = range[std::size_t(ty) * std::size_t(size) + std::size_t(tx)];
-                    const float d = depth[std::size_t(y) * std::size_t(mapSize) + std::size_t(x)];
+            for (int y = 0; y < height; ++y) {
+                for (int x = 0; x < width; ++x) {
+                    const int tx = std::min(x / cover, size.width() - 1), ty = std::min(y / cover, size.height() - 1);
+                    const glm::vec2 r2 = atlas[std::size_t(origin.y() + ty) * std::size_t(atlasWidth) + std::size_t(origin.x() + tx)];
+                    const float d = depth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
                     // The read-back converts 24-bit depth to float on its own path: one ulp apart.
                     if ((d < r2.x - 1e-6f || d > r2.y + 1e-6f) && bad++ < 5)
                         qWarning("level %d texel %d,%d (%f, %f) misses map texel %d,%d depth %f", level, tx, ty, r2.x, r2.y, x, y, d);
@@ -342,6 +346,11 @@ private Q_SLOTS:
             {"pcss 16 receiver plane", {"filter.mode=pcss", "bias.receiver_plane=true"}},
             {"pcss 24 perspective", {"filter.mode=pcss", "filter.taps=24", "light.projection=perspective"}},
             {"pcss 16, 777 map", {"filter.mode=pcss", "map.size=777"}},
+            // Several views in one map: each pixel's footprint in its own view's tile.
+            {"pcf 5x5, 4 cascades", {"filter.mode=pcf", "filter.kernel=5", "shadow.cascades=4"}},
+            {"pcss 16, 3 cascades of 500", {"filter.mode=pcss", "shadow.cascades=3", "map.size=500"}},
+            {"pcf 7x7, point light", {"filter.mode=pcf", "filter.kernel=7", "light.type=point"}},
+            {"pcss 16, point light", {"filter.mode=pcss", "light.type=point"}},
         };
         for (const QString& scene : kScenes) {
             for (const auto& [name, assignments] : configurations)

@@ -22,9 +22,9 @@ bool isBlocker(float depth, float reference)
 vec2 diskFootprint(float receiver, float plane)
 {
 #ifdef LIGHT_PERSPECTIVE
-    return vec2(uLightSize * (receiver - plane) / (receiver * plane)) / uShadowUvWorld;
+    return vec2(uLightSize * (receiver - plane) / (receiver * plane)) / gShadowUvWorld;
 #else
-    return vec2(uLightSize * (receiver - plane)) / uShadowUvWorld;
+    return vec2(uLightSize * (receiver - plane)) / gShadowUvWorld;
 #endif
 }
 
@@ -33,7 +33,7 @@ float filterShadow(vec2 uv, float reference)
     float receiver = shadowDistance(reference);
     // Every blocker lies between the near plane and the receiver, so the penumbra filter below
     // stays inside this search region.
-    vec2 search = min(max(diskFootprint(receiver, uShadowDepthRange.x), uShadowTexel), vec2(0.5));
+    vec2 search = min(max(diskFootprint(receiver, gShadowDepthRange.x), uShadowTexel), vec2(0.5));
 #ifdef EARLY_OUT
     // Every tap of both loops lies in the search region: where it is all lit there is no blocker
     // (1), where it is all shadowed every filter tap is too (0).

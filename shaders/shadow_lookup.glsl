@@ -1,15 +1,19 @@
-// Several views in one shadow map, side by side: the cascades of a directional light
-// (CASCADES) or the six cube faces of a point light (LIGHT_POINT). Each pixel picks its view
-// (by view depth, or by the major axis of its direction from the light), transforms itself with
-// that view's matrix and runs the technique's own filterShadow inside that view's tile.
-#ifdef SHADOW_VIEWS
+// The one shadow lookup of the lit pass, for every light: a light has N views in one map (one
+// map, the cascades of a directional light, the six faces of a point light), each in its tile.
+// A pixel picks its view (the light rig, below: the one view, by view depth, or by the major
+// axis of its direction from the light), takes its position in that view, and runs the bias and
+// the technique's own filterShadow inside that view's tile.
+uniform float uBiasSlope;           // per unit of (1 - N.L); world units (texels with BIAS_TEXEL, depth units with BIAS_DEPTH)
+uniform float uBiasMin;             // the same units
 uniform int uShadowViewCount;
 uniform mat4 uShadowViews[6];       // camera-relative world -> map uv (of the whole map) and the view's depth
 uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max xy
 uniform vec2 uShadowViewUvWorld[6]; // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
 uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
 uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
+#ifdef SHADOW_VIEWS
 uniform float uNormalOffsetTexels;  // bias.normal
+#endif
 #ifdef CASCADES
 uniform vec4 uCascadeFar;           // view depth where each cascade ends (the last: shadow.distance)
 uniform vec4 uCascadeBlendStart;    // view depth where each cascade starts fading into the next
@@ -19,77 +23,99 @@ uniform vec3 uViewOrigin;           // ... and its position, camera-relative
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
 
-// A view's visibility, as shadowVisibility() computes it for the single map.
-float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
+// The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
+// view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
+// interpolated); several views' are taken here, as each pixel picks its own.
+vec4 viewPosition(int i, vec3 normal)
 {
+#ifdef SHADOW_VIEWS
     vec4 plain = uShadowViews[i] * vec4(vPosition, 1.0);
     float offset = uNormalOffsetTexels * uShadowViewTexel[i];
 #ifdef LIGHT_PERSPECTIVE
     offset *= plain.w;
 #endif
-    vec4 shadowCoord = plain + uShadowViews[i] * vec4(normal * offset, 0.0);
+    return plain + uShadowViews[i] * vec4(normal * offset, 0.0);
+#else
+    return vShadowCoord;
+#endif
+}
+
+// View i's visibility of the pixel; dx, dy are its screen-space steps in camera-relative world.
+float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
+{
+    vec4 shadowCoord = viewPosition(i, normal);
     if (shadowCoord.w <= 0.0)
-        return 1.0;
+        return 1.0;             // behind a perspective light: outside its volume
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
-    vec4 tile = uShadowTiles[i];
-    if (any(lessThan(coord.xy, tile.xy)) || any(greaterThan(coord.xy, tile.zw)))
-        return 1.0;             // outside the view's fitted volume: lit without a test
 #ifdef REVERSED_Z
     if (coord.z < 0.0)
-        return 1.0;
+        return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
 #else
     if (coord.z > 1.0)
-        return 1.0;
+        return 1.0;             // beyond the far plane is lit
 #endif
     if (dot(normal, toLight) <= 0.0)
-        return 0.0;
+        return 0.0;             // facing away from the light: unlit anyway
+    vec4 tile = uShadowTiles[i];
+    if (any(lessThan(coord.xy, tile.xy)) || any(greaterThan(coord.xy, tile.zw)))
+        return 1.0;             // outside the view's fitted volume every tap would read lit
     // Taps stay inside the tile (half a texel in), so a wide filter never reads a neighbour.
     gShadowTile = vec4(tile.xy + 0.5 * uShadowTexel, tile.zw - 0.5 * uShadowTexel);
     gShadowUvWorld = uShadowViewUvWorld[i];
     gShadowDepthRange = uShadowViewDepth[i];
 #ifdef RECEIVER_PLANE
-    // The receiver's plane from the screen-space change of its position, through this view's
-    // matrix (derivatives of coord itself are undefined where neighbours pick other views).
+    // The receiver's depth as a plane over the map: its screen-space change through this view's
+    // matrix (derivatives of coord itself are undefined where neighbours pick other views), as
+    // depth change per uv unit. A degenerate footprint (the plane seen edge-on from the camera)
+    // gets a flat plane.
+    vec4 c0 = uShadowViews[i] * vec4(vPosition, 1.0);
     vec4 cx = uShadowViews[i] * vec4(vPosition + dx, 1.0), cy = uShadowViews[i] * vec4(vPosition + dy, 1.0);
-    vec3 ddx = cx.xyz / cx.w - coord, ddy = cy.xyz / cy.w - coord;
+    vec3 ddx = cx.xyz / cx.w - c0.xyz / c0.w, ddy = cy.xyz / cy.w - c0.xyz / c0.w;
     float det = ddx.x * ddy.y - ddx.y * ddy.x;
     gReceiverSlope = abs(det) > 1e-20 ? vec2(ddx.z * ddy.y - ddx.y * ddy.z, ddx.x * ddy.z - ddx.z * ddy.x) / det : vec2(0.0);
 #endif
+    // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
-    float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);
+    // For the wide filters: a tap d world units away on this receiver's plane lies up to
+    // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
+    // where N.L and so the light term is nearly 0 anyway).
+    float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
     vec4 alongRay = uShadowViews[i] * vec4(toLight, 0.0);
     float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
     gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
     gShadowW = shadowCoord.w;
 #ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
-    return filterShadow(coord.xy, coord.z + bias);
+    return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
 #else
     return filterShadow(coord.xy, coord.z - bias);
 #endif
 #else
-#if defined(BIAS_TEXEL)
+#ifdef BIAS_TEXEL
     bias *= uShadowViewTexel[i];
-#if defined(LIGHT_PERSPECTIVE)
-    bias *= shadowCoord.w;
+#ifdef LIGHT_PERSPECTIVE
+    bias *= shadowCoord.w;      // a perspective texel grows with the distance from the light
 #endif
 #endif
+    // Compare from a point moved toward the light by `bias` world units: on the ray to the
+    // light, so it stays on the same texel, and the same offset whatever the depth range.
     vec4 moved = shadowCoord + uShadowViews[i] * vec4(toLight * bias, 0.0);
     return filterShadow(coord.xy, moved.z / moved.w);
 #endif
 }
 
-float shadowViewsVisibility(vec3 normal, vec3 toLight)
+// The light rig's choice of view, then that view's visibility.
+float shadowVisibility(vec3 normal, vec3 toLight)
 {
     // Screen-space steps of the position, taken here where every pixel of a quad still runs.
     vec3 dx = dFdx(vPosition), dy = dFdy(vPosition);
-#ifdef LIGHT_POINT
+#if defined(LIGHT_POINT)
     vec3 d = vPosition - uLightPosition;
     vec3 a = abs(d);
     int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
     gViewIndex = face;
     return viewVisibility(face, normal, toLight, dx, dy);
-#else
+#elif defined(CASCADES)
     float depth = dot(vPosition - uViewOrigin, uViewForward);
     for (int i = 0; i < uShadowViewCount; ++i) {
         if (depth <= uCascadeFar[i]) {
@@ -103,6 +129,9 @@ float shadowViewsVisibility(vec3 normal, vec3 toLight)
         }
     }
     return 1.0;                 // beyond shadow.distance
+#else
+    gViewIndex = 0;
+    return viewVisibility(0, normal, toLight, dx, dy);
 #endif
 }
 
@@ -113,4 +142,3 @@ vec3 viewTint(int i)
                                   vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
     return i < 0 ? vec3(1.0) : tints[i];
 }
-#endif
