@@ -271,34 +271,11 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     if (camera)
         seen.push_back(*camera);
     seen.insert(seen.end(), within.begin(), within.end());
-    // Two significant digits below 10 %, whole percent above ("0.38", "7.2", "100").
-    const auto percent = [](double share) {
-        const double p = share * 100.0;
-        return QString::number(p, 'f', p < 1.0 ? 2 : p < 10.0 ? 1 : 0);
-    };
-
     if (light.fit == LightFit::Manual) {
         const Cut cut = measureCut(objects, seen, computeLightFrame(light, manual).viewProjection);
         result.cutShare = cut.share;
-        if (cut.share > kCutWorthSaying && result.anythingToShadow) {
-            const char* side = manual.perspective ? "light.fov" : "light.extent";
-            // Every plane that cuts, the sides together, most first; the warning sits at the first.
-            struct Part { double share; const char* key; const char* where; };
-            std::vector<Part> parts{{cut.byPlane[0] + cut.byPlane[1] + cut.byPlane[2] + cut.byPlane[3], side, "outside the sides"},
-                                    {cut.byPlane[4], "light.near", "before light.near"},
-                                    {cut.byPlane[5], "light.far", "beyond light.far"}};
-            std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.share > b.share; });
-            QStringList where;
-            for (const Part& part : parts) {
-                if (part.share > kCutWorthSaying)
-                    where << QStringLiteral("%1 % %2").arg(percent(std::min(part.share, cut.share)), QString::fromLatin1(part.where));
-            }
-            result.warnings.push_back({SettingsIssue::Severity::Warning, QString::fromLatin1(parts.front().key),
-                                       QStringLiteral("%1 % of the visible receivers lie outside the light volume (%2): they are lit "
-                                                      "without a shadow test; widen the volume (light.extent or light.fov, light.near, "
-                                                      "light.far), or set light.fit=scene")
-                                           .arg(percent(cut.share), where.join(QStringLiteral(", ")))});
-        }
+        if (cut.share > kCutWorthSaying && result.anythingToShadow)
+            result.cuts.push_back({.by = FitCut::By::ManualVolume, .perspective = manual.perspective, .share = cut.share, .byPlane = cut.byPlane});
         return result;
     }
 
@@ -333,14 +310,8 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
         limits.push_back(glm::frustum(-t * n, t * n, -t * n, t * n, n, farthest) * view);
         const Cut cut = measureCut(objects, seen, limits.back());
         result.cutShare = cut.share;
-        if (cut.share > kCutWorthSaying && result.anythingToShadow) {
-            result.warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.position"),
-                                       QStringLiteral("%1 % of the visible receivers lie behind the light or outside the widest cone one "
-                                                      "map can cover (%2°): they are lit without a shadow test; move the light away "
-                                                      "from them, or use an ortho light")
-                                           .arg(percent(cut.share))
-                                           .arg(kMaxFittedFov)});
-        }
+        if (cut.share > kCutWorthSaying && result.anythingToShadow)
+            result.cuts.push_back({.by = FitCut::By::WidestCone, .perspective = true, .share = cut.share, .byPlane = cut.byPlane});
     }
 
     // What can be seen: each receiver's part inside the camera (and the cone), in light space.

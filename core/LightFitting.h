@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -37,6 +38,19 @@ struct FitObject {
 //
 // With light.fit = manual the volume is exactly as set; receivers the camera sees outside it
 // are lit without a shadow test, and the fit says how much of them and past which plane.
+// A cut worth telling the user about: receivers outside the volume, lit without a shadow test.
+struct FitCut {
+    enum class By {
+        ManualVolume,   // the volume as set (light.fit=manual)
+        WidestCone,     // behind a perspective light, or outside the widest cone one map covers
+    };
+    By by = By::ManualVolume;
+    bool perspective = false;
+    double share = 0.0;
+    std::array<double, 6> byPlane{};    // share outside each of left, right, bottom, top, near, far (ManualVolume)
+    bool operator==(const FitCut&) const = default;
+};
+
 struct FittedLight {
     LightVolume volume;         // what the passes use
     bool fitted = false;        // false: manual fit
@@ -44,14 +58,19 @@ struct FittedLight {
     double texelBefore = 0.0;   // world size of one texel with the volume as set
     double texelAfter = 0.0;    // ... and with the volume used
     // Share of the visible receivers' surface that lies outside the volume used, where it is
-    // lit without a shadow test, and a warning naming the plane that cuts most (empty when none).
+    // lit without a shadow test.
     double cutShare = 0.0;
-    std::vector<SettingsIssue> warnings;
+    // Each cut worth a warning (one per view that cuts; fitWarnings() words them).
+    std::vector<FitCut> cuts;
 };
 
 // The widest cone a fitted perspective light covers (full angle, degrees): wider, a single map
 // spends almost all of its texels at the rim.
 inline constexpr double kMaxFittedFov = 150.0;
+
+// The warnings a fit's cuts give, one per key, with the key to change and how: the user's words
+// for what fitLight() measured.
+std::vector<SettingsIssue> fitWarnings(const FittedLight& fit);
 
 // `light` must be valid (validate()); objects' empty boxes are ignored; `camera` is the
 // camera's view-projection (nullopt: everything is seen). `within`: further view-projections

@@ -642,10 +642,9 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (s.shadow.cascades > 1 && s.light.type != LightType::Directional)
         error("shadow.cascades", QStringLiteral("cascades split a directional light's map; with light.type=%1 set shadow.cascades=1")
                                      .arg(toString(s.light.type)));
-    if (shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments && s.moments.mipmaps && usesShadowViews(s))
-        error("moments.mipmaps", QStringLiteral("the mip levels of a map holding several views (cascades or a point light's faces) would "
-                                                "blend neighbouring views; set moments.mipmaps=false, or shadow.cascades=1 with a "
-                                                "directional or spot light"));
+    if (const ShadowStorageLimits& storage = shadowStorageLimits(shadowTechnique(s.filter.mode).map);
+        usesShadowViews(s) && !storage.refusedWithViews.isEmpty() && settingValue(s, storage.refusedWithViews) == u"true")
+        error(storage.refusedWithViews.toUtf8().constData(), storage.reason);
     if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
         error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
 

@@ -157,6 +157,19 @@ std::vector<ShadowTechnique> makeTechniques()
 
 } // namespace
 
+const ShadowStorageLimits& shadowStorageLimits(ShadowMapKind map)
+{
+    static const ShadowStorageLimits depth{.map = ShadowMapKind::DepthCompare, .refusedWithViews = {}, .reason = {}};
+    // The mips of a map of several views would blend a view with its neighbours at every
+    // level where a texel's filter reaches across a tile's edge.
+    static const ShadowStorageLimits moments{
+        .map = ShadowMapKind::Moments,
+        .refusedWithViews = QStringLiteral("moments.mipmaps"),
+        .reason = QStringLiteral("the mip levels of a map holding several views (cascades or a point light's faces) would blend "
+                                 "neighbouring views; set moments.mipmaps=false, or shadow.cascades=1 with a directional or spot light")};
+    return map == ShadowMapKind::Moments ? moments : depth;
+}
+
 const std::vector<ShadowTechnique>& shadowTechniques()
 {
     static const std::vector<ShadowTechnique> table = makeTechniques();

@@ -80,6 +80,15 @@ struct ShadowTechnique {
     bool penumbraOnly = false;
 };
 
+// What a storage of the light's views (renderer/ShadowStorage.h draws them) cannot do with
+// several views in one map, and why: validate() refuses it with this reason.
+struct ShadowStorageLimits {
+    ShadowMapKind map;
+    QString refusedWithViews;       // a bool key that must stay false with several views; empty: none
+    QString reason;
+};
+const ShadowStorageLimits& shadowStorageLimits(ShadowMapKind map);
+
 // Every technique, in FilterMode order (the order of the `filter.mode` choices).
 const std::vector<ShadowTechnique>& shadowTechniques();
 const ShadowTechnique& shadowTechnique(FilterMode mode);

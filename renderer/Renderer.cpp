@@ -1,7 +1,6 @@
 #include "Renderer.h"
 
 #include "LightFitting.h"
-#include "MomentMath.h"
 #include "ShadowTechnique.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
@@ -14,8 +13,19 @@
 namespace shadowlab {
 
 Renderer::Renderer(GlFunctions* gl)
-    : m_gl(gl), m_shadowMap(gl), m_depthPass(gl), m_litPass(gl), m_shadowTimer(gl), m_litTimer(gl)
+    : m_gl(gl), m_shadowMap(gl), m_depthPass(gl), m_depthStorage(makeDepthStorage(m_shadowMap, m_depthPass)), m_litPass(gl),
+      m_shadowTimer(gl), m_litTimer(gl)
 {
+}
+
+const MomentsMap* Renderer::momentsMap() const
+{
+    return m_momentsStorage ? m_momentsStorage->momentsMap() : nullptr;
+}
+
+const MomentsMap* Renderer::momentsShown() const
+{
+    return m_viewSettings.shadow.enabled ? storageFor(m_viewSettings).momentsMap() : nullptr;
 }
 
 Renderer::~Renderer() = default;
@@ -31,9 +41,9 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     ensureValid(settings);
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     computeLightFrame(settings.light);
+    ShadowStorage& storage = storageFor(settings);
     // A moments map keeps its precision in its own format; its pass uses conventional depth.
-    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
-    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !moments;
+    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !storage.momentsMap();
     const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
     if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
@@ -42,15 +52,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     const ShadowTileGrid grid = shadowTileGrid(settings);
     if (settings.shadow.enabled) {
         m_shadowMap.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
-        if (moments) {
-            if (!m_momentsMap) {
-                m_momentsMap = std::make_unique<MomentsMap>(m_gl);
-                m_momentsPass = std::make_unique<MomentsPass>(m_gl);
-                m_momentsBlur = std::make_unique<MomentsBlurPass>(m_gl);
-            }
-            m_momentsMap->ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, settings.moments.mipmaps,
-                                      settings.moments.anisotropy);
-        }
+        storage.ensure(settings, grid);
     }
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
         m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
@@ -86,7 +88,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     stats.reversedDepth = reversed;
 
     if (settings.shadow.enabled)
-        renderViews(settings, timing, stats);
+        renderViews(settings, storage, grid, timing, stats);
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
     // filtering is turned on over a map it was not built from. Timed with the shadow pass.
     if (LitPass::usesDepthRange(settings) && m_depthRangeGeneration != m_mapGeneration) {
@@ -108,12 +110,10 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
 
 ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camera) const
 {
-    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
     const Scene& scene = m_scene->scene();
     std::vector<ReachObject> objects;
     objects.reserve(scene.objects.size());
-    // The shadow pass culls front faces (bias.cull_front) of depth maps only.
-    const bool culls = settings.bias.cullFront && !moments;
+    const bool culls = storageFor(settings).cullsFrontFaces(settings);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         ReachObject r{.bounds = m_scene->objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}};
@@ -151,47 +151,32 @@ void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, dou
     views.camera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, m_scene->bounds()) : camera;
     views.set = fitShadowViews(settings, objects, views.camera, aspect);
     fit = views.set.views.front().fit;
-    // The fit the window and warnings show: the first view's volume, every view's warnings,
+    // The fit the window and warnings show: the first view's volume, every view's cuts,
     // and something to shadow when any view has.
     for (std::size_t i = 1; i < views.set.views.size(); ++i) {
         const FittedLight& other = views.set.views[i].fit;
         fit.anythingToShadow = fit.anythingToShadow || other.anythingToShadow;
         fit.cutShare = std::max(fit.cutShare, other.cutShare);
-        for (const SettingsIssue& warning : other.warnings) {
-            if (std::none_of(fit.warnings.begin(), fit.warnings.end(), [&](const SettingsIssue& w) { return w.key == warning.key; }))
-                fit.warnings.push_back(warning);
-        }
+        fit.cuts.insert(fit.cuts.end(), other.cuts.begin(), other.cuts.end());
     }
     for (const ShadowView& view : views.set.views)
         views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, reversed));
 }
 
-Renderer::ShadowKey Renderer::shadowKey(const Settings& settings, bool reversed) const
+ShadowStorage& Renderer::storageFor(const Settings& settings) const
 {
-    ShadowKey key{m_sceneGeneration, reversed, settings.map.size, settings.map.format,
-                  settings.bias.cullFront, settings.bias.polygonFactor, settings.bias.polygonUnits,
-                  m_shadowMap.columns(), m_shadowMap.rows()};
     if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments) {
-        const MomentWarp warp = momentWarp(settings);
-        key.moments = true;
-        key.momentTechnique = settings.filter.mode;
-        key.momentFormat = settings.moments.format;
-        key.exponentPositive = warp.positive;
-        key.exponentNegative = warp.negative;
-        key.blur = settings.moments.blur;
-        key.mipmaps = settings.moments.mipmaps;
-        key.cullFront = false;      // the moments pass draws every face, with no offset
-        key.polygonFactor = key.polygonUnits = 0.0;
+        if (!m_momentsStorage)
+            m_momentsStorage = makeMomentsStorage(m_gl);
+        return *m_momentsStorage;
     }
-    return key;
+    return *m_depthStorage;
 }
 
-void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameStats& stats)
+void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats)
 {
-    const bool reversed = m_shadowMap.reversedDepth();
-    const bool moments = shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments;
     // What all views share: when it changes, every view is drawn or cleared again.
-    const ShadowKey shared = shadowKey(settings, reversed);
+    const ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
     const std::size_t count = m_views.set.views.size();
     bool fresh = false;
     if (m_shadowKey != shared || m_viewVolumes.size() != count) {
@@ -230,27 +215,10 @@ void Renderer::renderViews(const Settings& settings, TimingMode timing, FrameSta
         QElapsedTimer wall;
         wall.start();
         int draws = 0;
-        if (moments && wanted) {
-            draws = m_momentsPass->render(*m_scene, m_views.frames[i], settings, *m_momentsMap, tile);
-            // The view's moments blurred within its tile (and the mips of a single view's map:
-            // those of several would mix the views, which settings refuse).
-            QElapsedTimer blur;
-            if (timing == TimingMode::Finish) {
-                m_gl->glFinish();
-                blur.start();
-            }
-            m_momentsBlur->render(*m_momentsMap, settings.moments.blur, tile);
-            if (timing == TimingMode::Finish) {
-                m_gl->glFinish();
-                stats.blurPassWallMs += double(blur.nsecsElapsed()) * 1e-6;
-            }
-        } else if (moments) {
-            m_momentsPass->clear(m_views.frames[i], settings, *m_momentsMap, tile);
-        } else if (wanted) {
-            draws = m_depthPass.renderTile(*m_scene, m_views.frames[i], settings.bias, m_shadowMap, tile);
-        } else {
-            m_depthPass.clearTile(m_shadowMap, reversed, tile);
-        }
+        if (wanted)
+            draws = storage.draw(*m_scene, m_views.frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
+        else
+            storage.clear(m_views.frames[i], settings, tile);
         if (timing == TimingMode::Finish && perView) {
             m_gl->glFinish();
             stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
@@ -309,7 +277,7 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
     m_litPass.setShadowViews(&m_views);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
-                                      m_depthRange.get(), m_momentsMap.get());
+                                      m_depthRange.get(), storageFor(settings).momentsMap());
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
@@ -335,7 +303,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     m_litPass.setShadowViews(&m_views);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
-                                      true, m_depthRange.get(), m_momentsMap.get());
+                                      true, m_depthRange.get(), storageFor(settings).momentsMap());
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
@@ -362,10 +330,10 @@ void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible,
     if (!m_shadowMap.texture() || target.size.isEmpty())
         return;
     // What the technique stores: the moments for a moment technique, else the depth.
-    if (m_momentsMap && m_viewSettings.shadow.enabled && shadowTechnique(m_viewSettings.filter.mode).map == ShadowMapKind::Moments) {
+    if (const MomentsMap* moments = momentsShown()) {
         if (!m_depthView)
             m_depthView = std::make_unique<DepthViewPass>(m_gl);
-        m_depthView->renderMoments(m_momentsMap->texture(), m_viewSettings, target, visible, viewport);
+        m_depthView->renderMoments(moments->texture(), m_viewSettings, target, visible, viewport);
         return;
     }
     const std::optional<DepthSpan> span = depthMapSpan();

@@ -10,13 +10,12 @@
 #include "LightFitting.h"
 #include "LitPass.h"
 #include "MeasureTarget.h"
-#include "MomentsBlurPass.h"
 #include "MomentsMap.h"
-#include "MomentsPass.h"
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShadowMap.h"
 #include "ShadowReach.h"
+#include "ShadowStorage.h"
 #include "ShadowTechnique.h"
 #include "ShadowViewFrames.h"
 
@@ -59,14 +58,9 @@ public:
     const CameraFrame& cameraFrame() const { return m_camera; }
     const ShadowMap& shadowMap() const { return m_shadowMap; }
     // The moments map of the moment techniques; null until one is first used.
-    const MomentsMap* momentsMap() const { return m_momentsMap.get(); }
+    const MomentsMap* momentsMap() const;
     // Which moment the depth-map view shows (1-4), or 0 when it shows depth.
-    int depthMapMoment() const
-    {
-        return m_momentsMap && m_viewSettings.shadow.enabled && shadowTechnique(m_viewSettings.filter.mode).map == ShadowMapKind::Moments
-            ? m_viewSettings.moments.view
-            : 0;
-    }
+    int depthMapMoment() const { return momentsShown() ? m_viewSettings.moments.view : 0; }
     // The min/max depth mip of the map for penumbra-only filtering; null until first needed.
     const DepthRangePass* depthRange() const { return m_depthRange.get(); }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
@@ -108,7 +102,11 @@ private:
     void finishTiming(TimingMode timing, FrameStats& stats);
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
-    void renderViews(const Settings& settings, TimingMode timing, FrameStats& stats);
+    void renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats);
+    // The storage of the technique in `settings` (built on first use).
+    ShadowStorage& storageFor(const Settings& settings) const;
+    // The moments map the last frame's technique read, or null when it read depth.
+    const MomentsMap* momentsShown() const;
     // Fits the light's views to what the camera sees: the views, their light frames and the fit
     // the window shows.
     void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, ShadowViewFrames& views,
@@ -117,42 +115,14 @@ private:
     // one-sided one whose front faces the pass culls as its plane), receivers as drawn.
     ShadowReach reachOf(const Settings& settings, const CameraFrame& camera) const;
 
-    // Everything the shadow map depends on but the views' volumes; while it and they stay
-    // equal, the pass is skipped.
-    struct ShadowKey {
-        int sceneGeneration = 0;
-        bool reversedDepth = false;
-        int mapSize = 0;
-        DepthFormat format = DepthFormat::Depth24;
-        bool cullFront = false;
-        double polygonFactor = 0.0;
-        double polygonUnits = 0.0;
-        int columns = 1;
-        int rows = 1;
-        // Moment techniques: what the moments pass stores and how it is prefiltered (all
-        // defaults for depth-compare techniques, which share one depth map).
-        bool moments = false;
-        FilterMode momentTechnique = FilterMode::Hard;
-        MomentFormat momentFormat = MomentFormat::Rgba32F;
-        double exponentPositive = 0.0;
-        double exponentNegative = 0.0;
-        int blur = 0;
-        bool mipmaps = false;
-
-        bool operator==(const ShadowKey&) const = default;
-    };
-    // What every view's tile of the map drawn for `settings` depends on, but its volume.
-    ShadowKey shadowKey(const Settings& settings, bool reversed) const;
-
     GlFunctions* m_gl;
     ShadowMap m_shadowMap;
     DepthPass m_depthPass;
+    std::unique_ptr<ShadowStorage> m_depthStorage;
+    mutable std::unique_ptr<ShadowStorage> m_momentsStorage;  // built when a moment technique is first used
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
-    std::unique_ptr<MomentsMap> m_momentsMap;       // built when a moment technique is first used
-    std::unique_ptr<MomentsPass> m_momentsPass;
-    std::unique_ptr<MomentsBlurPass> m_momentsBlur;
     Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from
@@ -162,7 +132,7 @@ private:
     std::unique_ptr<MeasureTarget> m_measureTarget;   // built on first measurement
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
-    std::optional<ShadowKey> m_shadowKey;
+    std::optional<ShadowStorageKey> m_shadowKey;
     // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
     // m_shadowKey holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;

@@ -89,7 +89,7 @@ private Q_SLOTS:
         const FittedLight& fit = m_headless->renderer().lastFit();
         // Receivers a perspective light cannot cover (behind it, or wider than one map's
         // cone) are lit without a test, and a warning says so; an ortho light covers all.
-        const bool warned = !fit.warnings.empty();
+        const bool warned = !fitWarnings(fit).empty();
         QVERIFY(!(projection == "ortho" && warned));
         const int uncovered = warned ? a.falseLightUncovered : 0;
         const QString numbers = QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light (%5 outside the volume), cut %6 %")

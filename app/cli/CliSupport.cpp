@@ -99,7 +99,7 @@ Settings settingsFromOptions(const QCommandLineParser& parser)
 
 void printFitWarnings(const FittedLight& fit, const QString& context)
 {
-    for (const SettingsIssue& issue : fit.warnings)
+    for (const SettingsIssue& issue : fitWarnings(fit))
         err() << "warning: " << (context.isEmpty() ? QString() : context + QStringLiteral(": ")) << issue.key << ": " << issue.message << Qt::endl;
 }
 

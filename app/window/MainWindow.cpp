@@ -167,9 +167,10 @@ MainWindow::MainWindow(Persistence persistence, QWidget* parent) : QMainWindow(p
                 }
                 const FittedLight& fit = renderer->lastFit();
                 m_dock->showFit(fit, m_views[index(side)]->renderedSettings()->light);
-                if (!fit.warnings.empty() && fit.warnings.front().message != m_lastFitWarning)
-                    showStatusMessage(tr("Warning: %1").arg(fit.warnings.front().message), 10000);
-                m_lastFitWarning = fit.warnings.empty() ? QString() : fit.warnings.front().message;
+                const std::vector<SettingsIssue> warnings = fitWarnings(fit);
+                if (!warnings.empty() && warnings.front().message != m_lastFitWarning)
+                    showStatusMessage(tr("Warning: %1").arg(warnings.front().message), 10000);
+                m_lastFitWarning = warnings.empty() ? QString() : warnings.front().message;
             }
         });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {

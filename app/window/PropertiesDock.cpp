@@ -777,7 +777,7 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
         }
         m_loading = loading;
     }
-    for (const SettingsIssue& issue : fit.warnings) {
+    for (const SettingsIssue& issue : fitWarnings(fit)) {
         auto it = m_fields.find(issue.key);
         if (it == m_fields.end() || it->error->property("refusal").toBool())
             continue;

@@ -1,0 +1,60 @@
+#include "ShadowStorage.h"
+
+#include "DepthPass.h"
+#include "ShadowMap.h"
+
+namespace shadowlab {
+
+namespace {
+
+// Depth storage: the depth pass into the renderer's depth map, with its raster state against
+// acne (front-face culling, polygon offset).
+class DepthStorage final : public ShadowStorage {
+public:
+    DepthStorage(ShadowMap& map, DepthPass& pass) : m_map(map), m_pass(pass) {}
+
+    void ensure(const Settings&, ShadowTileGrid) override {}
+
+    ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
+    {
+        ShadowStorageKey key;
+        key.sceneGeneration = sceneGeneration;
+        key.reversedDepth = reversedDepth;
+        key.mapSize = settings.map.size;
+        key.format = settings.map.format;
+        key.columns = grid.columns;
+        key.rows = grid.rows;
+        key.cullFront = settings.bias.cullFront;
+        key.polygonFactor = settings.bias.polygonFactor;
+        key.polygonUnits = settings.bias.polygonUnits;
+        return key;
+    }
+
+    bool cullsFrontFaces(const Settings& settings) const override { return settings.bias.cullFront; }
+
+    void clear(const LightFrame& light, const Settings&, const QRect& tile) override
+    {
+        if (tile.isEmpty())
+            m_pass.clear(m_map, light.reversedDepth);
+        else
+            m_pass.clearTile(m_map, light.reversedDepth, tile);
+    }
+
+    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double*) override
+    {
+        return m_pass.renderTile(scene, light, settings.bias, m_map, tile);
+    }
+
+private:
+    ShadowMap& m_map;
+    DepthPass& m_pass;
+};
+
+} // namespace
+
+std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass)
+{
+    return std::make_unique<DepthStorage>(map, pass);
+}
+
+} // namespace shadowlab

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "GpuScene.h"
+#include "LightMath.h"
+#include "Settings.h"
+#include "ShadowViews.h"
+
+#include <QRect>
+
+#include <memory>
+
+namespace shadowlab {
+
+class DepthPass;
+class MomentsMap;
+class ShadowMap;
+
+// Everything the stored views depend on but their volumes; while it and the volumes stay
+// equal, the shadow pass is skipped.
+struct ShadowStorageKey {
+    int sceneGeneration = 0;
+    bool reversedDepth = false;
+    int mapSize = 0;
+    DepthFormat format = DepthFormat::Depth24;
+    int columns = 1;
+    int rows = 1;
+    // The depth pass's raster state against acne (depth storage only).
+    bool cullFront = false;
+    double polygonFactor = 0.0;
+    double polygonUnits = 0.0;
+    // What the moments pass stores and how it is prefiltered (moments storage only).
+    bool moments = false;
+    FilterMode momentTechnique = FilterMode::Hard;
+    MomentFormat momentFormat = MomentFormat::Rgba32F;
+    double exponentPositive = 0.0;
+    double exponentNegative = 0.0;
+    int blur = 0;
+    bool mipmaps = false;
+
+    bool operator==(const ShadowStorageKey&) const = default;
+};
+
+// Where a light's views are stored, each in its tile of the one map, and the passes that fill
+// them: depth (the depth pass) or moments (the moments pass, then its blur and mips). The
+// renderer and the light rig do not ask which: a technique's row names its storage
+// (ShadowTechnique::map), and the storage answers.
+class ShadowStorage {
+public:
+    virtual ~ShadowStorage() = default;
+
+    // Textures for the views of `settings` in `grid` (the depth map itself is the renderer's,
+    // shared by every storage: its texel grid is the one the lit pass looks up in).
+    virtual void ensure(const Settings& settings, ShadowTileGrid grid) = 0;
+    // What the stored views of `settings` depend on besides their volumes.
+    virtual ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const = 0;
+    // Whether the pass drawing `settings` culls front faces (bias.cull_front): where a flat
+    // one-sided caster facing the light then casts nothing (core/ShadowReach.h).
+    virtual bool cullsFrontFaces(const Settings& settings) const = 0;
+    // The whole map read lit (every tile), or one view's `tile` of it.
+    virtual void clear(const LightFrame& light, const Settings& settings, const QRect& tile = QRect()) = 0;
+    // Draws one view into its tile; returns the casters drawn. `blurWallMs`, when given, gets
+    // the wall time of a prefilter pass added (glFinish around it).
+    virtual int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double* blurWallMs) = 0;
+    // The moments the lit pass reads; null for a storage of depth alone.
+    virtual const MomentsMap* momentsMap() const { return nullptr; }
+};
+
+// The storage of each kind, built on first use: depth draws into the renderer's `map` with its
+// `pass`; moments own their map and passes.
+std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass);
+std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl);
+
+} // namespace shadowlab
