@@ -257,84 +257,56 @@ std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm
     return points;
 }
 
-FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
-                     int mapSize, const std::vector<glm::dmat4>& within)
-{
-    FittedLight result;
-    const LightVolume manual = manualVolume(light);
-    const double distance = glm::length(light.position - light.target);
-    result.volume = manual;
-    result.texelBefore = result.texelAfter = texelWorldSize(manual, mapSize, distance);
-    result.anythingToShadow = std::any_of(objects.begin(), objects.end(), [](const FitObject& o) { return o.casts && !o.bounds.isEmpty(); });
+namespace {
 
-    std::vector<glm::dmat4> seen;
-    if (camera)
-        seen.push_back(*camera);
-    seen.insert(seen.end(), within.begin(), within.end());
-    if (light.fit == LightFit::Manual) {
-        const Cut cut = measureCut(objects, seen, computeLightFrame(light, manual).viewProjection);
-        result.cutShare = cut.share;
-        if (cut.share > kCutWorthSaying && result.anythingToShadow)
-            result.cuts.push_back({.by = FitCut::By::ManualVolume, .perspective = manual.perspective, .share = cut.share, .byPlane = cut.byPlane});
-        return result;
-    }
-
-    const bool perspective = manual.perspective;
-    LightVolume fitted;
-    fitted.direction = manual.direction;
-    fitted.perspective = perspective;
-    // A directional light's volume hangs off its target, so its distance changes nothing.
-    const glm::dvec3 anchor = perspective ? light.position : light.target;
-    const glm::dmat4 view = stableLookAlong(anchor, manual.direction);
-    // Light space: x and y across the map (tangents of the angle for a perspective light), and
-    // distance from the anchor along the direction.
-    const auto toLight = [&](const glm::dvec3& p) {
+// Light space of a fit: x and y across the map (tangents of the angle for a perspective light),
+// and distance from the anchor along the direction.
+struct LightSpace {
+    glm::dmat4 view;
+    bool perspective = false;
+    glm::dvec3 operator()(const glm::dvec3& p) const
+    {
         const glm::dvec3 v(view * glm::dvec4(p, 1.0));
         const double depth = -v.z;
         return perspective ? glm::dvec3(v.x / depth, v.y / depth, depth) : glm::dvec3(v.x, v.y, depth);
-    };
-
-    double reach = 0.0;     // from the anchor to the farthest corner of anything
-    for (const FitObject& object : objects) {
-        if (!object.bounds.isEmpty()) {
-            for (const glm::dvec3& c : object.bounds.corners())
-                reach = std::max(reach, glm::length(c - anchor));
-        }
     }
-    std::vector<glm::dmat4> limits = seen;
-    if (perspective) {
-        // One map covers at most a cone of kMaxFittedFov in front of the light.
-        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
-        const double farthest = 2.0 * reach + 1.0;
-        const double n = farthest * 1e-9;
-        limits.push_back(glm::frustum(-t * n, t * n, -t * n, t * n, n, farthest) * view);
-        const Cut cut = measureCut(objects, seen, limits.back());
-        result.cutShare = cut.share;
-        if (cut.share > kCutWorthSaying && result.anythingToShadow)
-            result.cuts.push_back({.by = FitCut::By::WidestCone, .perspective = true, .share = cut.share, .byPlane = cut.byPlane});
-    }
+};
 
-    // What can be seen: each receiver's part inside the camera (and the cone), in light space.
-    std::vector<Bounds> seenParts(objects.size());
+// What can be seen: each receiver's part inside the camera (and the cone), in light space, and
+// the region they span.
+struct SeenParts {
+    std::vector<Bounds> parts;
     Bounds region;
+};
+
+SeenParts seenParts(const std::vector<FitObject>& objects, const std::vector<glm::dmat4>& limits, const LightSpace& toLight)
+{
+    SeenParts seen;
+    seen.parts.resize(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (!objects[i].receives || objects[i].bounds.isEmpty()
             || std::any_of(limits.begin(), limits.end(), [&](const glm::dmat4& m) { return isOutsideFrustum(m, objects[i].bounds, false); }))
             continue;
         for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits))
-            seenParts[i].extend(toLight(p));
-        region.extend(seenParts[i]);
+            seen.parts[i].extend(toLight(p));
+        seen.region.extend(seen.parts[i]);
     }
-    if (region.isEmpty()) {
-        result.anythingToShadow = false;
-        return result;
-    }
-    // A region of zero width (a receiver seen edge-on) still makes a prism.
-    const double regionSpan = std::max({region.max.x - region.min.x, region.max.y - region.min.y, perspective ? 1e-9 : reach * 1e-9, 1e-12});
-    region.min -= glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
-    region.max += glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
+    return seen;
+}
 
-    // What can cast onto it: each caster's part over the region, in front of its far side.
+// Where casters fall over the receivers seen, in light space (x and y), and the prism they
+// were clipped to: each caster's part over the region, in front of its far side.
+struct CasterFootprint {
+    Bounds footprint;
+    double casterStart = 0.0;   // the prism's near side
+    double regionFar = 0.0;     // ... and its far side
+};
+
+CasterFootprint casterFootprint(const std::vector<FitObject>& objects, const std::vector<Bounds>& seen, const Bounds& region,
+                                const LightSpace& toLight)
+{
+    const bool perspective = toLight.perspective;
+    const glm::dmat4& view = toLight.view;
     // (A perspective prism starts a millionth of the way out: closer, its far plane, taken back
     // out of the matrix, would move by more than the margin below.)
     double casterStart = perspective ? region.max.z * 1e-6 : region.min.z;
@@ -363,7 +335,7 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     // shadow of a caster falls at its own place in light space.
     // Receivers go into a grid over the region, so each caster meets only the receivers near
     // it: a city's thousands of objects pair in about linear time, not quadratic.
-    const ReceiverGrid receiverGrid(seenParts, region);
+    const ReceiverGrid receiverGrid(seen, region);
     Bounds footprint;
     std::vector<std::size_t> near;
     for (std::size_t j = 0; j < objects.size(); ++j) {
@@ -376,7 +348,7 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
             continue;
         receiverGrid.query(c, near);
         for (std::size_t i : near) {
-            const Bounds& r = seenParts[i];
+            const Bounds& r = seen[i];
             if (r.isEmpty() || (i == j && objects[j].convex) || !(r.max.z > c.min.z))
                 continue;
             const glm::dvec2 low = glm::max(glm::dvec2(c.min), glm::dvec2(r.min));
@@ -387,53 +359,75 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
             }
         }
     }
-    if (footprint.isEmpty()) {
-        result.anythingToShadow = false;
-        return result;
-    }
+    return {footprint, casterStart, regionFar};
+}
 
+// The map's window over the footprint: its centre and span in light space (x and y) with a
+// margin of texels, stabilised to whole texels and coarse steps of size when asked; `grid` is
+// the step the depth range snaps to then (ortho, world units).
+struct MapWindow {
+    glm::dvec2 centre{0.0};
+    glm::dvec2 span{0.0};
+    double grid = 0.0;
+};
+
+MapWindow mapWindow(const Bounds& footprint, double regionSpan, int mapSize, bool stabilize)
+{
     const double texels = double(mapSize);
-    glm::dvec2 centre = (glm::dvec2(footprint.min) + glm::dvec2(footprint.max)) * 0.5;
-    glm::dvec2 span = glm::dvec2(footprint.max) - glm::dvec2(footprint.min);
-    span = glm::max(span, glm::dvec2(std::max({span.x, span.y, regionSpan}) * 1e-3));
-    span *= texels / std::max(texels - 2.0 * kMarginTexels, texels * 0.5);
-    double grid = 0.0;  // the depth range snaps to this (world units, ortho)
-    if (light.stabilize) {
+    MapWindow w;
+    w.centre = (glm::dvec2(footprint.min) + glm::dvec2(footprint.max)) * 0.5;
+    w.span = glm::dvec2(footprint.max) - glm::dvec2(footprint.min);
+    w.span = glm::max(w.span, glm::dvec2(std::max({w.span.x, w.span.y, regionSpan}) * 1e-3));
+    w.span *= texels / std::max(texels - 2.0 * kMarginTexels, texels * 0.5);
+    if (stabilize) {
         // Whole texels, and coarse steps of size: the snapped centre moves by up to a sixteenth.
         for (int a = 0; a < 2; ++a) {
-            span[a] = ladderUp(span[a] * 16.0 / 15.0);
-            const double step = span[a] / texels * std::max(1.0, std::floor(texels / 16.0));
-            centre[a] = std::round(centre[a] / step) * step;
-            grid = std::max(grid, step);
+            w.span[a] = ladderUp(w.span[a] * 16.0 / 15.0);
+            const double step = w.span[a] / texels * std::max(1.0, std::floor(texels / 16.0));
+            w.centre[a] = std::round(w.centre[a] / step) * step;
+            w.grid = std::max(w.grid, step);
         }
     }
-    if (perspective) {
-        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
-        fitted.left = std::max(centre.x - span.x * 0.5, -t);
-        fitted.right = std::min(centre.x + span.x * 0.5, t);
-        fitted.bottom = std::max(centre.y - span.y * 0.5, -t);
-        fitted.top = std::min(centre.y + span.y * 0.5, t);
-    }
+    return w;
+}
 
-    // Near and far: the receivers over the footprint (casters in front of it are clamped to
-    // the near plane by the depth pass and still cast).
-    const glm::dvec2 low = centre - span * 0.5, high = centre + span * 0.5;
-    const glm::dmat4 column = perspective
-        ? glm::frustum(low.x * casterStart, high.x * casterStart, low.y * casterStart, high.y * casterStart, casterStart, regionFar) * view
-        : glm::ortho(low.x, high.x, low.y, high.y, region.min.z - 1.0, regionFar) * view;
+// The light-space depths of the receivers seen under the window (casters in front of it are
+// clamped to the near plane by the depth pass and still cast).
+Bounds windowDepths(const std::vector<FitObject>& objects, const std::vector<Bounds>& seen, const std::vector<glm::dmat4>& limits,
+                    const MapWindow& w, const CasterFootprint& casters, const Bounds& region, const LightSpace& toLight)
+{
+    const glm::dvec2 low = w.centre - w.span * 0.5, high = w.centre + w.span * 0.5;
+    const double casterStart = casters.casterStart, regionFar = casters.regionFar;
+    const glm::dmat4 column = toLight.perspective
+        ? glm::frustum(low.x * casterStart, high.x * casterStart, low.y * casterStart, high.y * casterStart, casterStart, regionFar) * toLight.view
+        : glm::ortho(low.x, high.x, low.y, high.y, region.min.z - 1.0, regionFar) * toLight.view;
     std::vector<glm::dmat4> columnLimits = limits;
     columnLimits.push_back(column);
     Bounds depths;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (!seenParts[i].isEmpty() && isFinite(column)) {
+        if (!seen[i].isEmpty() && isFinite(column)) {
             for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, columnLimits))
                 depths.extend(toLight(p));
         }
     }
-    if (depths.isEmpty())
-        depths = region;
+    return depths.isEmpty() ? region : depths;
+}
+
+// The volume of the window and depths: a perspective light's frustum from its position, or an
+// ortho box centred on its own origin.
+LightVolume windowVolume(const LightSettings& light, const LightVolume& manual, const glm::dvec3& anchor, const glm::dmat4& view,
+                         const MapWindow& w, const Bounds& depths)
+{
+    LightVolume fitted;
+    fitted.direction = manual.direction;
+    fitted.perspective = manual.perspective;
     const double depthSpan = depths.max.z - depths.min.z;
-    if (perspective) {
+    if (manual.perspective) {
+        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
+        fitted.left = std::max(w.centre.x - w.span.x * 0.5, -t);
+        fitted.right = std::min(w.centre.x + w.span.x * 0.5, t);
+        fitted.bottom = std::max(w.centre.y - w.span.y * 0.5, -t);
+        fitted.top = std::min(w.centre.y + w.span.y * 0.5, t);
         double nearPlane = std::max(depths.min.z * (1.0 - 1e-3), depths.max.z * 1e-4);
         double farPlane = depths.max.z * (1.0 + 1e-3) + 1e-12;
         if (light.stabilize) {
@@ -443,30 +437,101 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
         fitted.origin = light.position;
         fitted.nearPlane = nearPlane;
         fitted.farPlane = std::max(farPlane, nearPlane * (1.0 + 1e-6));
-    } else {
-        const double margin = depthSpan * 1e-3 + std::max(span.x, span.y) * 1e-3;
-        double nearPlane = depths.min.z - margin;
-        double farPlane = depths.max.z + margin;
-        if (grid > 0.0) {
-            nearPlane = std::floor(nearPlane / grid) * grid;
-            farPlane = std::ceil(farPlane / grid) * grid;
-        }
-        // Centre the volume on its own origin: the matrices then hold small numbers however far
-        // the scene is from the target, and float keeps its precision.
-        const double middle = (nearPlane + farPlane) * 0.5;
-        const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
-        const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
-        fitted.origin = anchor + right * centre.x + up * centre.y + manual.direction * middle;
-        fitted.left = -span.x * 0.5;
-        fitted.right = span.x * 0.5;
-        fitted.bottom = -span.y * 0.5;
-        fitted.top = span.y * 0.5;
-        fitted.nearPlane = nearPlane - middle;
-        fitted.farPlane = farPlane - middle;
+        return fitted;
     }
-    result.volume = fitted;
+    const double margin = depthSpan * 1e-3 + std::max(w.span.x, w.span.y) * 1e-3;
+    double nearPlane = depths.min.z - margin;
+    double farPlane = depths.max.z + margin;
+    if (w.grid > 0.0) {
+        nearPlane = std::floor(nearPlane / w.grid) * w.grid;
+        farPlane = std::ceil(farPlane / w.grid) * w.grid;
+    }
+    // Centre the volume on its own origin: the matrices then hold small numbers however far
+    // the scene is from the target, and float keeps its precision.
+    const double middle = (nearPlane + farPlane) * 0.5;
+    const glm::dvec3 right(view[0][0], view[1][0], view[2][0]);
+    const glm::dvec3 up(view[0][1], view[1][1], view[2][1]);
+    fitted.origin = anchor + right * w.centre.x + up * w.centre.y + manual.direction * middle;
+    fitted.left = -w.span.x * 0.5;
+    fitted.right = w.span.x * 0.5;
+    fitted.bottom = -w.span.y * 0.5;
+    fitted.top = w.span.y * 0.5;
+    fitted.nearPlane = nearPlane - middle;
+    fitted.farPlane = farPlane - middle;
+    return fitted;
+}
+
+} // namespace
+
+FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
+                     int mapSize, const std::vector<glm::dmat4>& within)
+{
+    FittedLight result;
+    const LightVolume manual = manualVolume(light);
+    const double distance = glm::length(light.position - light.target);
+    result.volume = manual;
+    result.texelBefore = result.texelAfter = texelWorldSize(manual, mapSize, distance);
+    result.anythingToShadow = std::any_of(objects.begin(), objects.end(), [](const FitObject& o) { return o.casts && !o.bounds.isEmpty(); });
+
+    std::vector<glm::dmat4> seen;
+    if (camera)
+        seen.push_back(*camera);
+    seen.insert(seen.end(), within.begin(), within.end());
+
+    if (light.fit == LightFit::Manual) {
+        const Cut cut = measureCut(objects, seen, computeLightFrame(light, manual).viewProjection);
+        result.cutShare = cut.share;
+        if (cut.share > kCutWorthSaying && result.anythingToShadow)
+            result.cuts.push_back({.by = FitCut::By::ManualVolume, .perspective = manual.perspective, .share = cut.share, .byPlane = cut.byPlane});
+        return result;
+    }
+
+    const bool perspective = manual.perspective;
+    // A directional light's volume hangs off its target, so its distance changes nothing.
+    const glm::dvec3 anchor = perspective ? light.position : light.target;
+    const LightSpace toLight{stableLookAlong(anchor, manual.direction), perspective};
+
+    double reach = 0.0;     // from the anchor to the farthest corner of anything
+    for (const FitObject& object : objects) {
+        if (!object.bounds.isEmpty()) {
+            for (const glm::dvec3& c : object.bounds.corners())
+                reach = std::max(reach, glm::length(c - anchor));
+        }
+    }
+    std::vector<glm::dmat4> limits = seen;
+    if (perspective) {
+        // One map covers at most a cone of kMaxFittedFov in front of the light.
+        const double t = std::tan(glm::radians(kMaxFittedFov) * 0.5);
+        const double farthest = 2.0 * reach + 1.0;
+        const double n = farthest * 1e-9;
+        limits.push_back(glm::frustum(-t * n, t * n, -t * n, t * n, n, farthest) * toLight.view);
+        const Cut cut = measureCut(objects, seen, limits.back());
+        result.cutShare = cut.share;
+        if (cut.share > kCutWorthSaying && result.anythingToShadow)
+            result.cuts.push_back({.by = FitCut::By::WidestCone, .perspective = true, .share = cut.share, .byPlane = cut.byPlane});
+    }
+
+    SeenParts visible = seenParts(objects, limits, toLight);
+    Bounds& region = visible.region;
+    if (region.isEmpty()) {
+        result.anythingToShadow = false;
+        return result;
+    }
+    // A region of zero width (a receiver seen edge-on) still makes a prism.
+    const double regionSpan = std::max({region.max.x - region.min.x, region.max.y - region.min.y, perspective ? 1e-9 : reach * 1e-9, 1e-12});
+    region.min -= glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
+    region.max += glm::dvec3(regionSpan * 1e-6, regionSpan * 1e-6, 0.0);
+
+    const CasterFootprint casters = casterFootprint(objects, visible.parts, region, toLight);
+    if (casters.footprint.isEmpty()) {
+        result.anythingToShadow = false;
+        return result;
+    }
+    const MapWindow window = mapWindow(casters.footprint, regionSpan, mapSize, light.stabilize);
+    const Bounds depths = windowDepths(objects, visible.parts, limits, window, casters, region, toLight);
+    result.volume = windowVolume(light, manual, anchor, toLight.view, window, depths);
     result.fitted = true;
-    result.texelAfter = texelWorldSize(fitted, mapSize, distance);
+    result.texelAfter = texelWorldSize(result.volume, mapSize, distance);
     return result;
 }
 

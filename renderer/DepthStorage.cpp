@@ -17,13 +17,7 @@ public:
 
     ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
     {
-        ShadowStorageKey key;
-        key.sceneGeneration = sceneGeneration;
-        key.reversedDepth = reversedDepth;
-        key.mapSize = settings.map.size;
-        key.format = settings.map.format;
-        key.columns = grid.columns;
-        key.rows = grid.rows;
+        ShadowStorageKey key = commonStorageKey(settings, sceneGeneration, reversedDepth, grid);
         key.cullFront = settings.bias.cullFront;
         key.polygonFactor = settings.bias.polygonFactor;
         key.polygonUnits = settings.bias.polygonUnits;

@@ -27,13 +27,7 @@ public:
     ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
     {
         const MomentWarp warp = momentWarp(settings);
-        ShadowStorageKey key;
-        key.sceneGeneration = sceneGeneration;
-        key.reversedDepth = reversedDepth;
-        key.mapSize = settings.map.size;
-        key.format = settings.map.format;
-        key.columns = grid.columns;
-        key.rows = grid.rows;
+        ShadowStorageKey key = commonStorageKey(settings, sceneGeneration, reversedDepth, grid);
         key.moments = true;
         key.momentTechnique = settings.filter.mode;
         key.momentFormat = settings.moments.format;

@@ -40,6 +40,19 @@ struct ShadowStorageKey {
     bool operator==(const ShadowStorageKey&) const = default;
 };
 
+// What every storage's key holds: the scene, the depth convention, the map's size, format and tiles.
+inline ShadowStorageKey commonStorageKey(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid)
+{
+    ShadowStorageKey key;
+    key.sceneGeneration = sceneGeneration;
+    key.reversedDepth = reversedDepth;
+    key.mapSize = settings.map.size;
+    key.format = settings.map.format;
+    key.columns = grid.columns;
+    key.rows = grid.rows;
+    return key;
+}
+
 // Where a light's views are stored, each in its tile of the one map, and the passes that fill
 // them: depth (the depth pass) or moments (the moments pass, then its blur and mips). The
 // renderer and the light rig do not ask which: a technique's row names its storage
