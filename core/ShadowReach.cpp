@@ -1,5 +1,7 @@
 #include "ShadowReach.h"
 
+#include "ShadowTechnique.h"
+
 #include <glm/common.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -80,38 +82,12 @@ bool finite(const glm::dvec3& v)
 
 std::optional<double> tapReachTexels(const Settings& settings)
 {
-    const FilterSettings& filter = settings.filter;
-    double taps = 1.0;      // a nearest tap may round to the neighbour; a bilinear one reads 2 x 2
-    switch (filter.mode) {
-    case FilterMode::Hard:
-    case FilterMode::HwBilinear:
-        break;
-    case FilterMode::Pcf:
-        taps += (filter.kernel - 1) / 2;
-        break;
-    case FilterMode::PcfDither4:
-        taps += 2.5;
-        break;
-    case FilterMode::Pcf64:
-        taps += 3.5;
-        break;
-    case FilterMode::Poisson:
-        taps += filter.radius;
-        break;
-    case FilterMode::Pcss:
-        return std::nullopt;    // its blocker search spans up to half the map
-    case FilterMode::Vsm:
-    case FilterMode::Evsm2:
-    case FilterMode::Evsm4:
-    case FilterMode::Msm:
-    case FilterMode::Esm:
-        // Filtered moments read lit only to within their bias and bleeding reduction (msm's
-        // mix toward the moments of depths 0 and 1 leaves 1 - bias/2 where nothing was drawn),
-        // and a coarse mip or an anisotropic footprint averages texels far from the pixel.
+    const std::optional<double> reach = shadowTechnique(settings.filter.mode).tapReach(settings.filter);
+    if (!reach)
         return std::nullopt;
-    }
-    // Two texels of margin for rounding. The normal offset is the view's own (shadowReach).
-    return taps + 2.0;
+    // A nearest tap may round to the neighbour, a bilinear one reads 2 x 2; and two texels of
+    // margin for rounding. The normal offset is the view's own (shadowReach).
+    return 1.0 + *reach + 2.0;
 }
 
 bool referencesStayNearer(const Settings& settings)
@@ -119,24 +95,7 @@ bool referencesStayNearer(const Settings& settings)
     // A negative polygon offset pulls the stored depths toward the light, past the casters'.
     if (settings.bias.polygonFactor < 0.0 || settings.bias.polygonUnits < 0.0)
         return false;
-    switch (settings.filter.mode) {
-    case FilterMode::Hard:
-    case FilterMode::HwBilinear:
-        return true;
-    case FilterMode::Pcf:
-    case FilterMode::PcfDither4:
-    case FilterMode::Pcf64:
-        return !settings.bias.receiverPlane;
-    case FilterMode::Poisson:
-    case FilterMode::Pcss:
-    case FilterMode::Vsm:
-    case FilterMode::Evsm2:
-    case FilterMode::Evsm4:
-    case FilterMode::Msm:
-    case FilterMode::Esm:
-        return false;
-    }
-    return false;
+    return shadowTechnique(settings.filter.mode).referencesStayNearer(settings);
 }
 
 std::array<glm::dvec3, 8> ReachBox::worldCorners() const

@@ -48,105 +48,217 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
 {
     const QString bleeding = QStringLiteral("filter.bleeding"), bias = QStringLiteral("filter.moment_bias");
     const QString positive = QStringLiteral("filter.exponent_positive"), negative = QStringLiteral("filter.exponent_negative");
-    t.push_back({FilterMode::Vsm, QStringLiteral("vsm"), QStringLiteral("VSM (2 moments)"),
-                 QStringLiteral("vsm (2 moments, 1 filtered tap): variance shadow maps; blurred and mipmapped like a texture, "
-                                "but light bleeds where occluders overlap at different depths"),
-                 QStringLiteral("shadow/vsm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias},
-                 momentDefines, momentUniforms, plainLabel("vsm"),
-                 {momentVariation(QStringLiteral("vsm"), QStringLiteral("vsm")),
-                  momentVariation(QStringLiteral("vsm 16-bit"), QStringLiteral("vsm"), {QStringLiteral("moments.format=16")})}});
-    t.push_back({FilterMode::Evsm2, QStringLiteral("evsm2"), QStringLiteral("EVSM (2 moments)"),
-                 QStringLiteral("evsm2 (2 moments of exp(c d), 1 filtered tap): exponential variance shadow maps; the warp "
-                                "shrinks light bleeding, at the cost of exponents the format must hold"),
-                 QStringLiteral("shadow/evsm2.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias, positive},
-                 momentDefines, momentUniforms,
-                 [](const FilterSettings& f) { return QStringLiteral("evsm2 c%1").arg(f.positiveExponent); },
-                 {momentVariation(QStringLiteral("evsm2"), QStringLiteral("evsm2"))}});
-    t.push_back({FilterMode::Evsm4, QStringLiteral("evsm4"), QStringLiteral("EVSM (4 moments)"),
-                 QStringLiteral("evsm4 (4 moments of exp(c d) and -exp(-c d), 1 filtered tap): both warps, the least light "
-                                "bleeding of the variance family; twice the memory of evsm2"),
-                 QStringLiteral("shadow/evsm4.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments},
-                 {bleeding, bias, positive, negative}, momentDefines, momentUniforms,
-                 [](const FilterSettings& f) { return QStringLiteral("evsm4 c%1/%2").arg(f.positiveExponent).arg(f.negativeExponent); },
-                 {momentVariation(QStringLiteral("evsm4"), QStringLiteral("evsm4")),
-                  momentVariation(QStringLiteral("evsm4 16-bit"), QStringLiteral("evsm4"), {QStringLiteral("moments.format=16")})}});
-    t.push_back({FilterMode::Msm, QStringLiteral("msm"), QStringLiteral("MSM (4 moments)"),
-                 QStringLiteral("msm (4 moments, Hamburger, 1 filtered tap): moment shadow maps (Peters and Klein 2015); a sharper "
-                                "bound than vsm's, 16-bit with their optimised quantisation"),
-                 QStringLiteral("shadow/msm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {bleeding, bias},
-                 momentDefines, momentUniforms, plainLabel("msm"),
-                 {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
-                  momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})}});
-    t.push_back({FilterMode::Esm, QStringLiteral("esm"), QStringLiteral("ESM (1 moment)"),
-                 QStringLiteral("esm (1 moment exp(c d), 1 filtered tap): exponential shadow maps; the cheapest filterable map, "
-                                "but lit near contacts where receiver and occluder are closer than about 1/c of the depth range"),
-                 QStringLiteral("shadow/esm.glsl"), ShadowMapKind::Moments, {ShadowSampler::Moments}, {positive},
-                 momentDefines, momentUniforms,
-                 [](const FilterSettings& f) { return QStringLiteral("esm c%1").arg(f.positiveExponent); },
-                 {momentVariation(QStringLiteral("esm"), QStringLiteral("esm"))}});
+    t.push_back({
+        .mode = FilterMode::Vsm,
+        .key = QStringLiteral("vsm"),
+        .label = QStringLiteral("VSM (2 moments)"),
+        .help = QStringLiteral("vsm (2 moments, 1 filtered tap): variance shadow maps; blurred and mipmapped like a texture, "
+            "but light bleeds where occluders overlap at different depths"),
+        .shaderFile = QStringLiteral("shadow/vsm.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {bleeding, bias},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = plainLabel("vsm"),
+        .sweep = {momentVariation(QStringLiteral("vsm"), QStringLiteral("vsm")),
+            momentVariation(QStringLiteral("vsm 16-bit"), QStringLiteral("vsm"), {QStringLiteral("moments.format=16")})},
+    });
+    t.push_back({
+        .mode = FilterMode::Evsm2,
+        .key = QStringLiteral("evsm2"),
+        .label = QStringLiteral("EVSM (2 moments)"),
+        .help = QStringLiteral("evsm2 (2 moments of exp(c d), 1 filtered tap): exponential variance shadow maps; the warp "
+            "shrinks light bleeding, at the cost of exponents the format must hold"),
+        .shaderFile = QStringLiteral("shadow/evsm2.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {bleeding, bias, positive},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("evsm2 c%1").arg(f.positiveExponent); },
+        .sweep = {momentVariation(QStringLiteral("evsm2"), QStringLiteral("evsm2"))},
+    });
+    t.push_back({
+        .mode = FilterMode::Evsm4,
+        .key = QStringLiteral("evsm4"),
+        .label = QStringLiteral("EVSM (4 moments)"),
+        .help = QStringLiteral("evsm4 (4 moments of exp(c d) and -exp(-c d), 1 filtered tap): both warps, the least light "
+            "bleeding of the variance family; twice the memory of evsm2"),
+        .shaderFile = QStringLiteral("shadow/evsm4.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {bleeding, bias, positive, negative},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("evsm4 c%1/%2").arg(f.positiveExponent).arg(f.negativeExponent); },
+        .sweep = {momentVariation(QStringLiteral("evsm4"), QStringLiteral("evsm4")),
+            momentVariation(QStringLiteral("evsm4 16-bit"), QStringLiteral("evsm4"), {QStringLiteral("moments.format=16")})},
+    });
+    t.push_back({
+        .mode = FilterMode::Msm,
+        .key = QStringLiteral("msm"),
+        .label = QStringLiteral("MSM (4 moments)"),
+        .help = QStringLiteral("msm (4 moments, Hamburger, 1 filtered tap): moment shadow maps (Peters and Klein 2015); a sharper "
+            "bound than vsm's, 16-bit with their optimised quantisation"),
+        .shaderFile = QStringLiteral("shadow/msm.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {bleeding, bias},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = plainLabel("msm"),
+        .sweep = {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
+            momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})},
+    });
+    t.push_back({
+        .mode = FilterMode::Esm,
+        .key = QStringLiteral("esm"),
+        .label = QStringLiteral("ESM (1 moment)"),
+        .help = QStringLiteral("esm (1 moment exp(c d), 1 filtered tap): exponential shadow maps; the cheapest filterable map, "
+            "but lit near contacts where receiver and occluder are closer than about 1/c of the depth range"),
+        .shaderFile = QStringLiteral("shadow/esm.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {positive},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("esm c%1").arg(f.positiveExponent); },
+        .sweep = {momentVariation(QStringLiteral("esm"), QStringLiteral("esm"))},
+    });
 }
 
 std::vector<ShadowTechnique> makeTechniques()
 {
     std::vector<ShadowTechnique> t;
-    t.push_back({FilterMode::Hard, QStringLiteral("hard"), QStringLiteral("Hard"),
-                 QStringLiteral("hard (1 tap): one comparison per pixel; aliased, blocky edges, the cheapest"),
-                 QStringLiteral("shadow/hard.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
-                 noDefines, noUniforms, plainLabel("hard"), {{QStringLiteral("hard"), {QStringLiteral("filter.mode=hard")}}}});
-    t.push_back({FilterMode::Pcf, QStringLiteral("pcf"), QStringLiteral("PCF N×N"),
-                 QStringLiteral("pcf (N x N taps): percentage-closer filtering over filter.kernel texels; softer edges at N² taps"),
-                 QStringLiteral("shadow/pcf.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest},
-                 {QStringLiteral("filter.kernel")},
-                 [](const Settings& s) { return QStringList{QStringLiteral("PCF_KERNEL %1").arg(s.filter.kernel)}; }, noUniforms,
-                 [](const FilterSettings& f) { return QStringLiteral("pcf %1×%1").arg(f.kernel); },
-                 {{QStringLiteral("pcf 1x1"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=1")}},
-                  {QStringLiteral("pcf 3x3"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3")}},
-                  {QStringLiteral("pcf 5x5"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=5")}},
-                  {QStringLiteral("pcf 7x7"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}}},
-                 true});
-    t.push_back({FilterMode::PcfDither4, QStringLiteral("pcf-dither4"), QStringLiteral("PCF dithered 4"),
-                 QStringLiteral("pcf-dither4 (4 dithered taps): a 4 x 4 footprint in 4 lookups, placed per 2 x 2 pixel block"),
-                 QStringLiteral("shadow/pcf-dither4.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
-                 noDefines, noUniforms, plainLabel("pcf-dither4"), {{QStringLiteral("pcf-dither4"), {QStringLiteral("filter.mode=pcf-dither4")}}}});
-    t.push_back({FilterMode::Pcf64, QStringLiteral("pcf64"), QStringLiteral("PCF 8×8"),
-                 QStringLiteral("pcf64 (8 x 8 taps): the smoothest and most expensive box"),
-                 QStringLiteral("shadow/pcf64.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest}, {},
-                 noDefines, noUniforms, plainLabel("pcf64"), {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}}});
-    t.push_back({FilterMode::HwBilinear, QStringLiteral("hw-bilinear"), QStringLiteral("Hardware bilinear"),
-                 QStringLiteral("hw-bilinear (hardware compare, bilinear): one tap that blends four comparisons; smooth edges for the cost of one"),
-                 QStringLiteral("shadow/hw-bilinear.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareLinear}, {},
-                 noDefines, noUniforms, plainLabel("hw-bilinear"), {{QStringLiteral("hw-bilinear"), {QStringLiteral("filter.mode=hw-bilinear")}}}});
-    t.push_back({FilterMode::Poisson, QStringLiteral("poisson"), QStringLiteral("Poisson disk"),
-                 QStringLiteral("poisson (filter.taps taps): a Poisson disk of filter.radius texels, rotated per pixel; round, "
-                                "noise instead of banding, its bias grows with each tap's distance"),
-                 QStringLiteral("shadow/poisson.glsl"), ShadowMapKind::DepthCompare, {ShadowSampler::CompareNearest},
-                 {QStringLiteral("filter.taps"), QStringLiteral("filter.radius")},
-                 [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-                 [](const Settings& s) { return std::vector<TechniqueUniform>{{"uPoissonRadius", float(s.filter.radius)}}; },
-                 [](const FilterSettings& f) { return QStringLiteral("poisson %1 r%2").arg(f.taps).arg(f.radius); },
-                 {{QStringLiteral("poisson 16 r2.5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=16"),
-                                                       QStringLiteral("filter.radius=2.5")}},
-                  {QStringLiteral("poisson 32 r5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=32"),
-                                                     QStringLiteral("filter.radius=5")}}},
-                 true});
-    t.push_back({FilterMode::Pcss, QStringLiteral("pcss"), QStringLiteral("PCSS (soft)"),
-                 QStringLiteral("pcss (16 + filter.taps taps): percentage-closer soft shadows of a disk light of light.radius; "
-                                "a blocker search, then a Poisson filter as wide as the penumbra there"),
-                 QStringLiteral("shadow/pcss.glsl"), ShadowMapKind::RawDepth, {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
-                 {QStringLiteral("filter.taps")},
-                 [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-                 [](const Settings& s) {
-                     // A directional light has the angular size the disk has seen from the target,
-                     // as the area reference traces it (accuracy/ShadowReference.cpp).
-                     double size = s.reference.lightRadius;
-                     if (s.light.projection == LightProjection::Ortho)
-                         size /= std::max(glm::length(s.light.position - s.light.target), 1e-12);
-                     return std::vector<TechniqueUniform>{{"uLightSize", float(size)}};
-                 },
-                 [](const FilterSettings& f) { return QStringLiteral("pcss %1").arg(f.taps); },
-                 {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
-                  {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
-                 true});
+    t.push_back({
+        .mode = FilterMode::Hard,
+        .key = QStringLiteral("hard"),
+        .label = QStringLiteral("Hard"),
+        .help = QStringLiteral("hard (1 tap): one comparison per pixel; aliased, blocky edges, the cheapest"),
+        .shaderFile = QStringLiteral("shadow/hard.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareNearest},
+        .parameters = {},
+        .defines = noDefines,
+        .uniforms = noUniforms,
+        .describe = plainLabel("hard"),
+        .sweep = {{QStringLiteral("hard"), {QStringLiteral("filter.mode=hard")}}},
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 0.0; },
+        .referencesStayNearer = [](const Settings&) { return true; },
+    });
+    t.push_back({
+        .mode = FilterMode::Pcf,
+        .key = QStringLiteral("pcf"),
+        .label = QStringLiteral("PCF N×N"),
+        .help = QStringLiteral("pcf (N x N taps): percentage-closer filtering over filter.kernel texels; softer edges at N² taps"),
+        .shaderFile = QStringLiteral("shadow/pcf.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareNearest},
+        .parameters = {QStringLiteral("filter.kernel")},
+        .defines = [](const Settings& s) { return QStringList{QStringLiteral("PCF_KERNEL %1").arg(s.filter.kernel)}; },
+        .uniforms = noUniforms,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("pcf %1×%1").arg(f.kernel); },
+        .sweep = {{QStringLiteral("pcf 1x1"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=1")}},
+            {QStringLiteral("pcf 3x3"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3")}},
+            {QStringLiteral("pcf 5x5"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=5")}},
+            {QStringLiteral("pcf 7x7"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}}},
+        .penumbraOnly = true,
+        .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double((f.kernel - 1) / 2); },
+        .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
+    });
+    t.push_back({
+        .mode = FilterMode::PcfDither4,
+        .key = QStringLiteral("pcf-dither4"),
+        .label = QStringLiteral("PCF dithered 4"),
+        .help = QStringLiteral("pcf-dither4 (4 dithered taps): a 4 x 4 footprint in 4 lookups, placed per 2 x 2 pixel block"),
+        .shaderFile = QStringLiteral("shadow/pcf-dither4.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareNearest},
+        .parameters = {},
+        .defines = noDefines,
+        .uniforms = noUniforms,
+        .describe = plainLabel("pcf-dither4"),
+        .sweep = {{QStringLiteral("pcf-dither4"), {QStringLiteral("filter.mode=pcf-dither4")}}},
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 2.5; },
+        .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
+    });
+    t.push_back({
+        .mode = FilterMode::Pcf64,
+        .key = QStringLiteral("pcf64"),
+        .label = QStringLiteral("PCF 8×8"),
+        .help = QStringLiteral("pcf64 (8 x 8 taps): the smoothest and most expensive box"),
+        .shaderFile = QStringLiteral("shadow/pcf64.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareNearest},
+        .parameters = {},
+        .defines = noDefines,
+        .uniforms = noUniforms,
+        .describe = plainLabel("pcf64"),
+        .sweep = {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}},
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 3.5; },
+        .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
+    });
+    t.push_back({
+        .mode = FilterMode::HwBilinear,
+        .key = QStringLiteral("hw-bilinear"),
+        .label = QStringLiteral("Hardware bilinear"),
+        .help = QStringLiteral("hw-bilinear (hardware compare, bilinear): one tap that blends four comparisons; smooth edges for the cost of one"),
+        .shaderFile = QStringLiteral("shadow/hw-bilinear.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareLinear},
+        .parameters = {},
+        .defines = noDefines,
+        .uniforms = noUniforms,
+        .describe = plainLabel("hw-bilinear"),
+        .sweep = {{QStringLiteral("hw-bilinear"), {QStringLiteral("filter.mode=hw-bilinear")}}},
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 0.0; },
+        .referencesStayNearer = [](const Settings&) { return true; },
+    });
+    t.push_back({
+        .mode = FilterMode::Poisson,
+        .key = QStringLiteral("poisson"),
+        .label = QStringLiteral("Poisson disk"),
+        .help = QStringLiteral("poisson (filter.taps taps): a Poisson disk of filter.radius texels, rotated per pixel; round, "
+            "noise instead of banding, its bias grows with each tap's distance"),
+        .shaderFile = QStringLiteral("shadow/poisson.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareNearest},
+        .parameters = {QStringLiteral("filter.taps"), QStringLiteral("filter.radius")},
+        .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
+        .uniforms = [](const Settings& s) { return std::vector<TechniqueUniform>{{"uPoissonRadius", float(s.filter.radius)}}; },
+        .describe = [](const FilterSettings& f) { return QStringLiteral("poisson %1 r%2").arg(f.taps).arg(f.radius); },
+        .sweep = {{QStringLiteral("poisson 16 r2.5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=16"),
+            QStringLiteral("filter.radius=2.5")}},
+            {QStringLiteral("poisson 32 r5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=32"),
+            QStringLiteral("filter.radius=5")}}},
+        .penumbraOnly = true,
+        .tapReach = [](const FilterSettings& f) -> std::optional<double> { return f.radius; },
+    });
+    t.push_back({
+        .mode = FilterMode::Pcss,
+        .key = QStringLiteral("pcss"),
+        .label = QStringLiteral("PCSS (soft)"),
+        .help = QStringLiteral("pcss (16 + filter.taps taps): percentage-closer soft shadows of a disk light of light.radius; "
+            "a blocker search, then a Poisson filter as wide as the penumbra there"),
+        .shaderFile = QStringLiteral("shadow/pcss.glsl"),
+        .map = ShadowMapKind::RawDepth,
+        .samplers = {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
+        .parameters = {QStringLiteral("filter.taps")},
+        .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
+        .uniforms = [](const Settings& s) {
+            // A directional light has the angular size the disk has seen from the target,
+            // as the area reference traces it (accuracy/ShadowReference.cpp).
+            double size = s.reference.lightRadius;
+            if (s.light.projection == LightProjection::Ortho)
+            size /= std::max(glm::length(s.light.position - s.light.target), 1e-12);
+            return std::vector<TechniqueUniform>{{"uLightSize", float(size)}};
+            },
+        .describe = [](const FilterSettings& f) { return QStringLiteral("pcss %1").arg(f.taps); },
+        .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
+            {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
+        .penumbraOnly = true,
+    });
     addMomentTechniques(t);
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (int(t[i].mode) != int(i))

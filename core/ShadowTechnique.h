@@ -7,6 +7,7 @@
 #include <QStringList>
 
 #include <functional>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -78,6 +79,17 @@ struct ShadowTechnique {
     // Reads the min/max depth mip of the map to skip its taps where the whole footprint is lit
     // or shadowed (filter.early_out): the renderer builds the mip with each shadow pass then.
     bool penumbraOnly = false;
+    // How far its taps read around the receiver's own texel, in texels (the shadow reach,
+    // core/ShadowReach.h), or nullopt where a lookup may read anywhere in the map: a blocker
+    // search spans up to half of it, and filtered moments read lit only to within their bias
+    // and bleeding reduction while a coarse mip or an anisotropic footprint averages texels far
+    // from the pixel.
+    std::function<std::optional<double>(const FilterSettings&)> tapReach = [](const FilterSettings&) -> std::optional<double> {
+        return std::nullopt;
+    };
+    // Whether every tap compares against the receiver's own depth (biased), never a depth grown
+    // away from the light along the receiver's plane or with the tap's distance.
+    std::function<bool(const Settings&)> referencesStayNearer = [](const Settings&) { return false; };
 };
 
 // What a storage of the light's views (renderer/ShadowStorage.h draws them) cannot do with

@@ -40,7 +40,11 @@ public:
 
     bool cullsFrontFaces(const Settings&) const override { return false; }
 
-    void clear(const LightFrame& light, const Settings& settings, const QRect& tile) override { m_pass.clear(light, settings, m_map, tile); }
+    void clear(const LightFrame& light, const Settings& settings, const QRect& tile) override
+    {
+        m_pass.clear(light, settings, m_map, tile);
+        m_blur.render(m_map, 0, tile);     // no blur: only the mips, which would keep what was cleared
+    }
 
     int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double* blurWallMs) override
     {

@@ -197,15 +197,23 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         const FittedLight& fit = m_views.set.views[i].fit;
         return fit.anythingToShadow ? std::optional<LightVolume>(fit.volume) : std::nullopt;
     };
-    bool any = fresh;
-    for (std::size_t i = 0; i < count; ++i)
-        any = any || m_viewVolumes[i] != wantedVolume(i);
+    bool any = fresh, draws = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::optional<LightVolume> wanted = wantedVolume(i);
+        const bool changed = fresh || m_viewVolumes[i] != wanted;
+        any = any || changed;
+        draws = draws || (changed && wanted);
+    }
     if (!any)
         return;
-    m_shadowTimer.begin();
+    // Only a frame that draws a view is a shadow pass, timed; clearing a tile is not.
+    if (draws)
+        m_shadowTimer.begin();
     QElapsedTimer total;
     total.start();
-    bool drawn = false;
+    // A fresh map reads lit everywhere first, tiles no view uses included (3 cascades in 2 x 2).
+    if (fresh && count < std::size_t(grid.columns * grid.rows))
+        storage.clear(m_views.frames.front(), settings);
     for (std::size_t i = 0; i < count; ++i) {
         const ShadowView& view = m_views.set.views[i];
         const QRect tile(view.column * size, view.row * size, size, size);
@@ -214,9 +222,9 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
             continue;
         QElapsedTimer wall;
         wall.start();
-        int draws = 0;
+        int viewDraws = 0;
         if (wanted)
-            draws = storage.draw(*m_scene, m_views.frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
+            viewDraws = storage.draw(*m_scene, m_views.frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
         else
             storage.clear(m_views.frames[i], settings, tile);
         if (timing == TimingMode::Finish && perView) {
@@ -225,17 +233,15 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         }
         if (perView) {
             stats.viewRendered[i] = true;
-            stats.viewDraws[i] = draws;
+            stats.viewDraws[i] = viewDraws;
         }
         m_viewVolumes[i] = wanted;
-        stats.shadowDraws += draws;
-        drawn = drawn || wanted.has_value();
+        stats.shadowDraws += viewDraws;
     }
-    m_shadowTimer.end();
     ++m_mapGeneration;
-    // A map only cleared (nothing to shadow anywhere) is no shadow pass.
-    if (!drawn)
+    if (!draws)
         return;
+    m_shadowTimer.end();
     stats.shadowPassRendered = true;
     ++m_shadowPassCount;
     if (timing == TimingMode::Finish) {

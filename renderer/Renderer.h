@@ -75,8 +75,10 @@ public:
     const ShadowViewFrames& shadowViews() const { return m_views; }
     // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
-    // How many times the shadow pass has actually run since construction.
+    // How many times the shadow pass has actually run (drawn a view) since construction.
     int shadowPassCount() const { return m_shadowPassCount; }
+    // Counts every change of the map's content: a pass, or a view's tile cleared to lit.
+    int mapGeneration() const { return m_mapGeneration; }
     // How many times the light's views were fitted; a frame whose inputs did not change does not.
     int fitCount() const { return m_fitCount; }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }

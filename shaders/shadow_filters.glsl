@@ -131,7 +131,7 @@ vec2 rangeTexel(int level, ivec2 p)
 // taps that would be skipped are the very comparisons the mip bounds.
 float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
 {
-    vec2 size = 1.0 / uShadowTexel;
+    vec2 size = floor(1.0 / uShadowTexel + 0.5);    // whole texels: 1 / (1 / 3072) may come out a hair under
     ivec2 lo = ivec2(floor((uv - radius) * size)) - 1;  // a texel of margin for rounding
     ivec2 hi = ivec2(floor((uv + radius) * size)) + 1;
     if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(size))))

@@ -40,7 +40,8 @@ vec4 viewPosition(int i, vec3 normal)
 #endif
 }
 
-// View i's visibility of the pixel; dx, dy are its screen-space steps in camera-relative world.
+// View i's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
+// camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
     vec4 shadowCoord = viewPosition(i, normal);
@@ -64,13 +65,18 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     gShadowUvWorld = uShadowViewUvWorld[i];
     gShadowDepthRange = uShadowViewDepth[i];
 #ifdef RECEIVER_PLANE
-    // The receiver's depth as a plane over the map: its screen-space change through this view's
-    // matrix (derivatives of coord itself are undefined where neighbours pick other views), as
-    // depth change per uv unit. A degenerate footprint (the plane seen edge-on from the camera)
-    // gets a flat plane.
+    // The receiver's depth as a plane over the map, as depth change per uv unit, from the
+    // pixel's screen-space change in map coordinates. A degenerate footprint (the plane seen
+    // edge-on from the camera) gets a flat plane.
+#ifdef SHADOW_VIEWS
+    // Through this view's matrix: derivatives of coord itself are undefined where neighbours
+    // pick other views.
     vec4 c0 = uShadowViews[i] * vec4(vPosition, 1.0);
     vec4 cx = uShadowViews[i] * vec4(vPosition + dx, 1.0), cy = uShadowViews[i] * vec4(vPosition + dy, 1.0);
     vec3 ddx = cx.xyz / cx.w - c0.xyz / c0.w, ddy = cy.xyz / cy.w - c0.xyz / c0.w;
+#else
+    vec3 ddx = dx, ddy = dy;
+#endif
     float det = ddx.x * ddy.y - ddx.y * ddy.x;
     gReceiverSlope = abs(det) > 1e-20 ? vec2(ddx.z * ddy.y - ddx.y * ddy.z, ddx.x * ddy.z - ddx.z * ddy.x) / det : vec2(0.0);
 #endif
@@ -107,8 +113,14 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 // The light rig's choice of view, then that view's visibility.
 float shadowVisibility(vec3 normal, vec3 toLight)
 {
-    // Screen-space steps of the position, taken here where every pixel of a quad still runs.
+    // Screen-space steps, taken here where every pixel of a quad still runs: of the position
+    // with several views, of the very coordinate looked up with one.
+#ifdef SHADOW_VIEWS
     vec3 dx = dFdx(vPosition), dy = dFdy(vPosition);
+#else
+    vec3 mapCoord = vShadowCoord.xyz / vShadowCoord.w;
+    vec3 dx = dFdx(mapCoord), dy = dFdy(mapCoord);
+#endif
 #if defined(LIGHT_POINT)
     vec3 d = vPosition - uLightPosition;
     vec3 a = abs(d);

@@ -196,6 +196,39 @@ private Q_SLOTS:
         qInfo().noquote() << numbers;
     }
 
+    // A tile no view uses (3 cascades in a 2 x 2 map) reads lit, also after 4 cascades drew into
+    // it: the depth-map view and its depth span show what the lookups can read, nothing older.
+    void aTileNoViewUsesReadsLit()
+    {
+        m_headless->renderer().setScene(std::nullopt);
+        Settings s = presetSettings("seed");
+        s.shadow.cascades = 4;
+        s.map.size = 256;
+        m_headless->renderFrame(s, QSize(160, 90));
+        s.shadow.cascades = 3;
+        m_headless->renderFrame(s, QSize(160, 90));
+        const ShadowMap& map = m_headless->renderer().shadowMap();
+        QCOMPARE(map.width(), 512);
+        QCOMPARE(map.height(), 512);
+        m_headless->makeCurrent();
+        GlFunctions* gl = m_headless->functions();
+        std::vector<float> depth(std::size_t(map.width()) * std::size_t(map.height()));
+        gl->glBindTexture(GL_TEXTURE_2D, map.texture());
+        gl->glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        gl->glBindTexture(GL_TEXTURE_2D, 0);
+        int drawn = 0, unusedWritten = 0;
+        for (int y = 0; y < map.height(); ++y) {
+            for (int x = 0; x < map.width(); ++x) {
+                const bool unused = x >= map.size() && y >= map.size();     // column 1, row 1: the fourth cascade's
+                const bool written = depth[std::size_t(y) * std::size_t(map.width()) + std::size_t(x)] < 1.0f;
+                unusedWritten += unused && written;
+                drawn += !unused && written;
+            }
+        }
+        QVERIFY(drawn > 1000);
+        QCOMPARE(unusedWritten, 0);
+    }
+
     // Cascades cover the whole shadow distance: the pixels within it agree with the reference,
     // and so do those next to each seam (within 5 % of a split), blended or not, stabilised
     // or not; pixels beyond the distance are lit, as the setting says.

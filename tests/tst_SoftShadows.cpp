@@ -274,6 +274,8 @@ private Q_SLOTS:
             QTest::newRow(qPrintable(QString::number(size))) << QStringList{QString("map.size=%1").arg(size)};
         // Several views side by side: a 2 x 2 and a 3 x 2 map of tiles.
         QTest::newRow("4 cascades of 500") << QStringList{"map.size=500", "shadow.cascades=4"};
+        QTest::newRow("2 cascades of 300") << QStringList{"map.size=300", "shadow.cascades=2"};
+        QTest::newRow("3 cascades of 256") << QStringList{"map.size=256", "shadow.cascades=3"};
         QTest::newRow("cube of 256") << QStringList{"map.size=256", "light.type=point", "light.projection=perspective"};
     }
 

@@ -54,8 +54,8 @@ void DepthMapView::setSource(SceneView* source)
     m_source = source;
     if (source)
         m_sourceConnection = connect(source, &SceneView::frameRendered, this, &DepthMapView::onSourceFrame);
-    m_seenShadowPasses = -1;
-    m_spanShadowPass = -1;
+    m_seenMapGeneration = -1;
+    m_spanMapGeneration = -1;
     update();
 }
 
@@ -63,15 +63,15 @@ void DepthMapView::onSourceFrame()
 {
     // A new shadow pass changes the map, a camera move the outline of what the camera sees.
     const Renderer* renderer = m_source ? m_source->renderer() : nullptr;
-    const int passes = renderer ? renderer->shadowPassCount() : -1;
+    const int passes = renderer ? renderer->mapGeneration() : -1;
     const Settings* settings = m_source && m_source->renderedSettings() ? &*m_source->renderedSettings() : nullptr;
     const bool enabled = settings && settings->shadow.enabled;
     const std::optional<glm::dmat4> camera = renderer ? std::optional(renderer->cameraFrame().viewProjection) : std::nullopt;
     // A moment technique's view also changes with the moment shown.
     const int momentView = settings ? int(settings->filter.mode) * 8 + settings->moments.view : 0;
-    if (passes == m_seenShadowPasses && enabled == m_seenShadowsEnabled && camera == m_seenCamera && momentView == m_seenMomentView)
+    if (passes == m_seenMapGeneration && enabled == m_seenShadowsEnabled && camera == m_seenCamera && momentView == m_seenMomentView)
         return;
-    m_seenShadowPasses = passes;
+    m_seenMapGeneration = passes;
     m_seenShadowsEnabled = enabled;
     m_seenCamera = camera;
     m_seenMomentView = momentView;
@@ -124,9 +124,9 @@ void DepthMapView::paintGL()
     if (m_pass && hasMap()) {
         const Renderer& renderer = *m_source->renderer();
         // The stretch is measured here, in this context, once per shadow pass.
-        if (m_spanShadowPass != renderer.shadowPassCount()) {
+        if (m_spanMapGeneration != renderer.mapGeneration()) {
             m_span = m_pass->measure(renderer.shadowMap(), renderer.lightFrame());
-            m_spanShadowPass = renderer.shadowPassCount();
+            m_spanMapGeneration = renderer.mapGeneration();
         }
         const DepthMapPicture picture(size());
         const RenderTarget target{defaultFramebufferObject(), size() * devicePixelRatio()};

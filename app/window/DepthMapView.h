@@ -82,9 +82,9 @@ private:
     GlFunctions* m_gl = nullptr;
     std::unique_ptr<DepthViewPass> m_pass;
     GlFramebuffer m_readFramebuffer;     // the shared map attached, for reading one texel
-    int m_seenShadowPasses = -1;
+    int m_seenMapGeneration = -1;
     std::optional<glm::dmat4> m_seenCamera;
-    int m_spanShadowPass = -1;           // the shadow pass m_span was measured after
+    int m_spanMapGeneration = -1;        // the map generation m_span was measured at
     std::optional<DepthSpan> m_span;
     bool m_seenShadowsEnabled = false;
     int m_seenMomentView = 0;       // filter.mode * 8 + moments.view of the last frame shown
