@@ -179,6 +179,52 @@ std::vector<SweepEntry> defaultSweep()
 
 } // namespace
 
+std::vector<SweepEntry> sweepAround(const Settings& base)
+{
+    const auto number = [](double v) { return QString::number(v, 'g', 17); };
+    std::vector<SweepEntry> entries{{QStringLiteral("current settings"), {}}};
+    for (const ShadowTechnique& technique : shadowTechniques()) {
+        Settings s = base;
+        s.filter.mode = technique.mode;
+        entries.push_back({filterLabel(s.filter), {QStringLiteral("filter.mode=") + technique.key}});
+        for (const TechniqueVariation& variation : technique.sweep) {
+            Settings v = base;
+            for (const QString& assignment : variation.assignments)
+                applyAssignment(v, assignment);
+            entries.push_back({filterLabel(v.filter), variation.assignments});
+        }
+    }
+    for (const int size : {base.map.size / 2, base.map.size * 2})
+        entries.push_back({QStringLiteral("map %1").arg(size) + QChar(0x00B2), {QStringLiteral("map.size=%1").arg(size)}});
+    for (const double factor : {0.5, 2.0, 0.0})
+        entries.push_back({factor == 0.0 ? QStringLiteral("no bias") : QStringLiteral("bias ×%1").arg(factor),
+                           {QStringLiteral("bias.slope=") + number(base.bias.slope * factor), QStringLiteral("bias.min=") + number(base.bias.min * factor)}});
+    entries.push_back({base.bias.cullFront ? QStringLiteral("no front-face culling") : QStringLiteral("front-face culling"),
+                       {QStringLiteral("bias.cull_front=%1").arg(base.bias.cullFront ? "false" : "true")}});
+
+    // Only what is valid on `base` (errors; warnings pass), each configuration once, the first
+    // label kept.
+    std::vector<SweepEntry> kept;
+    std::vector<Settings> seen;
+    for (const SweepEntry& entry : entries) {
+        Settings s = base;
+        try {
+            for (const QString& a : entry.assignments)
+                applyAssignment(s, a);
+        } catch (const SettingsError&) {
+            continue;   // out of a key's range (a map twice the largest)
+        }
+        const std::vector<SettingsIssue> issues = validate(s);  // errors come first
+        if (!issues.empty() && issues.front().severity == SettingsIssue::Severity::Error)
+            continue;
+        if (std::find(seen.begin(), seen.end(), s) != seen.end())
+            continue;
+        seen.push_back(s);
+        kept.push_back(entry);
+    }
+    return kept;
+}
+
 std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& path)
 {
     const QString name = displayText(path);
@@ -224,11 +270,13 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("around")};
 }
 
-std::vector<SweepEntry> loadSweep(const QString& nameOrFile)
+std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& base)
 {
+    if (nameOrFile == u"around")
+        return sweepAround(base);
     if (nameOrFile == u"default")
         return defaultSweep();
     if (nameOrFile == u"filters")

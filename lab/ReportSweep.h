@@ -18,12 +18,19 @@ struct SweepEntry {
 
 // The built-in sweeps: "default" (all of the below, plus the classic tutorial configuration),
 // "filters", "resolution", "bias", "lights", "filterable" (the moment techniques over blur
-// widths, both formats, with and without bleeding reduction); or a JSON file: an array of {"label": ..., "set": {key: value}}
+// widths, both formats, with and without bleeding reduction), "around" (sweepAround()); or a JSON file: an array of {"label": ..., "set": {key: value}}
 // objects (or {"configurations": [...]}). Throws SettingsError with the file named.
 // The file is read once, within readInputFile()'s limits; every entry must be an object with
 // only "label" (a string) and "set" (an object of setting values).
-std::vector<SweepEntry> loadSweep(const QString& nameOrFile);
+// "around" is sweepAround(base).
+std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& base = Settings());
 QStringList builtInSweeps();
+
+// The accuracy dock's sweep, and `report --sweep around`: the base settings first, then one
+// change at a time: each filter and the variations its row of the technique table lists, half
+// and double the map, bias halved, doubled and off, front-face culling toggled. Changes that
+// make `base` invalid or repeat an earlier configuration are left out.
+std::vector<SweepEntry> sweepAround(const Settings& base);
 
 // The sweep a file's bytes describe, checked as loadSweep() does; `path` names it in errors.
 std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& path);

@@ -7,6 +7,7 @@
 #include "ReportWriter.h"
 #include "SceneLibrary.h"
 #include "SettingsKeys.h"
+#include "ShadowTechnique.h"
 
 #include <QFile>
 #include <QImage>
@@ -176,7 +177,7 @@ private slots:
 
         // Every built-in sweep comes out with no two configurations alike and no label lost.
         for (const QString& name : builtInSweeps()) {
-            const std::vector<SweepEntry> entries = loadSweep(name);
+            const std::vector<SweepEntry> entries = loadSweep(name, base);
             const std::vector<SweepConfiguration> configurations = distinctConfigurations(base, entries);
             for (std::size_t i = 0; i < configurations.size(); ++i)
                 for (std::size_t j = i + 1; j < configurations.size(); ++j)
@@ -186,6 +187,51 @@ private slots:
                                      [&](const SweepConfiguration& c) { return c.label.split(" = ").contains(e.label); }),
                          qPrintable(e.label));
             }
+        }
+    }
+
+    // The dock's sweep is the report's "around": on any base, each entry valid and distinct, the
+    // base first, every technique tried, one change at a time.
+    void sweepAroundVariesOneThingAtATime_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("seed") << "seed" << QStringList{};
+        QTest::newRow("city, pcf 5, texel bias") << "city" << QStringList{"filter.mode=pcf", "filter.kernel=5", "bias.space=texel", "bias.slope=2", "bias.min=0.5"};
+        QTest::newRow("largest map, culled") << "torus" << QStringList{"map.size=16384", "bias.cull_front=true"};
+        QTest::newRow("smallest map, no bias") << "cubes" << QStringList{"map.size=16", "bias.slope=0", "bias.min=0"};
+        QTest::newRow("4 cascades, vsm") << "seed" << QStringList{"shadow.cascades=4", "filter.mode=vsm"};
+        QTest::newRow("point light") << "seed" << QStringList{"light.type=point"};
+    }
+
+    void sweepAroundVariesOneThingAtATime()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        Settings base = presetSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(base, a);
+        const std::vector<SweepEntry> entries = loadSweep(QStringLiteral("around"), base);
+        QVERIFY(entries.size() > shadowTechniques().size());
+        QVERIFY(entries.front().assignments.isEmpty());
+        const std::vector<SweepConfiguration> configurations = distinctConfigurations(base, entries);   // throws on an invalid one
+        QCOMPARE(configurations.size(), entries.size());
+        QVERIFY(configurations.front().settings == base);
+        for (const ShadowTechnique& t : shadowTechniques()) {
+            QVERIFY2(std::any_of(configurations.begin(), configurations.end(), [&](const SweepConfiguration& c) { return c.settings.filter.mode == t.mode; }),
+                     qPrintable(t.key));
+        }
+        for (const SweepConfiguration& c : configurations) {
+            QVERIFY2(c.settings.map.size >= 16 && c.settings.map.size <= 16384, qPrintable(c.label));   // map.size's range
+            QVERIFY2(c.label != QStringLiteral("map %1²").arg(base.map.size), qPrintable(c.label));
+        }
+        // The bias steps scale the bias as set, in its own units.
+        const auto halved = std::find_if(configurations.begin(), configurations.end(), [](const SweepConfiguration& c) { return c.label == u"bias ×0.5"; });
+        if (base.bias.slope > 0.0 || base.bias.min > 0.0) {
+            QVERIFY(halved != configurations.end());
+            QCOMPARE(halved->settings.bias.slope, base.bias.slope * 0.5);
+            QCOMPARE(halved->settings.bias.min, base.bias.min * 0.5);
+            QVERIFY(halved->settings.bias.space == base.bias.space);
         }
     }
 

@@ -94,8 +94,8 @@ int runReport(const QStringList& arguments)
         addSettingsOptions(parser);
         parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
         parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, filterable (moment techniques, blur "
-                                         "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not), or a JSON file "
-                                         "(default: default)."),
+                                         "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not), around (the settings given, "
+                                         "one change at a time, as the accuracy dock sweeps), or a JSON file (default: default)."),
                           QStringLiteral("name|file.json"), QStringLiteral("default")});
         parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
         parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration at most (default 30)."), QStringLiteral("n"),
@@ -123,7 +123,7 @@ int runReport(const QStringList& arguments)
         const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
         const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
         // Every entry is checked before any work starts; identical configurations are measured once.
-        const std::vector<SweepConfiguration> sweep = distinctConfigurations(base, loadSweep(parser.value(QStringLiteral("sweep"))));
+        const std::vector<SweepConfiguration> sweep = distinctConfigurations(base, loadSweep(parser.value(QStringLiteral("sweep")), base));
         const Settings tutorial = applySweepEntry(base, {QStringLiteral("tutorial"), tutorialAssignments()});
         const int flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
 

@@ -1,5 +1,7 @@
 #include "AccuracyController.h"
 
+#include "ReportSweep.h"
+
 #include "AccuracyMeter.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
@@ -21,55 +23,6 @@ namespace shadowlab {
 namespace {
 
 constexpr int kProgressSteps = 1000;
-
-// One configuration of a sweep before it is measured.
-struct Variation {
-    QString label;
-    Settings settings;
-};
-
-// The current settings first, then one change at a time: each filter and the variations its
-// row of the technique table lists (PCF 1 to 7), half and
-// double the map, bias halved, doubled and off, front-face culling toggled. Changes that make
-// the settings invalid or repeat an earlier configuration are left out.
-std::vector<Variation> sweepAround(const Settings& base, int maxTextureSize)
-{
-    std::vector<Variation> out{{QStringLiteral("current settings"), base}};
-    auto add = [&](const QString& label, Settings s) {
-        const std::vector<SettingsIssue> issues = validate(s);  // errors come first
-        if (s.map.size > maxTextureSize || (!issues.empty() && issues.front().severity == SettingsIssue::Severity::Error))
-            return;
-        if (std::any_of(out.begin(), out.end(), [&](const Variation& v) { return v.settings == s; }))
-            return;
-        out.push_back({label, s});
-    };
-    for (const ShadowTechnique& technique : shadowTechniques()) {
-        Settings s = base;
-        s.filter.mode = technique.mode;
-        add(filterLabel(s.filter), s);
-        for (const TechniqueVariation& variation : technique.sweep) {
-            Settings v = base;
-            for (const QString& assignment : variation.assignments)
-                applyAssignment(v, assignment);
-            add(filterLabel(v.filter), v);
-        }
-    }
-    for (int size : {base.map.size / 2, base.map.size * 2}) {
-        Settings s = base;
-        s.map.size = size;
-        add(QStringLiteral("map %1").arg(squareSize(size)), s);
-    }
-    for (double factor : {0.5, 2.0, 0.0}) {
-        Settings s = base;
-        s.bias.slope *= factor;
-        s.bias.min *= factor;
-        add(factor == 0.0 ? QStringLiteral("no bias") : QStringLiteral("bias ×%1").arg(factor), s);
-    }
-    Settings culled = base;
-    culled.bias.cullFront = !base.bias.cullFront;
-    add(culled.bias.cullFront ? QStringLiteral("front-face culling") : QStringLiteral("no front-face culling"), culled);
-    return out;
-}
 
 } // namespace
 
@@ -411,8 +364,11 @@ void AccuracyController::startSweep()
     const int maxTextureSize = headless().renderer().maxTextureSize();
     m_sweepPlan.clear();
     m_sweepKey = referenceKeyFor(settings(), measureSize(), m_areaSamplesPerAxis);
-    for (Variation& v : sweepAround(settings(), maxTextureSize))
-        m_sweepPlan.push_back({v.label, std::move(v.settings), 0.0, 0.0});
+    for (const SweepEntry& entry : sweepAround(settings())) {
+        Settings s = applySweepEntry(settings(), entry);    // valid: sweepAround() keeps only what is
+        if (s.map.size <= maxTextureSize)
+            m_sweepPlan.push_back({entry.label, std::move(s), 0.0, 0.0});
+    }
     m_sweepPoints.clear();
     m_sweepSkipped.clear();
     m_sweepNext = 0;
