@@ -298,21 +298,10 @@ void LitPass::drawObjects(Program& p, const GpuScene& scene, const CameraFrame& 
     }
 }
 
-int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
-                    const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
-                    const MomentsMap* moments)
+void LitPass::sortByReach(const GpuScene& scene, const CameraFrame& camera, bool shadows)
 {
-    if (settings.shadow.enabled && map != nullptr && shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments
-        && (moments == nullptr || moments->size() != map->size()))
-        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
-    const bool readsRange = usesDepthRange(settings) && map != nullptr;
-    if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
-        throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
-    const bool shadows = settings.shadow.enabled && map != nullptr;
     const auto& items = scene.drawItems();
     const bool reachKnown = shadows && m_reach != nullptr && m_reach->objects.size() == items.size();
-
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     // Nearest first, so the depth test rejects hidden pixels before they are shaded: on a
     // software rasteriser every shaded pixel costs, and the ground plane is behind everything.
     m_drawOrder.clear();
@@ -344,12 +333,10 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         }
     }
     m_reachUse = ReachUse{int(m_lookupOrder.size() + m_maskedLookupOrder.size()), int(m_plainOrder.size() + m_maskedPlainOrder.size()), mask};
+}
 
-    PassState state;
-    state.viewport = QRect(QPoint(0, 0), target.size);
-    state.depthTest = true;
-    state.cullFace = GL_BACK;
-    applyPassState(m_gl, state);
+void LitPass::clearTarget(bool measure)
+{
     const GLfloat clearColour[4] = {0.11f, 0.12f, 0.15f, 1.0f};
     m_gl->glClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
     m_gl->glClearDepth(1.0);
@@ -363,78 +350,115 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         m_gl->glClearBufferfv(GL_COLOR, 3, clearColour);    // the background shaded again is itself
         m_gl->glClearBufferfv(GL_COLOR, 4, background);
     }
-    // The lookups' draws stay inside the reach's rectangle on screen, so the rasteriser skips
-    // the rest of the frame for them (a pixel of margin for rounding).
-    QRect reachPixels;
-    if (mask) {
-        const glm::dvec4 r = m_reach->screenRect;
-        const QSize size = target.size;
-        const int x0 = std::max(int(std::floor((r.x + 1.0) * 0.5 * size.width())) - 1, 0);
-        const int y0 = std::max(int(std::floor((r.y + 1.0) * 0.5 * size.height())) - 1, 0);
-        const int x1 = std::min(int(std::ceil((r.z + 1.0) * 0.5 * size.width())) + 1, size.width());
-        const int y1 = std::min(int(std::ceil((r.w + 1.0) * 0.5 * size.height())) + 1, size.height());
-        reachPixels = QRect(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
-        drawReachMask(camera, reachPixels);
-        applyPassState(m_gl, state);
-    }
+}
 
-    if (shadows) {
-        // Each sampler the technique's row asks for reads the map on a unit of its own.
-        const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
-        for (std::size_t i = 0; i < samplers.size(); ++i) {
-            const GLuint unit = kShadowUnit + GLuint(i);
-            const bool readsMoments = samplers[i] == ShadowSampler::Moments;
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, readsMoments ? moments->texture() : map->texture());
-            m_gl->glBindSampler(unit, readsMoments ? moments->sampler() : map->sampler(samplers[i]));
-        }
-        if (readsRange) {
-            const GLuint unit = kShadowUnit + GLuint(samplers.size());
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, depthRange->texture());
-            m_gl->glBindSampler(unit, 0);
-        }
+QRect LitPass::reachPixels(QSize size) const
+{
+    // A pixel of margin for rounding.
+    const glm::dvec4 r = m_reach->screenRect;
+    const int x0 = std::max(int(std::floor((r.x + 1.0) * 0.5 * size.width())) - 1, 0);
+    const int y0 = std::max(int(std::floor((r.y + 1.0) * 0.5 * size.height())) - 1, 0);
+    const int x1 = std::min(int(std::ceil((r.z + 1.0) * 0.5 * size.width())) + 1, size.width());
+    const int y1 = std::min(int(std::ceil((r.w + 1.0) * 0.5 * size.height())) + 1, size.height());
+    return QRect(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+}
+
+void LitPass::bindShadowTextures(const Settings& settings, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange)
+{
+    // Each sampler the technique's row asks for reads the map on a unit of its own.
+    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    for (std::size_t i = 0; i < samplers.size(); ++i) {
+        const GLuint unit = kShadowUnit + GLuint(i);
+        const bool readsMoments = samplers[i] == ShadowSampler::Moments;
+        m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, readsMoments ? moments->texture() : map.texture());
+        m_gl->glBindSampler(unit, readsMoments ? moments->sampler() : map.sampler(samplers[i]));
+    }
+    if (depthRange) {
+        const GLuint unit = kShadowUnit + GLuint(samplers.size());
+        m_gl->glActiveTexture(GL_TEXTURE0 + unit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, depthRange->texture());
+        m_gl->glBindSampler(unit, 0);
     }
     m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
+}
+
+void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
+{
+    for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size() + (readsRange ? 1 : 0); ++i) {
+        m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit + GLuint(i));
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+        m_gl->glBindSampler(kShadowUnit + GLuint(i), 0);
+    }
+    m_gl->glActiveTexture(GL_TEXTURE0);
+}
+
+void LitPass::drawMaskedOrder(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+                              const std::vector<std::pair<double, std::size_t>>& everywhere,
+                              const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor)
+{
+    drawObjects(p, scene, camera, light, everywhere);
+    if (masked.empty())
+        return;
+    m_gl->glEnable(GL_STENCIL_TEST);
+    m_gl->glStencilFunc(stencilFunc, 1, 0xff);
+    if (scissor) {
+        m_gl->glEnable(GL_SCISSOR_TEST);
+        m_gl->glScissor(scissor->x(), scissor->y(), scissor->width(), scissor->height());
+    }
+    drawObjects(p, scene, camera, light, masked);
+    m_gl->glDisable(GL_SCISSOR_TEST);
+    m_gl->glDisable(GL_STENCIL_TEST);
+}
+
+int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+                    const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
+                    const MomentsMap* moments)
+{
+    if (settings.shadow.enabled && map != nullptr && shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments
+        && (moments == nullptr || moments->size() != map->size()))
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
+    const bool readsRange = usesDepthRange(settings) && map != nullptr;
+    if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
+        throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
+    const bool shadows = settings.shadow.enabled && map != nullptr;
+
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    sortByReach(scene, camera, shadows);
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), target.size);
+    state.depthTest = true;
+    state.cullFace = GL_BACK;
+    applyPassState(m_gl, state);
+    clearTarget(measure);
+    // The lookups' draws stay inside the reach's rectangle on screen, so the rasteriser skips
+    // the rest of the frame for them.
+    QRect pixels;
+    if (m_reachUse.masked) {
+        pixels = reachPixels(target.size);
+        drawReachMask(camera, pixels);
+        applyPassState(m_gl, state);
+    }
+    if (shadows)
+        bindShadowTextures(settings, *map, moments, readsRange ? depthRange : nullptr);
 
     const ShadowMap* shadowMap = shadows ? map : nullptr;
     if (!m_lookupOrder.empty() || !m_maskedLookupOrder.empty()) {
         Program& lookup = programFor(settings, measure, light.reversedDepth);
         setFrameUniforms(lookup, camera, light, settings, shadowMap, readsRange, depthRange);
-        drawObjects(lookup, scene, camera, light, m_lookupOrder);
-        if (!m_maskedLookupOrder.empty()) {
-            m_gl->glEnable(GL_STENCIL_TEST);
-            m_gl->glStencilFunc(GL_EQUAL, 1, 0xff);
-            m_gl->glEnable(GL_SCISSOR_TEST);
-            m_gl->glScissor(reachPixels.x(), reachPixels.y(), reachPixels.width(), reachPixels.height());
-            drawObjects(lookup, scene, camera, light, m_maskedLookupOrder);
-            m_gl->glDisable(GL_SCISSOR_TEST);
-            m_gl->glDisable(GL_STENCIL_TEST);
-        }
+        drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &pixels);
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
         Program& plain = programFor(settings, measure, light.reversedDepth, true);
         setFrameUniforms(plain, camera, light, settings, shadowMap, readsRange, depthRange);
-        drawObjects(plain, scene, camera, light, m_plainOrder);
-        if (!m_maskedPlainOrder.empty()) {
-            m_gl->glEnable(GL_STENCIL_TEST);
-            m_gl->glStencilFunc(GL_NOTEQUAL, 1, 0xff);
-            drawObjects(plain, scene, camera, light, m_maskedPlainOrder);
-            m_gl->glDisable(GL_STENCIL_TEST);
-        }
+        drawMaskedOrder(plain, scene, camera, light, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
     }
     const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());
 
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    if (shadows) {
-        for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size() + (readsRange ? 1 : 0); ++i) {
-            m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit + GLuint(i));
-            m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-            m_gl->glBindSampler(kShadowUnit + GLuint(i), 0);
-        }
-        m_gl->glActiveTexture(GL_TEXTURE0);
-    }
+    if (shadows)
+        unbindShadowTextures(settings, readsRange);
     m_gl->glDisable(GL_CULL_FACE);
     return draws;
 }

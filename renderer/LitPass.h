@@ -85,6 +85,20 @@ private:
     void drawReachMask(const CameraFrame& camera, const QRect& pixels);
     void drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                      const std::vector<std::pair<double, std::size_t>>& order);
+    // The draw orders of this frame: the receivers in view nearest first, split by the reach;
+    // sets m_reachUse (whether a mask is drawn).
+    void sortByReach(const GpuScene& scene, const CameraFrame& camera, bool shadows);
+    // Colour, depth and stencil, and the measurement's targets.
+    void clearTarget(bool measure);
+    // The reach's rectangle on screen in pixels of a target of `size`.
+    QRect reachPixels(QSize size) const;
+    void bindShadowTextures(const Settings& settings, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange);
+    void unbindShadowTextures(const Settings& settings, bool readsRange);
+    // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1 (inside
+    // `scissor` when given).
+    void drawMaskedOrder(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+                         const std::vector<std::pair<double, std::size_t>>& everywhere,
+                         const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;
