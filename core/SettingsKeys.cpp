@@ -123,7 +123,7 @@ template <typename Field>
 Entry numberKey(const char* key, Range range, Field field, const char* help)
 {
     const QString k = QString::fromLatin1(key);
-    return {SettingKey{k, QStringLiteral("number"), range.text(), QString::fromUtf8(help), {}, range.lo, range.hi},
+    return {SettingKey{k, QStringLiteral("number"), range.text(), QString::fromUtf8(help), {}, range.lo, range.hi, {}},
             [field](const Settings& s) { return formatNumber(field(s)); },
             [field, range, k](Settings& s, const QString& v) { field(s) = parseNumber(k, v, range); },
             [field, range](const Settings& s) { return checkNumber(field(s), range); }};
@@ -139,7 +139,7 @@ Entry integerKey(const char* key, int lo, int hi, bool oddOnly, Field field, con
             return QStringLiteral("%1 is out of range; allowed: %2").arg(v).arg(rangeText);
         return std::nullopt;
     };
-    return {SettingKey{k, QStringLiteral("integer"), rangeText, QString::fromUtf8(help), {}, double(lo), double(hi)},
+    return {SettingKey{k, QStringLiteral("integer"), rangeText, QString::fromUtf8(help), {}, double(lo), double(hi), {}},
             [field](const Settings& s) { return QString::number(field(s)); },
             [field, check, k, rangeText](Settings& s, const QString& v) {
                 bool ok = false;
@@ -157,7 +157,7 @@ template <typename Field>
 Entry boolKey(const char* key, Field field, const char* help)
 {
     const QString k = QString::fromLatin1(key);
-    return {SettingKey{k, QStringLiteral("bool"), QStringLiteral("true | false"), QString::fromUtf8(help), {}, 0, 1},
+    return {SettingKey{k, QStringLiteral("bool"), QStringLiteral("true | false"), QString::fromUtf8(help), {}, 0, 1, {}},
             [field](const Settings& s) { return field(s) ? QStringLiteral("true") : QStringLiteral("false"); },
             [field, k](Settings& s, const QString& v) {
                 const QString t = v.trimmed().toLower();
@@ -176,7 +176,7 @@ Entry vec3Key(const char* key, Field field, const char* help)
 {
     const QString k = QString::fromLatin1(key);
     return {SettingKey{k, QStringLiteral("vec3"), QStringLiteral("x,y,z, each finite with |x| <= 1e7"), QString::fromUtf8(help), {},
-                       -kMaxCoordinate, kMaxCoordinate},
+                       -kMaxCoordinate, kMaxCoordinate, {}},
             [field](const Settings& s) { return formatVec3(field(s)); },
             [field, k](Settings& s, const QString& v) {
                 const QStringList parts = v.split(QLatin1Char(','));
@@ -203,7 +203,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
 {
     const QString k = QString::fromLatin1(key);
     const QString rangeText = names.join(QStringLiteral(" | "));
-    return {SettingKey{k, QStringLiteral("choice"), rangeText, QString::fromUtf8(help), names, 0, double(names.size() - 1)},
+    return {SettingKey{k, QStringLiteral("choice"), rangeText, QString::fromUtf8(help), names, 0, double(names.size() - 1), {}},
             [field, names](const Settings& s) { return names.value(int(field(s))); },
             [field, names, k, rangeText, then](Settings& s, const QString& v) {
                 const int index = names.indexOf(v.trimmed().toLower());
@@ -239,7 +239,7 @@ Entry sceneKey()
     return {SettingKey{QStringLiteral("scene"), QStringLiteral("choice"), rangeText,
                        QStringLiteral("Built-in scene preset, or the path of a model (glTF, OBJ, PLY, STL, COLLADA, FBX) or scene "
                                       "file (.json); choosing one also resets light and camera to the scene's"),
-                       names, 0, double(names.size() - 1)},
+                       names, 0, double(names.size() - 1), {}},
             [](const Settings& s) { return s.scene; },
             [names, rangeText](Settings& s, const QString& v) {
                 const QString name = v.trimmed().toLower();
@@ -300,17 +300,35 @@ Entry filterModeKey()
     return choiceKey<FilterMode>("filter.mode", kFilterNames, [](auto& s) -> auto& { return s.filter.mode; }, help.constData());
 }
 
+// The dock's groups (settingGroups() lists them in order).
+constexpr QLatin1String kLight("Light"), kShadowMap("Shadow map"), kBias("Bias"), kFiltering("Filtering"), kMomentsMap("Moments map"),
+    kShading("Shading"), kReference("Reference"), kCamera("Camera"), kScene("Scene");
+
+// `entry` with how the dock shows it.
+Entry presented(Entry entry, SettingPresentation look)
+{
+    entry.info.presentation = std::move(look);
+    return entry;
+}
+
 // A technique's parameter, typed and ranged as the technique table says.
 Entry parameterKey(const TechniqueParameter& p)
 {
     const QByteArray key = p.key.toLatin1();    // copied into the entry
     const QByteArray help = p.help.toUtf8();
+    // Shown as the technique table says, its whole range on the slider.
+    const auto look = [&p](int decimals) {
+        return SettingPresentation{.label = p.label, .unit = p.unit, .decimals = decimals, .sliderLow = p.minimum, .sliderHigh = p.maximum,
+                                   .group = kFiltering};
+    };
     if (const auto* field = std::get_if<int FilterSettings::*>(&p.field))
-        return integerKey(key.constData(), int(p.minimum), int(p.maximum), p.oddOnly,
-                          [m = *field](auto& s) -> auto& { return s.filter.*m; }, help.constData());
+        return presented(integerKey(key.constData(), int(p.minimum), int(p.maximum), p.oddOnly,
+                                    [m = *field](auto& s) -> auto& { return s.filter.*m; }, help.constData()),
+                         look(0));
     const auto member = std::get<double FilterSettings::*>(p.field);
-    return numberKey(key.constData(), Range{p.minimum, p.maximum}, [member](auto& s) -> auto& { return s.filter.*member; },
-                     help.constData());
+    return presented(numberKey(key.constData(), Range{p.minimum, p.maximum}, [member](auto& s) -> auto& { return s.filter.*member; },
+                               help.constData()),
+                     look(p.decimals));
 }
 
 // The blur width: 0 for none or an odd tap count, so the kernel centres on the texel.
@@ -327,7 +345,7 @@ Entry blurKey()
                        QStringLiteral("Separable Gaussian blur of the moments map, its width in texels (moment techniques): wider "
                                       "softens the penumbra and hides aliasing for two full-map passes of that many taps, and "
                                       "spreads light bleeding further; 0 leaves the map as rendered"),
-                       {}, 0.0, double(kMaxMomentBlur)},
+                       {}, 0.0, double(kMaxMomentBlur), {}},
             [](const Settings& s) { return QString::number(s.moments.blur); },
             [check, k, rangeText](Settings& s, const QString& v) {
                 bool ok = false;
@@ -344,91 +362,133 @@ Entry blurKey()
 std::vector<Entry> makeEntries()
 {
     std::vector<Entry> e;
-    e.push_back(sceneKey());
-    e.push_back(vec3Key("light.position", [](auto& s) -> auto& { return s.light.position; },
-                        "Where the light is; with an ortho light only its direction to the target matters"));
-    e.push_back(vec3Key("light.target", [](auto& s) -> auto& { return s.light.target; },
-                        "The point the light looks at; the centre of the shadow map"));
-    e.push_back(lightTypeKey());
-    e.push_back(projectionKey());
-    e.push_back(numberKey("light.falloff", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.light.falloff; },
-                          "Spot light: share of the cone's half-angle (light.fov) over which the light fades to nothing at the rim; 0 is a hard edge"));
-    e.push_back(numberKey("light.extent", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.light.extent; },
-                          "Ortho half-size in world units: larger covers more of the scene with coarser texels (blockier, more acne)"));
-    e.push_back(numberKey("light.fov", Range{0.0, 180.0, true, true}, [](auto& s) -> auto& { return s.light.fov; },
-                          "Perspective light's full angle in degrees: wider covers more with coarser texels"));
-    e.push_back(numberKey("light.near", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.nearPlane; },
-                          "Light near plane in world units (> 0 for perspective): pushing it out buys depth precision, casters before it are clamped"));
-    e.push_back(numberKey("light.far", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.farPlane; },
-                          "Light far plane in world units: beyond it everything is lit; a tight far plane buys depth precision"));
-    e.push_back(numberKey("light.radius", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.reference.lightRadius; },
-                          "Radius of the disk light the area reference traces (world units): the soft shadow filtered modes are measured against"));
-    e.push_back(choiceKey<LightFit>("light.fit", kFitNames, [](auto& s) -> auto& { return s.light.fit; },
-                                    "scene: shrink the light volume (extent or fov, near, far) to what casts onto what the camera sees, for smaller texels and finer depth; manual: use it as set"));
-    e.push_back(boolKey("light.stabilize", [](auto& s) -> auto& { return s.light.stabilize; },
-                        "Snap the fitted volume to whole texels and coarse size steps: no shimmer and no shadow-pass redraw on small camera moves, at slightly larger texels"));
-    e.push_back(integerKey("map.size", 16, kMaxImageSide, false, [](auto& s) -> auto& { return s.map.size; },
-                           "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"));
-    e.push_back(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
-                                       "Depth texture format: 32-bit float keeps precision with far-away near/far ratios"));
-    e.push_back(choiceKey<BiasSpace>("bias.space", kBiasSpaceNames, [](auto& s) -> auto& { return s.bias.space; },
-                                     "Unit of bias.slope and bias.min: world units along the ray to the light (same offset for any near/far, map size or fit), texels of the map (follows the resolution), or depth-buffer units (the classic form, whose world offset grows with far - near)"));
-    e.push_back(numberKey("bias.slope", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.slope; },
-                          "Slope-scaled bias, times (1 - N.L), in the unit of bias.space (world units, texels, or depth units <= 0.5): too little shows acne on lit slopes, too much detaches shadows (peter panning)"));
-    e.push_back(numberKey("bias.min", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.min; },
-                          "Minimum bias, in the unit of bias.space (world units, texels, or depth units <= 0.5): removes acne on surfaces facing the light, too much makes shadows leak at contacts"));
-    e.push_back(numberKey("bias.normal", Range{0.0, 8.0}, [](auto& s) -> auto& { return s.bias.normal; },
-                          "Normal-offset bias in shadow-map texels: looks the shadow up from a point moved off the surface, against acne at grazing angles without detaching contact shadows as much as depth bias"));
-    e.push_back(boolKey("bias.cull_front", [](auto& s) -> auto& { return s.bias.cullFront; },
-                        "Render back faces into the shadow map: removes acne on closed lit faces, can leak light where thin casters touch"));
-    e.push_back(numberKey("bias.polygon_factor", Range{-16.0, 16.0}, [](auto& s) -> auto& { return s.bias.polygonFactor; },
-                          "glPolygonOffset factor in the shadow pass: hardware slope bias, against acne at the cost of peter panning"));
-    e.push_back(numberKey("bias.polygon_units", Range{-10000.0, 10000.0}, [](auto& s) -> auto& { return s.bias.polygonUnits; },
-                          "glPolygonOffset units in the shadow pass: constant hardware bias in depth-buffer steps"));
-    e.push_back(boolKey("bias.receiver_plane", [](auto& s) -> auto& { return s.bias.receiverPlane; },
-                        "Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane (its depth gradient in shadow-map space): no over-darkening of lit slopes by wide kernels with a small bias, but acne or leaks on curved receivers and at silhouettes, where the gradient is wrong"));
-    e.push_back(filterModeKey());
+    e.push_back(presented(sceneKey(),
+                          {.label = QStringLiteral("Preset"), .group = kScene}));
+    e.push_back(presented(vec3Key("light.position", [](auto& s) -> auto& { return s.light.position; },
+                        "Where the light is; with an ortho light only its direction to the target matters"),
+                          {.label = QStringLiteral("Position"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -10.0, .sliderHigh = 10.0, .group = kLight}));
+    e.push_back(presented(vec3Key("light.target", [](auto& s) -> auto& { return s.light.target; },
+                        "The point the light looks at; the centre of the shadow map"),
+                          {.label = QStringLiteral("Target"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -5.0, .sliderHigh = 5.0, .group = kLight}));
+    e.push_back(presented(lightTypeKey(),
+                          {.label = QStringLiteral("Type"), .group = kLight}));
+    e.push_back(presented(projectionKey(),
+                          {.label = QStringLiteral("Projection"), .group = kLight}));
+    e.push_back(presented(numberKey("light.falloff", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.light.falloff; },
+                          "Spot light: share of the cone's half-angle (light.fov) over which the light fades to nothing at the rim; 0 is a hard edge"),
+                          {.label = QStringLiteral("Cone falloff"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 1.0, .group = kLight}));
+    e.push_back(presented(numberKey("light.extent", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.light.extent; },
+                          "Ortho half-size in world units: larger covers more of the scene with coarser texels (blockier, more acne)"),
+                          {.label = QStringLiteral("Extent"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = 0.5, .sliderHigh = 30.0, .group = kLight}));
+    e.push_back(presented(numberKey("light.fov", Range{0.0, 180.0, true, true}, [](auto& s) -> auto& { return s.light.fov; },
+                          "Perspective light's full angle in degrees: wider covers more with coarser texels"),
+                          {.label = QStringLiteral("Field of view"), .unit = QStringLiteral("°"), .decimals = 1, .sliderLow = 10.0, .sliderHigh = 170.0, .group = kLight}));
+    e.push_back(presented(numberKey("light.near", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.nearPlane; },
+                          "Light near plane in world units (> 0 for perspective): pushing it out buys depth precision, casters before it are clamped"),
+                          {.label = QStringLiteral("Near"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -10.0, .sliderHigh = 20.0, .group = kLight}));
+    e.push_back(presented(numberKey("light.far", Range{-1e7, 1e7}, [](auto& s) -> auto& { return s.light.farPlane; },
+                          "Light far plane in world units: beyond it everything is lit; a tight far plane buys depth precision"),
+                          {.label = QStringLiteral("Far"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = 0.5, .sliderHigh = 60.0, .group = kLight}));
+    e.push_back(presented(numberKey("light.radius", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.reference.lightRadius; },
+                          "Radius of the disk light the area reference traces (world units): the soft shadow filtered modes are measured against"),
+                          {.label = QStringLiteral("Light radius"), .unit = QStringLiteral(" wu"), .decimals = 3, .sliderLow = 0.0, .sliderHigh = 2.0, .group = kReference}));
+    e.push_back(presented(choiceKey<LightFit>("light.fit", kFitNames, [](auto& s) -> auto& { return s.light.fit; },
+                                    "scene: shrink the light volume (extent or fov, near, far) to what casts onto what the camera sees, for smaller texels and finer depth; manual: use it as set"),
+                          {.label = QStringLiteral("Volume"), .group = kLight}));
+    e.push_back(presented(boolKey("light.stabilize", [](auto& s) -> auto& { return s.light.stabilize; },
+                        "Snap the fitted volume to whole texels and coarse size steps: no shimmer and no shadow-pass redraw on small camera moves, at slightly larger texels"),
+                          {.label = QStringLiteral("Stabilise the fitted volume"), .group = kLight}));
+    e.push_back(presented(integerKey("map.size", 16, kMaxImageSide, false, [](auto& s) -> auto& { return s.map.size; },
+                           "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"),
+                          {.label = QStringLiteral("Size"), .unit = QStringLiteral(" px"), .sliderLow = 64.0, .sliderHigh = 8192.0, .logarithmic = true, .group = kShadowMap}));
+    e.push_back(presented(choiceKey<DepthFormat>("map.format", kFormatNames, [](auto& s) -> auto& { return s.map.format; },
+                                       "Depth texture format: 32-bit float keeps precision with far-away near/far ratios"),
+                          {.label = QStringLiteral("Depth format"), .group = kShadowMap}));
+    e.push_back(presented(choiceKey<BiasSpace>("bias.space", kBiasSpaceNames, [](auto& s) -> auto& { return s.bias.space; },
+                                     "Unit of bias.slope and bias.min: world units along the ray to the light (same offset for any near/far, map size or fit), texels of the map (follows the resolution), or depth-buffer units (the classic form, whose world offset grows with far - near)"),
+                          {.label = QStringLiteral("Unit"), .group = kBias}));
+    e.push_back(presented(numberKey("bias.slope", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.slope; },
+                          "Slope-scaled bias, times (1 - N.L), in the unit of bias.space (world units, texels, or depth units <= 0.5): too little shows acne on lit slopes, too much detaches shadows (peter panning)"),
+                          {.label = QStringLiteral("Slope"), .decimals = 4, .sliderLow = 0.0, .sliderHigh = 0.5, .group = kBias}));
+    e.push_back(presented(numberKey("bias.min", Range{0.0, 100.0}, [](auto& s) -> auto& { return s.bias.min; },
+                          "Minimum bias, in the unit of bias.space (world units, texels, or depth units <= 0.5): removes acne on surfaces facing the light, too much makes shadows leak at contacts"),
+                          {.label = QStringLiteral("Minimum"), .decimals = 4, .sliderLow = 0.0, .sliderHigh = 0.1, .group = kBias}));
+    e.push_back(presented(numberKey("bias.normal", Range{0.0, 8.0}, [](auto& s) -> auto& { return s.bias.normal; },
+                          "Normal-offset bias in shadow-map texels: looks the shadow up from a point moved off the surface, against acne at grazing angles without detaching contact shadows as much as depth bias"),
+                          {.label = QStringLiteral("Normal offset"), .unit = QStringLiteral(" texels"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 8.0, .group = kBias}));
+    e.push_back(presented(boolKey("bias.cull_front", [](auto& s) -> auto& { return s.bias.cullFront; },
+                        "Render back faces into the shadow map: removes acne on closed lit faces, can leak light where thin casters touch"),
+                          {.label = QStringLiteral("Cull front faces in the shadow pass"), .group = kBias}));
+    e.push_back(presented(numberKey("bias.polygon_factor", Range{-16.0, 16.0}, [](auto& s) -> auto& { return s.bias.polygonFactor; },
+                          "glPolygonOffset factor in the shadow pass: hardware slope bias, against acne at the cost of peter panning"),
+                          {.label = QStringLiteral("Offset factor"), .decimals = 2, .sliderLow = -4.0, .sliderHigh = 8.0, .group = kBias}));
+    e.push_back(presented(numberKey("bias.polygon_units", Range{-10000.0, 10000.0}, [](auto& s) -> auto& { return s.bias.polygonUnits; },
+                          "glPolygonOffset units in the shadow pass: constant hardware bias in depth-buffer steps"),
+                          {.label = QStringLiteral("Offset units"), .sliderLow = -500.0, .sliderHigh = 5000.0, .group = kBias}));
+    e.push_back(presented(boolKey("bias.receiver_plane", [](auto& s) -> auto& { return s.bias.receiverPlane; },
+                        "Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane (its depth gradient in shadow-map space): no over-darkening of lit slopes by wide kernels with a small bias, but acne or leaks on curved receivers and at silhouettes, where the gradient is wrong"),
+                          {.label = QStringLiteral("Receiver-plane depth for wide filters"), .group = kBias}));
+    e.push_back(presented(filterModeKey(),
+                          {.label = QStringLiteral("Filter"), .group = kFiltering}));
     for (const TechniqueParameter& parameter : techniqueParameters())
         e.push_back(parameterKey(parameter));
-    e.push_back(boolKey("filter.early_out", [](auto& s) -> auto& { return s.filter.earlyOut; },
-                        "Penumbra-only filtering: pcf, poisson and pcss skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"));
-    e.push_back(choiceKey<MomentFormat>("moments.format", kMomentFormatNames, [](auto& s) -> auto& { return s.moments.format; },
+    e.push_back(presented(boolKey("filter.early_out", [](auto& s) -> auto& { return s.filter.earlyOut; },
+                        "Penumbra-only filtering: pcf, poisson and pcss skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass"),
+                          {.label = QStringLiteral("Filter only penumbrae"), .group = kFiltering}));
+    e.push_back(presented(choiceKey<MomentFormat>("moments.format", kMomentFormatNames, [](auto& s) -> auto& { return s.moments.format; },
                                         "Bits per channel of the moments map (moment techniques): 16 halves memory and bandwidth, but "
                                         "holds only small exponents (evsm <= 5.54, esm <= 11.08) and needs a larger filter.moment_bias; "
-                                        "msm then stores Peters and Klein's optimised quantisation"));
-    e.push_back(blurKey());
-    e.push_back(boolKey("moments.mipmaps", [](auto& s) -> auto& { return s.moments.mipmaps; },
+                                        "msm then stores Peters and Klein's optimised quantisation"),
+                          {.label = QStringLiteral("Format"), .group = kMomentsMap}));
+    e.push_back(presented(blurKey(),
+                          {.label = QStringLiteral("Blur"), .unit = QStringLiteral(" texels"), .sliderLow = 0.0, .sliderHigh = 31.0, .group = kMomentsMap}));
+    e.push_back(presented(boolKey("moments.mipmaps", [](auto& s) -> auto& { return s.moments.mipmaps; },
                         "Mipmaps of the moments map (moment techniques), built after each moments pass: trilinear lookups keep "
-                        "distant and grazing shadows smooth instead of aliased, at the cost of a mip build and blurrier far shadows"));
-    e.push_back(integerKey("moments.anisotropy", 1, 16, false, [](auto& s) -> auto& { return s.moments.anisotropy; },
+                        "distant and grazing shadows smooth instead of aliased, at the cost of a mip build and blurrier far shadows"),
+                          {.label = QStringLiteral("Mipmaps"), .group = kMomentsMap}));
+    e.push_back(presented(integerKey("moments.anisotropy", 1, 16, false, [](auto& s) -> auto& { return s.moments.anisotropy; },
                            "Anisotropic filtering of the moments map (moment techniques), 1 for off: sharper shadows on receivers seen "
-                           "at grazing angles for more texture reads; capped at what the driver offers"));
-    e.push_back(integerKey("moments.view", 1, 4, false, [](auto& s) -> auto& { return s.moments.view; },
+                           "at grazing angles for more texture reads; capped at what the driver offers"),
+                          {.label = QStringLiteral("Anisotropy"), .sliderLow = 1.0, .sliderHigh = 16.0, .group = kMomentsMap}));
+    e.push_back(presented(integerKey("moments.view", 1, 4, false, [](auto& s) -> auto& { return s.moments.view; },
                            "Which stored moment the depth-map view shows for a moment technique: 1 is depth (unwarped for esm and "
-                           "evsm, linear for a perspective light), 2 to 4 the higher ones as stored (exponential ones on a log scale)"));
-    e.push_back(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
-                        "Shadows on or off: off skips the shadow pass entirely"));
-    e.push_back(integerKey("shadow.cascades", 1, kMaxCascades, false, [](auto& s) -> auto& { return s.shadow.cascades; },
-                           "Cascaded shadow maps for a directional light: the view up to shadow.distance split into this many slices, each with a map.size map of its own (more texels near the camera); 1 fits one map to the whole view"));
-    e.push_back(choiceKey<CascadeSplit>("shadow.split", kSplitNames, [](auto& s) -> auto& { return s.shadow.split; },
-                                        "Where cascades split: uniform (equal depth slices, coarse near the camera), logarithmic (equal ratios, tiny first slices) or practical (a blend by shadow.split_lambda)"));
-    e.push_back(numberKey("shadow.split_lambda", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.shadow.splitLambda; },
-                          "Practical split: 0 uniform, 1 logarithmic"));
-    e.push_back(numberKey("shadow.distance", Range{0.0, 1e7, true, false}, [](auto& s) -> auto& { return s.shadow.distance; },
-                          "With cascades: world units from the camera up to which receivers get shadows; beyond it they are lit"));
-    e.push_back(numberKey("shadow.blend", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.shadow.blend; },
-                          "With cascades: share of each cascade's depth, at its far end, over which it fades into the next (hides the seam's change of resolution)"));
-    e.push_back(boolKey("shadow.show_cascades", [](auto& s) -> auto& { return s.shadow.showCascades; },
-                        "Tint receivers by the cascade (red, green, blue, yellow) or cube face they read: where each map's texels go"));
-    e.push_back(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
-                                        "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"));
-    e.push_back(boolKey("shading.texel_density", [](auto& s) -> auto& { return s.shading.texelDensity; },
+                           "evsm, linear for a perspective light), 2 to 4 the higher ones as stored (exponential ones on a log scale)"),
+                          {.label = QStringLiteral("Moment shown"), .sliderLow = 1.0, .sliderHigh = 4.0, .group = kMomentsMap}));
+    e.push_back(presented(boolKey("shadow.enabled", [](auto& s) -> auto& { return s.shadow.enabled; },
+                        "Shadows on or off: off skips the shadow pass entirely"),
+                          {.label = QStringLiteral("Shadows"), .group = kShading}));
+    e.push_back(presented(integerKey("shadow.cascades", 1, kMaxCascades, false, [](auto& s) -> auto& { return s.shadow.cascades; },
+                           "Cascaded shadow maps for a directional light: the view up to shadow.distance split into this many slices, each with a map.size map of its own (more texels near the camera); 1 fits one map to the whole view"),
+                          {.label = QStringLiteral("Cascades"), .sliderLow = 1.0, .sliderHigh = 4.0, .group = kShadowMap}));
+    e.push_back(presented(choiceKey<CascadeSplit>("shadow.split", kSplitNames, [](auto& s) -> auto& { return s.shadow.split; },
+                                        "Where cascades split: uniform (equal depth slices, coarse near the camera), logarithmic (equal ratios, tiny first slices) or practical (a blend by shadow.split_lambda)"),
+                          {.label = QStringLiteral("Cascade split"), .group = kShadowMap}));
+    e.push_back(presented(numberKey("shadow.split_lambda", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.shadow.splitLambda; },
+                          "Practical split: 0 uniform, 1 logarithmic"),
+                          {.label = QStringLiteral("Split λ"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 1.0, .group = kShadowMap}));
+    e.push_back(presented(numberKey("shadow.distance", Range{0.0, 1e7, true, false}, [](auto& s) -> auto& { return s.shadow.distance; },
+                          "With cascades: world units from the camera up to which receivers get shadows; beyond it they are lit"),
+                          {.label = QStringLiteral("Shadow distance"), .unit = QStringLiteral(" wu"), .decimals = 1, .sliderLow = 1.0, .sliderHigh = 2000.0, .logarithmic = true, .group = kShadowMap}));
+    e.push_back(presented(numberKey("shadow.blend", Range{0.0, 0.5}, [](auto& s) -> auto& { return s.shadow.blend; },
+                          "With cascades: share of each cascade's depth, at its far end, over which it fades into the next (hides the seam's change of resolution)"),
+                          {.label = QStringLiteral("Cascade blend"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 0.5, .group = kShadowMap}));
+    e.push_back(presented(boolKey("shadow.show_cascades", [](auto& s) -> auto& { return s.shadow.showCascades; },
+                        "Tint receivers by the cascade (red, green, blue, yellow) or cube face they read: where each map's texels go"),
+                          {.label = QStringLiteral("Tint by cascade or cube face"), .group = kShadowMap}));
+    e.push_back(presented(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
+                                        "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"),
+                          {.label = QStringLiteral("Specular"), .group = kShading}));
+    e.push_back(presented(boolKey("shading.texel_density", [](auto& s) -> auto& { return s.shading.texelDensity; },
                         "Tint the scene by screen pixels per shadow-map texel: blue under 1 (the map is finer than the screen), green about 1 to 2, "
-                        "yellow to red from 4 up (blocky edges); shadows and measurements are unchanged"));
-    e.push_back(vec3Key("camera.position", [](auto& s) -> auto& { return s.camera.position; }, "Where the viewer is"));
-    e.push_back(vec3Key("camera.target", [](auto& s) -> auto& { return s.camera.target; }, "The point the viewer looks at"));
-    e.push_back(numberKey("camera.fov", Range{1.0, 170.0}, [](auto& s) -> auto& { return s.camera.fov; },
-                          "Camera vertical field of view in degrees"));
+                        "yellow to red from 4 up (blocky edges); shadows and measurements are unchanged"),
+                          {.label = QStringLiteral("Texel density overlay"), .group = kShading}));
+    e.push_back(presented(vec3Key("camera.position", [](auto& s) -> auto& { return s.camera.position; }, "Where the viewer is"),
+                          {.label = QStringLiteral("Position"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -20.0, .sliderHigh = 20.0, .group = kCamera}));
+    e.push_back(presented(vec3Key("camera.target", [](auto& s) -> auto& { return s.camera.target; }, "The point the viewer looks at"),
+                          {.label = QStringLiteral("Target"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -5.0, .sliderHigh = 5.0, .group = kCamera}));
+    e.push_back(presented(numberKey("camera.fov", Range{1.0, 170.0}, [](auto& s) -> auto& { return s.camera.fov; },
+                          "Camera vertical field of view in degrees"),
+                          {.label = QStringLiteral("Field of view"), .unit = QStringLiteral("°"), .decimals = 1, .sliderLow = 10.0, .sliderHigh = 120.0, .group = kCamera}));
     return e;
 }
 
@@ -485,6 +545,12 @@ QString jsonValueText(const QString& key, const QJsonValue& value)
 }
 
 } // namespace
+
+const QStringList& settingGroups()
+{
+    static const QStringList groups{kLight, kShadowMap, kBias, kFiltering, kMomentsMap, kShading, kReference, kCamera, kScene};
+    return groups;
+}
 
 const std::vector<SettingKey>& settingKeys()
 {

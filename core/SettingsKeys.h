@@ -11,6 +11,18 @@
 namespace shadowlab {
 
 // The dotted keys shared by `--set key=value`, JSON files and the GUI.
+// How the properties dock shows a key: its row's label, the unit after its value, the decimals
+// shown, the part of its range worth a slider (logarithmic for sizes), and its group.
+struct SettingPresentation {
+    QString label{};
+    QString unit{};
+    int decimals = 0;
+    double sliderLow = 0.0;
+    double sliderHigh = 0.0;
+    bool logarithmic = false;
+    QString group{};        // one of settingGroups()
+};
+
 struct SettingKey {
     QString key;            // "bias.slope"
     QString type;           // "number", "integer", "bool", "vec3", "choice"
@@ -19,9 +31,12 @@ struct SettingKey {
     QStringList choices;    // for "choice"
     double minimum = 0.0;   // for numbers and integers: the slider range
     double maximum = 0.0;
+    SettingPresentation presentation;
 };
 
 const std::vector<SettingKey>& settingKeys();
+// The groups of the dock, in order.
+const QStringList& settingGroups();
 const SettingKey* findSettingKey(const QString& key);
 
 // The value of `key` in `settings`, formatted as it would be typed on the command line.

@@ -15,6 +15,29 @@ class TestSettings : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // The table is the dock's only source: every key names its label and group, and its slider
+    // lies inside its range.
+    void everyKeyCarriesItsPresentation()
+    {
+        for (const SettingKey& key : settingKeys()) {
+            const SettingPresentation& p = key.presentation;
+            QVERIFY2(!p.label.isEmpty(), qPrintable(key.key));
+            QVERIFY2(settingGroups().contains(p.group), qPrintable(key.key + ": group '" + p.group + "'"));
+            if (key.type == u"number" || key.type == u"integer") {
+                QVERIFY2(p.sliderLow < p.sliderHigh, qPrintable(key.key));
+                QVERIFY2(p.sliderLow >= key.minimum && p.sliderHigh <= key.maximum, qPrintable(key.key));
+                QVERIFY2(!p.logarithmic || p.sliderLow > 0.0, qPrintable(key.key));
+            }
+            if (key.type == u"integer")
+                QVERIFY2(p.decimals == 0, qPrintable(key.key));
+        }
+        // Every group holds a key.
+        for (const QString& group : settingGroups()) {
+            QVERIFY2(std::any_of(settingKeys().begin(), settingKeys().end(), [&](const SettingKey& k) { return k.presentation.group == group; }),
+                     qPrintable(group));
+        }
+    }
+
     void defaultsAreValidForEveryPreset()
     {
         for (const QString& scene : sceneNames()) {

@@ -34,87 +34,7 @@ namespace shadowlab {
 
 namespace {
 
-// How a number is presented. Ranges and help come from settingKeys(); this is only the part
-// of each range worth a slider, the unit and the precision shown.
-struct Presentation {
-    const char* key;
-    const char* label;
-    const char* unit;
-    int decimals;
-    double sliderLow;
-    double sliderHigh;
-    SliderSpinBox::Scale scale = SliderSpinBox::Scale::Linear;
-};
-
-const Presentation kPresentations[] = {
-    {"scene", "Preset", "", 0, 0.0, 0.0},
-    {"light.position", "Position", " wu", 2, -10.0, 10.0},
-    {"light.target", "Target", " wu", 2, -5.0, 5.0},
-    {"light.projection", "Projection", "", 0, 0.0, 0.0},
-    {"light.extent", "Extent", " wu", 2, 0.5, 30.0},
-    {"light.fov", "Field of view", "°", 1, 10.0, 170.0},
-    {"light.near", "Near", " wu", 2, -10.0, 20.0},
-    {"light.far", "Far", " wu", 2, 0.5, 60.0},
-    {"light.radius", "Light radius", " wu", 3, 0.0, 2.0},
-    {"light.fit", "Volume", "", 0, 0.0, 0.0},
-    {"light.stabilize", "Stabilise the fitted volume", "", 0, 0.0, 0.0},
-    {"map.size", "Size", " px", 0, 64.0, 8192.0, SliderSpinBox::Scale::Logarithmic},
-    {"map.format", "Depth format", "", 0, 0.0, 0.0},
-    {"bias.space", "Unit", "", 0, 0.0, 0.0},
-    {"bias.slope", "Slope", "", 4, 0.0, 0.5},
-    {"bias.min", "Minimum", "", 4, 0.0, 0.1},
-    {"bias.normal", "Normal offset", " texels", 2, 0.0, 8.0},
-    {"bias.cull_front", "Cull front faces in the shadow pass", "", 0, 0.0, 0.0},
-    {"bias.polygon_factor", "Offset factor", "", 2, -4.0, 8.0},
-    {"bias.polygon_units", "Offset units", "", 0, -500.0, 5000.0},
-    {"bias.receiver_plane", "Receiver-plane depth for wide filters", "", 0, 0.0, 0.0},
-    {"filter.mode", "Filter", "", 0, 0.0, 0.0},
-    {"filter.early_out", "Filter only penumbrae", "", 0, 0.0, 0.0},
-    {"shadow.enabled", "Shadows", "", 0, 0.0, 0.0},
-    {"shading.model", "Specular", "", 0, 0.0, 0.0},
-    {"shading.texel_density", "Texel density overlay", "", 0, 0.0, 0.0},
-    {"camera.position", "Position", " wu", 2, -20.0, 20.0},
-    {"camera.target", "Target", " wu", 2, -5.0, 5.0},
-    {"camera.fov", "Field of view", "°", 1, 10.0, 120.0},
-    {"light.type", "Type", "", 0, 0.0, 0.0},
-    {"light.falloff", "Cone falloff", "", 2, 0.0, 1.0},
-    {"shadow.split", "Cascade split", "", 0, 0.0, 0.0},
-    {"shadow.show_cascades", "Tint by cascade or cube face", "", 0, 0.0, 0.0},
-    {"shadow.cascades", "Cascades", "", 0, 1.0, 4.0},
-    {"shadow.split_lambda", "Split λ", "", 2, 0.0, 1.0},
-    {"shadow.distance", "Shadow distance", " wu", 1, 1.0, 2000.0, SliderSpinBox::Scale::Logarithmic},
-    {"shadow.blend", "Cascade blend", "", 2, 0.0, 0.5},
-    {"moments.format", "Format", "", 0, 0.0, 0.0},
-    {"moments.mipmaps", "Mipmaps", "", 0, 0.0, 0.0},
-    {"moments.blur", "Blur", " texels", 0, 0.0, 31.0},
-    {"moments.anisotropy", "Anisotropy", "", 0, 1.0, 16.0},
-    {"moments.view", "Moment shown", "", 0, 1.0, 4.0},
-};
-
-// The dock's groups, in order; groupOf() puts each key in one.
-const char* const kGroupOrder[] = {"Light", "Shadow map", "Bias", "Filtering", "Moments map", "Shading", "Reference", "Camera", "Scene"};
-
-QString groupOf(const QString& key)
-{
-    if (key == u"light.radius")
-        return QStringLiteral("Reference");     // only the ray-traced reference reads it
-    if (key.startsWith(QLatin1String("shadow.")) && key != u"shadow.enabled")
-        return QStringLiteral("Shadow map");    // cascades: how the maps are laid out
-    if (key.startsWith(QLatin1String("moments.")))
-        return QStringLiteral("Moments map");   // how a moment technique's map is stored and prefiltered
-    const QString prefix = key.section(QLatin1Char('.'), 0, 0);
-    static const QHash<QString, QString> byPrefix{{QStringLiteral("light"), QStringLiteral("Light")},
-                                                  {QStringLiteral("map"), QStringLiteral("Shadow map")},
-                                                  {QStringLiteral("bias"), QStringLiteral("Bias")},
-                                                  {QStringLiteral("filter"), QStringLiteral("Filtering")},
-                                                  {QStringLiteral("shadow"), QStringLiteral("Shading")},
-                                                  {QStringLiteral("shading"), QStringLiteral("Shading")},
-                                                  {QStringLiteral("camera"), QStringLiteral("Camera")}};
-    return byPrefix.value(prefix, QStringLiteral("Scene"));
-}
-
-// A Presentation for people: from the list above, or from the technique table for the
-// parameters of shadow filters (their whole range on the slider).
+// How a key is shown, from its presentation in the settings table (SettingsKeys.h).
 struct Look {
     QString label;
     QString unit;
@@ -126,17 +46,14 @@ struct Look {
 
 Look presentation(const QString& key)
 {
-    for (const Presentation& p : kPresentations) {
-        if (key == QLatin1String(p.key))
-            return {QString::fromUtf8(p.label), QString::fromUtf8(p.unit), p.decimals, p.sliderLow, p.sliderHigh, p.scale};
-    }
-    for (const TechniqueParameter& p : techniqueParameters()) {
-        if (key == p.key)
-            return {p.label, p.unit, std::holds_alternative<int FilterSettings::*>(p.field) ? 0 : p.decimals, p.minimum, p.maximum};
+    const SettingKey* info = findSettingKey(key);
+    if (info && !info->presentation.label.isEmpty()) {
+        const SettingPresentation& p = info->presentation;
+        return {p.label, p.unit, p.decimals, p.sliderLow, p.sliderHigh,
+                p.logarithmic ? SliderSpinBox::Scale::Logarithmic : SliderSpinBox::Scale::Linear};
     }
     // A key added to the table without a presentation still gets a field: named by its key,
     // its whole range on the slider.
-    const SettingKey* info = findSettingKey(key);
     return {key, QString(), 3, info ? std::max(info->minimum, -1e3) : 0.0, info ? std::min(info->maximum, 1e3) : 1.0};
 }
 
@@ -205,10 +122,11 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
 
     // Every key of the table gets a field, in the table's order, in its group.
     std::map<QString, QGridLayout*> groups;
-    for (const char* title : kGroupOrder)
-        groups[QString::fromUtf8(title)] = addGroup(tr(title));
+    for (const QString& title : settingGroups())
+        groups[title] = addGroup(tr(title.toUtf8().constData()));
     for (const SettingKey& info : settingKeys()) {
-        QGridLayout* grid = groups.at(groupOf(info.key));
+        const auto group = groups.find(info.presentation.group);
+        QGridLayout* grid = group != groups.end() ? group->second : groups.at(settingGroups().back());
         if (info.key == u"light.position")
             addDirection(grid);
         if (info.type == u"vec3")
