@@ -1,6 +1,7 @@
 #include "AuditCatalogue.h"
 
 #include "Limits.h"
+#include "MomentMath.h"
 #include "RayTracer.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
@@ -357,7 +358,7 @@ std::vector<AuditCase> makeCatalogue()
     // of a huge range (the moments lose their precision), a caster touching its receiver (where
     // filtered moments leak by design) and an occluder smaller than a texel. Each must stay finite.
     for (const ShadowTechnique& technique : shadowTechniques()) {
-        if (technique.map != ShadowMapKind::Moments)
+        if (!isMomentTechnique(technique.mode))
             continue;
         for (const char* bits : {"32", "16"}) {
             const QStringList mode{QStringLiteral("filter.mode=") + technique.key, QStringLiteral("moments.format=%1").arg(QLatin1String(bits))};

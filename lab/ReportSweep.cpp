@@ -2,6 +2,7 @@
 
 #include "InputFile.h"
 #include "MessageText.h"
+#include "MomentMath.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
@@ -34,7 +35,7 @@ std::vector<SweepEntry> filterableSweep()
 {
     std::vector<SweepEntry> s;
     for (const ShadowTechnique& technique : shadowTechniques()) {
-        if (technique.map != ShadowMapKind::Moments)
+        if (!isMomentTechnique(technique.mode))
             continue;
         const QString mode = QStringLiteral("filter.mode=") + technique.key;
         for (const char* bits : {"32", "16"}) {

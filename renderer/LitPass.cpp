@@ -1,5 +1,6 @@
 #include "LitPass.h"
 
+#include "MomentMath.h"
 #include "PassState.h"
 #include "RenderError.h"
 #include "SettingsKeys.h"
@@ -415,7 +416,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
                     const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
                     const MomentsMap* moments)
 {
-    if (settings.shadow.enabled && map != nullptr && shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments
+    if (settings.shadow.enabled && map != nullptr && isMomentTechnique(settings.filter.mode)
         && (moments == nullptr || moments->size() != map->size()))
         throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
     const bool readsRange = usesDepthRange(settings) && map != nullptr;

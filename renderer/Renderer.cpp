@@ -1,6 +1,7 @@
 #include "Renderer.h"
 
 #include "LightFitting.h"
+#include "MomentMath.h"
 #include "ShadowTechnique.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
@@ -165,7 +166,7 @@ void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, dou
 
 ShadowStorage& Renderer::storageFor(const Settings& settings) const
 {
-    if (shadowTechnique(settings.filter.mode).map == ShadowMapKind::Moments) {
+    if (isMomentTechnique(settings.filter.mode)) {
         if (!m_momentsStorage)
             m_momentsStorage = makeMomentsStorage(m_gl);
         return *m_momentsStorage;

@@ -228,8 +228,7 @@ std::optional<float> DepthMapView::readDepth(int x, int y)
 
 bool DepthMapView::showsMoments() const
 {
-    return hasMap() && m_source->renderer()->momentsMap()
-        && shadowTechnique(m_source->renderedSettings()->filter.mode).map == ShadowMapKind::Moments;
+    return hasMap() && m_source->renderer()->depthMapMoment() > 0;
 }
 
 std::optional<std::array<float, 4>> DepthMapView::readMoments(int x, int y)

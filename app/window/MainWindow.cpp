@@ -8,6 +8,7 @@
 #include "FrameTimeHistory.h"
 #include "ImageFile.h"
 #include "LightMath.h"
+#include "MomentMath.h"
 #include "OutputFile.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
@@ -949,7 +950,7 @@ void MainWindow::updateCaptions()
     }
     const Settings& shown = m_settings[index(m_selected)];
     // What the map holds: depth in its format, or a moment technique's moments.
-    const bool moments = shadowTechnique(shown.filter.mode).map == ShadowMapKind::Moments;
+    const bool moments = isMomentTechnique(shown.filter.mode);
     const QString holds = moments ? tr("moments RGBA%1F").arg(toString(shown.moments.format)) : toString(shown.map.format);
     const QString light = tr("%1 light, %2").arg(toString(shown.light.projection), holds);
     m_depthPane->setCaption(m_compare ? tr("Shadow map of %1").arg(QLatin1String(kSideNames[index(m_selected)])) : tr("Shadow map"),
