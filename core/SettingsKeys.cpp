@@ -117,6 +117,16 @@ struct Entry {
     std::function<std::optional<QString>(const Settings&)> check;
 };
 
+// `v` as a whole number; a SettingsError naming `key` and what is `allowed` when it is not one.
+int wholeNumber(const QString& key, const QString& v, const QString& allowed)
+{
+    bool ok = false;
+    const int value = v.trimmed().toInt(&ok);
+    if (!ok)
+        throw SettingsError(key, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(displayText(v), allowed));
+    return value;
+}
+
 // Field accessors are generic lambdas `[](auto& s) -> auto& { return s.x.y; }` so that one
 // accessor serves reading, writing and checking.
 template <typename Field>
@@ -142,10 +152,7 @@ Entry integerKey(const char* key, int lo, int hi, bool oddOnly, Field field, con
     return {SettingKey{k, QStringLiteral("integer"), rangeText, QString::fromUtf8(help), {}, double(lo), double(hi), {}},
             [field](const Settings& s) { return QString::number(field(s)); },
             [field, check, k, rangeText](Settings& s, const QString& v) {
-                bool ok = false;
-                const int value = v.trimmed().toInt(&ok);
-                if (!ok)
-                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(displayText(v), rangeText));
+                const int value = wholeNumber(k, v, rangeText);
                 if (auto problem = check(value))
                     throw SettingsError(k, *problem);
                 field(s) = value;
@@ -348,10 +355,7 @@ Entry blurKey()
                        {}, 0.0, double(kMaxMomentBlur), {}},
             [](const Settings& s) { return QString::number(s.moments.blur); },
             [check, k, rangeText](Settings& s, const QString& v) {
-                bool ok = false;
-                const int value = v.trimmed().toInt(&ok);
-                if (!ok)
-                    throw SettingsError(k, QStringLiteral("'%1' is not a whole number; allowed: %2").arg(displayText(v), rangeText));
+                const int value = wholeNumber(k, v, rangeText);
                 if (auto problem = check(value))
                     throw SettingsError(k, *problem);
                 s.moments.blur = value;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -244,54 +245,38 @@ Settings presetSettings(const QString& name)
         s.camera.fov = 60.0;
         return s;
     }
-    if (name == u"seed") {
-        // The global defaults are the seed scene's light; the camera frames the three cubes
-        // and their shadows from above and to the side.
-        s.camera.position = {5.2, 4.6, 8.4};
-        s.camera.target = {-0.2, 0.6, 0.2};
-        return s;
-    }
-    if (name == u"torus") {
-        s.light.position = {-6.0, 1.6, 2.0};
-        s.light.target = {0.0, 0.0, 0.0};
-        s.light.extent = 5.0;
-        s.light.nearPlane = 1.0;
-        s.light.farPlane = 14.0;
-        s.camera.position = {0.5, 2.5, 6.5};
-        s.camera.target = {0.0, 0.3, 0.0};
-        return s;
-    }
-    if (name == u"cubes") {
-        s.light.position = {4.0, 9.0, 3.0};
-        s.light.target = {0.0, 0.0, 0.0};
-        s.light.extent = 8.0;
-        s.light.nearPlane = 2.0;
-        s.light.farPlane = 18.0;
-        s.camera.position = {0.0, 6.0, 11.0};
-        s.camera.target = {0.0, 0.5, 0.0};
-        return s;
-    }
-    if (name == u"occluder") {
-        s.light.position = {0.0, 6.0, 0.0};
-        s.light.target = {0.0, 0.0, 0.0};
-        s.light.extent = 4.0;
-        s.light.nearPlane = 1.0;
-        s.light.farPlane = 10.0;
-        s.camera.position = {0.0, 5.0, 4.5};
-        s.camera.target = {0.0, 0.0, 0.0};
-        return s;
-    }
-    if (name == u"bleeding") {
+    // The small scenes' lights and cameras; the seed's light is the global defaults.
+    struct View {
+        const char* name;
+        std::optional<LightSettings> light;     // the defaults but position, target, extent, near, far
+        glm::dvec3 cameraPosition, cameraTarget;
+    };
+    const auto light = [](glm::dvec3 position, double extent, double nearPlane, double farPlane) {
+        LightSettings l;
+        l.position = position;
+        l.target = {0.0, 0.0, 0.0};
+        l.extent = extent;
+        l.nearPlane = nearPlane;
+        l.farPlane = farPlane;
+        return l;
+    };
+    const View views[] = {
+        // The camera frames the three cubes and their shadows from above and to the side.
+        {.name = "seed", .light = std::nullopt, .cameraPosition = {5.2, 4.6, 8.4}, .cameraTarget = {-0.2, 0.6, 0.2}},
+        {.name = "torus", .light = light({-6.0, 1.6, 2.0}, 5.0, 1.0, 14.0), .cameraPosition = {0.5, 2.5, 6.5}, .cameraTarget = {0.0, 0.3, 0.0}},
+        {.name = "cubes", .light = light({4.0, 9.0, 3.0}, 8.0, 2.0, 18.0), .cameraPosition = {0.0, 6.0, 11.0}, .cameraTarget = {0.0, 0.5, 0.0}},
+        {.name = "occluder", .light = light({0.0, 6.0, 0.0}, 4.0, 1.0, 10.0), .cameraPosition = {0.0, 5.0, 4.5}, .cameraTarget = {0.0, 0.0, 0.0}},
         // Nearly overhead, so each board's shadow falls inside the one above's; the camera looks
         // down past the boards' edges at the ground they shadow.
-        s.light.position = {-1.0, 8.0, -0.6};
-        s.light.target = {0.0, 0.0, 0.0};
-        s.light.extent = 4.0;
-        s.light.nearPlane = 1.0;
-        s.light.farPlane = 10.0;
-        s.camera.position = {4.6, 2.4, 5.4};
-        s.camera.target = {0.2, 0.5, 0.2};
-        return s;
+        {.name = "bleeding", .light = light({-1.0, 8.0, -0.6}, 4.0, 1.0, 10.0), .cameraPosition = {4.6, 2.4, 5.4}, .cameraTarget = {0.2, 0.5, 0.2}},
+    };
+    for (const View& view : views) {
+        if (name != QLatin1String(view.name))
+            continue;
+        if (view.light)
+            s.light = *view.light;
+        s.camera.position = view.cameraPosition;
+        s.camera.target = view.cameraTarget;
     }
     return s;
 }
