@@ -16,7 +16,7 @@ enum class CascadeSplit { Uniform, Logarithmic, Practical };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
-enum class FilterMode { Hard, Pcf, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Vsm, Evsm2, Evsm4, Msm, Esm };
+enum class FilterMode { Hard, Pcf, PcfOptimized, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Dpcf, Vsm, Evsm2, Evsm4, Msm, MsmHausdorff, Esm };
 enum class MomentFormat { Rgba16F, Rgba32F };
 enum class ShadingModel { Phong, BlinnPhong };
 
@@ -87,8 +87,8 @@ struct FilterSettings {
     // One bilinear hardware-compare tap on a 2048 map: smoother and closer to the true edge
     // than 3 x 3 PCF on a 1024 map, at about two thirds of its frame time (`shadowlab bench --baseline`).
     FilterMode mode = FilterMode::HwBilinear;
-    int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf
-    int taps = 16;                          // [8, 64]; Poisson taps of FilterMode::Poisson and Pcss
+    int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf (PcfOptimized: 3 to 7)
+    int taps = 16;                          // [8, 64]; Poisson taps of FilterMode::Poisson, Pcss and Dpcf
     double radius = 2.5;                    // texels, [0.5, 32]; used by FilterMode::Poisson
     // pcf, poisson and pcss skip their taps where a min/max depth mip of the map says the whole
     // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
@@ -113,6 +113,18 @@ struct MomentSettings {
     int view = 1;                           // [1, 4]; the moment the depth-map view shows
 
     bool operator==(const MomentSettings&) const = default;
+};
+
+// Contact shadows: a short march toward the light over the camera's depth of the casters, the
+// standard cure for the light a depth bias lets through where casters meet receivers. Combined
+// with the map's shadow as the smaller visibility.
+struct ContactSettings {
+    bool enabled = false;
+    double length = 0.3;                    // world units marched toward the light, > 0
+    int steps = 12;                         // [1, 64]
+    double thickness = 1.0;                 // world units a caster may extend behind its front face at most, > 0
+
+    bool operator==(const ContactSettings&) const = default;
 };
 
 struct ShadowSettings {
@@ -163,6 +175,7 @@ struct Settings {
     FilterSettings filter;
     MomentSettings moments;
     ShadowSettings shadow;
+    ContactSettings contact;
     ShadingSettings shading;
     CameraSettings camera;
     ReferenceSettings reference;

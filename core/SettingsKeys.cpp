@@ -309,7 +309,7 @@ Entry filterModeKey()
 
 // The dock's groups (settingGroups() lists them in order).
 constexpr QLatin1String kLight("Light"), kShadowMap("Shadow map"), kBias("Bias"), kFiltering("Filtering"), kMomentsMap("Moments map"),
-    kShading("Shading"), kReference("Reference"), kCamera("Camera"), kScene("Scene");
+    kContact("Contact shadows"), kShading("Shading"), kReference("Reference"), kCamera("Camera"), kScene("Scene");
 
 // `entry` with how the dock shows it.
 Entry presented(Entry entry, SettingPresentation look)
@@ -479,6 +479,23 @@ std::vector<Entry> makeEntries()
     e.push_back(presented(boolKey("shadow.show_cascades", [](auto& s) -> auto& { return s.shadow.showCascades; },
                         "Tint receivers by the cascade (red, green, blue, yellow) or cube face they read: where each map's texels go"),
                           {.label = QStringLiteral("Tint by cascade or cube face"), .group = kShadowMap}));
+    e.push_back(presented(boolKey("contact.enabled", [](auto& s) -> auto& { return s.contact.enabled; },
+                        "Contact shadows: a short march toward the light over the camera's depth of the casters (front and back faces), "
+                        "combined with the map's shadow as the smaller visibility; brings back the shadow a bias lifts off contacts "
+                        "(peter panning), for two depth prepasses and 2 x contact.steps lookups a pixel; finds only casters on screen"),
+                          {.label = QStringLiteral("Contact shadows"), .group = kContact}));
+    e.push_back(presented(numberKey("contact.length", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.contact.length; },
+                          "World units the contact march goes toward the light: longer finds casters farther from the receiver, with "
+                          "coarser steps and more false shadow behind thin objects"),
+                          {.label = QStringLiteral("Length"), .unit = QStringLiteral(" wu"), .decimals = 3, .sliderLow = 0.01, .sliderHigh = 10.0, .logarithmic = true, .group = kContact}));
+    e.push_back(presented(integerKey("contact.steps", 1, 64, false, [](auto& s) -> auto& { return s.contact.steps; },
+                           "Depth lookups of the contact march: more steps miss fewer thin casters, linearly more time"),
+                          {.label = QStringLiteral("Steps"), .sliderLow = 1.0, .sliderHigh = 64.0, .group = kContact}));
+    e.push_back(presented(numberKey("contact.thickness", Range{0.0, 1e6, true, false}, [](auto& s) -> auto& { return s.contact.thickness; },
+                          "World units a caster may extend behind the front face the camera sees, at most; within it the march "
+                          "is in shadow only between a caster's front and back faces, so light passing behind a caster stays lit. "
+                          "It bounds casters with no back faces (open meshes): too thin misses the inside of thick ones"),
+                          {.label = QStringLiteral("Thickness"), .unit = QStringLiteral(" wu"), .decimals = 3, .sliderLow = 0.001, .sliderHigh = 10.0, .logarithmic = true, .group = kContact}));
     e.push_back(presented(choiceKey<ShadingModel>("shading.model", kShadingNames, [](auto& s) -> auto& { return s.shading.model; },
                                         "Specular model: Blinn-Phong (half vector) or Phong (reflection vector)"),
                           {.label = QStringLiteral("Specular"), .group = kShading}));
@@ -552,7 +569,7 @@ QString jsonValueText(const QString& key, const QJsonValue& value)
 
 const QStringList& settingGroups()
 {
-    static const QStringList groups{kLight, kShadowMap, kBias, kFiltering, kMomentsMap, kShading, kReference, kCamera, kScene};
+    static const QStringList groups{kLight, kShadowMap, kBias, kFiltering, kMomentsMap, kContact, kShading, kReference, kCamera, kScene};
     return groups;
 }
 
@@ -733,6 +750,10 @@ std::vector<SettingsIssue> validate(const Settings& s)
         warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.near"),
                             QStringLiteral("far/near = %1 leaves a 24-bit depth map almost no precision far away; raise light.near or use map.format=depth32f")
                                 .arg(formatNumber(s.light.farPlane / s.light.nearPlane))});
+    if (errors.empty() && s.filter.mode == FilterMode::PcfOptimized && optimizedPcfKernel(s.filter) != s.filter.kernel)
+        warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("filter.kernel"),
+                            QStringLiteral("pcf-optimized has kernels of 3, 5 and 7 texels; %1 is used for filter.kernel=%2 (filter.mode=pcf has every odd width)")
+                                .arg(optimizedPcfKernel(s.filter)).arg(s.filter.kernel)});
     if (errors.empty() && isMomentTechnique(s.filter.mode)) {
         const double limit = maxExponent(s.filter.mode, s.moments.format);
         for (const auto& [key, value, used] : {std::tuple{"filter.exponent_positive", s.filter.positiveExponent, usesParameter(s.filter, QStringLiteral("filter.exponent_positive"))},

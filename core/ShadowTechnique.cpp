@@ -36,6 +36,17 @@ std::vector<TechniqueUniform> momentUniforms(const Settings& s)
             {"uExponentNegative", float(warp.negative)}};
 }
 
+// The disk light's size for the blocker searches (pcss, dpcf): a directional light has the
+// angular size the disk has seen from the target, as the area reference traces it
+// (accuracy/ShadowReference.cpp).
+std::vector<TechniqueUniform> lightSizeUniform(const Settings& s)
+{
+    double size = s.reference.lightRadius;
+    if (s.light.projection == LightProjection::Ortho)
+        size /= std::max(glm::length(s.light.position - s.light.target), 1e-12);
+    return {{"uLightSize", float(size)}};
+}
+
 TechniqueVariation momentVariation(const QString& label, const QString& key, QStringList more = {})
 {
     return {label, QStringList{QStringLiteral("filter.mode=") + key} + more};
@@ -112,6 +123,22 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
             momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})},
     });
     t.push_back({
+        .mode = FilterMode::MsmHausdorff,
+        .key = QStringLiteral("msm-hausdorff"),
+        .label = QStringLiteral("MSM Hausdorff (4 moments)"),
+        .help = QStringLiteral("msm-hausdorff (4 moments, Hausdorff, 1 filtered tap): msm's moments with every depth known to lie "
+            "in the light's volume; less bleeding where occluders overlap near its ends, a few more operations"),
+        .shaderFile = QStringLiteral("shadow/msm-hausdorff.glsl"),
+        .map = ShadowMapKind::Moments,
+        .samplers = {ShadowSampler::Moments},
+        .parameters = {bleeding, bias},
+        .defines = momentDefines,
+        .uniforms = momentUniforms,
+        .describe = plainLabel("msm-hausdorff"),
+        .sweep = {momentVariation(QStringLiteral("msm-hausdorff"), QStringLiteral("msm-hausdorff")),
+            momentVariation(QStringLiteral("msm-hausdorff 16-bit"), QStringLiteral("msm-hausdorff"), {QStringLiteral("moments.format=16")})},
+    });
+    t.push_back({
         .mode = FilterMode::Esm,
         .key = QStringLiteral("esm"),
         .label = QStringLiteral("ESM (1 moment)"),
@@ -165,6 +192,27 @@ std::vector<ShadowTechnique> makeTechniques()
             {QStringLiteral("pcf 7x7"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}}},
         .penumbraOnly = true,
         .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double((f.kernel - 1) / 2); },
+        .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
+    });
+    t.push_back({
+        .mode = FilterMode::PcfOptimized,
+        .key = QStringLiteral("pcf-optimized"),
+        .label = QStringLiteral("PCF optimized (bilinear taps)"),
+        .help = QStringLiteral("pcf-optimized (4, 9 or 16 bilinear taps): a smooth filter.kernel-wide kernel (3, 5 or 7 texels) from "
+            "weighted hardware-bilinear compares, as in The Witness; softer than pcf's box at about a third of its lookups"),
+        .shaderFile = QStringLiteral("shadow/pcf-optimized.glsl"),
+        .map = ShadowMapKind::DepthCompare,
+        .samplers = {ShadowSampler::CompareLinear},
+        .parameters = {QStringLiteral("filter.kernel")},
+        .defines = [](const Settings& s) { return QStringList{QStringLiteral("PCF_KERNEL %1").arg(optimizedPcfKernel(s.filter))}; },
+        .uniforms = noUniforms,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("pcf-optimized %1×%1").arg(optimizedPcfKernel(f)); },
+        .sweep = {{QStringLiteral("pcf-optimized 3x3"), {QStringLiteral("filter.mode=pcf-optimized"), QStringLiteral("filter.kernel=3")}},
+            {QStringLiteral("pcf-optimized 5x5"), {QStringLiteral("filter.mode=pcf-optimized"), QStringLiteral("filter.kernel=5")}},
+            {QStringLiteral("pcf-optimized 7x7"), {QStringLiteral("filter.mode=pcf-optimized"), QStringLiteral("filter.kernel=7")}}},
+        .penumbraOnly = true,
+        // Each bilinear tap reads the 2 x 2 texels around it (tapReachTexels adds that).
+        .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double(optimizedPcfKernel(f) - 1) / 2.0 + 0.5; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -246,17 +294,27 @@ std::vector<ShadowTechnique> makeTechniques()
         .samplers = {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
         .parameters = {QStringLiteral("filter.taps")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-        .uniforms = [](const Settings& s) {
-            // A directional light has the angular size the disk has seen from the target,
-            // as the area reference traces it (accuracy/ShadowReference.cpp).
-            double size = s.reference.lightRadius;
-            if (s.light.projection == LightProjection::Ortho)
-            size /= std::max(glm::length(s.light.position - s.light.target), 1e-12);
-            return std::vector<TechniqueUniform>{{"uLightSize", float(size)}};
-            },
+        .uniforms = lightSizeUniform,
         .describe = [](const FilterSettings& f) { return QStringLiteral("pcss %1").arg(f.taps); },
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
+        .penumbraOnly = true,
+    });
+    t.push_back({
+        .mode = FilterMode::Dpcf,
+        .key = QStringLiteral("dpcf"),
+        .label = QStringLiteral("DPCF (contact hardening)"),
+        .help = QStringLiteral("dpcf (filter.taps taps): PCF with contact hardening, as in Filament; pcss's blocker search is also "
+            "the filter, sharpened where blockers are near; half of pcss's lookups, penumbra width approximated"),
+        .shaderFile = QStringLiteral("shadow/dpcf.glsl"),
+        .map = ShadowMapKind::RawDepth,
+        .samplers = {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
+        .parameters = {QStringLiteral("filter.taps")},
+        .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
+        .uniforms = lightSizeUniform,
+        .describe = [](const FilterSettings& f) { return QStringLiteral("dpcf %1").arg(f.taps); },
+        .sweep = {{QStringLiteral("dpcf 16"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=16")}},
+            {QStringLiteral("dpcf 32"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
     });
     addMomentTechniques(t);
@@ -297,11 +355,12 @@ const std::vector<TechniqueParameter>& techniqueParameters()
 {
     static const std::vector<TechniqueParameter> parameters{
         {QStringLiteral("filter.kernel"), QStringLiteral("PCF kernel"), QStringLiteral(" texels"),
-         QStringLiteral("PCF kernel width in texels (pcf mode): wider softens edges and hides aliasing at N^2 taps per pixel"),
+         QStringLiteral("PCF kernel width in texels (pcf; pcf-optimized has 3, 5 and 7): wider softens edges and hides aliasing, at N^2 taps "
+                        "per pixel for pcf, ((N + 1) / 2)^2 bilinear ones for pcf-optimized"),
          1, 9, true, &FilterSettings::kernel},
         {QStringLiteral("filter.taps"), QStringLiteral("Poisson taps"), QString(),
-         QStringLiteral("Taps of the Poisson disk (poisson, and pcss's filter after its 16-tap blocker search): more taps, less noise, "
-                        "linearly more time"),
+         QStringLiteral("Taps of the Poisson disk (poisson, pcss's filter after its 16-tap blocker search, dpcf's one pass): more taps, "
+                        "less noise, linearly more time"),
          8, 64, false, &FilterSettings::taps},
         {QStringLiteral("filter.radius"), QStringLiteral("Poisson radius"), QStringLiteral(" texels"),
          QStringLiteral("Radius of the Poisson disk in shadow-map texels (poisson mode): wider is softer at the same cost, "
@@ -329,6 +388,11 @@ const std::vector<TechniqueParameter>& techniqueParameters()
          0, 80, false, &FilterSettings::negativeExponent},
     };
     return parameters;
+}
+
+int optimizedPcfKernel(const FilterSettings& filter)
+{
+    return std::clamp(filter.kernel | 1, 3, 7);
 }
 
 QString filterLabel(const FilterSettings& filter)

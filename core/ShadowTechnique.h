@@ -107,6 +107,9 @@ const ShadowTechnique& shadowTechnique(FilterMode mode);
 // The parameters techniques read, in settings-table order.
 const std::vector<TechniqueParameter>& techniqueParameters();
 
+// The kernel pcf-optimized filters with: filter.kernel within the 3, 5 and 7 it has weights for.
+int optimizedPcfKernel(const FilterSettings& filter);
+
 // The label of a filter configuration, e.g. "hard" or "pcf 3×3".
 QString filterLabel(const FilterSettings& filter);
 // Whether the selected technique reads `parameterKey`.

@@ -202,6 +202,8 @@ std::vector<SweepEntry> sweepAround(const Settings& base)
                            {QStringLiteral("bias.slope=") + number(base.bias.slope * factor), QStringLiteral("bias.min=") + number(base.bias.min * factor)}});
     entries.push_back({base.bias.cullFront ? QStringLiteral("no front-face culling") : QStringLiteral("front-face culling"),
                        {QStringLiteral("bias.cull_front=%1").arg(base.bias.cullFront ? "false" : "true")}});
+    entries.push_back({base.contact.enabled ? QStringLiteral("no contact shadows") : QStringLiteral("contact shadows"),
+                       {QStringLiteral("contact.enabled=%1").arg(base.contact.enabled ? "false" : "true")}});
 
     // Only what is valid on `base` (errors; warnings pass), each configuration once, the first
     // label kept.

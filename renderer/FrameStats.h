@@ -22,6 +22,8 @@ struct FrameStats {
     // shadow lookup (core/ShadowReach.h), and whether it masked straddling receivers by stencil.
     int litPlainDraws = 0;
     bool litReachMasked = false;
+    // Casters the lit pass drew into the camera's depth for contact shadows (0: kept, or off).
+    int contactDepthDraws = 0;
     double texelWorldSize = 0.0;        // world units covered by one shadow-map texel, as rendered (after light.fit)
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame

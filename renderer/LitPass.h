@@ -37,6 +37,16 @@ public:
                const ShadowMap* map, const RenderTarget& target, bool measure = false, const DepthRangePass* depthRange = nullptr,
                const MomentsMap* moments = nullptr);
 
+    // Whether `settings` make the lit pass march contact shadows over the camera's depth of the
+    // casters (renderer/CameraDepthPass), which must then be set with setContactDepth().
+    static bool usesContactShadows(const Settings& settings);
+    // The camera's depth of the casters' front and back faces the next render() marches over; not owned.
+    void setContactDepth(GLuint front, GLuint back)
+    {
+        m_contactFront = front;
+        m_contactBack = back;
+    }
+
     // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
     // technique that can skip its taps).
     static bool usesDepthRange(const Settings& settings);
@@ -108,6 +118,8 @@ private:
     std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
     const ShadowReach* m_reach = nullptr;
+    GLuint m_contactFront = 0;
+    GLuint m_contactBack = 0;
     ReachUse m_reachUse;
     // The mask's program (the shadow pass's: positions through one matrix, no colour) and its
     // boxes, uploaded when the reach changes.

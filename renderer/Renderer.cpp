@@ -267,6 +267,29 @@ void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
     stats.litPassMs = m_lastLitMs;
 }
 
+void Renderer::drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats)
+{
+    m_litTimer.begin();
+    // Contact shadows march over the casters' depth as this camera sees them: part of the lit
+    // pass's cost, drawn again only when the scene, the camera or the size changed.
+    if (LitPass::usesContactShadows(settings)) {
+        if (!m_cameraDepth)
+            m_cameraDepth = std::make_unique<CameraDepthPass>(m_gl);
+        stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size);
+        m_litPass.setContactDepth(m_cameraDepth->frontTexture(), m_cameraDepth->backTexture());
+        m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    } else {
+        m_litPass.setContactDepth(0, 0);
+    }
+    m_litPass.setShadowViews(&m_views);
+    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
+                                      m_depthRange.get(), storageFor(settings).momentsMap());
+    stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
+    stats.litReachMasked = m_litPass.lastReachUse().masked;
+    m_litTimer.end();
+}
+
 void Renderer::render(const Settings& settings, const RenderTarget& target, TimingMode timing)
 {
     if (target.size.width() <= 0 || target.size.height() <= 0) {
@@ -280,14 +303,7 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
 
     QElapsedTimer lit;
     lit.start();
-    m_litTimer.begin();
-    m_litPass.setShadowViews(&m_views);
-    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
-    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, false,
-                                      m_depthRange.get(), storageFor(settings).momentsMap());
-    stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
-    stats.litReachMasked = m_litPass.lastReachUse().masked;
-    m_litTimer.end();
+    drawLit(settings, target, false, stats);
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
         stats.litPassWallMs = double(lit.nsecsElapsed()) * 1e-6;
@@ -306,14 +322,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     if (!m_measureTarget)
         m_measureTarget = std::make_unique<MeasureTarget>(m_gl);
     const RenderTarget target = m_measureTarget->ensure(size);
-    m_litTimer.begin();
-    m_litPass.setShadowViews(&m_views);
-    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
-    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target,
-                                      true, m_depthRange.get(), storageFor(settings).momentsMap());
-    stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
-    stats.litReachMasked = m_litPass.lastReachUse().masked;
-    m_litTimer.end();
+    drawLit(settings, target, true, stats);
     finishTiming(TimingMode::Finish, stats);
     m_stats = stats;
     return m_measureTarget->read(m_camera.position);

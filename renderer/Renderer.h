@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CameraDepthPass.h"
 #include "DepthPass.h"
 #include "DepthRangePass.h"
 #include "DepthViewPass.h"
@@ -102,6 +103,8 @@ private:
     // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
     void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
     void finishTiming(TimingMode timing, FrameStats& stats);
+    // The lit pass into `target` (with its camera depth prepass for contact shadows), timed.
+    void drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats);
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
     void renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats);
@@ -125,6 +128,7 @@ private:
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
+    std::unique_ptr<CameraDepthPass> m_cameraDepth;  // built when contact shadows are first used
     Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from

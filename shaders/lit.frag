@@ -1,5 +1,6 @@
 // Lit pass: Blinn-Phong or Phong with a diffuse texture; the light term is scaled by the
-// shadow visibility of the one lookup (shadow_lookup.glsl) and the technique's filter. Ambient stays in shadow.
+// shadow visibility of the one lookup (shadow_lookup.glsl) and the technique's filter, and with
+// CONTACT_SHADOWS the smaller of that and a march over the camera's depth. Ambient stays in shadow.
 // With MEASURE the same shadow term also goes to float targets for the accuracy
 // measurement, so what is measured is exactly what is shaded, and with it the light terms
 // that the shadow term scales, so the frame can be shaded again with the reference's.
@@ -26,6 +27,9 @@ uniform vec2 uSpotCone;         // cosines of the cone's half-angle and of where
 #endif
 #ifdef SHADOWS
 #include "shadow_lookup.glsl"
+#endif
+#ifdef CONTACT_SHADOWS
+#include "contact_shadows.glsl"
 #endif
 
 layout(location = 0) out vec4 fragColor;
@@ -83,6 +87,10 @@ void main()
     float visibility = uReceives ? shadowVisibility(normal, toLight) : 1.0;
 #else
     float visibility = 1.0;
+#endif
+#ifdef CONTACT_SHADOWS
+    if (uReceives)
+        visibility = min(visibility, contactVisibility(vPosition, toLight));
 #endif
     vec3 ambient = 0.3 * albedo;
     vec3 direct = diffuse * albedo + specular * vec3(0.3);

@@ -88,7 +88,7 @@ check_completion() {
     expect "shadowlab render --preset ac" "acne "
     expect "shadowlab bench --scene ci" "city "
     expect "shadowlab render --set bias.sl" "bias.slope= "
-    expect "shadowlab render --set filter.mode=pcf" "pcf pcf-dither4 pcf64 "
+    expect "shadowlab render --set filter.mode=pcf" "pcf pcf-dither4 pcf-optimized pcf64 "
     expect "shadowlab --set shadow.enabled=" "=false =true "
 }
 

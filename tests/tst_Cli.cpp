@@ -332,7 +332,7 @@ private Q_SLOTS:
         QVERIFY(sawSlope);
         const Run table = shadowlab({"settings"});
         QCOMPARE(table.exitCode, 0);
-        QVERIFY(table.out.contains("filter.mode") && table.out.contains("hard | pcf | pcf-dither4 | pcf64 | hw-bilinear"));
+        QVERIFY(table.out.contains("filter.mode") && table.out.contains("hard | pcf | pcf-optimized | pcf-dither4 | pcf64 | hw-bilinear"));
     }
 
     void reportWritesEveryConfiguredRow()

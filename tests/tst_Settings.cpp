@@ -191,6 +191,31 @@ private Q_SLOTS:
         QVERIFY(validate(s).empty());
     }
 
+    // pcf-optimized has weights for 3, 5 and 7 texels: another filter.kernel is used as the
+    // nearest of those, said in a warning and in the configuration's label.
+    void pcfOptimizedSaysWhichKernelItUses()
+    {
+        for (const auto& [kernel, used] : {std::pair{1, 3}, std::pair{3, 3}, std::pair{5, 5}, std::pair{7, 7}, std::pair{9, 7}}) {
+            Settings s;
+            applyAssignment(s, "filter.mode=pcf-optimized");
+            applyAssignment(s, QString("filter.kernel=%1").arg(kernel));
+            QCOMPARE(optimizedPcfKernel(s.filter), used);
+            QCOMPARE(filterLabel(s.filter), QString("pcf-optimized %1×%1").arg(used));
+            const auto issues = validate(s);
+            if (kernel == used) {
+                QVERIFY(issues.empty());
+                continue;
+            }
+            QCOMPARE(issues.size(), std::size_t(1));
+            QVERIFY(issues.front().severity == SettingsIssue::Severity::Warning);
+            QCOMPARE(issues.front().key, QString("filter.kernel"));
+            QVERIFY2(issues.front().message.contains(QString("%1 is used").arg(used)), qPrintable(issues.front().message));
+            ensureValid(s);
+            applyAssignment(s, "filter.mode=pcf");     // pcf has every odd width
+            QVERIFY(validate(s).empty());
+        }
+    }
+
     void structFieldsOutOfRangeAreCaught()
     {
         Settings s;

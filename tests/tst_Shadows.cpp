@@ -549,6 +549,9 @@ private Q_SLOTS:
         QTest::newRow("negative polygon offset")
             << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=-16", "bias.polygon_units=-10000", "bias.min=0.05"} << true;
         QTest::newRow("cascades, normal offset") << "seed" << QStringList{"shadow.cascades=4", "bias.normal=4", "filter.mode=pcf"} << true;
+        QTest::newRow("contact shadows") << "seed" << QStringList{"contact.enabled=true"} << true;
+        QTest::newRow("contact shadows, long march, cascades")
+            << "seed" << QStringList{"contact.enabled=true", "contact.length=3", "contact.thickness=1", "shadow.cascades=3"} << true;
         QTest::newRow("camera low and close") << "seed" << QStringList{"camera.position=2.5,0.3,2.5", "camera.target=0,0.5,0"} << true;
         QTest::newRow("camera from below") << "seed" << QStringList{"camera.position=1,-3,4"} << true;
         QTest::newRow("camera inside the reach") << "seed" << QStringList{"camera.position=-1.2,2.5,-0.6", "camera.target=0,0,0"} << true;

@@ -1,8 +1,8 @@
-// The wide filters (pcf N×N, poisson, pcss) and their options (receiver-plane bias,
-// penumbra-only filtering for pcf and poisson), checked against the Embree references at exactly the rendered
+// The wide filters (pcf N×N, pcf-optimized, poisson, pcss, dpcf) and their options (receiver-plane
+// bias, penumbra-only filtering), checked against the Embree references at exactly the rendered
 // pixels, the way a user checks a soft shadow: what the ray tracer says is shadowed is dark,
 // what it says is lit stays lit however wide the kernel, PCSS's penumbra grows with the light's
-// size and with the distance from blocker to receiver and is closer to the area light than a
+// size and with the distance from blocker to receiver (so does dpcf's) and is closer to the area light than a
 // fixed kernel, and skipping the taps outside penumbrae does not change the image.
 #include "Application.h"
 #include "HeadlessTestMain.h"
@@ -145,6 +145,14 @@ private Q_SLOTS:
             {"pcss perspective", {"filter.mode=pcss", "light.projection=perspective"}},
             {"pcss depth32f", {"filter.mode=pcss", "map.format=depth32f"}},
             {"pcss receiver plane", {"filter.mode=pcss", "bias.receiver_plane=true"}},
+            {"pcf-optimized 3x3", {"filter.mode=pcf-optimized", "filter.kernel=3"}},
+            {"pcf-optimized 5x5", {"filter.mode=pcf-optimized", "filter.kernel=5"}},
+            {"pcf-optimized 7x7 receiver plane", {"filter.mode=pcf-optimized", "filter.kernel=7", "bias.receiver_plane=true"}},
+            {"pcf-optimized 7x7 perspective", {"filter.mode=pcf-optimized", "filter.kernel=7", "light.projection=perspective"}},
+            {"dpcf 16", {"filter.mode=dpcf"}},
+            {"dpcf 32 radius 0.5", {"filter.mode=dpcf", "filter.taps=32", "light.radius=0.5"}},
+            {"dpcf perspective", {"filter.mode=dpcf", "light.projection=perspective"}},
+            {"dpcf receiver plane", {"filter.mode=dpcf", "bias.receiver_plane=true"}},
         };
         for (const QString& scene : kScenes) {
             for (const auto& [name, assignments] : configurations)
@@ -157,9 +165,9 @@ private Q_SLOTS:
         QFETCH(QString, scene);
         QFETCH(QStringList, assignments);
         const Settings s = with(scene, assignments);
-        const bool pcss = s.filter.mode == FilterMode::Pcss;
-        const Measured m = measure(m_headless->renderer(), s, pcss);
-        const Agreement a = agreement(m.buffer, pcss ? m.reference.area : m.reference.hard);
+        const bool soft = s.filter.mode == FilterMode::Pcss || s.filter.mode == FilterMode::Dpcf;
+        const Measured m = measure(m_headless->renderer(), s, soft);
+        const Agreement a = agreement(m.buffer, soft ? m.reference.area : m.reference.hard);
         qInfo().noquote() << a.text();
         QVERIFY2(a.counted > 500, qPrintable(a.text()));
         QVERIFY2(a.referenceShadowed > 20, qPrintable(a.text()));
@@ -241,6 +249,49 @@ private Q_SLOTS:
         QVERIFY(shares.back() / shares.front() > 2.0 * fixedHigh / fixedLow);
     }
 
+    // Contact hardening without a second pass: dpcf's penumbra follows the blocker's distance
+    // as pcss's does, where a fixed kernel's does not.
+    void dpcfPenumbraWidensWithTheBlockerDistance()
+    {
+        auto shareAt = [this](double height, const QStringList& assignments) {
+            m_headless->renderer().setScene(occluderAt(height));
+            return penumbraShare(m_headless->renderer().renderVisibility(with("occluder", assignments), QSize(320, 180)));
+        };
+        const QStringList dpcf{"filter.mode=dpcf", "filter.taps=32", "light.radius=0.2"};
+        std::vector<double> shares;
+        for (const double height : {0.25, 1.0, 2.0}) {
+            shares.push_back(shareAt(height, dpcf));
+            qInfo("dpcf, board %.2f above the plane: %.2f%% of receiver pixels in penumbra", height, 100.0 * shares.back());
+            if (shares.size() > 1)
+                QVERIFY2(shares.back() > 1.2 * shares[shares.size() - 2], qPrintable(QString("height %1: %2 after %3").arg(height).arg(shares.back()).arg(shares[shares.size() - 2])));
+        }
+        const double fixedLow = shareAt(0.25, {"filter.mode=poisson"});
+        const double fixedHigh = shareAt(2.0, {"filter.mode=poisson"});
+        QVERIFY(shares.back() / shares.front() > 2.0 * fixedHigh / fixedLow);
+    }
+
+    // A wider pcf-optimized kernel is a wider penumbra, with no pixel of the hard shadow's
+    // inside or outside turned over.
+    void pcfOptimizedPenumbraWidensWithTheKernel_data()
+    {
+        QTest::addColumn<QString>("scene");
+        for (const QString& scene : kScenes)
+            QTest::newRow(qPrintable(scene)) << scene;
+    }
+
+    void pcfOptimizedPenumbraWidensWithTheKernel()
+    {
+        QFETCH(QString, scene);
+        double previous = 0.0;
+        for (const char* kernel : {"3", "5", "7"}) {
+            const double share = penumbraShare(m_headless->renderer().renderVisibility(
+                with(scene, {"filter.mode=pcf-optimized", QString("filter.kernel=%1").arg(kernel)}), QSize(320, 180)));
+            qInfo("pcf-optimized %sx%s: %.2f%% of receiver pixels in penumbra", kernel, kernel, 100.0 * share);
+            QVERIFY2(share > previous, qPrintable(QString("kernel %1: %2 after %3").arg(kernel).arg(share).arg(previous)));
+            previous = share;
+        }
+    }
+
     // What PCSS is for: closer to the area light than fixed kernels at the same light radius.
     void pcssIsCloserToTheAreaLightThanFixedKernels_data()
     {
@@ -260,9 +311,13 @@ private Q_SLOTS:
                                     .meanAbsoluteError;
         const double poissonError = agreement(r.renderVisibility(with(scene, {"filter.mode=poisson", "filter.taps=32"}), kSize),
                                               pcss.reference.area).meanAbsoluteError;
-        qInfo("MAE against the area reference: pcss %.4f, pcf 3x3 %.4f, poisson %.4f", pcssError, pcfError, poissonError);
+        const double dpcfError = agreement(r.renderVisibility(with(scene, {"filter.mode=dpcf", "filter.taps=32"}), kSize), pcss.reference.area)
+                                     .meanAbsoluteError;
+        qInfo("MAE against the area reference: pcss %.4f, dpcf %.4f, pcf 3x3 %.4f, poisson %.4f", pcssError, dpcfError, pcfError, poissonError);
         QVERIFY(pcssError < pcfError);
         QVERIFY(pcssError < poissonError);
+        // dpcf trades some of that for half the lookups: still nearer than a fixed kernel.
+        QVERIFY(dpcfError < std::max(pcfError, poissonError));
     }
 
     // Every texel of the min/max depth mip bounds the map texels under it, including the odd
@@ -353,6 +408,14 @@ private Q_SLOTS:
             {"pcss 16, 3 cascades of 500", {"filter.mode=pcss", "shadow.cascades=3", "map.size=500"}},
             {"pcf 7x7, point light", {"filter.mode=pcf", "filter.kernel=7", "light.type=point"}},
             {"pcss 16, point light", {"filter.mode=pcss", "light.type=point"}},
+            {"pcf-optimized 3x3", {"filter.mode=pcf-optimized", "filter.kernel=3"}},
+            {"pcf-optimized 7x7 receiver plane", {"filter.mode=pcf-optimized", "filter.kernel=7", "bias.receiver_plane=true"}},
+            {"pcf-optimized 5x5, 777 map", {"filter.mode=pcf-optimized", "filter.kernel=5", "map.size=777"}},
+            {"pcf-optimized 5x5, 4 cascades", {"filter.mode=pcf-optimized", "filter.kernel=5", "shadow.cascades=4"}},
+            {"pcf-optimized 7x7, point light", {"filter.mode=pcf-optimized", "filter.kernel=7", "light.type=point"}},
+            {"dpcf 16", {"filter.mode=dpcf"}},
+            {"dpcf 24 perspective", {"filter.mode=dpcf", "filter.taps=24", "light.projection=perspective"}},
+            {"dpcf 16, point light", {"filter.mode=dpcf", "light.type=point"}},
         };
         for (const QString& scene : kScenes) {
             for (const auto& [name, assignments] : configurations)

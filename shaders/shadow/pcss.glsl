@@ -3,37 +3,16 @@
 // distance, then a Poisson filter as wide as the penumbra a planar blocker there would cast:
 // (receiver - blocker) times the disk's angular radius for a directional light, as the area
 // reference traces it, and by similar triangles for a perspective one.
-uniform sampler2D uShadowDepth; // the same map, raw depth
-uniform float uLightSize;       // ortho: light.radius / distance to the target; perspective: light.radius
+#include "blocker_search.glsl"
 
 const int kBlockerTaps = 16;
-
-bool isBlocker(float depth, float reference)
-{
-#ifdef REVERSED_Z
-    return depth > reference;
-#else
-    return depth < reference;
-#endif
-}
-
-// The uv radius covered by the light's disk, seen from a receiver at `receiver`, at distance
-// `plane` from the light (both along its axis).
-vec2 diskFootprint(float receiver, float plane)
-{
-#ifdef LIGHT_PERSPECTIVE
-    return vec2(uLightSize * (receiver - plane) / (receiver * plane)) / gShadowUvWorld;
-#else
-    return vec2(uLightSize * (receiver - plane)) / gShadowUvWorld;
-#endif
-}
 
 float filterShadow(vec2 uv, float reference)
 {
     float receiver = shadowDistance(reference);
     // Every blocker lies between the near plane and the receiver, so the penumbra filter below
     // stays inside this search region.
-    vec2 search = min(max(diskFootprint(receiver, gShadowDepthRange.x), uShadowTexel), vec2(0.5));
+    vec2 search = blockerSearchRegion(receiver);
 #ifdef EARLY_OUT
     // Every tap of both loops lies in the search region: where it is all lit there is no blocker
     // (1), where it is all shadowed every filter tap is too (0).
@@ -46,11 +25,7 @@ float filterShadow(vec2 uv, float reference)
     float blockers = 0.0;
     for (int i = 0; i < kBlockerTaps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * search;
-        vec2 at = uv + offset;
-#ifdef SHADOW_VIEWS
-        at = clamp(at, gShadowTile.xy, gShadowTile.zw);     // inside the view's own tile, as shadowTap
-#endif
-        float depth = texture(uShadowDepth, at).r;
+        float depth = blockerDepth(uv + offset);
         if (isBlocker(depth, wideTapReference(offset, reference))) {
             blockerSum += depth;
             blockers += 1.0;
