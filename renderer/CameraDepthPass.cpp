@@ -3,57 +3,77 @@
 #include "PassState.h"
 #include "RenderError.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace shadowlab {
 
+namespace {
+
+GlTexture makeTarget(GlFunctions* gl, QSize size, GLint format, GLenum layout, GLenum type, const QString& label)
+{
+    GlTexture texture = makeTexture(gl);
+    gl->glBindTexture(GL_TEXTURE_2D, texture.id());
+    gl->glTexImage2D(GL_TEXTURE_2D, 0, format, size.width(), size.height(), 0, layout, type, nullptr);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    labelGlObject(GlLabelKind::Texture, texture.id(), label);
+    gl->glBindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
+} // namespace
+
 CameraDepthPass::CameraDepthPass(GlFunctions* gl)
-    : m_gl(gl), m_program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), {}),
-      m_mvpLocation(m_program.uniform("uLightModelViewProjection"))
+    : m_gl(gl), m_program(gl, QStringLiteral("cameradepth.vert"), QStringLiteral("cameradepth.frag"), {}),
+      m_mvpLocation(m_program.uniform("uModelViewProjection")),
+      m_modelLocation(m_program.uniform("uModel")),
+      m_forwardLocation(m_program.uniform("uCameraForward"))
 {
 }
 
-void CameraDepthPass::allocate(Layer& layer, QSize size, const char* faces)
+void CameraDepthPass::allocate(QSize size)
 {
-    layer.framebuffer.reset();
-    layer.texture = makeTexture(m_gl);
-    m_gl->glBindTexture(GL_TEXTURE_2D, layer.texture.id());
-    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, size.width(), size.height(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    labelGlObject(GlLabelKind::Texture, layer.texture.id(), QStringLiteral("camera depth of %1 faces %2 x %3").arg(QLatin1String(faces)).arg(size.width()).arg(size.height()));
-    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    layer.framebuffer = makeFramebuffer(m_gl);
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, layer.framebuffer.id());
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, layer.texture.id(), 0);
-    m_gl->glDrawBuffer(GL_NONE);
-    m_gl->glReadBuffer(GL_NONE);
+    m_framebuffer.reset();
+    const QString dimensions = QStringLiteral("%1 x %2").arg(size.width()).arg(size.height());
+    m_texture = makeTarget(m_gl, size, GL_RG32F, GL_RG, GL_FLOAT, QStringLiteral("camera view depth of casters, front and back faces, ") + dimensions);
+    m_depth = makeTarget(m_gl, size, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, QStringLiteral("camera depth prepass depth, ") + dimensions);
+    m_framebuffer = makeFramebuffer(m_gl);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_texture.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depth.id(), 0);
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    labelGlObject(GlLabelKind::Framebuffer, layer.framebuffer.id(), QStringLiteral("camera depth pass, %1 faces").arg(QLatin1String(faces)));
+    labelGlObject(GlLabelKind::Framebuffer, m_framebuffer.id(), QStringLiteral("camera depth prepass"));
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw RenderError(QStringLiteral("the %1 x %2 camera depth framebuffer for contact shadows is incomplete (status 0x%3); "
+        throw RenderError(QStringLiteral("the %1 camera depth framebuffer for contact shadows is incomplete (status 0x%2); "
                                          "set contact.enabled=false")
-                              .arg(size.width()).arg(size.height()).arg(status, 0, 16));
+                              .arg(dimensions).arg(status, 0, 16));
+    m_size = size;
 }
 
-int CameraDepthPass::draw(const Layer& layer, const GpuScene& scene, const CameraFrame& camera, GLenum culled)
+int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled)
 {
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, layer.framebuffer.id());
     PassState state;
     state.viewport = QRect(QPoint(0, 0), m_size);
     state.depthTest = true;
     state.cullFace = culled;
     applyPassState(m_gl, state);
+    // Each pass writes only its own channel (applyPassState opened the colour mask).
+    m_gl->glColorMask(culled == GL_BACK, culled == GL_FRONT, GL_FALSE, GL_FALSE);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+    const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
         if (!item.castsShadow || isOutsideFrustum(camera.viewProjection, item.bounds, false))
             continue;
         m_program.set(m_mvpLocation, glm::mat4(camera.viewProjection * item.model));
+        m_program.set(m_modelLocation, glm::mat4(toCamera * item.model));
         scene.draw(item, false);
         ++draws;
     }
+    m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     return draws;
 }
 
@@ -64,13 +84,15 @@ int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const Ca
         return 0;
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    if (!m_front.texture || m_size != size) {
-        allocate(m_front, size, "front");
-        allocate(m_back, size, "back");
-        m_size = size;
-    }
+    if (!m_texture || m_size != size)
+        allocate(size);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
+    m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    m_gl->glClearColor(kNothing, kNothing, 0.0f, 0.0f);
+    m_gl->glClear(GL_COLOR_BUFFER_BIT);
     m_program.bind();
-    const int draws = draw(m_front, scene, camera, GL_BACK) + draw(m_back, scene, camera, GL_FRONT);
+    m_program.set(m_forwardLocation, glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]));
+    const int draws = draw(scene, camera, GL_BACK) + draw(scene, camera, GL_FRONT);
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));

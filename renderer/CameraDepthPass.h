@@ -10,22 +10,24 @@
 
 namespace shadowlab {
 
-// The casters' depth as the camera sees them, for the lit pass's contact shadows
-// (contact.enabled): two depth-only passes into textures the size of the frame, the nearest
-// front faces and the nearest back faces. Between the two a point is inside a caster; behind
-// both, the light passes behind it. Only casters are drawn, so a receiver that casts nothing
-// never darkens the march. Redrawn only when the scene, the camera or the frame's size changed.
+// The casters as the camera sees them, for the lit pass's contact shadows (contact.enabled):
+// the distance along the view of the nearest front faces and of the nearest back faces, in
+// one RG32F texture the size of the frame, from two depth-tested passes. Between the two a
+// point is inside a caster; behind both, the light passes behind it. Only casters are drawn,
+// so a receiver that casts nothing never darkens the march. Redrawn only when the scene, the
+// camera or the frame's size changed.
 class CameraDepthPass {
 public:
+    // Where no caster is, both channels hold this distance.
+    static constexpr float kNothing = 1e30f;
+
     explicit CameraDepthPass(GlFunctions* gl);
 
     // Draws when the scene (its generation), `camera` or `size` changed since the last draw;
     // returns the draws issued (0 when kept). Leaves the framebuffer binding as it was.
     int ensure(const GpuScene& scene, int sceneGeneration, const CameraFrame& camera, QSize size);
-    // Window depth in [0, 1] (GL_DEPTH_COMPONENT32F, nearest), 1 where no caster is: of the
-    // front faces, and of the back faces.
-    GLuint frontTexture() const { return m_front.texture.id(); }
-    GLuint backTexture() const { return m_back.texture.id(); }
+    // Red: front faces, green: back faces; world units along the view direction, nearest texel.
+    GLuint texture() const { return m_texture.id(); }
     QSize size() const { return m_size; }
 
 private:
@@ -35,18 +37,17 @@ private:
         QSize size;
         bool operator==(const Key&) const = default;
     };
-    struct Layer {
-        GlTexture texture;
-        GlFramebuffer framebuffer;
-    };
-    void allocate(Layer& layer, QSize size, const char* faces);
-    int draw(const Layer& layer, const GpuScene& scene, const CameraFrame& camera, GLenum culled);
+    void allocate(QSize size);
+    int draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled);
 
     GlFunctions* m_gl;
     ShaderProgram m_program;
     GLint m_mvpLocation;
-    Layer m_front;
-    Layer m_back;
+    GLint m_modelLocation;
+    GLint m_forwardLocation;
+    GlTexture m_texture;
+    GlTexture m_depth;              // the depth test's own, per pass
+    GlFramebuffer m_framebuffer;
     QSize m_size;
     std::optional<Key> m_key;
 };

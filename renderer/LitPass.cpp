@@ -21,7 +21,7 @@ namespace {
 
 constexpr GLuint kDiffuseUnit = 0;
 constexpr GLuint kShadowUnit = 1;
-constexpr GLuint kContactUnit = 8;     // and 9: after the shadow samplers and the min/max depth mip
+constexpr GLuint kContactUnit = 8;     // after the shadow samplers and the min/max depth mip
 
 // Above this share of the frame a mask saves less than drawing the straddling receivers twice
 // costs (both halves still run every vertex and set up every triangle).
@@ -212,11 +212,9 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
                       int(kShadowUnit + GLuint(i)));
     }
     if (usesContactShadows(settings)) {
-        p.program.set(p.techniqueUniform("uCameraFront"), int(kContactUnit));
-        p.program.set(p.techniqueUniform("uCameraBack"), int(kContactUnit + 1));
+        p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));
         p.program.set(p.techniqueUniform("uCameraViewProjection"), glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), camera.position)));
         p.program.set(p.techniqueUniform("uCameraForward"), glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]));
-        p.program.set(p.techniqueUniform("uCameraPlanes"), glm::vec2(float(camera.nearPlane), float(camera.farPlane)));
         p.program.set(p.techniqueUniform("uContactLength"), float(settings.contact.length));
         p.program.set(p.techniqueUniform("uContactThickness"), float(settings.contact.thickness));
         p.program.set(p.techniqueUniform("uContactSteps"), settings.contact.steps);
@@ -443,7 +441,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
     const bool shadows = settings.shadow.enabled && map != nullptr;
     const bool contact = shadows && usesContactShadows(settings);
-    if (contact && (m_contactFront == 0 || m_contactBack == 0))
+    if (contact && m_contactDepth == 0)
         throw RenderError(QStringLiteral("contact.enabled needs the camera's depth of the casters, which was not drawn"));
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
@@ -465,11 +463,9 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (shadows)
         bindShadowTextures(settings, *map, moments, readsRange ? depthRange : nullptr);
     if (contact) {
-        for (const auto& [unit, texture] : {std::pair{kContactUnit, m_contactFront}, std::pair{kContactUnit + 1, m_contactBack}}) {
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, texture);
-            m_gl->glBindSampler(unit, 0);
-        }
+        m_gl->glActiveTexture(GL_TEXTURE0 + kContactUnit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, m_contactDepth);
+        m_gl->glBindSampler(kContactUnit, 0);
         m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
     }
 
@@ -491,10 +487,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (shadows)
         unbindShadowTextures(settings, readsRange);
     if (contact) {
-        for (const GLuint unit : {kContactUnit, kContactUnit + 1}) {
-            m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-            m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-        }
+        m_gl->glActiveTexture(GL_TEXTURE0 + kContactUnit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
         m_gl->glActiveTexture(GL_TEXTURE0);
     }
     m_gl->glDisable(GL_CULL_FACE);

@@ -40,12 +40,9 @@ public:
     // Whether `settings` make the lit pass march contact shadows over the camera's depth of the
     // casters (renderer/CameraDepthPass), which must then be set with setContactDepth().
     static bool usesContactShadows(const Settings& settings);
-    // The camera's depth of the casters' front and back faces the next render() marches over; not owned.
-    void setContactDepth(GLuint front, GLuint back)
-    {
-        m_contactFront = front;
-        m_contactBack = back;
-    }
+    // The casters' front and back faces as the camera sees them (CameraDepthPass::texture())
+    // that the next render() marches over; not owned.
+    void setContactDepth(GLuint texture) { m_contactDepth = texture; }
 
     // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
     // technique that can skip its taps).
@@ -118,8 +115,7 @@ private:
     std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
     const ShadowReach* m_reach = nullptr;
-    GLuint m_contactFront = 0;
-    GLuint m_contactBack = 0;
+    GLuint m_contactDepth = 0;
     ReachUse m_reachUse;
     // The mask's program (the shadow pass's: positions through one matrix, no colour) and its
     // boxes, uploaded when the reach changes.

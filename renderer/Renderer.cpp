@@ -276,10 +276,10 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
         if (!m_cameraDepth)
             m_cameraDepth = std::make_unique<CameraDepthPass>(m_gl);
         stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size);
-        m_litPass.setContactDepth(m_cameraDepth->frontTexture(), m_cameraDepth->backTexture());
+        m_litPass.setContactDepth(m_cameraDepth->texture());
         m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     } else {
-        m_litPass.setContactDepth(0, 0);
+        m_litPass.setContactDepth(0);
     }
     m_litPass.setShadowViews(&m_views);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);

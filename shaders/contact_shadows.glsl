@@ -6,21 +6,12 @@
 // by a fixed thickness). contact.thickness still bounds how deep a caster may be, for one with
 // no back faces (an open mesh). What the screen does not show is not known: the march stops at
 // its edges. The lit pass takes the smaller of this and the map's visibility.
-uniform sampler2D uCameraFront;     // window depth of the casters' front faces, this frame's camera, nearest
-uniform sampler2D uCameraBack;      // ... of their back faces
+uniform sampler2D uCameraDepths;    // the casters' distance along the view: nearest front faces (r), back faces (g); 1e30 none
 uniform mat4 uCameraViewProjection; // camera-relative world -> clip
 uniform vec3 uCameraForward;        // unit view direction
-uniform vec2 uCameraPlanes;         // near and far
 uniform float uContactLength;       // world units
 uniform float uContactThickness;    // world units
 uniform int uContactSteps;
-
-// Distance along the view direction of a window depth of the camera's perspective projection.
-float cameraViewDepth(float windowDepth)
-{
-    float n = uCameraPlanes.x, f = uCameraPlanes.y;
-    return 2.0 * n * f / (f + n - (2.0 * windowDepth - 1.0) * (f - n));
-}
 
 // 1 lit, 0 in a caster's contact shadow. Called in uniform control flow: it takes derivatives.
 float contactVisibility(vec3 position, vec3 toLight)
@@ -33,28 +24,30 @@ float contactVisibility(vec3 position, vec3 toLight)
 #ifdef LIGHT_PERSPECTIVE
     reach = min(reach, distance(uLightPosition, position));     // never past the light
 #endif
-    float stepLength = reach / float(uContactSteps);
+    // The march's ends on screen: clip coordinates are linear in the point, so each step is
+    // a blend of the two, and so is its depth along the view.
+    vec4 clipStart = uCameraViewProjection * vec4(position, 1.0);
+    vec4 clipEnd = uCameraViewProjection * vec4(position + toLight * reach, 1.0);
+    float depthEnd = dot(position + toLight * reach, uCameraForward);
+    const float kNothing = 1e29;        // below the prepass's clear value: no caster there
     // Each pixel's steps start at its own offset (interleaved gradient noise): noise that
     // neighbours average, not bands.
     float start = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    vec2 size = vec2(textureSize(uCameraFront, 0));
+    vec2 size = vec2(textureSize(uCameraDepths, 0));
     for (int i = 0; i < uContactSteps; ++i) {
-        vec3 point = position + toLight * (stepLength * (float(i) + start));
-        vec4 clip = uCameraViewProjection * vec4(point, 1.0);
+        float t = (float(i) + start) / float(uContactSteps);
+        vec4 clip = mix(clipStart, clipEnd, t);
         if (clip.w <= 0.0)
             break;
         vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0))))
             break;
-        ivec2 texel = ivec2(uv * size);
-        float front = texelFetch(uCameraFront, texel, 0).r;
-        if (front >= 1.0)
-            continue;           // no caster there
-        float pointDepth = dot(point, uCameraForward);
-        float behind = pointDepth - cameraViewDepth(front);
-        float back = texelFetch(uCameraBack, texel, 0).r;
-        bool inside = back >= 1.0 || pointDepth < cameraViewDepth(back) + tolerance;
-        if (behind > tolerance && behind < uContactThickness && inside)
+        vec2 faces = texelFetch(uCameraDepths, ivec2(uv * size), 0).rg;
+        // Behind the front face by more than the tolerance and less than the thickness, and
+        // in front of the back face (or there is none): inside a caster.
+        float pointDepth = mix(depth, depthEnd, t);
+        float behind = pointDepth - faces.r;
+        if (behind > tolerance && behind < uContactThickness && (faces.g > kNothing || pointDepth < faces.g + tolerance))
             return 0.0;
     }
     return 1.0;
