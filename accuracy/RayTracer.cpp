@@ -5,9 +5,64 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace shadowlab {
+
+namespace {
+
+// Embree's filter for a cut-out caster, for occlusion and intersection queries alike: a hit
+// where the mask is clear is not a hit.
+void cutoutFilter(const RTCFilterFunctionNArguments* args)
+{
+    const auto* mask = static_cast<const RayTracer::CutoutMask*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1)
+            continue;
+        const unsigned primitive = RTCHitN_primID(args->hit, args->N, i);
+        if (!mask->solidAt(primitive, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+            args->valid[i] = 0;
+    }
+}
+
+// Alpha planes of the scene's images, shared by every object that reads one.
+std::shared_ptr<const std::vector<std::uint8_t>> alphaPlane(const QImage& source)
+{
+    const QImage image = source.convertToFormat(QImage::Format_RGBA8888);
+    auto alpha = std::make_shared<std::vector<std::uint8_t>>(std::size_t(image.width()) * std::size_t(image.height()));
+    for (int y = 0; y < image.height(); ++y) {
+        const uchar* row = image.constScanLine(y);
+        for (int x = 0; x < image.width(); ++x)
+            (*alpha)[std::size_t(y) * std::size_t(image.width()) + std::size_t(x)] = row[4 * x + 3];
+    }
+    return alpha;
+}
+
+} // namespace
+
+float RayTracer::CutoutMask::alphaAt(glm::vec2 uv) const
+{
+    // Texel centres at half-integers, wrapped as GL_REPEAT wraps each of the four texels.
+    const double x = double(uv.x) * width - 0.5, y = double(uv.y) * height - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double tx = x - fx, ty = y - fy;
+    const auto wrap = [](double i, int n) { return int(((long long)(i) % n + n) % n); };
+    const auto at = [&](double i, double j) { return float((*alpha)[std::size_t(wrap(j, height)) * std::size_t(width) + std::size_t(wrap(i, width))]) / 255.0f; };
+    const float top = float(1.0 - tx) * at(fx, fy) + float(tx) * at(fx + 1.0, fy);
+    const float bottom = float(1.0 - tx) * at(fx, fy + 1.0) + float(tx) * at(fx + 1.0, fy + 1.0);
+    return float(1.0 - ty) * top + float(ty) * bottom;
+}
+
+bool RayTracer::CutoutMask::solidAt(unsigned primitive, float u, float v) const
+{
+    if (std::size_t(primitive) * 3 + 2 >= indices.size())
+        return true;
+    const glm::vec2 uv = (1.0f - u - v) * uvs[indices[3 * primitive]] + u * uvs[indices[3 * primitive + 1]] + v * uvs[indices[3 * primitive + 2]];
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+        return true;
+    return alphaAt(uv) >= cutoff;
+}
 
 RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(origin)
 {
@@ -19,8 +74,15 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
     rtcSetSceneFlags(m_scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(m_scene, RTC_BUILD_QUALITY_HIGH);
 
+    std::vector<std::shared_ptr<const std::vector<std::uint8_t>>> alphas(scene.images.size());
     for (const SceneObject& object : scene.objects) {
         if (!object.castsShadow)
+            continue;
+        // Only an image's alpha varies over a surface; a cut-off above the alpha of a flat or
+        // procedural texture (1) leaves nothing to trace.
+        const float cutoff = textureAlphaCutoff(object);
+        const bool imaged = object.texture == TextureKind::Image && object.image >= 0 && std::size_t(object.image) < scene.images.size();
+        if (cutoff > 1.0f && !imaged)
             continue;
         const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -36,6 +98,26 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
                                                                        3 * sizeof(unsigned), mesh.indices.size() / 3));
         for (std::size_t i = 0; i < mesh.indices.size(); ++i)
             indices[i] = mesh.indices[i];
+        if (cutoff > 0.0f && imaged && !scene.images[std::size_t(object.image)].isNull()) {
+            if (!rtcGetDeviceProperty(m_device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+                throw TraceError(QStringLiteral("this Embree was built without filter functions, which cut-out casters need; "
+                                                "install Debian's libembree3"));
+            auto& alpha = alphas[std::size_t(object.image)];
+            if (!alpha)
+                alpha = alphaPlane(scene.images[std::size_t(object.image)]);
+            auto mask = std::make_unique<CutoutMask>();
+            for (const Vertex& v : mesh.vertices)
+                mask->uvs.push_back(v.uv);
+            mask->indices.assign(mesh.indices.begin(), mesh.indices.end());
+            mask->alpha = alpha;
+            mask->width = scene.images[std::size_t(object.image)].width();
+            mask->height = scene.images[std::size_t(object.image)].height();
+            mask->cutoff = cutoff;
+            rtcSetGeometryUserData(geometry, mask.get());
+            rtcSetGeometryOccludedFilterFunction(geometry, cutoutFilter);
+            rtcSetGeometryIntersectFilterFunction(geometry, cutoutFilter);
+            m_masks.push_back(std::move(mask));
+        }
         rtcCommitGeometry(geometry);
         rtcAttachGeometry(m_scene, geometry);
         rtcReleaseGeometry(geometry);

@@ -2,15 +2,22 @@
 
 #include "Scene.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace shadowlab {
 
 // Embree occlusion queries against a Scene's shadow casters, in world space. Geometry is
 // stored relative to `origin` (pick the camera position) so float precision holds near what
 // is measured even when the scene sits far from the world origin. Queries are thread-safe.
+// Cut-out casters (SceneObject::alphaCutoff) are traced through their holes: an occlusion filter
+// reads the texture's alpha at the hit, bilinear at full resolution as the shadow pass reads it.
 class RayTracer {
 public:
     RayTracer(const Scene& scene, const glm::dvec3& origin);
@@ -27,12 +34,32 @@ public:
 
     const glm::dvec3& origin() const { return m_origin; }
     int triangleCount() const { return m_triangles; }
+    // Casters traced through a mask (cut-outs whose texture has an alpha that can fall below
+    // the cut-off).
+    int maskedCasterCount() const { return int(m_masks.size()); }
+
+    // What the occlusion filter of one cut-out caster reads: its triangles' texture coordinates
+    // and its texture's alpha, 0..255, rows from the top as uploaded.
+    struct CutoutMask {
+        std::vector<glm::vec2> uvs;         // per vertex
+        std::vector<unsigned> indices;      // three per triangle
+        std::shared_ptr<const std::vector<std::uint8_t>> alpha;
+        int width = 0;
+        int height = 0;
+        float cutoff = 0.0f;                // textureAlphaCutoff(), on alpha in 0..1
+
+        // The texture's alpha at `uv`, bilinear with repeat, as GL samples level 0.
+        float alphaAt(glm::vec2 uv) const;
+        // Whether the surface is there at barycentric (u, v) of triangle `primitive`.
+        bool solidAt(unsigned primitive, float u, float v) const;
+    };
 
 private:
     glm::dvec3 m_origin;
     RTCDevice m_device = nullptr;
     RTCScene m_scene = nullptr;
     int m_triangles = 0;
+    std::vector<std::unique_ptr<CutoutMask>> m_masks;   // each one geometry's filter data
 };
 
 } // namespace shadowlab

@@ -5,7 +5,7 @@ namespace shadowlab {
 const QStringList& sceneNames()
 {
     static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"),
-                                   QStringLiteral("bleeding"), QStringLiteral("city")};
+                                   QStringLiteral("bleeding"), QStringLiteral("foliage"), QStringLiteral("city")};
     return names;
 }
 

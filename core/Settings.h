@@ -138,6 +138,9 @@ struct ShadowSettings {
     double distance = 100.0;                // world units from the camera, (0, 1e7]; used with cascades > 1
     double blend = 0.1;                     // share of each cascade blended into the next at its far end, [0, 0.5]
     bool showCascades = false;              // tint receivers by the cascade (or cube face) they read
+    // Cut-out casters (SceneObject::alphaCutoff) cast through their holes; false casts them whole,
+    // as a renderer that ignores the mask does (the eye and the reference still see the holes).
+    bool cutouts = true;
 
     bool operator==(const ShadowSettings&) const = default;
 };

@@ -479,6 +479,11 @@ std::vector<Entry> makeEntries()
     e.push_back(presented(boolKey("shadow.show_cascades", [](auto& s) -> auto& { return s.shadow.showCascades; },
                         "Tint receivers by the cascade (red, green, blue, yellow) or cube face they read: where each map's texels go"),
                           {.label = QStringLiteral("Tint by cascade or cube face"), .group = kShadowMap}));
+    e.push_back(presented(boolKey("shadow.cutouts", [](auto& s) -> auto& { return s.shadow.cutouts; },
+                        "Cut-out casters (glTF alphaMode MASK: leaves, fences) cast through their holes, a texture lookup and discard "
+                        "in the shadow pass; off casts them as solid as their quads, as a renderer that ignores the mask "
+                        "(the eye and the reference still see the holes, so the report shows what ignoring it costs)"),
+                          {.label = QStringLiteral("Cut-out casters"), .group = kShadowMap}));
     e.push_back(presented(boolKey("contact.enabled", [](auto& s) -> auto& { return s.contact.enabled; },
                         "Contact shadows: a short march toward the light over the camera's depth of the casters (front and back faces), "
                         "combined with the map's shadow as the smaller visibility; brings back the shadow a bias lifts off contacts "

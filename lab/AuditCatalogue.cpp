@@ -382,6 +382,13 @@ std::vector<AuditCase> makeCatalogue()
     }
     add("degenerate (zero-area) triangle in a mesh", "ignored: finite; error <= 2 %",
         onScene(degenerateTriangleScene(), accurate(presetSettings(QStringLiteral("seed")), 0.02)));
+    add("cut-out with nothing left (base alpha 0)", "neither seen nor cast, in the map and the reference alike; finite; error <= 2 %",
+        onScene([] {
+            Scene s = groundAndCube(QStringLiteral("vanished cube"), glm::dmat4(1.0));
+            s.objects[1].alphaCutoff = 0.5f;
+            s.objects[1].baseAlpha = 0.0f;
+            return s;
+        }(), accurate(seedWith({QStringLiteral("light.position=-4,4,0"), QStringLiteral("light.target=0,-0.5,0")}), 0.02)));
     add("fit = scene on seed", "smaller texels than the classic +-10 volume, error no worse (+0.5 %)", [](HeadlessRenderer& h) {
         const Measurement manual = measure(h, seedWith({"light.fit=manual"}));
         const double manualTexel = h.renderer().lastFrame().texelWorldSize;

@@ -3,6 +3,7 @@
 #include "InputFile.h"
 #include "MessageText.h"
 #include "MomentMath.h"
+#include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
@@ -204,6 +205,10 @@ std::vector<SweepEntry> sweepAround(const Settings& base)
                        {QStringLiteral("bias.cull_front=%1").arg(base.bias.cullFront ? "false" : "true")}});
     entries.push_back({base.contact.enabled ? QStringLiteral("no contact shadows") : QStringLiteral("contact shadows"),
                        {QStringLiteral("contact.enabled=%1").arg(base.contact.enabled ? "false" : "true")}});
+    // What ignoring a cut-out mask costs, where the scene has one.
+    if (sceneHasCutouts(base.scene))
+        entries.push_back({base.shadow.cutouts ? QStringLiteral("cut-outs cast whole") : QStringLiteral("cut-outs through their mask"),
+                           {QStringLiteral("shadow.cutouts=%1").arg(base.shadow.cutouts ? "false" : "true")}});
 
     // Only what is valid on `base` (errors; warnings pass), each configuration once, the first
     // label kept.

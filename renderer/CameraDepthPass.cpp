@@ -26,13 +26,16 @@ GlTexture makeTarget(GlFunctions* gl, QSize size, GLint format, GLenum layout, G
 
 } // namespace
 
-CameraDepthPass::CameraDepthPass(GlFunctions* gl)
-    : m_gl(gl), m_program(gl, QStringLiteral("cameradepth.vert"), QStringLiteral("cameradepth.frag"), {}),
-      m_mvpLocation(m_program.uniform("uModelViewProjection")),
-      m_modelLocation(m_program.uniform("uModel")),
-      m_forwardLocation(m_program.uniform("uCameraForward"))
+CameraDepthPass::Variant::Variant(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("cameradepth.vert"), QStringLiteral("cameradepth.frag"), defines),
+      mvp(program.uniform("uModelViewProjection")),
+      model(program.uniform("uModel")),
+      forward(program.uniform("uCameraForward")),
+      alphaCutoff(program.uniform("uAlphaCutoff"))
 {
 }
+
+CameraDepthPass::CameraDepthPass(GlFunctions* gl) : m_gl(gl), m_plain(gl, {}) {}
 
 void CameraDepthPass::allocate(QSize size)
 {
@@ -64,15 +67,32 @@ int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLen
     m_gl->glColorMask(culled == GL_BACK, culled == GL_FRONT, GL_FALSE, GL_FALSE);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    const glm::vec3 forward(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]);
+    Variant* bound = nullptr;
+    m_gl->glActiveTexture(GL_TEXTURE0);
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
         if (!item.castsShadow || isOutsideFrustum(camera.viewProjection, item.bounds, false))
             continue;
-        m_program.set(m_mvpLocation, glm::mat4(camera.viewProjection * item.model));
-        m_program.set(m_modelLocation, glm::mat4(toCamera * item.model));
+        const bool cutout = item.alphaCutoff > 0.0f;
+        if (cutout && !m_cutout)
+            m_cutout = std::make_unique<Variant>(m_gl, QStringList{QStringLiteral("ALPHA_CUTOUT")});
+        Variant& v = cutout ? *m_cutout : m_plain;
+        if (&v != bound) {
+            v.program.bind();
+            v.program.set(v.forward, forward);
+            bound = &v;
+        }
+        v.program.set(v.mvp, glm::mat4(camera.viewProjection * item.model));
+        v.program.set(v.model, glm::mat4(toCamera * item.model));
+        if (cutout) {
+            v.program.set(v.alphaCutoff, item.alphaCutoff);
+            m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
+        }
         scene.draw(item, false);
         ++draws;
     }
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     return draws;
 }
@@ -90,8 +110,6 @@ int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const Ca
     m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     m_gl->glClearColor(kNothing, kNothing, 0.0f, 0.0f);
     m_gl->glClear(GL_COLOR_BUFFER_BIT);
-    m_program.bind();
-    m_program.set(m_forwardLocation, glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]));
     const int draws = draw(scene, camera, GL_BACK) + draw(scene, camera, GL_FRONT);
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});

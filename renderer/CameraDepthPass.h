@@ -6,6 +6,7 @@
 
 #include <QSize>
 
+#include <memory>
 #include <optional>
 
 namespace shadowlab {
@@ -14,8 +15,8 @@ namespace shadowlab {
 // the distance along the view of the nearest front faces and of the nearest back faces, in
 // one RG32F texture the size of the frame, from two depth-tested passes. Between the two a
 // point is inside a caster; behind both, the light passes behind it. Only casters are drawn,
-// so a receiver that casts nothing never darkens the march. Redrawn only when the scene, the
-// camera or the frame's size changed.
+// so a receiver that casts nothing never darkens the march, and cut-outs leave their holes out
+// as the eye sees them. Redrawn only when the scene, the camera or the frame's size changed.
 class CameraDepthPass {
 public:
     // Where no caster is, both channels hold this distance.
@@ -38,13 +39,16 @@ private:
         bool operator==(const Key&) const = default;
     };
     void allocate(QSize size);
+    struct Variant {
+        Variant(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint mvp, model, forward, alphaCutoff;
+    };
     int draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled);
 
     GlFunctions* m_gl;
-    ShaderProgram m_program;
-    GLint m_mvpLocation;
-    GLint m_modelLocation;
-    GLint m_forwardLocation;
+    Variant m_plain;
+    std::unique_ptr<Variant> m_cutout;  // compiled for the first scene with cut-outs
     GlTexture m_texture;
     GlTexture m_depth;              // the depth test's own, per pass
     GlFramebuffer m_framebuffer;

@@ -4,11 +4,22 @@
 
 namespace shadowlab {
 
-DepthPass::DepthPass(GlFunctions* gl)
-    : m_gl(gl), m_program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), {}),
-      m_mvpLocation(m_program.uniform("uLightModelViewProjection"))
-    , m_reversedDepth(hasClipControl())
+DepthPass::Variant::Variant(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), defines),
+      mvp(program.uniform("uLightModelViewProjection")),
+      alphaCutoff(program.uniform("uAlphaCutoff"))
 {
+}
+
+DepthPass::DepthPass(GlFunctions* gl) : m_gl(gl), m_plain(gl, {}), m_reversedDepth(hasClipControl()) {}
+
+DepthPass::Variant& DepthPass::variant(bool cutout)
+{
+    if (!cutout)
+        return m_plain;
+    if (!m_cutout)
+        m_cutout = std::make_unique<Variant>(m_gl, QStringList{QStringLiteral("ALPHA_CUTOUT"), QStringLiteral("CUTOUT_FULL_RESOLUTION")});
+    return *m_cutout;
 }
 
 void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
@@ -36,12 +47,13 @@ void DepthPass::clearTile(const ShadowMap& map, bool reversedDepth, const QRect&
     m_gl->glDisable(GL_SCISSOR_TEST);
 }
 
-int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map)
+int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, bool cutouts)
 {
-    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()));
+    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()), cutouts);
 }
 
-int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile)
+int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile,
+                          bool cutouts)
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
     clearTile(map, reversed, tile);
@@ -65,16 +77,28 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     m_gl->glEnable(GL_SCISSOR_TEST);
     m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
 
-    m_program.bind();
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    Variant* bound = nullptr;
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
         if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, clampDepth))
             continue;
-        m_program.set(m_mvpLocation, glm::mat4(light.depthViewProjection * item.model));
+        const bool cutout = cutouts && item.alphaCutoff > 0.0f;
+        Variant& v = variant(cutout);
+        if (&v != bound) {
+            v.program.bind();
+            bound = &v;
+        }
+        v.program.set(v.mvp, glm::mat4(light.depthViewProjection * item.model));
+        if (cutout) {
+            v.program.set(v.alphaCutoff, item.alphaCutoff);
+            m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
+        }
         scene.draw(item, false);
         ++draws;
     }
 
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_gl->glBindVertexArray(0);
     m_gl->glDisable(GL_SCISSOR_TEST);
     // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.

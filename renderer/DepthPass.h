@@ -5,12 +5,16 @@
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
+#include <memory>
+
 namespace shadowlab {
 
 // Shadow pass: renders the casters' depth from the light into the shadow map. Casters
 // entirely outside the light's volume are not drawn. Options from BiasSettings: front-face
 // culling (only back faces reach the map) and glPolygonOffset. With a reversed-depth light
 // frame it renders through glClipControl(zero-to-one), clearing to 0 and keeping the greater depth.
+// Cut-out casters (DrawItem::alphaCutoff) draw with a variant that discards their holes, built on
+// the first one drawn, unless `cutouts` is false (shadow.cutouts: cast them whole).
 class DepthPass {
 public:
     // Needs `gl`'s context current: looks up glClipControl (GL 4.5 or ARB_clip_control).
@@ -22,15 +26,26 @@ public:
     // Clears the map to the far depth: every lookup compares lit.
     void clear(const ShadowMap& map, bool reversedDepth);
     // Clears, then draws the casters. Returns the number of draw calls issued.
-    int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map);
+    int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, bool cutouts = true);
     // The same for one tile of a map of several views (`tile` in texels): clears the tile only.
-    int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile);
+    int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile,
+                   bool cutouts = true);
     void clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile);
 
+    // Whether the cut-out variant has been compiled (a scene with cut-outs was drawn).
+    bool hasCutoutVariant() const { return m_cutout != nullptr; }
+
 private:
+    struct Variant {
+        Variant(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint mvp, alphaCutoff;
+    };
+    Variant& variant(bool cutout);
+
     GlFunctions* m_gl;
-    ShaderProgram m_program;
-    GLint m_mvpLocation;
+    Variant m_plain;
+    std::unique_ptr<Variant> m_cutout;
     bool m_reversedDepth = false;
 };
 

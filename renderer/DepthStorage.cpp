@@ -36,7 +36,7 @@ public:
 
     int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double*) override
     {
-        return m_pass.renderTile(scene, light, settings.bias, m_map, tile);
+        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, settings.shadow.cutouts);
     }
 
 private:

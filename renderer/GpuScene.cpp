@@ -120,12 +120,13 @@ void GpuScene::buildDrawItems()
         item.baseColour = object.baseColour;
         item.castsShadow = object.castsShadow;
         item.receivesShadow = object.receivesShadow;
+        item.alphaCutoff = textureAlphaCutoff(object);
         item.mesh = object.mesh;
         return item;
     };
     // Batches: per cell of a grid over the scene's ground plan and per material and flags.
     // Flat one-sided meshes (grounds) stay alone: the shadow reach knows them by their plane.
-    using Key = std::tuple<int, int, int, bool, bool>;    // cell, texture kind, image, casts, receives
+    using Key = std::tuple<int, int, int, bool, bool, float>;    // cell, texture kind, image, casts, receives, alpha cut-off
     std::map<Key, std::vector<std::size_t>> groups;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const SceneObject& object = objects[i];
@@ -138,7 +139,8 @@ void GpuScene::buildDrawItems()
         const glm::dvec3 at = (m_objectBounds[i].center() - m_bounds.min) / size;
         const int cx = std::clamp(int(at.x * kBatchCells), 0, kBatchCells - 1);
         const int cz = std::clamp(int(at.z * kBatchCells), 0, kBatchCells - 1);
-        groups[{cz * kBatchCells + cx, int(object.texture), object.image, object.castsShadow, object.receivesShadow}].push_back(i);
+        groups[{cz * kBatchCells + cx, int(object.texture), object.image, object.castsShadow, object.receivesShadow,
+                textureAlphaCutoff(object)}].push_back(i);
     }
     for (const auto& [key, members] : groups) {
         if (members.size() == 1) {
@@ -153,6 +155,7 @@ void GpuScene::buildDrawItems()
         item.model = glm::translate(glm::dmat4(1.0), origin);
         item.castsShadow = std::get<3>(key);
         item.receivesShadow = std::get<4>(key);
+        item.alphaCutoff = std::get<5>(key);
         item.batch = true;
         std::vector<BatchVertex> vertices;
         std::vector<std::uint32_t> indices;

@@ -11,8 +11,8 @@
 
 namespace shadowlab {
 
-// What one draw call draws: a scene object, or a batch of small objects that share a texture
-// and shadow flags, merged into one vertex buffer in world space around the batch's centre
+// What one draw call draws: a scene object, or a batch of small objects that share a texture,
+// shadow flags and alpha cut-off, merged into one vertex buffer in world space around the batch's centre
 // (so float keeps the precision of a scene far from the origin), its base colours per vertex.
 struct DrawItem {
     std::vector<std::size_t> objects;   // indices into scene().objects
@@ -23,6 +23,9 @@ struct DrawItem {
     bool castsShadow = true;
     bool receivesShadow = true;
     bool batch = false;
+    // A cut-out's texture alpha below which it is not there (textureAlphaCutoff); 0: opaque.
+    // Items that honour a mask draw with their pass's ALPHA_CUTOUT variant (shaders/cutout.glsl).
+    float alphaCutoff = 0.0f;
     int mesh = 0;                       // an object's mesh; a batch's own vertex array otherwise
 };
 
@@ -44,6 +47,7 @@ public:
     const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
     // What the passes draw: every object once, alone or in a batch.
     const std::vector<DrawItem>& drawItems() const { return m_items; }
+    bool hasCutouts() const { return m_scene.hasCutouts(); }
     // Binds the item's vertex array and draws it; with `colour`, an object's base colour is set
     // as the constant of attribute 3 (the passes that read positions only leave it alone).
     void draw(const DrawItem& item, bool colour = true) const;

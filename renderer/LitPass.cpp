@@ -48,7 +48,8 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       lightPosition(program.uniform("uLightPosition")),
       lightDirection(program.uniform("uLightDirection")),
       biasSlope(program.uniform("uBiasSlope")),
-      biasMin(program.uniform("uBiasMin"))
+      biasMin(program.uniform("uBiasMin")),
+      alphaCutoff(program.uniform("uAlphaCutoff"))
 {
 }
 
@@ -62,7 +63,7 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
 
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
-QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
+QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach, bool cutout)
 {
     QStringList defines;
     // Without lookups (shadows off, or receivers out of reach) no technique, bias or early-out
@@ -99,6 +100,8 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("CONTACT_SHADOWS");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
+    if (cutout)
+        defines << QStringLiteral("ALPHA_CUTOUT");
     if (measure)
         defines << QStringLiteral("MEASURE");
     else if (settings.shading.texelDensity && settings.shadow.enabled)
@@ -116,14 +119,22 @@ bool LitPass::usesDepthRange(const Settings& settings)
     return settings.shadow.enabled && settings.filter.earlyOut && shadowTechnique(settings.filter.mode).penumbraOnly;
 }
 
-LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
+LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach, bool cutout)
 {
-    const QStringList defines = variantDefines(settings, measure, reversedDepth, outOfReach);
+    const QStringList defines = variantDefines(settings, measure, reversedDepth, outOfReach, cutout);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
         it = m_programs.emplace(key, std::make_unique<Program>(m_gl, defines)).first;
     return *it->second;
+}
+
+LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
+{
+    Programs p{&programFor(settings, measure, reversedDepth, outOfReach)};
+    if (scene.hasCutouts())
+        p.cutout = &programFor(settings, measure, reversedDepth, outOfReach, true);
+    return p;
 }
 
 void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map)
@@ -299,18 +310,27 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
     m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 }
 
-void LitPass::drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                           const std::vector<std::pair<double, std::size_t>>& order)
 {
     const auto& items = scene.drawItems();
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    Program* bound = nullptr;
     for (const auto& [distance, i] : order) {
         const DrawItem& item = items[i];
+        const bool cutout = item.alphaCutoff > 0.0f && programs.cutout != nullptr;
+        Program& p = cutout ? *programs.cutout : *programs.plain;
+        if (&p != bound) {
+            p.program.bind();
+            bound = &p;
+        }
         p.program.set(p.model, glm::mat4(toCamera * item.model));
         p.program.set(p.normalMatrix, glm::mat3(item.normalMatrix));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * item.model));
         p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * item.model));
         p.program.set(p.receives, int(item.receivesShadow));
+        if (cutout)
+            p.program.set(p.alphaCutoff, item.alphaCutoff);
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
         scene.draw(item);
     }
@@ -411,7 +431,7 @@ void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
     m_gl->glActiveTexture(GL_TEXTURE0);
 }
 
-void LitPass::drawMaskedOrder(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                               const std::vector<std::pair<double, std::size_t>>& everywhere,
                               const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor)
 {
@@ -471,13 +491,19 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
 
     const ShadowMap* shadowMap = shadows ? map : nullptr;
     if (!m_lookupOrder.empty() || !m_maskedLookupOrder.empty()) {
-        Program& lookup = programFor(settings, measure, light.reversedDepth);
-        setFrameUniforms(lookup, camera, light, settings, shadowMap, readsRange, depthRange);
+        const Programs lookup = programsFor(scene, settings, measure, light.reversedDepth, false);
+        for (Program* p : {lookup.plain, lookup.cutout}) {
+            if (p)
+                setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
+        }
         drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &pixels);
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
-        Program& plain = programFor(settings, measure, light.reversedDepth, true);
-        setFrameUniforms(plain, camera, light, settings, shadowMap, readsRange, depthRange);
+        const Programs plain = programsFor(scene, settings, measure, light.reversedDepth, true);
+        for (Program* p : {plain.plain, plain.cutout}) {
+            if (p)
+                setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
+        }
         drawMaskedOrder(plain, scene, camera, light, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
     }
     const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());

@@ -49,8 +49,10 @@ public:
     static bool usesDepthRange(const Settings& settings);
 
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics);
-    // `outOfReach`: the variant for receivers no caster reaches, which takes no lookup.
-    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false);
+    // `outOfReach`: the variant for receivers no caster reaches, which takes no lookup; `cutout`:
+    // the one for cut-out objects (DrawItem::alphaCutoff), built only for a scene that has them.
+    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false,
+                                      bool cutout = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
 
     // The light's views the next render() reads (one map, cascades or cube faces, each in its
@@ -76,12 +78,19 @@ private:
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
         GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
-        GLint lightPosition, lightDirection, biasSlope, biasMin;
+        GLint lightPosition, lightDirection, biasSlope, biasMin, alphaCutoff;
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);
     };
 
-    Program& programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach = false);
+    // A frame's variant for opaque objects and, in a scene with cut-outs, the one for those.
+    struct Programs {
+        Program* plain = nullptr;
+        Program* cutout = nullptr;
+    };
+
+    Program& programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach = false, bool cutout = false);
+    Programs programsFor(const GpuScene& scene, const Settings& settings, bool measure, bool reversedDepth, bool outOfReach);
     void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map);
     void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings, const ShadowMap* map,
                           bool readsRange, const DepthRangePass* depthRange);
@@ -90,7 +99,7 @@ private:
     // Marks the reach's boxes in the stencil buffer (1 inside) within `pixels`, colour and
     // depth untouched.
     void drawReachMask(const CameraFrame& camera, const QRect& pixels);
-    void drawObjects(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+    void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                      const std::vector<std::pair<double, std::size_t>>& order);
     // The draw orders of this frame: the receivers in view nearest first, split by the reach;
     // sets m_reachUse (whether a mask is drawn).
@@ -103,7 +112,7 @@ private:
     void unbindShadowTextures(const Settings& settings, bool readsRange);
     // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1 (inside
     // `scissor` when given).
-    void drawMaskedOrder(Program& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+    void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                          const std::vector<std::pair<double, std::size_t>>& everywhere,
                          const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor);
 

@@ -12,7 +12,8 @@ MomentsPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       depthRange(program.uniform("uDepthRange")),
       farPlane(program.uniform("uFarPlane")),
       exponentPositive(program.uniform("uExponentPositive")),
-      exponentNegative(program.uniform("uExponentNegative"))
+      exponentNegative(program.uniform("uExponentNegative")),
+      alphaCutoff(program.uniform("uAlphaCutoff"))
 {
 }
 
@@ -33,12 +34,29 @@ QStringList MomentsPass::variantDefines(const Settings& settings, bool perspecti
     return defines;
 }
 
-MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile)
+MomentsPass::Program& MomentsPass::program(const LightFrame& light, const Settings& settings, bool cutout)
 {
-    const QStringList defines = variantDefines(settings, light.perspective);
+    QStringList defines = variantDefines(settings, light.perspective);
+    if (cutout)
+        defines << QStringLiteral("ALPHA_CUTOUT") << QStringLiteral("CUTOUT_FULL_RESOLUTION");
     std::unique_ptr<Program>& p = m_programs[defines.join(QLatin1Char(';'))];
     if (!p)
         p = std::make_unique<Program>(m_gl, defines);
+    return *p;
+}
+
+void MomentsPass::setLightUniforms(Program& p, const LightFrame& light, const Settings& settings)
+{
+    const MomentWarp warp = momentWarp(settings);
+    p.program.set(p.depthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
+    p.program.set(p.exponentPositive, float(warp.positive));
+    p.program.set(p.exponentNegative, float(warp.negative));
+    p.program.set(p.farPlane, 0);
+}
+
+MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile)
+{
+    Program* p = &program(light, settings, false);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState fill;
@@ -51,11 +69,8 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     m_gl->glDisable(GL_SCISSOR_TEST);
 
-    const MomentWarp warp = momentWarp(settings);
     p->program.bind();
-    p->program.set(p->depthRange, glm::vec2(float(light.volume.nearPlane), float(light.volume.farPlane)));
-    p->program.set(p->exponentPositive, float(warp.positive));
-    p->program.set(p->exponentNegative, float(warp.negative));
+    setLightUniforms(*p, light, settings);
     // The far plane's moments everywhere first (computed by the same encoding, so no copy of it
     // lives on the CPU).
     p->program.set(p->farPlane, 1);
@@ -83,15 +98,35 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
     // for acne, would leave the far plane behind receivers, and the exponential warps read
     // that gap as light).
-    Program& p = begin(light, settings, map, tile);
+    Program& plain = begin(light, settings, map, tile);
+    Program* cutoutProgram = nullptr;    // set up on the first cut-out caster
+    Program* bound = &plain;
+    m_gl->glActiveTexture(GL_TEXTURE0);
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
         if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, true))
             continue;
+        const bool cutout = settings.shadow.cutouts && item.alphaCutoff > 0.0f;
+        if (cutout && !cutoutProgram) {
+            cutoutProgram = &program(light, settings, true);
+            cutoutProgram->program.bind();
+            setLightUniforms(*cutoutProgram, light, settings);
+            bound = cutoutProgram;
+        }
+        Program& p = cutout ? *cutoutProgram : plain;
+        if (&p != bound) {
+            p.program.bind();
+            bound = &p;
+        }
         p.program.set(p.mvp, glm::mat4(light.depthViewProjection * item.model));
+        if (cutout) {
+            p.program.set(p.alphaCutoff, item.alphaCutoff);
+            m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
+        }
         scene.draw(item, false);
         ++draws;
     }
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});
     return draws;

@@ -17,7 +17,8 @@ namespace shadowlab {
 // the selected moment technique's GLSL (its row's file with MOMENTS_PASS), over a map first
 // filled with the far plane's moments. Depth clamping and caster culling as in the depth pass;
 // every face is drawn and no polygon offset applied (bias.cull_front and the offsets are the
-// depth map's cures for acne, which moments do not need).
+// depth map's cures for acne, which moments do not need). Cut-out casters leave their holes out
+// (their ALPHA_CUTOUT variant) unless shadow.cutouts is off.
 class MomentsPass {
 public:
     explicit MomentsPass(GlFunctions* gl);
@@ -35,9 +36,14 @@ private:
     struct Program {
         Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
-        GLint mvp, depthRange, farPlane, exponentPositive, exponentNegative;
+        GLint mvp, depthRange, farPlane, exponentPositive, exponentNegative, alphaCutoff;
     };
 
+    // The variant for `settings`, compiled on first use; with `cutout` the one that discards
+    // where a cut-out caster's mask is clear.
+    Program& program(const LightFrame& light, const Settings& settings, bool cutout);
+    // The light's uniforms every variant drawing this map reads.
+    void setLightUniforms(Program& p, const LightFrame& light, const Settings& settings);
     Program& begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile);
 
     GlFunctions* m_gl;

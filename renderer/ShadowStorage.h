@@ -24,6 +24,7 @@ struct ShadowStorageKey {
     DepthFormat format = DepthFormat::Depth24;
     int columns = 1;
     int rows = 1;
+    bool cutouts = true;            // shadow.cutouts: cut-out casters drawn through their mask
     // The depth pass's raster state against acne (depth storage only).
     bool cullFront = false;
     double polygonFactor = 0.0;
@@ -50,6 +51,7 @@ inline ShadowStorageKey commonStorageKey(const Settings& settings, int sceneGene
     key.format = settings.map.format;
     key.columns = grid.columns;
     key.rows = grid.rows;
+    key.cutouts = settings.shadow.cutouts;
     return key;
 }
 

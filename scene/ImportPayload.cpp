@@ -18,7 +18,7 @@ namespace {
 
 constexpr char kMagic[] = "SLIMPORT";
 constexpr char kTrailer[] = "END.";
-constexpr quint32 kVersion = 1;
+constexpr quint32 kVersion = 2;
 constexpr quint32 kMaxStringBytes = 1 << 16;
 constexpr quint32 kMaxWarnings = 1024;
 constexpr std::size_t kMaxObjects = kMaxModelTriangles;    // one triangle each at the most
@@ -206,6 +206,11 @@ SceneObject readObject(Reader& in, const Scene& scene)
     const bool hasImage = object.image >= 0 && std::size_t(object.image) < scene.images.size();
     if ((object.texture == TextureKind::Image) != hasImage || (object.image < -1 || (object.image >= 0 && !hasImage)))
         throw Malformed{QStringLiteral("an object names texture %1 of %2").arg(object.image).arg(scene.images.size())};
+    const float cutoff = in.get<float>(), alpha = in.get<float>();
+    if (!std::isfinite(cutoff) || !std::isfinite(alpha) || cutoff < 0.0f || cutoff > 1.0f || alpha < 0.0f || alpha > 1.0f)
+        throw Malformed{QStringLiteral("an object's alpha cut-off or base alpha is outside [0, 1]")};
+    object.alphaCutoff = cutoff;
+    object.baseAlpha = alpha;
     return object;
 }
 
@@ -233,7 +238,7 @@ Scene readScene(Reader& in)
     const std::size_t images = in.count(kMaxWarnings, 12, "texture");
     for (std::size_t i = 0; i < images; ++i)
         scene.images.push_back(readImage(in));
-    const std::size_t objects = in.count(kMaxObjects, 4 + 4 + 128 + 3 + 12 + 4, "object");
+    const std::size_t objects = in.count(kMaxObjects, 4 + 4 + 128 + 3 + 12 + 4 + 8, "object");
     scene.objects.reserve(objects);
     for (std::size_t i = 0; i < objects; ++i)
         scene.objects.push_back(readObject(in, scene));
@@ -290,6 +295,8 @@ QByteArray encodeImportedScene(const Scene& scene)
         for (int i = 0; i < 3; ++i)
             out.put(object.baseColour[i]);
         out.put(qint32(object.image));
+        out.put(object.alphaCutoff);
+        out.put(object.baseAlpha);
     }
     out.raw(kTrailer, 4);
     return out.take();

@@ -4,6 +4,7 @@
 #include "SceneFileError.h"
 
 #include <assimp/DefaultIOSystem.h>
+#include <assimp/GltfMaterial.h>
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
 #include <assimp/material.h>
@@ -241,7 +242,39 @@ int loadImage(Importing& in, const aiMaterial* material)
     return int(in.scene.images.size() - 1);
 }
 
-void noteIgnoredProperties(Importing& in, const aiMaterial* material)
+// glTF's alphaMode: MASK cuts the surface where the base-colour alpha is below alphaCutoff
+// (0.5 unless given); BLEND, which ShadowLab does not composite, is drawn and cast as MASK at 0.5,
+// said once per material. Sets the object's cut-off and base alpha; true for MASK and BLEND.
+bool readAlphaMode(Importing& in, const aiMaterial* material, float baseAlpha, bool firstUse, SceneObject& object)
+{
+    aiString mode;
+    if (material->Get(AI_MATKEY_GLTF_ALPHAMODE, mode) != AI_SUCCESS)
+        return false;
+    const QString name = QString::fromUtf8(mode.C_Str());
+    if (name != QLatin1String("MASK") && name != QLatin1String("BLEND"))
+        return false;
+    float cutoff = 0.5f;
+    if (name == QLatin1String("MASK"))
+        material->Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff);
+    if (!std::isfinite(cutoff))
+        cutoff = 0.5f;
+    if (name == QLatin1String("BLEND")) {
+        cutoff = 0.5f;
+        if (firstUse) {
+            aiString materialName;
+            material->Get(AI_MATKEY_NAME, materialName);
+            in.scene.warnings << QStringLiteral("material '%1' blends (alphaMode BLEND); drawn and cast as a cut-out at alpha 0.5, "
+                                                "with no translucent colour")
+                                     .arg(QString::fromUtf8(materialName.C_Str()));
+        }
+    }
+    // glTF's cut-off 0 keeps every texel: a tiny one, so the object is still a cut-out where alpha is 0.
+    object.alphaCutoff = std::clamp(cutoff, 1.0f / 512.0f, 1.0f);
+    object.baseAlpha = std::isfinite(baseAlpha) ? std::clamp(baseAlpha, 0.0f, 1.0f) : 1.0f;
+    return true;
+}
+
+void noteIgnoredProperties(Importing& in, const aiMaterial* material, bool cutout)
 {
     const std::pair<aiTextureType, const char*> kinds[] = {
         {aiTextureType_NORMALS, "normal maps"},       {aiTextureType_HEIGHT, "height maps"},
@@ -254,7 +287,7 @@ void noteIgnoredProperties(Importing& in, const aiMaterial* material)
             in.ignored.insert(QString::fromLatin1(label));
     }
     float opacity = 1.0f;
-    if (material->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
+    if (!cutout && material->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f)
         in.ignored.insert(QStringLiteral("transparency"));
 }
 
@@ -350,10 +383,12 @@ void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, int de
                 aiGetMaterialColor(material, AI_MATKEY_COLOR_DIFFUSE, &colour);
             object.baseColour = glm::clamp(glm::vec3(colour.r, colour.g, colour.b), glm::vec3(0.0f), glm::vec3(1.0f));
             auto found = in.imageOfMaterial.find(materialIndex);
-            if (found == in.imageOfMaterial.end()) {
+            const bool firstUse = found == in.imageOfMaterial.end();
+            if (firstUse)
                 found = in.imageOfMaterial.emplace(materialIndex, loadImage(in, material)).first;
-                noteIgnoredProperties(in, material);
-            }
+            const bool cutout = readAlphaMode(in, material, colour.a, firstUse, object);
+            if (firstUse)
+                noteIgnoredProperties(in, material, cutout);
             if (found->second >= 0) {
                 object.texture = TextureKind::Image;
                 object.image = found->second;

@@ -1,5 +1,7 @@
 #include "Scene.h"
 
+#include <algorithm>
+
 namespace shadowlab {
 
 Bounds Scene::worldBounds(const SceneObject& object) const
@@ -36,6 +38,19 @@ Bounds Scene::bounds() const
     for (const SceneObject& o : objects)
         b.extend(worldBounds(o));
     return b;
+}
+
+bool Scene::hasCutouts() const
+{
+    return std::any_of(objects.begin(), objects.end(), [](const SceneObject& o) { return isCutout(o); });
+}
+
+float textureAlphaCutoff(const SceneObject& object)
+{
+    if (!isCutout(object))
+        return 0.0f;
+    // A base alpha of 0 leaves nothing: a cut-off no texture alpha reaches.
+    return object.baseAlpha > 0.0f ? object.alphaCutoff / object.baseAlpha : 2.0f;
 }
 
 } // namespace shadowlab

@@ -29,7 +29,19 @@ struct SceneObject {
     bool receivesShadow = true;         // false: always lit, and left out of accuracy measurements
     glm::vec3 baseColour{1.0f};         // linear RGB in 0..1
     int image = -1;                     // index into Scene::images when texture is Image
+    // A cut-out material (glTF alphaMode MASK): where the base-colour alpha (the texture's alpha
+    // times baseAlpha) is below alphaCutoff the surface is not there, for the light as for the
+    // eye (leaves, fences). 0: opaque, drawn whole whatever its alpha.
+    float alphaCutoff = 0.0f;           // [0, 1]
+    float baseAlpha = 1.0f;             // the base colour's alpha, [0, 1]
 };
+
+// Whether the object is a cut-out (a mask drawn and traced through its holes).
+inline bool isCutout(const SceneObject& object) { return object.alphaCutoff > 0.0f; }
+// The texture alpha below which a cut-out object is absent: alphaCutoff / baseAlpha, so a
+// shader or tracer compares the texture's alpha alone (above 1 when nothing of it is there);
+// 0 for an opaque object.
+float textureAlphaCutoff(const SceneObject& object);
 
 // Meshes in object space and their placements; what the renderer and the ray tracer share.
 struct Scene {
@@ -47,6 +59,7 @@ struct Scene {
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts
     Bounds bounds() const;              // everything
+    bool hasCutouts() const;            // any cut-out object (isCutout)
     // Everything but the checkered ground plane a preset or a loaded model stands on: the size
     // cameras, lights and sliders follow (the whole scene when there is nothing else).
     Bounds modelBounds() const;

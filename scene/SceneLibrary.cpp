@@ -1,5 +1,6 @@
 #include "SceneLibrary.h"
 
+#include "ProceduralTexture.h"
 #include "SceneLoader.h"
 #include "SettingsError.h"
 
@@ -98,9 +99,9 @@ Scene occluderScene()
     return s;
 }
 
-// A reproducible hash to [0, 1) (PCG output permutation): the same city on every platform,
+// A reproducible hash to [0, 1) (PCG output permutation): the same city and shrubs on every platform,
 // which std::uniform_real_distribution does not promise.
-double cityRandom(std::uint32_t seed, std::uint32_t i)
+double presetRandom(std::uint32_t seed, std::uint32_t i)
 {
     const std::uint32_t state = (seed * 2654435761u ^ i) * 747796405u + 2891336453u;
     const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
@@ -136,7 +137,7 @@ Scene cityScene(const QString& name, int buildings)
     std::vector<std::pair<double, int>> order;
     order.reserve(std::size_t(lots));
     for (int i = 0; i < lots; ++i)
-        order.emplace_back(cityRandom(seed + 7u, std::uint32_t(i)), i);
+        order.emplace_back(presetRandom(seed + 7u, std::uint32_t(i)), i);
     std::sort(order.begin(), order.end());
     s.objects.reserve(std::size_t(buildings) + 1);
     for (int n = 0; n < std::min(buildings, lots); ++n) {
@@ -145,8 +146,8 @@ Scene cityScene(const QString& name, int buildings)
         const int inBlock = i % (lotsPerSide * lotsPerSide);
         const double blockX = -kCitySide * 0.5 + (block % kCityBlocks) * kCityPitch + kCityStreet * 0.5;
         const double blockZ = -kCitySide * 0.5 + (block / kCityBlocks) * kCityPitch + kCityStreet * 0.5;
-        const double r1 = cityRandom(seed, std::uint32_t(4 * i)), r2 = cityRandom(seed, std::uint32_t(4 * i + 1));
-        const double r3 = cityRandom(seed, std::uint32_t(4 * i + 2)), r4 = cityRandom(seed, std::uint32_t(4 * i + 3));
+        const double r1 = presetRandom(seed, std::uint32_t(4 * i)), r2 = presetRandom(seed, std::uint32_t(4 * i + 1));
+        const double r3 = presetRandom(seed, std::uint32_t(4 * i + 2)), r4 = presetRandom(seed, std::uint32_t(4 * i + 3));
         const double width = lot * (0.55 + 0.4 * r1), depth = lot * (0.55 + 0.4 * r2);
         const double height = 4.0 + 8.0 * r3 + (r4 > 0.9 ? 150.0 * (r4 - 0.9) / 0.1 * r3 : 22.0 * r4 * r4);
         const double x = blockX + (inBlock % lotsPerSide + 0.5) * lot + (r3 - 0.5) * (lot - width) * 0.8;
@@ -188,6 +189,53 @@ Scene bleedingScene()
     return s;
 }
 
+Scene foliageScene()
+{
+    // Cut-out casters (alpha-masked cards, as glTF's alphaMode MASK): a trellis fence and three
+    // shrubs of leaf cards on wooden stems. Drawn as solid quads, each card's shadow is a
+    // rectangle; through their masks, lattice and leaves.
+    Scene s;
+    s.name = QStringLiteral("foliage");
+    addGround(s, 0.0);
+    s.images.push_back(makeLeafTexture(1));
+    s.images.push_back(makeLeafTexture(2));
+    s.images.push_back(makeTrellisTexture());
+    const auto cutout = [&](const QString& name, int mesh, const glm::dmat4& model, int image) {
+        SceneObject object{name, mesh, model, TextureKind::Image, true};
+        object.image = image;
+        object.alphaCutoff = 0.5f;
+        s.objects.push_back(object);
+    };
+    // The fence: 5 x 1.6 m, one texture tile per metre.
+    s.meshes.push_back(meshes::card({5.0f, 1.6f}));
+    glm::dmat4 fence = glm::translate(glm::dmat4(1.0), glm::dvec3(-0.3, 0.8, -1.6));
+    fence = glm::rotate(fence, glm::radians(8.0), glm::dvec3(0.0, 1.0, 0.0));
+    cutout(QStringLiteral("trellis"), int(s.meshes.size() - 1), glm::scale(fence, glm::dvec3(2.5, 0.8, 1.0)), 2);
+    s.meshes.push_back(meshes::card());
+    const int card = int(s.meshes.size() - 1);
+    s.meshes.push_back(meshes::cube());
+    const int cube = int(s.meshes.size() - 1);
+    const glm::dvec3 shrubs[3] = {{-1.9, 0.0, 0.6}, {0.5, 0.0, 1.2}, {2.3, 0.0, -0.2}};
+    for (int k = 0; k < 3; ++k) {
+        const double height = 0.9 + 0.25 * k;
+        s.objects.push_back({QStringLiteral("stem %1").arg(k + 1), cube,
+                             glm::scale(glm::translate(glm::dmat4(1.0), shrubs[k] + glm::dvec3(0.0, height * 0.5, 0.0)),
+                                        glm::dvec3(0.04, height * 0.5, 0.04)),
+                             TextureKind::Wood, true});
+        for (int i = 0; i < 16; ++i) {
+            const auto n = std::uint32_t(k * 16 + i);
+            const double yaw = 360.0 * presetRandom(11, n), pitch = -50.0 + 100.0 * presetRandom(12, n);
+            const double radius = 0.15 + 0.3 * presetRandom(13, n), around = 6.2831853 * presetRandom(14, n);
+            const glm::dvec3 at = shrubs[k] + glm::dvec3(radius * std::cos(around), height * (0.55 + 0.5 * presetRandom(15, n)), radius * std::sin(around));
+            glm::dmat4 m = glm::translate(glm::dmat4(1.0), at);
+            m = glm::rotate(m, glm::radians(yaw), glm::dvec3(0.0, 1.0, 0.0));
+            m = glm::rotate(m, glm::radians(pitch), glm::dvec3(1.0, 0.0, 0.0));
+            cutout(QStringLiteral("leaves %1.%2").arg(k + 1).arg(i + 1), card, glm::scale(m, glm::dvec3(0.3)), int(n % 2));
+        }
+    }
+    return s;
+}
+
 } // namespace
 
 std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, double step)
@@ -222,6 +270,8 @@ Scene buildScene(const QString& name)
         return occluderScene();
     if (name == u"bleeding")
         return bleedingScene();
+    if (name == u"foliage")
+        return foliageScene();
     throw SettingsError(QStringLiteral("scene"),
                         QStringLiteral("'%1' is not a scene; choose one of %2").arg(name, sceneNames().join(QStringLiteral(" | "))));
 }
@@ -250,6 +300,7 @@ Settings presetSettings(const QString& name)
         const char* name;
         std::optional<LightSettings> light;     // the defaults but position, target, extent, near, far
         glm::dvec3 cameraPosition, cameraTarget;
+        double normalOffset = 0.0;              // bias.normal, texels
     };
     const auto light = [](glm::dvec3 position, double extent, double nearPlane, double farPlane) {
         LightSettings l;
@@ -269,6 +320,11 @@ Settings presetSettings(const QString& name)
         // Nearly overhead, so each board's shadow falls inside the one above's; the camera looks
         // down past the boards' edges at the ground they shadow.
         {.name = "bleeding", .light = light({-1.0, 8.0, -0.6}, 4.0, 1.0, 10.0), .cameraPosition = {4.6, 2.4, 5.4}, .cameraTarget = {0.2, 0.5, 0.2}},
+        // A low sun behind the fence throws the lattice and the leaves toward the camera. The
+        // cards have no thickness: their lit face meets its own depth in the map, which a texel
+        // of normal offset clears at grazing light, where a depth bias would have to be huge.
+        {.name = "foliage", .light = light({-3.0, 6.0, -5.0}, 5.0, 1.0, 16.0), .cameraPosition = {1.2, 4.2, 6.8}, .cameraTarget = {0.0, 0.4, 0.2},
+         .normalOffset = 1.0},
     };
     for (const View& view : views) {
         if (name != QLatin1String(view.name))
@@ -277,6 +333,7 @@ Settings presetSettings(const QString& name)
             s.light = *view.light;
         s.camera.position = view.cameraPosition;
         s.camera.target = view.cameraTarget;
+        s.bias.normal = view.normalOffset;
     }
     return s;
 }
@@ -296,6 +353,17 @@ Settings movedToScene(const Settings& side, const Settings& scene)
         moved.bias.min = scene.bias.min;
     }
     return moved;
+}
+
+bool sceneHasCutouts(const QString& name)
+{
+    try {
+        if (isPresetName(name))
+            return buildScene(name).hasCutouts();
+        return loadSceneFile(name)->hasCutouts();
+    } catch (const std::exception&) {
+        return false;   // the load's own error is said where the scene is built
+    }
 }
 
 QString sceneIdentity(const QString& name)

@@ -29,6 +29,9 @@ Settings movedToScene(const Settings& side, const Settings& scene);
 // of a loaded file's content (and of the files it names), so renaming a file keeps its cached
 // traces and editing it does not. Throws like buildScene().
 QString sceneIdentity(const QString& name);
+// Whether the scene `name` (a preset, or a file loaded as buildScene() loads it) has cut-out
+// objects; false for a name that does not load.
+bool sceneHasCutouts(const QString& name);
 
 // A camera path from `start` (a scene's camera): `frames` cameras, each `step` world units
 // along (sideways and a little forward, the view keeping its direction), for measuring what

@@ -7,9 +7,16 @@ uniform mat4 uModel;            // object -> world, translated so the camera is 
 uniform vec3 uCameraForward;    // unit view direction
 
 out float vViewDepth;
+#ifdef ALPHA_CUTOUT
+layout(location = 2) in vec2 aUv;
+out vec2 vUv;
+#endif
 
 void main()
 {
+#ifdef ALPHA_CUTOUT
+    vUv = aUv;
+#endif
     vViewDepth = dot(vec3(uModel * vec4(aPosition, 1.0)), uCameraForward);
     gl_Position = uModelViewProjection * vec4(aPosition, 1.0);
 }

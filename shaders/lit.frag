@@ -4,6 +4,7 @@
 // With MEASURE the same shadow term also goes to float targets for the accuracy
 // measurement, so what is measured is exactly what is shaded, and with it the light terms
 // that the shadow term scales, so the frame can be shaded again with the reference's.
+// With ALPHA_CUTOUT a cut-out object's texels below its cut-off are not drawn (leaves, fences).
 // With TEXEL_DENSITY receivers inside the light's volume are tinted by how many screen pixels
 // one shadow texel covers (densityRamp), from the screen-space derivatives of the map position.
 #include "shadow_filters.glsl"
@@ -18,6 +19,9 @@ in vec3 vColour;            // multiplies the texture: white for presets, a mate
 in vec4 vShadowCoord;
 
 uniform sampler2D uDiffuse;
+#ifdef ALPHA_CUTOUT
+uniform float uAlphaCutoff;     // a cut-out object's (textureAlphaCutoff): below it the surface is not there
+#endif
 uniform bool uReceives;     // false: the object is always lit
 uniform vec3 uLightPosition;    // camera-relative
 uniform vec3 uLightDirection;   // unit, from the light toward its target
@@ -59,7 +63,16 @@ void main()
     float texelsPerPixel = sqrt(abs(tx.x * ty.y - tx.y * ty.x));
     bool inMap = vShadowCoord.w > 0.0 && all(greaterThanEqual(mapCoord.xy, vec2(0.0))) && all(lessThanEqual(mapCoord.xy, vec2(1.0)));
 #endif
-    vec3 albedo = texture(uDiffuse, vUv).rgb * vColour;
+    vec4 base = texture(uDiffuse, vUv);
+#ifdef MEASURE
+    // Derivatives before the cut-out's discard too.
+    vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));
+#endif
+#ifdef ALPHA_CUTOUT
+    if (base.a < uAlphaCutoff)
+        discard;
+#endif
+    vec3 albedo = base.rgb * vColour;
     vec3 normal = normalize(vNormal);
     vec3 toLight = directionToLight(vPosition);
     vec3 toEye = normalize(-vPosition);
@@ -112,7 +125,6 @@ void main()
         fragColor.rgb = mix(fragColor.rgb, viewTint(gViewIndex) * (0.4 + 0.6 * fragColor.rgb), 0.45);
 #endif
 #ifdef MEASURE
-    vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));
     if (dot(geometric, normal) < 0.0)
         geometric = -geometric;
     measuredPosition = vec4(vPosition, visibility);

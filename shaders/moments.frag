@@ -1,12 +1,20 @@
 // Moments pass: the technique's encoding of the fragment's depth (its row's GLSL file, with
-// MOMENTS_PASS). Casters before the near plane are clamped to it, as in the depth pass.
+// MOMENTS_PASS). Casters before the near plane are clamped to it, as in the depth pass, and a
+// cut-out caster leaves its holes out (ALPHA_CUTOUT).
 in float vDepth;
 
 layout(location = 0) out vec4 fragMoments;
 
 #include SHADOW_TECHNIQUE
+#ifdef ALPHA_CUTOUT
+#include "cutout.glsl"
+#endif
 
 void main()
 {
+#ifdef ALPHA_CUTOUT
+    if (cutAway())
+        discard;
+#endif
     fragMoments = encodeMoments(clamp(vDepth, 0.0, 1.0));
 }

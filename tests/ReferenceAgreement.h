@@ -8,6 +8,8 @@
 
 #include <QSize>
 
+#include <vector>
+
 // How a rendered shadow term agrees with the Embree hard reference at exactly the rendered
 // pixels: what GL tests assert when they say "the shadows are where the ray tracer says".
 namespace probe {
@@ -22,31 +24,43 @@ struct Agreement {
     int falseLightUncovered = 0;    // of those, outside the light's volume (lit without a test)
 };
 
-inline Agreement agreement(shadowlab::Renderer& renderer, const shadowlab::Settings& settings, QSize size)
+// The hard reference at the pixels of `buffer`, which `renderer` drew last.
+inline std::vector<float> hardReference(shadowlab::Renderer& renderer, const shadowlab::VisibilityBuffer& buffer)
 {
     using namespace shadowlab;
-    const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
     const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
     ReferenceOptions options;
     options.area = false;
-    const ReferenceVisibility reference = traceReference(tracer, buffer, renderer.lightFrame(), options);
+    return traceReference(tracer, buffer, renderer.lightFrame(), options).hard;
+}
+
+// `buffer` against the hard reference `expected` of its pixels, `light` the frame it was drawn with.
+inline Agreement agreement(const shadowlab::VisibilityBuffer& buffer, const std::vector<float>& hard, const shadowlab::LightFrame& light)
+{
+    using namespace shadowlab;
     Agreement a;
     for (int i = 0; i < buffer.pixelCount(); ++i) {
         if (buffer.mask(i) != VisibilityBuffer::FacingLight)
             continue;
         const float measured = buffer.visibility(i);
-        const float expected = reference.hard[std::size_t(i)];
+        const float expected = hard[std::size_t(i)];
         ++a.counted;
         a.referenceShadowed += expected < 0.5f;
         a.falseShadow += measured < expected - 0.5f;
         if (measured > expected + 0.5f) {
             ++a.falseLight;
-            const glm::dvec4 t = renderer.lightFrame().shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
+            const glm::dvec4 t = light.shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
             const glm::dvec3 p = glm::dvec3(t) / t.w;
             a.falseLightUncovered += t.w <= 0.0 || glm::any(glm::lessThan(p, glm::dvec3(0.0))) || glm::any(glm::greaterThan(p, glm::dvec3(1.0)));
         }
     }
     return a;
+}
+
+inline Agreement agreement(shadowlab::Renderer& renderer, const shadowlab::Settings& settings, QSize size)
+{
+    const shadowlab::VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
+    return agreement(buffer, hardReference(renderer, buffer), renderer.lightFrame());
 }
 
 } // namespace probe

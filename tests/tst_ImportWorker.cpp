@@ -280,6 +280,9 @@ void tst_ImportWorker::untrustedAnswer_data()
                                           << QStringLiteral("names texture 0 of 0");
     QTest::newRow("infinite placement") << with([](Scene& s) { s.objects[0].model[3][1] = INFINITY; }) << QStringLiteral("placement is not finite");
     QTest::newRow("no objects") << with([](Scene& s) { s.objects.clear(); }) << QStringLiteral("no objects");
+    QTest::newRow("cut-out") << with([](Scene& s) { s.objects[0].alphaCutoff = 0.3f; s.objects[0].baseAlpha = 0.6f; }) << QString();
+    QTest::newRow("NaN alpha cut-off") << with([](Scene& s) { s.objects[0].alphaCutoff = NAN; }) << QStringLiteral("alpha cut-off or base alpha");
+    QTest::newRow("base alpha above 1") << with([](Scene& s) { s.objects[0].baseAlpha = 2.0f; }) << QStringLiteral("alpha cut-off or base alpha");
     QTest::newRow("empty mesh") << with([](Scene& s) { s.meshes[0].vertices.clear(); s.meshes[0].indices.clear(); }) << QStringLiteral("no triangles");
     QTest::newRow("placed beyond finite") << with([](Scene& s) { s.meshes[0].vertices[0].position.x = 3e38f; s.objects[0].model[0][0] = 1e300; })
                                           << QStringLiteral("beyond finite numbers");

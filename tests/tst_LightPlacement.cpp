@@ -61,6 +61,11 @@ private Q_SLOTS:
             // (tst_LightTypes), as it is meant to be rendered.
             if (cityBuildingCount(scene) > 0)
                 continue;
+            // The foliage's lattice and leaves cast several times the other presets' shadow
+            // edge per pixel, and what is wrong lies along edges: tst_Cutouts sweeps these
+            // placements there against the edge's length.
+            if (scene == u"foliage")
+                continue;
             for (const QString projection : {"ortho", "perspective"}) {
                 int k = 0;
                 for (const auto& d : directions) {

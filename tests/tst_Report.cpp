@@ -202,6 +202,7 @@ private slots:
         QTest::newRow("smallest map, no bias") << "cubes" << QStringList{"map.size=16", "bias.slope=0", "bias.min=0"};
         QTest::newRow("4 cascades, vsm") << "seed" << QStringList{"shadow.cascades=4", "filter.mode=vsm"};
         QTest::newRow("point light") << "seed" << QStringList{"light.type=point"};
+        QTest::newRow("foliage") << "foliage" << QStringList{};
     }
 
     void sweepAroundVariesOneThingAtATime()
@@ -233,6 +234,10 @@ private slots:
             QCOMPARE(halved->settings.bias.min, base.bias.min * 0.5);
             QVERIFY(halved->settings.bias.space == base.bias.space);
         }
+        // Masks are toggled only where the scene has cut-outs.
+        const bool togglesMasks = std::any_of(configurations.begin(), configurations.end(),
+                                              [&](const SweepConfiguration& c) { return c.settings.shadow.cutouts != base.shadow.cutouts; });
+        QCOMPARE(togglesMasks, scene == u"foliage");
     }
 
     // What is the same for every row is said once; what is on a front is named on its chart;
