@@ -13,6 +13,9 @@ enum class LightProjection { Ortho, Perspective };
 // perspective map; point: a position casting every way through six cube faces.
 enum class LightType { Directional, Spot, Point };
 enum class CascadeSplit { Uniform, Logarithmic, Practical };
+// What cascades split: the camera's near plane to shadow.distance, or the view depth range of
+// the pixels actually drawn (sample-distribution shadow maps, Lauritzen 2010).
+enum class DepthFit { Distance, Sdsm };
 enum class LightFit { Manual, Scene };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
@@ -137,6 +140,7 @@ struct ShadowSettings {
     double splitLambda = 0.75;              // practical split: 0 uniform ... 1 logarithmic, [0, 1]
     double distance = 100.0;                // world units from the camera, (0, 1e7]; used with cascades > 1
     double blend = 0.1;                     // share of each cascade blended into the next at its far end, [0, 0.5]
+    DepthFit depthFit = DepthFit::Distance; // used with cascades > 1
     bool showCascades = false;              // tint receivers by the cascade (or cube face) they read
     // Cut-out casters (SceneObject::alphaCutoff) cast through their holes; false casts them whole,
     // as a renderer that ignores the mask does (the eye and the reference still see the holes).

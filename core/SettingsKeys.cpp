@@ -226,6 +226,7 @@ Entry choiceKey(const char* key, QStringList names, Field field, const char* hel
 const QStringList kProjectionNames{QStringLiteral("ortho"), QStringLiteral("perspective")};
 const QStringList kLightTypeNames{QStringLiteral("directional"), QStringLiteral("spot"), QStringLiteral("point")};
 const QStringList kSplitNames{QStringLiteral("uniform"), QStringLiteral("logarithmic"), QStringLiteral("practical")};
+const QStringList kDepthFitNames{QStringLiteral("distance"), QStringLiteral("sdsm")};
 const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
 const QStringList kBiasSpaceNames{QStringLiteral("world"), QStringLiteral("texel"), QStringLiteral("depth")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
@@ -467,6 +468,11 @@ std::vector<Entry> makeEntries()
     e.push_back(presented(choiceKey<CascadeSplit>("shadow.split", kSplitNames, [](auto& s) -> auto& { return s.shadow.split; },
                                         "Where cascades split: uniform (equal depth slices, coarse near the camera), logarithmic (equal ratios, tiny first slices) or practical (a blend by shadow.split_lambda)"),
                           {.label = QStringLiteral("Cascade split"), .group = kShadowMap}));
+    e.push_back(presented(choiceKey<DepthFit>("shadow.depth_fit", kDepthFitNames, [](auto& s) -> auto& { return s.shadow.depthFit; },
+                                        "With cascades: the depth range they split, distance (the camera's near plane to shadow.distance) or "
+                                        "sdsm (sample-distribution shadow maps: from the nearest to the farthest pixel drawn, up to "
+                                        "shadow.distance, read from a depth prepass of the frame; more texels where the view has receivers)"),
+                          {.label = QStringLiteral("Cascade depth range"), .group = kShadowMap}));
     e.push_back(presented(numberKey("shadow.split_lambda", Range{0.0, 1.0}, [](auto& s) -> auto& { return s.shadow.splitLambda; },
                           "Practical split: 0 uniform, 1 logarithmic"),
                           {.label = QStringLiteral("Split λ"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 1.0, .group = kShadowMap}));
@@ -694,6 +700,7 @@ void saveSettingsFile(const QString& path, const Settings& settings)
 QString toString(LightProjection value) { return kProjectionNames.value(int(value)); }
 QString toString(LightType value) { return kLightTypeNames.value(int(value)); }
 QString toString(CascadeSplit value) { return kSplitNames.value(int(value)); }
+QString toString(DepthFit value) { return kDepthFitNames.value(int(value)); }
 QString toString(LightFit value) { return kFitNames.value(int(value)); }
 QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }

@@ -76,6 +76,7 @@ void saveSettingsFile(const QString& path, const Settings& settings);
 QString toString(LightProjection value);
 QString toString(LightType value);
 QString toString(CascadeSplit value);
+QString toString(DepthFit value);
 QString toString(LightFit value);
 QString toString(DepthFormat value);
 QString toString(BiasSpace value);

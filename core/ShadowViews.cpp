@@ -36,6 +36,12 @@ bool usesShadowViews(const Settings& settings)
     return settings.light.type == LightType::Point || (settings.light.type == LightType::Directional && settings.shadow.cascades > 1);
 }
 
+bool usesVisibleDepth(const Settings& settings)
+{
+    return settings.shadow.enabled && settings.shadow.depthFit == DepthFit::Sdsm && settings.light.type == LightType::Directional
+        && settings.shadow.cascades > 1;
+}
+
 ShadowTileGrid shadowTileGrid(const Settings& settings)
 {
     if (settings.light.type == LightType::Point)
@@ -147,7 +153,22 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
     return result;
 }
 
-ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect)
+std::pair<double, double> cascadeDepthRange(const Settings& settings, const CameraFrame& camera, const std::optional<VisibleDepthRange>& visible)
+{
+    const double nearest = camera.nearPlane;
+    const double farthest = std::max(std::min(settings.shadow.distance, camera.farPlane), nearest * (1.0 + 1e-6));
+    if (settings.shadow.depthFit != DepthFit::Sdsm || !visible || !std::isfinite(visible->nearest) || !std::isfinite(visible->farthest)
+        || visible->farthest < visible->nearest)
+        return {nearest, farthest};
+    // Within the distance's range: receivers beyond shadow.distance stay lit, as without sdsm.
+    const double low = std::clamp(visible->nearest * (1.0 - kSdsmPadding), nearest, farthest);
+    const double high = std::clamp(visible->farthest * (1.0 + kSdsmPadding), low, farthest);
+    // One depth drawn (a wall face-on): a slice of the padding's width around it.
+    return {low, std::max(high, low * (1.0 + kSdsmPadding))};
+}
+
+ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect,
+                             const std::optional<VisibleDepthRange>& visible)
 {
     ShadowViewSet set;
     const ShadowTileGrid grid = shadowTileGrid(settings);
@@ -180,8 +201,8 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
     if (light.type == LightType::Directional && settings.shadow.cascades > 1) {
         set.cascaded = true;
         const int count = settings.shadow.cascades;
-        const double farthest = std::max(std::min(settings.shadow.distance, camera.farPlane), camera.nearPlane * (1.0 + 1e-6));
-        const std::vector<double> splits = cascadeSplits(settings.shadow.split, settings.shadow.splitLambda, camera.nearPlane, farthest, count);
+        const auto [nearest, farthest] = cascadeDepthRange(settings, camera, visible);
+        const std::vector<double> splits = cascadeSplits(settings.shadow.split, settings.shadow.splitLambda, nearest, farthest, count);
         const double safeAspect = std::isfinite(aspect) && aspect > 0.0 ? aspect : 1.0;
         for (int i = 0; i < count; ++i) {
             ShadowView view;

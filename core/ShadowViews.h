@@ -6,6 +6,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -33,6 +35,9 @@ struct ShadowViewSet {
 
 // Whether `settings` render more than one view (cascades > 1 or a point light).
 bool usesShadowViews(const Settings& settings);
+// Whether the cascades of `settings` split the frame's drawn depth range (shadow.depth_fit = sdsm
+// on a directional light's cascades, shadows on), which a depth prepass measures.
+bool usesVisibleDepth(const Settings& settings);
 
 // The tiles of the shared texture the light's views need: 3 x 2 cube faces, cascades two to a
 // row, 1 x 1 for one map.
@@ -53,11 +58,28 @@ const std::vector<glm::dvec3>& cubeFaceAxes();
 // edge still read that face's own texels.
 double cubeFaceFov(int mapSize);
 
+// The view depths (distance along the camera's view direction) of the nearest and farthest
+// pixels drawn: what shadow.depth_fit = sdsm splits cascades over.
+struct VisibleDepthRange {
+    double nearest = 0.0;
+    double farthest = 0.0;
+};
+
+// The view depths cascades split, from near to far: the camera's near plane to shadow.distance
+// (and its far plane), or with shadow.depth_fit = sdsm and `visible` the drawn range within it,
+// padded by `kSdsmPadding` each way (the depth buffer's rounding, and a frame drawn at another
+// size than the one measured). Without `visible` (nothing
+// drawn, or its numbers not finite) sdsm falls back to the distance. Always near < far, finite.
+inline constexpr double kSdsmPadding = 0.02;
+std::pair<double, double> cascadeDepthRange(const Settings& settings, const CameraFrame& camera,
+                                            const std::optional<VisibleDepthRange>& visible);
+
 // Every view of the light in `settings` for the camera `camera` (viewport aspect `aspect`):
 // cascades (shadow.cascades > 1), six cube faces (light.type = point) or the one map. A view
-// with nothing to shadow has fit.anythingToShadow false and need not be rendered.
-// `settings` must be valid.
-ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect);
+// with nothing to shadow has fit.anythingToShadow false and need not be rendered. `visible`:
+// the frame's drawn depth range, for shadow.depth_fit = sdsm. `settings` must be valid.
+ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect,
+                             const std::optional<VisibleDepthRange>& visible = std::nullopt);
 
 // A cascade's ortho volume from the bounding sphere of its slice of the camera's view: the same
 // size however the camera turns, its centre snapped to whole texels, so camera motion moves

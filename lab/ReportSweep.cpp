@@ -162,6 +162,11 @@ std::vector<SweepEntry> cascadesSweep()
     for (const char* split : {"uniform", "logarithmic"})
         s.push_back({QStringLiteral("4 cascades of 1024 x 1024, %1 split").arg(QLatin1String(split)),
                      {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("shadow.split=%1").arg(QLatin1String(split))}});
+    // Sample-distribution cascades at the same texels: split over the depths the frame draws.
+    for (bool stabilize : {true, false})
+        s.push_back({QStringLiteral("4 cascades of 1024 x 1024, sdsm, %1").arg(stabilize ? QStringLiteral("stabilised") : QStringLiteral("unstabilised")),
+                     {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("shadow.depth_fit=sdsm"),
+                      QStringLiteral("light.stabilize=%1").arg(stabilize ? "true" : "false")}});
     for (const char* technique : {"vsm", "evsm4", "msm"})
         s.push_back({QStringLiteral("4 cascades of 1024 x 1024, %1").arg(QLatin1String(technique)),
                      {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("filter.mode=%1").arg(QLatin1String(technique))}});
@@ -205,6 +210,10 @@ std::vector<SweepEntry> sweepAround(const Settings& base)
                        {QStringLiteral("bias.cull_front=%1").arg(base.bias.cullFront ? "false" : "true")}});
     entries.push_back({base.contact.enabled ? QStringLiteral("no contact shadows") : QStringLiteral("contact shadows"),
                        {QStringLiteral("contact.enabled=%1").arg(base.contact.enabled ? "false" : "true")}});
+    // Cascades split over the distance or over what the frame draws.
+    if (base.shadow.cascades > 1 && base.light.type == LightType::Directional)
+        entries.push_back({base.shadow.depthFit == DepthFit::Sdsm ? QStringLiteral("cascades over the distance") : QStringLiteral("sdsm cascades"),
+                           {QStringLiteral("shadow.depth_fit=%1").arg(base.shadow.depthFit == DepthFit::Sdsm ? "distance" : "sdsm")}});
     // What ignoring a cut-out mask costs, where the scene has one.
     if (sceneHasCutouts(base.scene))
         entries.push_back({base.shadow.cutouts ? QStringLiteral("cut-outs cast whole") : QStringLiteral("cut-outs through their mask"),

@@ -28,8 +28,9 @@ QStringList builtInSweeps();
 
 // The accuracy dock's sweep, and `report --sweep around`: the base settings first, then one
 // change at a time: each filter and the variations its row of the technique table lists, half
-// and double the map, bias halved, doubled and off, front-face culling, contact shadows and (in a
-// scene with cut-outs) their masks toggled. Changes that make `base` invalid or repeat an earlier configuration are left out.
+// and double the map, bias halved, doubled and off; front-face culling, contact shadows, sdsm
+// (with cascades) and cut-out masks (in a scene with cut-outs) toggled. Changes that make
+// `base` invalid or repeat an earlier configuration are left out.
 std::vector<SweepEntry> sweepAround(const Settings& base);
 
 // The sweep a file's bytes describe, checked as loadSweep() does; `path` names it in errors.

@@ -24,6 +24,8 @@ struct FrameStats {
     bool litReachMasked = false;
     // Casters the lit pass drew into the camera's depth for contact shadows (0: kept, or off).
     int contactDepthDraws = 0;
+    // Objects drawn into the depth prepass sdsm cascades are split by (0: kept, or not sdsm).
+    int visibleDepthDraws = 0;
     double texelWorldSize = 0.0;        // world units covered by one shadow-map texel, as rendered (after light.fit)
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame

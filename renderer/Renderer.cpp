@@ -68,9 +68,17 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // For the city that is 2,000 objects clipped against the view each frame, left out.
     FitInputs inputs{m_sceneGeneration, settings, m_fitCamera, size, reversed};
     if (!m_fitInputs || !(*m_fitInputs == inputs)) {
+        const CameraFrame fitCamera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, m_scene->bounds()) : camera;
+        // Sample-distribution cascades split the depth range the fitting camera draws.
+        m_visibleRange.reset();
+        if (usesVisibleDepth(settings)) {
+            if (!m_visibleDepth)
+                m_visibleDepth = std::make_unique<VisibleDepthPass>(m_gl);
+            m_visibleRange = m_visibleDepth->ensure(*m_scene, m_sceneGeneration, fitCamera, size, &stats.visibleDepthDraws);
+        }
         ShadowViewFrames views;
         FittedLight fitted;
-        fitViews(settings, camera, aspect, reversed, views, fitted);
+        fitViews(settings, fitCamera, aspect, reversed, views, fitted);
         m_views = std::move(views);
         m_fit = std::move(fitted);
         m_fitInputs = std::move(inputs);
@@ -138,7 +146,7 @@ ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camer
     return shadowlab::shadowReach(settings, m_views.frames, settings.map.size, objects, receivers, camera);
 }
 
-void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, ShadowViewFrames& views,
+void Renderer::fitViews(const Settings& settings, const CameraFrame& fitCamera, double aspect, bool reversed, ShadowViewFrames& views,
                         FittedLight& fit) const
 {
     const Scene& scene = m_scene->scene();
@@ -149,8 +157,8 @@ void Renderer::fitViews(const Settings& settings, const CameraFrame& camera, dou
         const SceneObject& object = scene.objects[i];
         objects.push_back({m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
     }
-    views.camera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, m_scene->bounds()) : camera;
-    views.set = fitShadowViews(settings, objects, views.camera, aspect);
+    views.camera = fitCamera;
+    views.set = fitShadowViews(settings, objects, views.camera, aspect, m_visibleRange);
     fit = views.set.views.front().fit;
     // The fit the window and warnings show: the first view's volume, every view's cuts,
     // and something to shadow when any view has.

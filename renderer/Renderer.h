@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CameraDepthPass.h"
+#include "VisibleDepthPass.h"
 #include "DepthPass.h"
 #include "DepthRangePass.h"
 #include "DepthViewPass.h"
@@ -56,6 +57,9 @@ public:
 
     const FrameStats& lastFrame() const { return m_stats; }
     const LightFrame& lightFrame() const { return m_light; }
+    // The view depth range the last fit's cascades split with shadow.depth_fit = sdsm (nullopt:
+    // not sdsm, or nothing drawn).
+    const std::optional<VisibleDepthRange>& visibleDepthRange() const { return m_visibleRange; }
     const CameraFrame& cameraFrame() const { return m_camera; }
     const ShadowMap& shadowMap() const { return m_shadowMap; }
     // The moments map of the moment techniques; null until one is first used.
@@ -114,7 +118,8 @@ private:
     const MomentsMap* momentsShown() const;
     // Fits the light's views to what the camera sees: the views, their light frames and the fit
     // the window shows.
-    void fitViews(const Settings& settings, const CameraFrame& camera, double aspect, bool reversed, ShadowViewFrames& views,
+    // Fits the light's views to `fitCamera` (the frame's camera, or setFitCamera()'s).
+    void fitViews(const Settings& settings, const CameraFrame& fitCamera, double aspect, bool reversed, ShadowViewFrames& views,
                   FittedLight& fit) const;
     // Where the lookups of the fitted views can find a caster: casters one by one (a flat
     // one-sided one whose front faces the pass culls as its plane), receivers as drawn.
@@ -129,6 +134,8 @@ private:
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
     std::unique_ptr<CameraDepthPass> m_cameraDepth;  // built when contact shadows are first used
+    std::unique_ptr<VisibleDepthPass> m_visibleDepth;  // built when sdsm cascades are first used
+    std::optional<VisibleDepthRange> m_visibleRange;   // what the last fit split (sdsm)
     Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from

@@ -149,6 +149,55 @@ private Q_SLOTS:
         }
     }
 
+    // shadow.depth_fit = sdsm splits the drawn range, padded, within the distance's; without a
+    // usable range it splits the distance's, as shadow.depth_fit = distance always does.
+    void sdsmSplitsTheDrawnRange_data()
+    {
+        QTest::addColumn<double>("nearest");
+        QTest::addColumn<double>("farthest");
+        QTest::addColumn<double>("low");      // the expected range; 0: the distance's
+        QTest::addColumn<double>("high");
+        const double pad = kSdsmPadding;
+        QTest::newRow("inside") << 5.0 << 40.0 << 5.0 * (1.0 - pad) << 40.0 * (1.0 + pad);
+        QTest::newRow("beyond the distance") << 5.0 << 400.0 << 5.0 * (1.0 - pad) << 100.0;
+        QTest::newRow("nearer than the near plane") << 0.01 << 40.0 << 0.1 << 40.0 * (1.0 + pad);
+        QTest::newRow("one depth") << 10.0 << 10.0 << 10.0 * (1.0 - pad) << 10.0 * (1.0 + pad);
+        QTest::newRow("all beyond the distance") << 200.0 << 300.0 << 100.0 << 100.0 * (1.0 + pad);
+        QTest::newRow("NaN") << double(NAN) << 40.0 << 0.0 << 0.0;
+        QTest::newRow("infinite") << 5.0 << double(INFINITY) << 0.0 << 0.0;
+        QTest::newRow("reversed") << 40.0 << 5.0 << 0.0 << 0.0;
+    }
+
+    void sdsmSplitsTheDrawnRange()
+    {
+        QFETCH(double, nearest);
+        QFETCH(double, farthest);
+        QFETCH(double, low);
+        QFETCH(double, high);
+        Settings s = presetSettings("seed");
+        s.shadow.cascades = 4;
+        s.shadow.distance = 100.0;
+        CameraFrame camera = computeCameraFrame(s.camera, 16.0 / 9.0, Bounds{{-10, -1, -10}, {10, 5, 10}});
+        camera.nearPlane = 0.1;
+        camera.farPlane = 1000.0;
+        const VisibleDepthRange visible{nearest, farthest};
+        const auto [distanceLow, distanceHigh] = cascadeDepthRange(s, camera, visible);
+        QCOMPARE(distanceLow, 0.1);
+        QCOMPARE(distanceHigh, 100.0);
+        s.shadow.depthFit = DepthFit::Sdsm;
+        const auto [sdsmLow, sdsmHigh] = cascadeDepthRange(s, camera, visible);
+        QVERIFY(std::isfinite(sdsmLow) && std::isfinite(sdsmHigh) && sdsmLow < sdsmHigh);
+        QCOMPARE(sdsmLow, low > 0.0 ? low : 0.1);
+        QCOMPARE(sdsmHigh, high > 0.0 ? high : 100.0);
+        QCOMPARE(cascadeDepthRange(s, camera, std::nullopt), (std::pair{0.1, 100.0}));
+        // The cascades the set fits split exactly that range.
+        std::vector<FitObject> objects{{Bounds{{-10, -1, -10}, {10, 5, 10}}, true, true, false}};
+        const ShadowViewSet set = fitShadowViews(s, objects, camera, 16.0 / 9.0, visible);
+        QCOMPARE(int(set.views.size()), 4);
+        QCOMPARE(set.views.front().splitNear, sdsmLow);
+        QCOMPARE(set.views.back().splitFar, sdsmHigh);
+    }
+
     // Each cascade's fitted volume covers its whole slice of the view (what the camera can see
     // of every receiver between its split distances), and consecutive slices meet: no gap at a
     // seam, at any shadow distance up to 10⁵, stabilised or not.

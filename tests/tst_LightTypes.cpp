@@ -245,6 +245,7 @@ private Q_SLOTS:
         QTest::addColumn<bool>("stabilize");
         QTest::addColumn<QString>("split");
         QTest::addColumn<QString>("filter");
+        QTest::addColumn<QString>("depthFit");
         // (Logarithmic splits put every seam within a metre of a camera whose near plane is a
         // few centimetres, out of these views; tst_LightRig checks their coverage.)
         const QStringList splits{"uniform", "practical"};
@@ -255,7 +256,7 @@ private Q_SLOTS:
                 for (double blend : {0.0, 0.2}) {
                     const bool stabilize = (k % 2) == 0;
                     QTest::newRow(qPrintable(QString("%1 %2 cascades blend %3 %4 %5").arg(scene).arg(cascades).arg(blend).arg(stabilize ? "stabilised" : "tight", splits[(k / 2) % 2])))
-                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2] << QString();
+                        << QString(scene) << cascades << blend << stabilize << splits[(k / 2) % 2] << QString() << QString("distance");
                     ++k;
                 }
             }
@@ -265,7 +266,15 @@ private Q_SLOTS:
         for (const QString scene : {"seed", "city"}) {
             for (const QString filter : {"pcss", "poisson", "pcf"}) {
                 QTest::newRow(qPrintable(QString("%1 4 cascades %2").arg(scene, filter)))
-                    << QString(scene) << 4 << 0.1 << true << QString("practical") << QString(filter);
+                    << QString(scene) << 4 << 0.1 << true << QString("practical") << QString(filter) << QString("distance");
+            }
+        }
+        // Sample-distribution cascades: split over what the frame draws, the same coverage.
+        for (const QString scene : {"seed", "cubes", "city"}) {
+            for (int cascades : {2, 4}) {
+                const bool stabilize = cascades == 4;
+                QTest::newRow(qPrintable(QString("%1 %2 cascades sdsm %3").arg(scene).arg(cascades).arg(stabilize ? "stabilised" : "tight")))
+                    << QString(scene) << cascades << 0.1 << stabilize << QString("practical") << QString() << QString("sdsm");
             }
         }
     }
@@ -278,7 +287,9 @@ private Q_SLOTS:
         QFETCH(bool, stabilize);
         QFETCH(QString, split);
         QFETCH(QString, filter);
+        QFETCH(QString, depthFit);
         Settings s = presetSettings(scene);
+        applySetting(s, "shadow.depth_fit", depthFit);
         if (!filter.isEmpty()) {
             applySetting(s, "filter.mode", filter);
             // Wide: a tap or a blocker search near a tile's edge reaches well into the next tile.
@@ -339,6 +350,71 @@ private Q_SLOTS:
         QVERIFY2(seamWrong <= 0.01 * seamCounted + 2, qPrintable(numbers));
         QCOMPARE(beyondShadowed, 0);
         qInfo().noquote() << numbers;
+    }
+
+    // shadow.depth_fit = sdsm: the prepass's range holds every pixel the frame draws within
+    // the distance, the cascades split it, and it is measured again only when the camera, the
+    // scene or the size changes (a light moving keeps it).
+    void sdsmFollowsTheFrame_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("more");
+        QTest::newRow("city, street") << "city" << QStringList{};
+        QTest::newRow("city, a street end close up") << "city" << QStringList{"camera.position=-98,1.7,-590", "camera.target=-98,3,-610"};
+        QTest::newRow("city, from a roof") << "city" << QStringList{"camera.position=0,60,300", "camera.target=0,0,0"};
+        QTest::newRow("seed") << "seed" << QStringList{};
+        QTest::newRow("foliage, camera low") << "foliage" << QStringList{"camera.position=-1,0.6,3", "camera.target=0,0.5,-1"};
+    }
+
+    void sdsmFollowsTheFrame()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, more);
+        Settings s = presetSettings(scene);
+        for (const QString& a : more)
+            applyAssignment(s, a);
+        applySetting(s, "shadow.cascades", "4");
+        applySetting(s, "shadow.depth_fit", "sdsm");
+        s.shadow.distance = cityBuildingCount(scene) > 0 ? 300.0 : 30.0;
+        m_headless->renderer().setScene(std::nullopt);
+        Renderer& renderer = m_headless->renderer();
+        const QSize size(320, 180);
+        const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+        QVERIFY(renderer.lastFrame().visibleDepthDraws > 0);
+        QVERIFY(renderer.visibleDepthRange().has_value());
+        const ShadowViewFrames& views = renderer.shadowViews();
+        const double low = views.set.views.front().splitNear, high = views.set.views.back().splitFar;
+        const glm::dvec3 forward = -glm::dvec3(views.camera.view[0][2], views.camera.view[1][2], views.camera.view[2][2]);
+        int drawn = 0, outside = 0;
+        double nearest = 1e300, farthest = 0.0;
+        for (int i = 0; i < buffer.pixelCount(); ++i) {
+            if (buffer.mask(i) == VisibilityBuffer::Background)
+                continue;
+            const double depth = glm::dot(buffer.worldPosition(i) - views.camera.position, forward);
+            nearest = std::min(nearest, depth);
+            farthest = std::max(farthest, depth);
+            if (depth > s.shadow.distance)
+                continue;
+            ++drawn;
+            outside += depth < low || depth > high;
+        }
+        const QString numbers = QString("cascades split %1..%2, pixels drawn %3..%4, %5 of %6 outside").arg(low).arg(high).arg(nearest).arg(farthest).arg(outside).arg(drawn);
+        qInfo().noquote() << numbers;
+        QVERIFY2(drawn > 1000 && outside <= 0.001 * drawn, qPrintable(numbers));
+        // Tighter than the distance's range wherever the view does not reach both of its ends.
+        QVERIFY2(low >= views.camera.nearPlane && high <= s.shadow.distance * (1.0 + 1e-9), qPrintable(numbers));
+        QVERIFY2(low > views.camera.nearPlane * 2.0 || high < s.shadow.distance * 0.9, qPrintable(numbers));
+        // A still frame and a moving light measure nothing again; a moving camera does.
+        renderer.renderVisibility(s, size);
+        QCOMPARE(renderer.lastFrame().visibleDepthDraws, 0);
+        Settings lit = s;
+        lit.light.position.x += 0.3 * glm::length(s.light.position - s.light.target);
+        renderer.renderVisibility(lit, size);
+        QCOMPARE(renderer.lastFrame().visibleDepthDraws, 0);
+        Settings moved = s;
+        moved.camera.position += 0.05 * (s.camera.target - s.camera.position);
+        renderer.renderVisibility(moved, size);
+        QVERIFY(renderer.lastFrame().visibleDepthDraws > 0);
     }
 
     // Stabilised maps do not shimmer: over a camera walk of a third of a texel per frame, the

@@ -238,6 +238,10 @@ private slots:
         const bool togglesMasks = std::any_of(configurations.begin(), configurations.end(),
                                               [&](const SweepConfiguration& c) { return c.settings.shadow.cutouts != base.shadow.cutouts; });
         QCOMPARE(togglesMasks, scene == u"foliage");
+        // ... and sdsm only where there are cascades to split.
+        const bool togglesSdsm = std::any_of(configurations.begin(), configurations.end(),
+                                             [&](const SweepConfiguration& c) { return c.settings.shadow.depthFit != base.shadow.depthFit; });
+        QCOMPARE(togglesSdsm, base.shadow.cascades > 1 && base.light.type == LightType::Directional);
     }
 
     // What is the same for every row is said once; what is on a front is named on its chart;

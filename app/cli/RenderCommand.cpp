@@ -70,6 +70,14 @@ int runRender(const QStringList& arguments)
         HeadlessRenderer headless;
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
+        if (const ShadowViewFrames& views = headless.renderer().shadowViews(); views.set.cascaded) {
+            QStringList splits;
+            for (const ShadowView& view : views.set.views)
+                splits << QString::number(view.splitNear, 'g', 4);
+            splits << QString::number(views.set.views.back().splitFar, 'g', 4);
+            out() << "cascades split at " << splits.join(QStringLiteral(", ")) << " world units from the camera"
+                  << (headless.renderer().visibleDepthRange() ? " (sdsm: the depths this frame draws)" : "") << Qt::endl;
+        }
         printFitWarnings(headless.renderer().lastFit());
         if (const QString backend = activeHeadlessBackend(); !backend.isEmpty())
             out() << "headless platform: " << backend << ", " << headless.renderer().rendererString() << Qt::endl;
