@@ -162,9 +162,11 @@ std::pair<double, double> cascadeDepthRange(const Settings& settings, const Came
         return {nearest, farthest};
     // Within the distance's range: receivers beyond shadow.distance stay lit, as without sdsm.
     const double low = std::clamp(visible->nearest * (1.0 - kSdsmPadding), nearest, farthest);
+    if (low >= farthest)
+        return {nearest, farthest};     // everything drawn lies beyond the distance: lit
     const double high = std::clamp(visible->farthest * (1.0 + kSdsmPadding), low, farthest);
     // One depth drawn (a wall face-on): a slice of the padding's width around it.
-    return {low, std::max(high, low * (1.0 + kSdsmPadding))};
+    return {low, std::max(high, std::min(low * (1.0 + kSdsmPadding), farthest))};
 }
 
 ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObject>& objects, const CameraFrame& camera, double aspect,

@@ -69,7 +69,8 @@ struct VisibleDepthRange {
 // (and its far plane), or with shadow.depth_fit = sdsm and `visible` the drawn range within it,
 // padded by `kSdsmPadding` each way (the depth buffer's rounding, and a frame drawn at another
 // size than the one measured). Without `visible` (nothing
-// drawn, or its numbers not finite) sdsm falls back to the distance. Always near < far, finite.
+// drawn, or its numbers not finite) or with all of it beyond the distance, sdsm falls back to the
+// distance's range. Always near < far, finite.
 inline constexpr double kSdsmPadding = 0.02;
 std::pair<double, double> cascadeDepthRange(const Settings& settings, const CameraFrame& camera,
                                             const std::optional<VisibleDepthRange>& visible);

@@ -56,7 +56,7 @@ void CameraDepthPass::allocate(QSize size)
     m_size = size;
 }
 
-int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled)
+int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled, bool cutouts)
 {
     PassState state;
     state.viewport = QRect(QPoint(0, 0), m_size);
@@ -74,7 +74,7 @@ int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLen
     for (const DrawItem& item : scene.drawItems()) {
         if (!item.castsShadow || isOutsideFrustum(camera.viewProjection, item.bounds, false))
             continue;
-        const bool cutout = item.alphaCutoff > 0.0f;
+        const bool cutout = cutouts && item.alphaCutoff > 0.0f;
         if (cutout && !m_cutout)
             m_cutout = std::make_unique<Variant>(m_gl, QStringList{QStringLiteral("ALPHA_CUTOUT")});
         Variant& v = cutout ? *m_cutout : m_plain;
@@ -97,9 +97,9 @@ int CameraDepthPass::draw(const GpuScene& scene, const CameraFrame& camera, GLen
     return draws;
 }
 
-int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const CameraFrame& camera, QSize size)
+int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const CameraFrame& camera, QSize size, bool cutouts)
 {
-    const Key key{sceneGeneration, camera.viewProjection, size};
+    const Key key{sceneGeneration, camera.viewProjection, size, cutouts};
     if (m_key == key)
         return 0;
     GLint previous = 0;
@@ -110,7 +110,7 @@ int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const Ca
     m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     m_gl->glClearColor(kNothing, kNothing, 0.0f, 0.0f);
     m_gl->glClear(GL_COLOR_BUFFER_BIT);
-    const int draws = draw(scene, camera, GL_BACK) + draw(scene, camera, GL_FRONT);
+    const int draws = draw(scene, camera, GL_BACK, cutouts) + draw(scene, camera, GL_FRONT, cutouts);
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));

@@ -16,7 +16,8 @@ namespace shadowlab {
 // one RG32F texture the size of the frame, from two depth-tested passes. Between the two a
 // point is inside a caster; behind both, the light passes behind it. Only casters are drawn,
 // so a receiver that casts nothing never darkens the march, and cut-outs leave their holes out
-// as the eye sees them. Redrawn only when the scene, the camera or the frame's size changed.
+// unless shadow.cutouts casts them whole (the march is a shadow too). Redrawn only when the
+// scene, the camera, the frame's size or that setting changed.
 class CameraDepthPass {
 public:
     // Where no caster is, both channels hold this distance.
@@ -26,7 +27,7 @@ public:
 
     // Draws when the scene (its generation), `camera` or `size` changed since the last draw;
     // returns the draws issued (0 when kept). Leaves the framebuffer binding as it was.
-    int ensure(const GpuScene& scene, int sceneGeneration, const CameraFrame& camera, QSize size);
+    int ensure(const GpuScene& scene, int sceneGeneration, const CameraFrame& camera, QSize size, bool cutouts = true);
     // Red: front faces, green: back faces; world units along the view direction, nearest texel.
     GLuint texture() const { return m_texture.id(); }
     QSize size() const { return m_size; }
@@ -36,6 +37,7 @@ private:
         int sceneGeneration = 0;
         glm::dmat4 viewProjection{1.0};
         QSize size;
+        bool cutouts = true;
         bool operator==(const Key&) const = default;
     };
     void allocate(QSize size);
@@ -44,7 +46,7 @@ private:
         ShaderProgram program;
         GLint mvp, model, forward, alphaCutoff;
     };
-    int draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled);
+    int draw(const GpuScene& scene, const CameraFrame& camera, GLenum culled, bool cutouts);
 
     GlFunctions* m_gl;
     Variant m_plain;

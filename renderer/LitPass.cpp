@@ -63,6 +63,11 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
 
 LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
 
+int LitPass::compiledCutoutVariantCount() const
+{
+    return int(std::count_if(m_programs.begin(), m_programs.end(), [](const auto& p) { return p.first.contains(QLatin1String("ALPHA_CUTOUT")); }));
+}
+
 QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach, bool cutout)
 {
     QStringList defines;

@@ -54,6 +54,8 @@ public:
     static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false,
                                       bool cutout = false);
     int compiledVariantCount() const { return int(m_programs.size()); }
+    // Of those, the variants for cut-out objects (ALPHA_CUTOUT).
+    int compiledCutoutVariantCount() const;
 
     // The light's views the next render() reads (one map, cascades or cube faces, each in its
     // tile of `map`); needed when shadows are on. Not owned; must outlive render().

@@ -283,7 +283,7 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
     if (LitPass::usesContactShadows(settings)) {
         if (!m_cameraDepth)
             m_cameraDepth = std::make_unique<CameraDepthPass>(m_gl);
-        stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size);
+        stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size, settings.shadow.cutouts);
         m_litPass.setContactDepth(m_cameraDepth->texture());
         m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     } else {

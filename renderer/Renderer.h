@@ -87,6 +87,8 @@ public:
     // How many times the light's views were fitted; a frame whose inputs did not change does not.
     int fitCount() const { return m_fitCount; }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
+    // Cut-out variants compiled so far, lit pass and shadow pass (none until a scene has cut-outs).
+    int compiledCutoutVariants() const { return m_litPass.compiledCutoutVariantCount() + int(m_depthPass.hasCutoutVariant()); }
     // Fits the light to `camera` instead of settings.camera (which still draws the frame), until
     // reset with nullopt: what flicker measures, the shadow maps following a moving camera while
     // the measured pixels stay put.

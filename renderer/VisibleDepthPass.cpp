@@ -20,6 +20,7 @@ VisibleDepthPass::VisibleDepthPass(GlFunctions* gl) : m_gl(gl), m_plain(gl, {}) 
 void VisibleDepthPass::allocate(QSize size)
 {
     m_framebuffer.reset();
+    m_gl->glActiveTexture(GL_TEXTURE0);
     m_depth = makeTexture(m_gl);
     m_gl->glBindTexture(GL_TEXTURE_2D, m_depth.id());
     m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, size.width(), size.height(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
@@ -88,10 +89,22 @@ std::optional<VisibleDepthRange> VisibleDepthPass::ensure(const GpuScene& scene,
         *draws = 0;
     if (m_key == key)
         return m_range;
-    GLint previous = 0;
-    m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
-    if (!m_depth || m_size != size)
-        allocate(size);
+    GLint previousDraw = 0, previousRead = 0;
+    m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
+    m_gl->glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    const auto restore = [&] {
+        m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));
+        m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
+    };
+    if (!m_depth || m_size != size) {
+        try {
+            allocate(size);
+        } catch (...) {
+            m_depth.reset();    // allocated again on the next frame
+            restore();
+            throw;
+        }
+    }
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     const int drawn = draw(scene, camera);
     if (draws)
@@ -99,7 +112,7 @@ std::optional<VisibleDepthRange> VisibleDepthPass::ensure(const GpuScene& scene,
     m_readback.resize(std::size_t(size.width()) * std::size_t(size.height()));
     m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
     m_gl->glReadPixels(0, 0, size.width(), size.height(), GL_DEPTH_COMPONENT, GL_FLOAT, m_readback.data());
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    restore();
     // Window depth d in [0, 1] of GL's perspective back to the distance along the view.
     float low = 1.0f, high = 0.0f;
     for (const float d : m_readback) {

@@ -268,8 +268,9 @@ bool readAlphaMode(Importing& in, const aiMaterial* material, float baseAlpha, b
                                      .arg(QString::fromUtf8(materialName.C_Str()));
         }
     }
-    // glTF's cut-off 0 keeps every texel: a tiny one, so the object is still a cut-out where alpha is 0.
-    object.alphaCutoff = std::clamp(cutoff, 1.0f / 512.0f, 1.0f);
+    // glTF keeps a texel whose alpha is at least the cut-off: one of 0 or less keeps every texel,
+    // which is opaque.
+    object.alphaCutoff = std::clamp(cutoff, 0.0f, 1.0f);
     object.baseAlpha = std::isfinite(baseAlpha) ? std::clamp(baseAlpha, 0.0f, 1.0f) : 1.0f;
     return true;
 }

@@ -65,12 +65,7 @@ void main()
 #endif
     vec4 base = texture(uDiffuse, vUv);
 #ifdef MEASURE
-    // Derivatives before the cut-out's discard too.
     vec3 geometric = normalize(cross(dFdx(vPosition), dFdy(vPosition)));
-#endif
-#ifdef ALPHA_CUTOUT
-    if (base.a < uAlphaCutoff)
-        discard;
 #endif
     vec3 albedo = base.rgb * vColour;
     vec3 normal = normalize(vNormal);
@@ -123,6 +118,12 @@ void main()
 #if defined(SHADOWS) && defined(SHOW_CASCADES)
     if (uReceives)
         fragColor.rgb = mix(fragColor.rgb, viewTint(gViewIndex) * (0.4 + 0.6 * fragColor.rgb), 0.45);
+#endif
+#ifdef ALPHA_CUTOUT
+    // Last: every derivative above (the lookup's receiver plane and footprint, the march's
+    // slope, implicit lods) is taken with the whole 2 x 2 quad still running.
+    if (base.a < uAlphaCutoff)
+        discard;
 #endif
 #ifdef MEASURE
     if (dot(geometric, normal) < 0.0)

@@ -7,7 +7,6 @@
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "ImportPayload.h"
-#include "LitPass.h"
 #include "ProceduralTexture.h"
 #include "RayTracer.h"
 #include "ReferenceAgreement.h"
@@ -179,6 +178,35 @@ private Q_SLOTS:
         QVERIFY(m_files.isValid());
     }
     void cleanupTestCase() { m_headless.reset(); }
+
+    // A scene with no cut-outs compiles no cut-out variant (this runs first, before any scene
+    // with cut-outs); switching shadow.cutouts redraws the map once, and a still frame after it
+    // draws nothing again.
+    void onlyWhatTheSceneNeeds()
+    {
+        Renderer& r = m_headless->renderer();
+        const Settings seed = presetSettings("seed");
+        m_headless->renderScene(seed, kSize);
+        m_headless->renderScene(with("seed", {"shadow.cutouts=false", "contact.enabled=true"}), kSize);
+        r.renderVisibility(seed, kSize);
+        QCOMPARE(r.compiledCutoutVariants(), 0);
+        const Settings foliage = presetSettings("foliage");
+        m_headless->renderScene(foliage, kSize);
+        QVERIFY(r.compiledCutoutVariants() >= 2);     // the lit pass's and the shadow pass's
+        const int passes = r.shadowPassCount();
+        m_headless->renderScene(foliage, kSize);
+        QCOMPARE(r.shadowPassCount(), passes);
+        m_headless->renderScene(with("foliage", {"shadow.cutouts=false"}), kSize);
+        QCOMPARE(r.shadowPassCount(), passes + 1);
+        m_headless->renderScene(with("foliage", {"shadow.cutouts=false"}), kSize);
+        QCOMPARE(r.shadowPassCount(), passes + 1);
+        // The contact march is a shadow too: it casts the cut-outs whole with the map.
+        m_headless->renderScene(with("foliage", {"contact.enabled=true"}), kSize);
+        m_headless->renderScene(with("foliage", {"contact.enabled=true"}), kSize);
+        QCOMPARE(r.lastFrame().contactDepthDraws, 0);
+        m_headless->renderScene(with("foliage", {"contact.enabled=true", "shadow.cutouts=false"}), kSize);
+        QVERIFY(r.lastFrame().contactDepthDraws > 0);
+    }
 
     // The reference reads a texel's alpha where GL does: exact at texel centres, bilinear
     // between them, wrapped as GL_REPEAT wraps.
@@ -506,29 +534,6 @@ private Q_SLOTS:
         qInfo().noquote() << "through the mask:" << text(through) << "| cast whole:" << text(solid);
         QVERIFY2(share(through) <= 0.008, qPrintable(text(through)));
         QVERIFY2(solid.falseShadow >= 4 * std::max(wrong(through), 25), qPrintable(text(solid)));
-    }
-
-    // A scene with no cut-outs compiles no cut-out variant; switching shadow.cutouts redraws the
-    // map once, and a still frame after it draws nothing again.
-    void onlyWhatTheSceneNeeds()
-    {
-        Renderer& r = m_headless->renderer();
-        const Settings seed = presetSettings("seed");
-        m_headless->renderScene(seed, kSize);
-        const int variants = r.compiledLitVariants();
-        m_headless->renderScene(with("seed", {"shadow.cutouts=false"}), kSize);
-        QCOMPARE(r.compiledLitVariants(), variants);
-        for (const QString& v : LitPass::variantDefines(seed))
-            QVERIFY(!v.contains("ALPHA_CUTOUT"));
-        const Settings foliage = presetSettings("foliage");
-        m_headless->renderScene(foliage, kSize);
-        const int passes = r.shadowPassCount();
-        m_headless->renderScene(foliage, kSize);
-        QCOMPARE(r.shadowPassCount(), passes);
-        m_headless->renderScene(with("foliage", {"shadow.cutouts=false"}), kSize);
-        QCOMPARE(r.shadowPassCount(), passes + 1);
-        m_headless->renderScene(with("foliage", {"shadow.cutouts=false"}), kSize);
-        QCOMPARE(r.shadowPassCount(), passes + 1);
     }
 
 private:
