@@ -4,23 +4,7 @@
 
 namespace shadowlab {
 
-DepthPass::Variant::Variant(GlFunctions* gl, const QStringList& defines)
-    : program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), defines),
-      mvp(program.uniform("uLightModelViewProjection")),
-      alphaCutoff(program.uniform("uAlphaCutoff"))
-{
-}
-
-DepthPass::DepthPass(GlFunctions* gl) : m_gl(gl), m_plain(gl, {}), m_reversedDepth(hasClipControl()) {}
-
-DepthPass::Variant& DepthPass::variant(bool cutout)
-{
-    if (!cutout)
-        return m_plain;
-    if (!m_cutout)
-        m_cutout = std::make_unique<Variant>(m_gl, QStringList{QStringLiteral("ALPHA_CUTOUT"), QStringLiteral("CUTOUT_FULL_RESOLUTION")});
-    return *m_cutout;
-}
+DepthPass::DepthPass(GlFunctions* gl) : m_gl(gl), m_draw(gl, true), m_reversedDepth(hasClipControl()) {}
 
 void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
 {
@@ -77,29 +61,8 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     m_gl->glEnable(GL_SCISSOR_TEST);
     m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
 
-    m_gl->glActiveTexture(GL_TEXTURE0);
-    Variant* bound = nullptr;
-    int draws = 0;
-    for (const DrawItem& item : scene.drawItems()) {
-        if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, clampDepth))
-            continue;
-        const bool cutout = cutouts && item.alphaCutoff > 0.0f;
-        Variant& v = variant(cutout);
-        if (&v != bound) {
-            v.program.bind();
-            bound = &v;
-        }
-        v.program.set(v.mvp, glm::mat4(light.depthViewProjection * item.model));
-        if (cutout) {
-            v.program.set(v.alphaCutoff, item.alphaCutoff);
-            m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
-        }
-        scene.draw(item, false);
-        ++draws;
-    }
-
-    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    m_gl->glBindVertexArray(0);
+    const int draws = m_draw.draw(scene, {.viewProjection = light.depthViewProjection, .culling = light.viewProjection, .clampDepth = clampDepth,
+                                          .castersOnly = true, .cutouts = cutouts});
     m_gl->glDisable(GL_SCISSOR_TEST);
     // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.
     applyPassState(m_gl, PassState{});

@@ -1,11 +1,10 @@
 #pragma once
 
+#include "DepthOnlyDraw.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
-
-#include <memory>
 
 namespace shadowlab {
 
@@ -33,19 +32,11 @@ public:
     void clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile);
 
     // Whether the cut-out variant has been compiled (a scene with cut-outs was drawn).
-    bool hasCutoutVariant() const { return m_cutout != nullptr; }
+    bool hasCutoutVariant() const { return m_draw.hasCutoutVariant(); }
 
 private:
-    struct Variant {
-        Variant(GlFunctions* gl, const QStringList& defines);
-        ShaderProgram program;
-        GLint mvp, alphaCutoff;
-    };
-    Variant& variant(bool cutout);
-
     GlFunctions* m_gl;
-    Variant m_plain;
-    std::unique_ptr<Variant> m_cutout;
+    DepthOnlyDraw m_draw;
     bool m_reversedDepth = false;
 };
 

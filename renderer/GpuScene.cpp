@@ -73,6 +73,7 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_es(QOpenGLContext
         m_meshes.push_back(std::move(g));
     }
     buildDrawItems();
+    m_hasCutouts = m_scene.hasCutouts();
     gl->glBindVertexArray(0);
 
     const auto upload = [gl](const QImage& image, const QString& label) {

@@ -47,7 +47,8 @@ public:
     const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
     // What the passes draw: every object once, alone or in a batch.
     const std::vector<DrawItem>& drawItems() const { return m_items; }
-    bool hasCutouts() const { return m_scene.hasCutouts(); }
+    // scene().hasCutouts(), found once at upload (the lit pass asks every frame).
+    bool hasCutouts() const { return m_hasCutouts; }
     // Binds the item's vertex array and draws it; with `colour`, an object's base colour is set
     // as the constant of attribute 3 (the passes that read positions only leave it alone).
     void draw(const DrawItem& item, bool colour = true) const;
@@ -74,6 +75,7 @@ private:
     std::vector<DrawItem> m_items;
     std::vector<GpuMesh> m_batches;         // the vertex arrays of the batched items, in order
     Bounds m_bounds;
+    bool m_hasCutouts = false;
     std::array<GlTexture, 3> m_textures;   // Checker, Wood, Flat (white)
     std::vector<GlTexture> m_images;
 };

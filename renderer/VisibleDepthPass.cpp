@@ -8,14 +8,7 @@
 
 namespace shadowlab {
 
-VisibleDepthPass::Variant::Variant(GlFunctions* gl, const QStringList& defines)
-    : program(gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), defines),
-      mvp(program.uniform("uLightModelViewProjection")),
-      alphaCutoff(program.uniform("uAlphaCutoff"))
-{
-}
-
-VisibleDepthPass::VisibleDepthPass(GlFunctions* gl) : m_gl(gl), m_plain(gl, {}) {}
+VisibleDepthPass::VisibleDepthPass(GlFunctions* gl) : m_gl(gl), m_draw(gl, false) {}
 
 void VisibleDepthPass::allocate(QSize size)
 {
@@ -52,30 +45,7 @@ int VisibleDepthPass::draw(const GpuScene& scene, const CameraFrame& camera)
     applyPassState(m_gl, state);
     m_gl->glClearDepth(1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
-    m_gl->glActiveTexture(GL_TEXTURE0);
-    Variant* bound = nullptr;
-    int draws = 0;
-    for (const DrawItem& item : scene.drawItems()) {
-        if (isOutsideFrustum(camera.viewProjection, item.bounds, false))
-            continue;
-        const bool cutout = item.alphaCutoff > 0.0f;
-        if (cutout && !m_cutout)
-            m_cutout = std::make_unique<Variant>(m_gl, QStringList{QStringLiteral("ALPHA_CUTOUT")});
-        Variant& v = cutout ? *m_cutout : m_plain;
-        if (&v != bound) {
-            v.program.bind();
-            bound = &v;
-        }
-        v.program.set(v.mvp, glm::mat4(camera.viewProjection * item.model));
-        if (cutout) {
-            v.program.set(v.alphaCutoff, item.alphaCutoff);
-            m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
-        }
-        scene.draw(item, false);
-        ++draws;
-    }
-    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    m_gl->glBindVertexArray(0);
+    const int draws = m_draw.draw(scene, {.viewProjection = camera.viewProjection, .culling = camera.viewProjection});
     applyPassState(m_gl, PassState{});
     return draws;
 }

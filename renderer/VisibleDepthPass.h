@@ -1,13 +1,12 @@
 #pragma once
 
+#include "DepthOnlyDraw.h"
 #include "GpuScene.h"
 #include "LightMath.h"
-#include "ShaderProgram.h"
 #include "ShadowViews.h"
 
 #include <QSize>
 
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -37,17 +36,11 @@ private:
         QSize size;
         bool operator==(const Key&) const = default;
     };
-    struct Variant {
-        Variant(GlFunctions* gl, const QStringList& defines);
-        ShaderProgram program;
-        GLint mvp, alphaCutoff;
-    };
     void allocate(QSize size);
     int draw(const GpuScene& scene, const CameraFrame& camera);
 
     GlFunctions* m_gl;
-    Variant m_plain;
-    std::unique_ptr<Variant> m_cutout;  // for a scene with cut-outs: the eye sees through them
+    DepthOnlyDraw m_draw;               // cut-outs through their masks: the eye sees through them
     GlTexture m_depth;
     GlFramebuffer m_framebuffer;
     QSize m_size;

@@ -175,17 +175,14 @@ Mesh pyramid()
     return mesh;
 }
 
-Mesh card(glm::vec2 uvRepeat, float thickness)
+Mesh card(glm::vec2 uvRepeat)
 {
     Mesh mesh;
     const glm::vec3 corners[4] = {{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f}};
     for (const float side : {1.0f, -1.0f}) {
         const auto base = std::uint32_t(mesh.vertices.size());
-        for (glm::vec3 c : corners) {
-            const glm::vec2 uv((c.x + 1.0f) * 0.5f, (1.0f - c.y) * 0.5f);
-            c.z = side * thickness * 0.5f;
-            mesh.vertices.push_back({c, {0.0f, 0.0f, side}, uv * uvRepeat});
-        }
+        for (const glm::vec3& c : corners)
+            mesh.vertices.push_back({c, {0.0f, 0.0f, side}, glm::vec2((c.x + 1.0f) * 0.5f, (1.0f - c.y) * 0.5f) * uvRepeat});
         if (side > 0.0f)
             mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         else

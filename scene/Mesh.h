@@ -45,13 +45,11 @@ Mesh sphere(int segments, int rings);
 Mesh torus(float major, float minor, int segments, int sides);
 // A square pyramid with base from -1 to 1 at y = -1 and apex at (0, 1, 0), flat-shaded.
 Mesh pyramid();
-// A two-sided card (a leaf, a fence panel): the square from -1 to 1 in x and y, once facing +z
-// at z = thickness / 2 and once facing -z at -thickness / 2 (8 vertices), UVs 0..uvRepeat with
-// v = 0 at the top, the same texel at the same point from both sides. For cut-out textures,
-// seen and cast from either side. A thickness keeps the face toward the light off the map's
-// depth with front faces culled, as a closed mesh's does; 0 lays both faces in one plane, where
-// the lit face meets its own depth (acne at grazing light, whatever the bias).
-Mesh card(glm::vec2 uvRepeat = {1.0f, 1.0f}, float thickness = 0.0f);
+// A two-sided card (a leaf, a fence panel): the square from -1 to 1 in the xy plane, once facing
+// +z and once facing -z (8 vertices), UVs 0..uvRepeat with v = 0 at the top, the same texel at
+// the same point from both sides. For cut-out textures, seen and cast from either side. Both
+// faces lie in one plane, so the lit face meets its own depth in the map at grazing light.
+Mesh card(glm::vec2 uvRepeat = {1.0f, 1.0f});
 
 } // namespace meshes
 

@@ -474,7 +474,7 @@ private Q_SLOTS:
             // the card's frame), if it does within the card.
             const glm::dvec3 eye(toCard * glm::dvec4(buffer.cameraPosition, 1.0));
             const glm::dvec3 hit(toCard * glm::dvec4(buffer.worldPosition(i), 1.0));
-            if (std::abs(hit.z) < 0.011) {     // on either face (the card is 0.02 thick in its frame)
+            if (std::abs(hit.z) < 0.011) {     // on the card, within rounding of its plane
                 ++onCard;
                 const glm::vec2 uv(float((hit.x + 1.0) * 0.5 * 5.0), float((1.0 - hit.y) * 0.5 * 1.6));
                 onCardSolid += mask.alphaAt(uv) >= 0.25f;
