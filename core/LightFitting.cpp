@@ -277,19 +277,35 @@ struct LightSpace {
 struct SeenParts {
     std::vector<Bounds> parts;
     Bounds region;
+    double nearDepth = 0.0, farDepth = 0.0;     // their view depths (clip w of `camera`)
 };
 
-SeenParts seenParts(const std::vector<FitObject>& objects, const std::vector<glm::dmat4>& limits, const LightSpace& toLight)
+SeenParts seenParts(const std::vector<FitObject>& objects, const std::vector<glm::dmat4>& limits, const LightSpace& toLight,
+                    const std::optional<glm::dmat4>& camera, std::vector<glm::dvec2>* lightPoints)
 {
     SeenParts seen;
     seen.parts.resize(objects.size());
+    double nearest = 1e300, farthest = 0.0;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (!objects[i].receives || objects[i].bounds.isEmpty()
             || std::any_of(limits.begin(), limits.end(), [&](const glm::dmat4& m) { return isOutsideFrustum(m, objects[i].bounds, false); }))
             continue;
-        for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits))
-            seen.parts[i].extend(toLight(p));
+        for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits)) {
+            const glm::dvec3 l = toLight(p);
+            seen.parts[i].extend(l);
+            if (lightPoints)
+                lightPoints->emplace_back(l);
+            if (camera) {
+                const double w = ((*camera) * glm::dvec4(p, 1.0)).w;
+                nearest = std::min(nearest, w);
+                farthest = std::max(farthest, w);
+            }
+        }
         seen.region.extend(seen.parts[i]);
+    }
+    if (farthest > 0.0 && std::isfinite(farthest)) {
+        seen.nearDepth = std::max(nearest, 0.0);
+        seen.farDepth = farthest;
     }
     return seen;
 }
@@ -464,7 +480,7 @@ LightVolume windowVolume(const LightSettings& light, const LightVolume& manual, 
 } // namespace
 
 FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
-                     int mapSize, const std::vector<glm::dmat4>& within)
+                     int mapSize, const std::vector<glm::dmat4>& within, const glm::dvec3& mapUp)
 {
     FittedLight result;
     const LightVolume manual = manualVolume(light);
@@ -489,7 +505,8 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     const bool perspective = manual.perspective;
     // A directional light's volume hangs off its target, so its distance changes nothing.
     const glm::dvec3 anchor = perspective ? light.position : light.target;
-    const LightSpace toLight{stableLookAlong(anchor, manual.direction), perspective};
+    const glm::dvec3 up = perspective ? glm::dvec3(0.0) : mapUp;
+    const LightSpace toLight{stableLookAlong(anchor, manual.direction, up), perspective};
 
     double reach = 0.0;     // from the anchor to the farthest corner of anything
     for (const FitObject& object : objects) {
@@ -511,7 +528,11 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
             result.cuts.push_back({.by = FitCut::By::WidestCone, .perspective = true, .share = cut.share, .byPlane = cut.byPlane});
     }
 
-    SeenParts visible = seenParts(objects, limits, toLight);
+    // A warped map covers only the receivers' outline, not its box (LightVolume::up is set for it).
+    std::vector<glm::dvec2> outline;
+    SeenParts visible = seenParts(objects, limits, toLight, camera, up != glm::dvec3(0.0) ? &outline : nullptr);
+    result.seenNearDepth = visible.nearDepth;
+    result.seenFarDepth = visible.farDepth;
     Bounds& region = visible.region;
     if (region.isEmpty()) {
         result.anythingToShadow = false;
@@ -530,6 +551,9 @@ FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& o
     const MapWindow window = mapWindow(casters.footprint, regionSpan, mapSize, light.stabilize);
     const Bounds depths = windowDepths(objects, visible.parts, limits, window, casters, region, toLight);
     result.volume = windowVolume(light, manual, anchor, toLight.view, window, depths);
+    result.volume.up = up;
+    if (!outline.empty())
+        result.focus = focusOutline(std::move(outline), window.centre, window.span, kMarginTexels * std::max(window.span.x, window.span.y) / mapSize);
     result.fitted = true;
     result.texelAfter = texelWorldSize(result.volume, mapSize, distance);
     return result;
@@ -545,6 +569,39 @@ std::vector<glm::dvec2> cameraFootprint(const Bounds& box, const glm::dmat4& cam
     }
     if (points.size() < 3)
         return {};
+    return convexHull(std::move(points));
+}
+
+std::vector<glm::dvec2> focusOutline(std::vector<glm::dvec2> points, const glm::dvec2& centre, const glm::dvec2& span, double margin)
+{
+    const std::vector<glm::dvec2> hull = convexHull(std::move(points));
+    if (hull.size() < 3)
+        return {};
+    glm::dvec2 centroid(0.0);
+    for (const glm::dvec2& p : hull)
+        centroid += p / double(hull.size());
+    Polygon polygon;
+    for (const glm::dvec2& p : hull) {
+        const glm::dvec2 out = p - centroid;
+        const double length = glm::length(out);
+        polygon.emplace_back(p + (length > 0.0 ? out / length * margin : glm::dvec2(0.0)) - centre, 0.0);
+    }
+    const glm::dvec2 half = span * 0.5;
+    for (const Plane& side : {Plane{{1, 0, 0}, half.x}, Plane{{-1, 0, 0}, half.x}, Plane{{0, 1, 0}, half.y}, Plane{{0, -1, 0}, half.y}}) {
+        polygon = clip(polygon, side);
+        if (polygon.empty())
+            return {};
+    }
+    std::vector<glm::dvec2> focus;
+    for (const glm::dvec3& p : polygon)
+        focus.emplace_back(p);
+    return focus.size() >= 3 ? focus : std::vector<glm::dvec2>{};
+}
+
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points)
+{
+    if (points.size() < 3)
+        return points;
     // Andrew's monotone chain.
     std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     const auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {

@@ -62,6 +62,18 @@ struct FittedLight {
     double cutShare = 0.0;
     // Each cut worth a warning (one per view that cuts; fitWarnings() words them).
     std::vector<FitCut> cuts;
+    // The camera's view depths of the receivers it sees (0, 0: none, or no camera; scene fit only).
+    double seenNearDepth = 0.0, seenFarDepth = 0.0;
+    // Fitted with LightVolume::up (for a warp): the outline of the receivers seen, in the
+    // volume's own x and y, within its box; the warp needs to cover only that.
+    std::vector<glm::dvec2> focus;
+    // light.warp = lispsm: what the warp did (LightWarp.h), for the stats.
+    bool warped = false;
+    double warpNearDistance = 0.0;
+    // Where a warp was asked for: how much finer it makes the texels nearest the camera than
+    // the unwarped map (warpNearGain()), and why it was not drawn where it was not.
+    double warpGain = 0.0;
+    enum class WarpSkip { None, AlongLight, NoGain } warpSkip = WarpSkip::None;
 };
 
 // The widest cone a fitted perspective light covers (full angle, degrees): wider, a single map
@@ -75,8 +87,10 @@ std::vector<SettingsIssue> fitWarnings(const FittedLight& fit);
 // `light` must be valid (validate()); objects' empty boxes are ignored; `camera` is the
 // camera's view-projection (nullopt: everything is seen). `within`: further view-projections
 // the receivers must lie in to count (a cascade's slice, a spot's cone, a cube face).
+// `mapUp`: an ortho map's y axis in world (LightVolume::up); zero: stableLookAlong's.
 FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
-                     int mapSize, const std::vector<glm::dmat4>& within = {});
+                     int mapSize, const std::vector<glm::dmat4>& within = {},
+                     const glm::dvec3& mapUp = glm::dvec3(0.0));
 
 // The vertices of the convex region `box` ∩ each frustum (conventional clip space of each
 // view-projection): empty when they do not overlap. Exposed for tests of the fit.
@@ -87,5 +101,13 @@ std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm
 // and wrapped in its convex hull, counter-clockwise. Points behind a perspective light are left
 // out. Empty when the camera sees nothing of the box. For the depth-map view's outline.
 std::vector<glm::dvec2> cameraFootprint(const Bounds& box, const glm::dmat4& cameraViewProjection, const glm::dmat4& shadowMatrix);
+
+// The convex hull of `points`, counter-clockwise (fewer than 3 points: as given).
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points);
+
+// The outline a warped map must cover (FittedLight::focus): the hull of `points` (light space
+// x, y) grown by `margin` (world units), within the window of `span` around `centre`, in the
+// window's own coordinates (centre at 0). Empty when it has no area there.
+std::vector<glm::dvec2> focusOutline(std::vector<glm::dvec2> points, const glm::dvec2& centre, const glm::dvec2& span, double margin);
 
 } // namespace shadowlab

@@ -36,12 +36,15 @@ glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target)
     return stableLookAlong(eye, target - eye);
 }
 
-glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction)
+glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction, const glm::dvec3& preferredUp)
 {
     const glm::dvec3 forward = glm::normalize(direction);
     // World up unless the view is within ~2.5 degrees of vertical; then world -z, which is
     // as good as any other horizontal axis and keeps "up" on the map stable.
-    const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const double across = glm::length(glm::cross(forward, preferredUp));
+    const glm::dvec3 up = across > 1e-6 * glm::length(preferredUp) && across > 0.0 ? preferredUp
+        : std::abs(forward.y) > 0.999                                             ? glm::dvec3(0.0, 0.0, -1.0)
+                                                                                  : glm::dvec3(0.0, 1.0, 0.0);
     // glm::lookAt's basis, from the direction itself: eye + direction would round away
     // the direction's low bits when the eye is far from the origin.
     const glm::dvec3 side = glm::normalize(glm::cross(forward, up));
@@ -111,10 +114,12 @@ LightFrame computeLightFrame(const LightSettings& light, const LightVolume& v, b
     f.farPlane = v.farPlane;
     if (light.type == LightType::Spot)
         f.spotCosine = std::cos(glm::radians(light.fov) * 0.5);
-    f.view = stableLookAlong(v.origin, v.direction);
+    f.view = stableLookAlong(v.origin, v.direction, v.up);
     if (f.perspective) {
         const double n = v.nearPlane;
         f.projection = glm::frustum(v.left * n, v.right * n, v.bottom * n, v.top * n, n, v.farPlane);
+    } else if (v.warped) {
+        f.projection = v.warp;
     } else {
         f.projection = glm::ortho(v.left, v.right, v.bottom, v.top, v.nearPlane, v.farPlane);
     }
@@ -168,8 +173,38 @@ double texelWorldSize(const LightVolume& volume, int mapSize, double distance)
 {
     if (mapSize <= 0)
         return 0.0;
+    if (volume.warped && !volume.perspective) {
+        double coarsest = 0.0;
+        for (int i = 0; i < 8; ++i) {
+            const glm::dvec3 corner((i & 1) ? volume.right : volume.left, (i & 2) ? volume.top : volume.bottom,
+                                    -((i & 4) ? volume.farPlane : volume.nearPlane));
+            coarsest = std::max(coarsest, warpedTexelSize(volume, mapSize, corner));
+        }
+        return coarsest;
+    }
     const double span = std::max(volume.width(), volume.height()) / mapSize;
     return volume.perspective ? span * distance : span;
+}
+
+double warpedTexelSize(const LightVolume& volume, int mapSize, const glm::dvec3& p)
+{
+    // The map's uv changes across the light's rays (view x and y) at p; a texel is the world
+    // step that moves uv by 1 / mapSize along one axis of the map.
+    const glm::dvec4 c = volume.warp * glm::dvec4(p, 1.0);
+    if (!(c.w > 0.0) || mapSize <= 0)
+        return 0.0;
+    const glm::dvec2 uv = glm::dvec2(c) / c.w;
+    const glm::dvec4 cx = volume.warp * glm::dvec4(1.0, 0.0, 0.0, 0.0);
+    const glm::dvec4 cy = volume.warp * glm::dvec4(0.0, 1.0, 0.0, 0.0);
+    const glm::dvec2 jx = (glm::dvec2(cx) - uv * cx.w) / c.w;   // clip [-1, 1] per world unit along x
+    const glm::dvec2 jy = (glm::dvec2(cy) - uv * cy.w) / c.w;
+    const double det = jx.x * jy.y - jy.x * jx.y;
+    if (!(std::abs(det) > 0.0))
+        return 0.0;
+    // Columns of the inverse: world (x, y) per clip unit of the map's x and of its y.
+    const double perX = glm::length(glm::dvec2(jy.y, -jx.y)) / std::abs(det);
+    const double perY = glm::length(glm::dvec2(-jy.x, jx.x)) / std::abs(det);
+    return std::max(perX, perY) * 2.0 / double(mapSize);
 }
 
 double texelWorldSize(const LightSettings& light, int mapSize)

@@ -23,6 +23,13 @@ struct LightVolume {
     double left = -1.0, right = 1.0, bottom = -1.0, top = 1.0;
     double nearPlane = 1.0;             // along the direction from the origin; perspective: > 0
     double farPlane = 10.0;
+    // light.warp = lispsm (LightWarp.h): a perspective across the map, light view space to clip,
+    // that replaces the ortho box's projection. The box above is still what the map covers.
+    bool warped = false;
+    glm::dmat4 warp{1.0};
+    // The map's y axis in world (across the light): zero for stableLookAlong's; a warped
+    // volume is fitted with its y along the camera's view, the axis of its warp.
+    glm::dvec3 up{0.0};
 
     double width() const { return right - left; }
     double height() const { return top - bottom; }
@@ -78,8 +85,10 @@ glm::dvec3 lightPosition(const glm::dvec3& target, const LightAngles& angles);
 // straight above or below its target still gets an orthonormal, finite basis.
 // Requires eye != target (see validate()).
 glm::dmat4 stableLookAt(const glm::dvec3& eye, const glm::dvec3& target);
-// The same, looking from `eye` along `direction` (any length > 0).
-glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction);
+// The same, looking from `eye` along `direction` (any length > 0), with `up` as its y axis
+// where it is given (non-zero, not along the direction; only its part across the direction
+// counts).
+glm::dmat4 stableLookAlong(const glm::dvec3& eye, const glm::dvec3& direction, const glm::dvec3& up = glm::dvec3(0.0));
 
 // The volume exactly as set: light.extent, light.fov, light.near and light.far around the axis
 // from light.position toward light.target. Throws SettingsError for settings that cannot make
@@ -98,8 +107,12 @@ LightFrame computeLightFrame(const LightSettings& light, bool reversedDepth = fa
 CameraFrame computeCameraFrame(const CameraSettings& camera, double aspect, const Bounds& sceneBounds);
 
 // World-space width of one shadow-map texel (the wider axis): for an ortho volume across the
-// whole map, for a perspective one at `distance` from the light.
+// whole map, for a perspective one at `distance` from the light, for a warped one the coarsest
+// over its box.
 double texelWorldSize(const LightVolume& volume, int mapSize, double distance = 1.0);
+// A warped volume's texel (the wider axis) at a point of its box, in light view space
+// (x, y across the map, z = -depth): its world size there.
+double warpedTexelSize(const LightVolume& volume, int mapSize, const glm::dvec3& lightViewPoint);
 // ... of the volume as set, at the target's distance for a perspective light.
 double texelWorldSize(const LightSettings& light, int mapSize);
 

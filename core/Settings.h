@@ -17,6 +17,9 @@ enum class CascadeSplit { Uniform, Logarithmic, Practical };
 // the pixels actually drawn (sample-distribution shadow maps, Lauritzen 2010).
 enum class DepthFit { Distance, Sdsm };
 enum class LightFit { Manual, Scene };
+// A directional light's map warped across itself: none, or light-space perspective shadow maps
+// (Wimmer 2004), which give the receivers near the camera more of the map's texels.
+enum class LightWarp { None, Lispsm };
 enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
 enum class FilterMode { Hard, Pcf, PcfOptimized, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Dpcf, Vsm, Evsm2, Evsm4, Msm, MsmHausdorff, Esm };
@@ -43,6 +46,10 @@ struct LightSettings {
     // files that name only the projection load as before; validate() refuses a mismatch.
     LightType type = LightType::Directional;
     double falloff = 0.2;                   // spot: share of the cone's half-angle over which light fades out at its rim, [0, 1]
+    // Directional lights (each cascade too): LiSPSM's perspective warp of the map, its strength
+    // from Wimmer's optimal n times warpScale (larger: weaker, toward no warp).
+    LightWarp warp = LightWarp::None;
+    double warpScale = 1.0;                 // [0.05, 100]
 
     bool operator==(const LightSettings&) const = default;
 };

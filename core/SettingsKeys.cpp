@@ -228,6 +228,7 @@ const QStringList kLightTypeNames{QStringLiteral("directional"), QStringLiteral(
 const QStringList kSplitNames{QStringLiteral("uniform"), QStringLiteral("logarithmic"), QStringLiteral("practical")};
 const QStringList kDepthFitNames{QStringLiteral("distance"), QStringLiteral("sdsm")};
 const QStringList kFitNames{QStringLiteral("manual"), QStringLiteral("scene")};
+const QStringList kWarpNames{QStringLiteral("none"), QStringLiteral("lispsm")};
 const QStringList kBiasSpaceNames{QStringLiteral("world"), QStringLiteral("texel"), QStringLiteral("depth")};
 const QStringList kFormatNames{QStringLiteral("depth24"), QStringLiteral("depth32f")};
 // The filter.mode names, help and parameter keys come from the technique table.
@@ -403,6 +404,15 @@ std::vector<Entry> makeEntries()
     e.push_back(presented(boolKey("light.stabilize", [](auto& s) -> auto& { return s.light.stabilize; },
                         "Snap the fitted volume to whole texels and coarse size steps: no shimmer and no shadow-pass redraw on small camera moves, at slightly larger texels"),
                           {.label = QStringLiteral("Stabilise the fitted volume"), .group = kLight}));
+    e.push_back(presented(choiceKey<LightWarp>("light.warp", kWarpNames, [](auto& s) -> auto& { return s.light.warp; },
+                                     "Directional lights: none, or lispsm (light-space perspective shadow maps): the map warped by a perspective "
+                                     "across it, so receivers near the camera get more texels and far ones fewer; no warp where the camera looks "
+                                     "along the light, and a new map whenever the camera moves"),
+                          {.label = QStringLiteral("Warp"), .group = kLight}));
+    e.push_back(presented(numberKey("light.warp_scale", Range{0.05, 100.0}, [](auto& s) -> auto& { return s.light.warpScale; },
+                          "With light.warp=lispsm: the warp's near distance as a multiple of Wimmer's optimum; below 1 a stronger warp "
+                          "(finer near the camera, coarser far away), above 1 a weaker one"),
+                          {.label = QStringLiteral("Warp scale"), .decimals = 2, .sliderLow = 0.1, .sliderHigh = 10.0, .logarithmic = true, .group = kLight}));
     e.push_back(presented(integerKey("map.size", 16, kMaxImageSide, false, [](auto& s) -> auto& { return s.map.size; },
                            "Shadow map texels per side: more texels, sharper edges and less acne, at more memory and shadow-pass time"),
                           {.label = QStringLiteral("Size"), .unit = QStringLiteral(" px"), .sliderLow = 64.0, .sliderHigh = 8192.0, .logarithmic = true, .group = kShadowMap}));
@@ -702,6 +712,7 @@ QString toString(LightType value) { return kLightTypeNames.value(int(value)); }
 QString toString(CascadeSplit value) { return kSplitNames.value(int(value)); }
 QString toString(DepthFit value) { return kDepthFitNames.value(int(value)); }
 QString toString(LightFit value) { return kFitNames.value(int(value)); }
+QString toString(LightWarp value) { return kWarpNames.value(int(value)); }
 QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
@@ -762,6 +773,10 @@ std::vector<SettingsIssue> validate(const Settings& s)
         warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.near"),
                             QStringLiteral("far/near = %1 leaves a 24-bit depth map almost no precision far away; raise light.near or use map.format=depth32f")
                                 .arg(formatNumber(s.light.farPlane / s.light.nearPlane))});
+    if (errors.empty() && s.light.warp == LightWarp::Lispsm && s.light.type != LightType::Directional)
+        warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("light.warp"),
+                            QStringLiteral("light.warp=lispsm warps a directional light's map; a %1 light's map is drawn unwarped (set light.warp=none)")
+                                .arg(toString(s.light.type))});
     if (errors.empty() && s.filter.mode == FilterMode::PcfOptimized && optimizedPcfKernel(s.filter) != s.filter.kernel)
         warnings.push_back({SettingsIssue::Severity::Warning, QStringLiteral("filter.kernel"),
                             QStringLiteral("pcf-optimized has kernels of 3, 5 and 7 texels; %1 is used for filter.kernel=%2 (filter.mode=pcf has every odd width)")

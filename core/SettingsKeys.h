@@ -77,6 +77,7 @@ QString toString(LightProjection value);
 QString toString(LightType value);
 QString toString(CascadeSplit value);
 QString toString(DepthFit value);
+QString toString(LightWarp value);
 QString toString(LightFit value);
 QString toString(DepthFormat value);
 QString toString(BiasSpace value);

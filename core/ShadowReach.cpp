@@ -183,8 +183,8 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
         glm::dvec2 offsetUv(0.0);
         double offsetDepth = 0.0;
         if (settings.bias.normal > 0.0) {
-            if (view.perspective)
-                return lookupsEverywhere(objects);
+            if (view.perspective || view.volume.warped)
+                return lookupsEverywhere(objects);      // a warped texel's size varies over the map
             const double length = settings.bias.normal * texelWorldSize(view.volume, mapSize);
             offsetUv = length / glm::max(glm::dvec2(view.volume.width(), view.volume.height()), glm::dvec2(1e-300));
             offsetDepth = length / std::max(view.volume.farPlane - view.volume.nearPlane, 1e-300);

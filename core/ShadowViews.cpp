@@ -1,5 +1,9 @@
 #include "ShadowViews.h"
 
+#include "LightWarp.h"
+
+#include <functional>
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -29,11 +33,47 @@ double roundUpFine(double x)
     return std::exp2(std::ceil(std::log2(x) * 64.0) / 64.0);
 }
 
+// light.warp = lispsm on a directional light's view whose receivers the camera sees between
+// view depths nearDepth and farDepth. `plain` gives the unwarped fit of the same view to weigh
+// the warp against (called only when a warp is made); where the warp gains too little, that
+// one is drawn instead.
+void warpView(const Settings& settings, const CameraFrame& camera, double nearDepth, double farDepth, FittedLight& fit,
+              const std::function<FittedLight()>& plain)
+{
+    if (!usesLightWarp(settings) || !fit.anythingToShadow)
+        return;
+    WarpShape shape;
+    const LightVolume warped = lispsmVolume(fit.volume, camera, {.nearDepth = nearDepth, .farDepth = farDepth, .scale = settings.light.warpScale, .outline = fit.focus},
+                                            &shape);
+    if (!shape.warped) {
+        fit.warpSkip = FittedLight::WarpSkip::AlongLight;
+        return;
+    }
+    FittedLight unwarped = plain();
+    const double gain = warpNearGain(warped, unwarped.volume, settings.map.size, camera, fit.focus);
+    if (gain < kWarpLeastGain) {
+        fit = std::move(unwarped);
+        fit.warpGain = gain;
+        fit.warpSkip = FittedLight::WarpSkip::NoGain;
+        return;
+    }
+    fit.volume = warped;
+    fit.warped = true;
+    fit.warpGain = gain;
+    fit.warpNearDistance = shape.nearDistance;
+    fit.texelAfter = texelWorldSize(fit.volume, settings.map.size);
+}
+
 } // namespace
 
 bool usesShadowViews(const Settings& settings)
 {
     return settings.light.type == LightType::Point || (settings.light.type == LightType::Directional && settings.shadow.cascades > 1);
+}
+
+bool usesLightWarp(const Settings& settings)
+{
+    return settings.light.warp == LightWarp::Lispsm && settings.light.type == LightType::Directional;
 }
 
 bool usesVisibleDepth(const Settings& settings)
@@ -83,7 +123,8 @@ double cubeFaceFov(int mapSize)
     return 2.0 * glm::degrees(std::atan(texels / (texels - 2.0 * kFaceMarginTexels)));
 }
 
-FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitObject>& objects, const glm::dmat4& slice, int mapSize)
+FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitObject>& objects, const glm::dmat4& slice, int mapSize,
+                             const glm::dvec3& mapUp)
 {
     FittedLight result;
     const glm::dvec3 direction = glm::normalize(light.target - light.position);
@@ -96,7 +137,7 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
         radius = std::max(radius, glm::length(c - centre));
     radius = roundUpFine(std::max(radius, 1e-9 * std::max(1.0, glm::length(centre))));
 
-    const glm::dmat4 view = stableLookAlong(light.target, direction);
+    const glm::dmat4 view = stableLookAlong(light.target, direction, mapUp);
     const auto toLight = [&view](const glm::dvec3& p) {
         const glm::dvec3 v(view * glm::dvec4(p, 1.0));
         return glm::dvec3(v.x, v.y, -v.z);
@@ -145,11 +186,19 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
     LightVolume& v = result.volume;
     v.perspective = false;
     v.direction = direction;
+    v.up = mapUp;
     v.origin = light.target + right * middle.x + up * middle.y + direction * mid;
     v.left = v.bottom = -radius;
     v.right = v.top = radius;
     v.nearPlane = nearPlane - mid;
     v.farPlane = std::max(farPlane - mid, v.nearPlane + grid);
+    if (mapUp != glm::dvec3(0.0)) {
+        // A warped cascade needs to cover only its slice's outline within the square.
+        std::vector<glm::dvec2> outline;
+        for (const glm::dvec3& c : corners)
+            outline.emplace_back(toLight(c));
+        result.focus = focusOutline(std::move(outline), glm::dvec2(middle), glm::dvec2(2.0 * radius), 4.0 * texel);
+    }
     return result;
 }
 
@@ -203,6 +252,7 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
     if (light.type == LightType::Directional && settings.shadow.cascades > 1) {
         set.cascaded = true;
         const int count = settings.shadow.cascades;
+        const glm::dvec3 mapUp = usesLightWarp(settings) ? warpAxis(camera, light.target - light.position) : glm::dvec3(0.0);
         const auto [nearest, farthest] = cascadeDepthRange(settings, camera, visible);
         const std::vector<double> splits = cascadeSplits(settings.shadow.split, settings.shadow.splitLambda, nearest, farthest, count);
         const double safeAspect = std::isfinite(aspect) && aspect > 0.0 ? aspect : 1.0;
@@ -215,7 +265,11 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
             // Slices overlap by the blend band, so a blended pixel is covered by both maps.
             const double blendStart = view.splitNear - settings.shadow.blend * (view.splitNear - (i > 0 ? splits[std::size_t(i) - 1] : view.splitNear));
             const glm::dmat4 slice = glm::perspective(glm::radians(settings.camera.fov), safeAspect, std::max(blendStart, camera.nearPlane), view.splitFar) * camera.view;
-            view.fit = light.stabilize ? fitCascadeSphere(light, objects, slice, mapSize) : fitLight(light, objects, slice, mapSize);
+            const auto fit = [&](const glm::dvec3& up) {
+                return light.stabilize ? fitCascadeSphere(light, objects, slice, mapSize, up) : fitLight(light, objects, slice, mapSize, {}, up);
+            };
+            view.fit = fit(mapUp);
+            warpView(settings, camera, std::max(blendStart, camera.nearPlane), view.splitFar, view.fit, [&] { return fit(glm::dvec3(0.0)); });
             set.views.push_back(std::move(view));
         }
         return set;
@@ -224,7 +278,12 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
     std::vector<glm::dmat4> within;
     if (light.type == LightType::Spot)
         within.push_back(coneFrustum(light.position, glm::normalize(light.target - light.position), light.fov));
-    view.fit = fitLight(light, objects, camera.viewProjection, mapSize, within);
+    const glm::dvec3 mapUp = usesLightWarp(settings) ? warpAxis(camera, light.target - light.position) : glm::dvec3(0.0);
+    view.fit = fitLight(light, objects, camera.viewProjection, mapSize, within, mapUp);
+    const bool seen = view.fit.seenFarDepth > 0.0;
+    warpView(settings, camera, seen ? std::max(view.fit.seenNearDepth, camera.nearPlane) : camera.nearPlane,
+             seen ? view.fit.seenFarDepth : camera.farPlane, view.fit,
+             [&] { return fitLight(light, objects, camera.viewProjection, mapSize, within); });
     set.views.push_back(std::move(view));
     return set;
 }

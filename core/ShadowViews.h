@@ -35,6 +35,9 @@ struct ShadowViewSet {
 
 // Whether `settings` render more than one view (cascades > 1 or a point light).
 bool usesShadowViews(const Settings& settings);
+// Whether `settings` warp a directional light's views (light.warp = lispsm), so the lit pass
+// takes each pixel's texel from the map's warp.
+bool usesLightWarp(const Settings& settings);
 // Whether the cascades of `settings` split the frame's drawn depth range (shadow.depth_fit = sdsm
 // on a directional light's cascades, shadows on), which a depth prepass measures.
 bool usesVisibleDepth(const Settings& settings);
@@ -86,6 +89,8 @@ ShadowViewSet fitShadowViews(const Settings& settings, const std::vector<FitObje
 // size however the camera turns, its centre snapped to whole texels, so camera motion moves
 // shadow edges by whole texels only (no shimmer) and rarely changes the map. Depth covers the
 // objects under it. `slice` is the slice's view-projection.
-FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitObject>& objects, const glm::dmat4& slice, int mapSize);
+// `mapUp`: the map's y axis (LightVolume::up), zero for stableLookAlong's.
+FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitObject>& objects, const glm::dmat4& slice, int mapSize,
+                             const glm::dvec3& mapUp = glm::dvec3(0.0));
 
 } // namespace shadowlab

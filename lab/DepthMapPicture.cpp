@@ -8,6 +8,7 @@
 #include <QStringList>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
@@ -74,10 +75,17 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     return facts;
 }
 
-double depthToDistance(const LightFrame& light, double depth)
+double depthToDistance(const LightFrame& light, double depth, const std::optional<glm::dvec2>& uv)
 {
     const double n = light.nearPlane, f = light.farPlane;
-    const double along = light.perspective ? 2.0 * n * f / (f + n - (depth * 2.0 - 1.0) * (f - n)) : n + depth * (f - n);
+    double along = light.perspective ? 2.0 * n * f / (f + n - (depth * 2.0 - 1.0) * (f - n)) : n + depth * (f - n);
+    if (light.volume.warped) {
+        if (!uv)
+            return std::nan("");
+        // The texel's point in the light's view space: the warp undone.
+        const glm::dvec4 p = glm::inverse(light.volume.warp) * glm::dvec4(*uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+        along = -p.z / p.w;
+    }
     // A fitted ortho volume's near and far count from a point on its axis, not from the light.
     return along + glm::dot(light.volume.origin - light.position, light.volume.direction);
 }
@@ -170,6 +178,8 @@ QRect DepthMapPicture::glViewport(const QRect& rect, double dpr) const
 
 QString DepthMapPicture::depthText(const LightFrame& light, double depth, int decimals)
 {
+    if (light.volume.warped)    // no one distance for a depth over a warped map
+        return QString::number(depth, 'f', decimals);
     return QStringLiteral("%1 · %2 wu").arg(depth, 0, 'f', decimals).arg(distanceText(depthToDistance(light, depth)));
 }
 
@@ -199,7 +209,8 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     const QString size = v.perspective ? QStringLiteral("%1° × %2°")
                                              .arg(glm::degrees(std::atan(v.right) - std::atan(v.left)), 0, 'f', 0)
                                              .arg(glm::degrees(std::atan(v.top) - std::atan(v.bottom)), 0, 'f', 0)
-                                       : QStringLiteral("%1 × %2 wu").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2);
+                                       : QStringLiteral("%1 × %2 wu%3").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2)
+                                             .arg(v.warped ? QStringLiteral(", lispsm-warped") : QString());
     const QString volumeText = facts.views > 1
         ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
         : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size).arg(facts.mapSize);
@@ -303,7 +314,7 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     const int decimals = depthDecimals(span.nearest, span.farthest);
     QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest, decimals));
     QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest, decimals));
-    if (facts.moment <= 1 && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > legendBar().width()) {
+    if (facts.moment <= 1 && !facts.light.volume.warped && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > legendBar().width()) {
         // A narrow pane: the world distances only (the depths are in the PNG's text and the tooltip).
         nearText = QStringLiteral("near %1 wu").arg(distanceText(depthToDistance(facts.light, span.nearest)));
         farText = QStringLiteral("far %1 wu").arg(distanceText(depthToDistance(facts.light, span.farthest)));

@@ -36,8 +36,10 @@ struct DepthMapFacts {
 DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span);
 
 // Distance from the light along its axis of a conventional [0, 1] depth: linear for an ortho
-// light, the perspective depth curve inverted for a perspective one.
-double depthToDistance(const LightFrame& light, double depth);
+// light, the perspective depth curve inverted for a perspective one. A warped map's
+// (light.warp) scale of depth varies over the map: there it needs the texel's `uv` in [0, 1]^2,
+// and without one it is NaN.
+double depthToDistance(const LightFrame& light, double depth, const std::optional<glm::dvec2>& uv = std::nullopt);
 
 // The readable depth map, one layout for the explorer's pane and for `render --depth-out`: the
 // map at the light volume's real aspect over the map area, and below it a legend (the colour

@@ -9,9 +9,12 @@
 namespace shadowlab {
 
 AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const Settings& settings, QSize size,
-                               const std::function<void(double)>& progress)
+                               const std::function<void(double)>& progress, TexelDensity* density)
 {
     const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
+    if (density != nullptr)
+        *density = settings.shadow.enabled ? measureTexelDensity(buffer, renderer.shadowViews(), renderer.lightFrame(), settings.map.size)
+                                           : TexelDensity{};
     return meter.measure(buffer, *renderer.scene(), renderer.lightFrame(), settings, progress);
 }
 

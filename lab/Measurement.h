@@ -6,6 +6,7 @@
 #include "HeadlessRenderer.h"
 #include "SampleStats.h"
 #include "SteadyTiming.h"
+#include "TexelDensity.h"
 
 #include <functional>
 #include <vector>
@@ -15,8 +16,9 @@ namespace shadowlab {
 // Renders the measuring variant of `settings` at `size` and compares it with the reference
 // (traced, or reused from `meter`'s cache). The one path from a renderer to an AccuracyResult,
 // for `report`, the accuracy dock and the tests. Throws like Renderer::render() and TraceError.
+// With `density`, the frame's texel density (TexelDensity.h) goes there too.
 AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const Settings& settings, QSize size,
-                               const std::function<void(double)>& progress = {});
+                               const std::function<void(double)>& progress = {}, TexelDensity* density = nullptr);
 
 // What repeated frames of one configuration cost, per pass; GPU and wall times in ms.
 struct FrameSamples {

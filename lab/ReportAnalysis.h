@@ -4,6 +4,7 @@
 #include "Flicker.h"
 #include "SampleStats.h"
 #include "Settings.h"
+#include "TexelDensity.h"
 
 #include <QImage>
 #include <QSize>
@@ -24,6 +25,7 @@ struct ReportRow {
     SampleStats frame;
     AccuracyResult accuracy;
     FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
+    TexelDensity density;       // screen pixels per shadow texel over the measured receivers
     bool paretoFront = false;   // on its light's front of frame time against misclassified pixels
     bool areaFront = false;     // ... against the MAE of the area light (never when it was not traced)
     bool defaults = false;      // the base settings; its error image is shown

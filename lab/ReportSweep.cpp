@@ -173,6 +173,31 @@ std::vector<SweepEntry> cascadesSweep()
     return s;
 }
 
+// LiSPSM against no warp at the same texels: at the preset's light, straight above (where the
+// camera looking down sees along it) and grazing; its strength; and with cascades.
+std::vector<SweepEntry> warpSweep()
+{
+    std::vector<SweepEntry> s;
+    const struct {
+        const char* name;
+        const char* position;   // relative to the target
+    } placements[] = {{"preset", nullptr}, {"(0, 6, 0), straight above", "0,6,0"}, {"(-6, 1.2, -2), grazing", "-6,1.2,-2"}};
+    for (const auto& p : placements) {
+        QStringList at;
+        if (p.position)
+            at << QStringLiteral("light.position=%1").arg(QLatin1String(p.position)) << QStringLiteral("light.target=0,0,0");
+        s.push_back({QStringLiteral("no warp @ %1").arg(QLatin1String(p.name)), at + QStringList{QStringLiteral("light.warp=none")}});
+        s.push_back({QStringLiteral("lispsm @ %1").arg(QLatin1String(p.name)), at + QStringList{QStringLiteral("light.warp=lispsm")}});
+    }
+    for (const char* scale : {"0.3", "3"})
+        s.push_back({QStringLiteral("lispsm, warp scale %1").arg(QLatin1String(scale)),
+                     {QStringLiteral("light.warp=lispsm"), QStringLiteral("light.warp_scale=%1").arg(QLatin1String(scale))}});
+    for (const char* warp : {"none", "lispsm"})
+        s.push_back({QStringLiteral("4 cascades of 1024 x 1024, warp %1").arg(QLatin1String(warp)),
+                     {QStringLiteral("shadow.cascades=4"), QStringLiteral("map.size=1024"), QStringLiteral("light.warp=%1").arg(QLatin1String(warp))}});
+    return s;
+}
+
 std::vector<SweepEntry> defaultSweep()
 {
     std::vector<SweepEntry> s{{QStringLiteral("defaults"), {}},
@@ -214,6 +239,10 @@ std::vector<SweepEntry> sweepAround(const Settings& base)
     if (base.shadow.cascades > 1 && base.light.type == LightType::Directional)
         entries.push_back({base.shadow.depthFit == DepthFit::Sdsm ? QStringLiteral("cascades over the distance") : QStringLiteral("sdsm cascades"),
                            {QStringLiteral("shadow.depth_fit=%1").arg(base.shadow.depthFit == DepthFit::Sdsm ? "distance" : "sdsm")}});
+    // A directional light's map warped, or not.
+    if (base.light.type == LightType::Directional)
+        entries.push_back({base.light.warp == LightWarp::Lispsm ? QStringLiteral("no warp") : QStringLiteral("lispsm warp"),
+                           {QStringLiteral("light.warp=%1").arg(base.light.warp == LightWarp::Lispsm ? "none" : "lispsm")}});
     // What ignoring a cut-out mask costs, where the scene has one.
     if (sceneHasCutouts(base.scene))
         entries.push_back({base.shadow.cutouts ? QStringLiteral("cut-outs cast whole") : QStringLiteral("cut-outs through their mask"),
@@ -287,7 +316,7 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("around")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("warp"), QStringLiteral("around")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& base)
@@ -308,6 +337,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& bas
         return penumbraSweep();
     if (nameOrFile == u"cascades")
         return cascadesSweep();
+    if (nameOrFile == u"warp")
+        return warpSweep();
     if (nameOrFile == u"filterable")
         return filterableSweep();
     QByteArray bytes;

@@ -30,6 +30,13 @@ struct FrameStats {
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame
     bool reversedDepth = false;         // the map was rendered with reversed depth (depth32f and clip control)
+    // light.warp = lispsm: the views it warped, of `warpViews` (0 of 0: not asked for), how
+    // much finer it makes the texels nearest the camera (the first view's gain, drawn or
+    // declined) and, where it warped none, why (LightWarp.h).
+    int warpViews = 0;
+    int warpedViews = 0;
+    double warpGain = 0.0;
+    enum class WarpDeclined { No, AlongLight, NoGain } warpDeclined = WarpDeclined::No;
     // Lights with several views (cascades, cube faces): per view, whether it was drawn this
     // frame, its casters drawn and (TimingMode::Finish) its wall time; empty for one map.
     std::vector<bool> viewRendered;

@@ -68,8 +68,9 @@ int LitPass::compiledCutoutVariantCount() const
     return int(std::count_if(m_programs.begin(), m_programs.end(), [](const auto& p) { return p.first.contains(QLatin1String("ALPHA_CUTOUT")); }));
 }
 
-QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach, bool cutout)
+QStringList LitPass::variantDefines(const Settings& settings, const Variant& variant)
 {
+    const bool measure = variant.measure, reversedDepth = variant.reversedDepth, outOfReach = variant.outOfReach, cutout = variant.cutout;
     QStringList defines;
     // Without lookups (shadows off, or receivers out of reach) no technique, bias or early-out
     // code is compiled, so every technique shares that variant.
@@ -85,6 +86,9 @@ QStringList LitPass::variantDefines(const Settings& settings, bool measure, bool
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
     if (settings.light.type == LightType::Spot)
         defines << QStringLiteral("LIGHT_SPOT");
+    // A warp asked for but declined in every view (LightWarp.h) keeps the plain lookups.
+    if (settings.shadow.enabled && usesLightWarp(settings) && variant.warped)
+        defines << QStringLiteral("LIGHT_WARP");
     if (settings.shadow.enabled && usesShadowViews(settings)) {
         defines << QStringLiteral("SHADOW_VIEWS") << (settings.light.type == LightType::Point ? QStringLiteral("LIGHT_POINT") : QStringLiteral("CASCADES"));
         if (settings.shadow.showCascades)
@@ -124,9 +128,9 @@ bool LitPass::usesDepthRange(const Settings& settings)
     return settings.shadow.enabled && settings.filter.earlyOut && shadowTechnique(settings.filter.mode).penumbraOnly;
 }
 
-LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach, bool cutout)
+LitPass::Program& LitPass::programFor(const Settings& settings, const Variant& variant)
 {
-    const QStringList defines = variantDefines(settings, measure, reversedDepth, outOfReach, cutout);
+    const QStringList defines = variantDefines(settings, variant);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
@@ -134,11 +138,14 @@ LitPass::Program& LitPass::programFor(const Settings& settings, bool measure, bo
     return *it->second;
 }
 
-LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& settings, bool measure, bool reversedDepth, bool outOfReach)
+LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& settings, Variant variant)
 {
-    Programs p{&programFor(settings, measure, reversedDepth, outOfReach)};
-    if (scene.hasCutouts())
-        p.cutout = &programFor(settings, measure, reversedDepth, outOfReach, true);
+    variant.cutout = false;
+    Programs p{&programFor(settings, variant)};
+    if (scene.hasCutouts()) {
+        variant.cutout = true;
+        p.cutout = &programFor(settings, variant);
+    }
     return p;
 }
 
@@ -495,8 +502,13 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     }
 
     const ShadowMap* shadowMap = shadows ? map : nullptr;
+    Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
+    if (m_views) {
+        for (const LightFrame& frame : m_views->frames)
+            variant.warped = variant.warped || frame.volume.warped;
+    }
     if (!m_lookupOrder.empty() || !m_maskedLookupOrder.empty()) {
-        const Programs lookup = programsFor(scene, settings, measure, light.reversedDepth, false);
+        const Programs lookup = programsFor(scene, settings, variant);
         for (Program* p : {lookup.plain, lookup.cutout}) {
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
@@ -504,7 +516,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &pixels);
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
-        const Programs plain = programsFor(scene, settings, measure, light.reversedDepth, true);
+        variant.outOfReach = true;
+        const Programs plain = programsFor(scene, settings, variant);
         for (Program* p : {plain.plain, plain.cutout}) {
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);

@@ -17,6 +17,16 @@
 
 namespace shadowlab {
 
+// What selects a variant besides the settings: what the frame draws and what its light's
+// views are like.
+struct LitVariant {
+    bool measure = false;       // into a measure target (MeasureTarget.h)
+    bool reversedDepth = false; // the map has reversed depth
+    bool outOfReach = false;    // for receivers no caster reaches: no lookup
+    bool cutout = false;        // for cut-out objects (DrawItem::alphaCutoff), only in a scene with them
+    bool warped = false;        // a view of the light is warped (light.warp): lookups per pixel
+};
+
 // Lit pass: shades every object with Blinn-Phong or Phong and the selected shadow filter.
 // Only the shader variant in use is compiled (on first use, then kept for switching back).
 class LitPass {
@@ -48,11 +58,9 @@ public:
     // technique that can skip its taps).
     static bool usesDepthRange(const Settings& settings);
 
-    // The #defines that select the variant for `settings` (exposed for tests and diagnostics);
-    // `outOfReach`: the variant for receivers no caster reaches, which takes no lookup; `cutout`:
-    // the one for cut-out objects (DrawItem::alphaCutoff), built only for a scene that has them.
-    static QStringList variantDefines(const Settings& settings, bool measure = false, bool reversedDepth = false, bool outOfReach = false,
-                                      bool cutout = false);
+    using Variant = LitVariant;
+    // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
+    static QStringList variantDefines(const Settings& settings, const Variant& variant = {});
     int compiledVariantCount() const { return int(m_programs.size()); }
     // Of those, the variants for cut-out objects (ALPHA_CUTOUT).
     int compiledCutoutVariantCount() const;
@@ -91,8 +99,8 @@ private:
         Program* cutout = nullptr;
     };
 
-    Program& programFor(const Settings& settings, bool measure, bool reversedDepth, bool outOfReach = false, bool cutout = false);
-    Programs programsFor(const GpuScene& scene, const Settings& settings, bool measure, bool reversedDepth, bool outOfReach);
+    Program& programFor(const Settings& settings, const Variant& variant);
+    Programs programsFor(const GpuScene& scene, const Settings& settings, Variant variant);
     void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map);
     void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings, const ShadowMap* map,
                           bool readsRange, const DepthRangePass* depthRange);

@@ -95,6 +95,16 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     stats.texelWorldSize = fit.texelAfter;
     stats.lightFitted = fit.fitted;
     stats.reversedDepth = reversed;
+    if (settings.shadow.enabled && usesLightWarp(settings)) {
+        stats.warpViews = int(views.set.views.size());
+        for (const ShadowView& view : views.set.views) {
+            stats.warpedViews += view.fit.warped;
+            if (stats.warpGain == 0.0)
+                stats.warpGain = view.fit.warpGain;
+            if (stats.warpDeclined == FrameStats::WarpDeclined::No && view.fit.warpSkip != FittedLight::WarpSkip::None)
+                stats.warpDeclined = view.fit.warpSkip == FittedLight::WarpSkip::NoGain ? FrameStats::WarpDeclined::NoGain : FrameStats::WarpDeclined::AlongLight;
+        }
+    }
 
     if (settings.shadow.enabled)
         renderViews(settings, storage, grid, timing, stats);

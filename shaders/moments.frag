@@ -1,7 +1,11 @@
 // Moments pass: the technique's encoding of the fragment's depth (its row's GLSL file, with
 // MOMENTS_PASS). Casters before the near plane are clamped to it, as in the depth pass, and a
 // cut-out caster leaves its holes out (ALPHA_CUTOUT).
+#ifdef LIGHT_PERSPECTIVE
 in float vDepth;
+#else
+in vec2 vClipDepth;
+#endif
 
 layout(location = 0) out vec4 fragMoments;
 
@@ -16,5 +20,10 @@ void main()
     if (cutAway())
         discard;
 #endif
-    fragMoments = encodeMoments(clamp(vDepth, 0.0, 1.0));
+#ifdef LIGHT_PERSPECTIVE
+    float depth = vDepth;
+#else
+    float depth = vClipDepth.x / vClipDepth.y * 0.5 + 0.5;
+#endif
+    fragMoments = encodeMoments(clamp(depth, 0.0, 1.0));
 }

@@ -11,7 +11,10 @@ uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max x
 uniform vec2 uShadowViewUvWorld[6]; // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
 uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
 uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
-#ifdef SHADOW_VIEWS
+// Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
+// here, per pixel; one plain view takes it from the vertex stage.
+#if defined(SHADOW_VIEWS) || defined(LIGHT_WARP)
+#define VIEW_PER_PIXEL
 uniform float uNormalOffsetTexels;  // bias.normal
 #endif
 #ifdef CASCADES
@@ -23,14 +26,42 @@ uniform vec3 uViewOrigin;           // ... and its position, camera-relative
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
 
+#ifdef LIGHT_WARP
+// A warped map's texels differ in size over the map: the world size of the whole map's uv
+// square at the map position `c` of view i, per axis of the map, from how uv changes across
+// the light's rays (which stay parallel under the warp, each one texel).
+vec2 warpUvWorld(int i, vec4 c, vec3 toLight)
+{
+    if (c.w <= 0.0)
+        return vec2(0.0);       // behind the warp's centre: outside the map, lit
+    vec3 a = normalize(cross(toLight, abs(toLight.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    vec3 b = cross(toLight, a);
+    vec4 ca = uShadowViews[i] * vec4(a, 0.0), cb = uShadowViews[i] * vec4(b, 0.0);
+    vec2 uv = c.xy / c.w;
+    vec2 ja = (ca.xy - uv * ca.w) / c.w, jb = (cb.xy - uv * cb.w) / c.w;   // uv per world unit along a and b
+    float det = ja.x * jb.y - jb.x * ja.y;
+    return vec2(length(vec2(jb.y, ja.y)), length(vec2(jb.x, ja.x))) / max(abs(det), 1e-30);
+}
+
+// The world size of a texel there, the wider axis.
+float warpTexel(vec2 uvWorld)
+{
+    return max(uvWorld.x * uShadowTexel.x, uvWorld.y * uShadowTexel.y);
+}
+#endif
+
 // The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
 // view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
 // interpolated); several views' are taken here, as each pixel picks its own.
-vec4 viewPosition(int i, vec3 normal)
+vec4 viewPosition(int i, vec3 normal, vec3 toLight)
 {
-#ifdef SHADOW_VIEWS
+#ifdef VIEW_PER_PIXEL
     vec4 plain = uShadowViews[i] * vec4(vPosition, 1.0);
+#ifdef LIGHT_WARP
+    float offset = uNormalOffsetTexels * warpTexel(warpUvWorld(i, plain, toLight));
+#else
     float offset = uNormalOffsetTexels * uShadowViewTexel[i];
+#endif
 #ifdef LIGHT_PERSPECTIVE
     offset *= plain.w;
 #endif
@@ -44,7 +75,7 @@ vec4 viewPosition(int i, vec3 normal)
 // camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
-    vec4 shadowCoord = viewPosition(i, normal);
+    vec4 shadowCoord = viewPosition(i, normal, toLight);
     if (shadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
@@ -62,13 +93,17 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
         return 1.0;             // outside the view's fitted volume every tap would read lit
     // Taps stay inside the tile (half a texel in), so a wide filter never reads a neighbour.
     gShadowTile = vec4(tile.xy + 0.5 * uShadowTexel, tile.zw - 0.5 * uShadowTexel);
+#ifdef LIGHT_WARP
+    gShadowUvWorld = warpUvWorld(i, shadowCoord, toLight);
+#else
     gShadowUvWorld = uShadowViewUvWorld[i];
     gShadowDepthRange = uShadowViewDepth[i];
+#endif
 #ifdef RECEIVER_PLANE
     // The receiver's depth as a plane over the map, as depth change per uv unit, from the
     // pixel's screen-space change in map coordinates. A degenerate footprint (the plane seen
     // edge-on from the camera) gets a flat plane.
-#ifdef SHADOW_VIEWS
+#ifdef VIEW_PER_PIXEL
     // Through this view's matrix: derivatives of coord itself are undefined where neighbours
     // pick other views.
     vec4 c0 = uShadowViews[i] * vec4(vPosition, 1.0);
@@ -90,6 +125,11 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
     gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
     gShadowW = shadowCoord.w;
+#ifdef LIGHT_WARP
+    // Along a ray a warped depth is linear in distance, at a scale of this texel's own: the
+    // depth range here, from 0, in world units (as an ortho view's, for shadowDistance).
+    gShadowDepthRange = vec2(0.0, 1.0 / max(abs(depthPerWorld), 1e-30));
+#endif
 #ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
     return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
@@ -98,7 +138,11 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #endif
 #else
 #ifdef BIAS_TEXEL
+#ifdef LIGHT_WARP
+    bias *= warpTexel(gShadowUvWorld);
+#else
     bias *= uShadowViewTexel[i];
+#endif
 #ifdef LIGHT_PERSPECTIVE
     bias *= shadowCoord.w;      // a perspective texel grows with the distance from the light
 #endif
@@ -115,7 +159,7 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 {
     // Screen-space steps, taken here where every pixel of a quad still runs: of the position
     // with several views, of the very coordinate looked up with one.
-#ifdef SHADOW_VIEWS
+#ifdef VIEW_PER_PIXEL
     vec3 dx = dFdx(vPosition), dy = dFdy(vPosition);
 #else
     vec3 mapCoord = vShadowCoord.xyz / vShadowCoord.w;

@@ -122,7 +122,7 @@ def check_layout(work, page):
             fail("chart %d marks %d points on the front and labels %d" % (i + 1, chart["fronts"], chart["labels"]))
     if result["images"] < 4 or result["brokenImages"] != 0:
         fail("%d of %d error images do not show" % (result["brokenImages"], result["images"]))
-    if result["tableRows"] != len(SWEEP) or result["lastColumn"] != "DSSIM":
+    if result["tableRows"] != len(SWEEP) or result["lastColumn"] != "texels \u2264 1 px %":
         fail("the table has %d rows and ends with '%s'" % (result["tableRows"], result["lastColumn"]))
     if result["overflow"] > 0:
         fail("the page is %d px wider than a %d px window" % (result["overflow"], WINDOW[0]))

@@ -2,6 +2,7 @@
 // light fits (cascades covering the whole shadow distance, cube faces covering every direction).
 #include "LightFitting.h"
 #include "LightMath.h"
+#include "LightWarp.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -353,6 +354,153 @@ private Q_SLOTS:
                          qPrintable(QString("direction %1,%2,%3 on face %4 maps to %5,%6,%7").arg(d.x).arg(d.y).arg(d.z).arg(face).arg(uvw.x).arg(uvw.y).arg(uvw.z)));
             }
         }
+    }
+
+    // light.warp = lispsm: for lights and cameras all around, the warped map covers the whole
+    // fitted box (nothing the fit kept falls off the map), its matrix is finite and keeps float
+    // precision, and it gives the receivers at the camera finer texels than the unwarped map,
+    // growing away from it; where the camera looks along the light there is no warp.
+    void lispsmCoversTheBox_data()
+    {
+        QTest::addColumn<double>("lightElevation");
+        QTest::addColumn<double>("lightAzimuth");
+        QTest::addColumn<double>("viewPitch");     // degrees below the horizon
+        QTest::addColumn<double>("viewYaw");
+        QTest::addColumn<double>("scale");
+        for (double elevation : {5.0, 30.0, 60.0, 89.5, 90.0}) {
+            for (double azimuth : {0.0, 135.0}) {
+                for (double pitch : {-20.0, 0.0, 25.0, 60.0, 89.9}) {
+                    for (double yaw : {10.0, 100.0, 190.0}) {
+                        for (double scale : {0.1, 1.0, 10.0})
+                            QTest::addRow("light %g/%g, view %g/%g, scale %g", elevation, azimuth, pitch, yaw, scale)
+                                << elevation << azimuth << pitch << yaw << scale;
+                    }
+                }
+            }
+        }
+    }
+
+    void lispsmCoversTheBox()
+    {
+        QFETCH(double, lightElevation);
+        QFETCH(double, lightAzimuth);
+        QFETCH(double, viewPitch);
+        QFETCH(double, viewYaw);
+        QFETCH(double, scale);
+        LightSettings light;
+        light.target = glm::dvec3(0.0);
+        light.position = lightPosition(light.target, {lightAzimuth, lightElevation, 10.0});
+        CameraSettings cameraSettings;
+        cameraSettings.position = glm::dvec3(1.0, 2.0, -1.0);
+        const double pitch = glm::radians(viewPitch), yaw = glm::radians(viewYaw);
+        cameraSettings.target = cameraSettings.position + glm::dvec3(std::cos(pitch) * std::sin(yaw), -std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+        const CameraFrame camera = computeCameraFrame(cameraSettings, 16.0 / 9.0, Bounds{glm::dvec3(-30.0), glm::dvec3(30.0)});
+        // A box of 40 x 32 x 12 wu in front of the camera, its y along the view, as a fit for
+        // the warp leaves it; or in the light's stable axes where the camera looks along it.
+        LightVolume box = manualVolume(light);
+        box.up = warpAxis(camera, light.target - light.position);
+        box.origin = cameraSettings.position;
+        box.left = -20.0;
+        box.right = 20.0;
+        box.bottom = -2.0;
+        box.top = 30.0;
+        box.nearPlane = -6.0;
+        box.farPlane = 6.0;
+        WarpShape shape;
+        // The receivers the camera sees, narrow at the camera and wide far away, as the fit
+        // outlines them (where the box is along the view).
+        std::vector<glm::dvec2> outline;
+        if (box.up != glm::dvec3(0.0))
+            outline = {{-1.0, -2.0}, {1.0, -2.0}, {20.0, 30.0}, {-20.0, 30.0}};
+        const LightVolume warped = lispsmVolume(box, camera, {.nearDepth = 0.5, .farDepth = 40.0, .scale = scale, .outline = outline}, &shape);
+        QVERIFY(std::isfinite(shape.sinGamma));
+        QCOMPARE(warped.warped, shape.warped);
+        if (shape.sinGamma < kWarpFadeStart)
+            QVERIFY2(!warped.warped, "no warp where the camera looks along the light");
+        if (shape.sinGamma > kWarpFadeEnd && scale <= 1.0)
+            QVERIFY2(warped.warped, qPrintable(QString("sin gamma %1: a warp").arg(shape.sinGamma)));
+        const LightFrame frame = computeLightFrame(light, warped);
+        QVERIFY(isFinite(frame.shadowMatrix));
+        const glm::mat4 single(frame.shadowMatrix);
+        const int mapSize = 4096;
+        const glm::dmat4 inverseView = glm::inverse(frame.view);
+        for (int i = 0; i < 27; ++i) {
+            // Corners, edge midpoints and the centre of the box, or of the outline's box.
+            const glm::dvec3 t(0.5 * (i % 3), 0.5 * ((i / 3) % 3), 0.5 * (i / 9));
+            glm::dvec3 local(glm::mix(box.left, box.right, t.x), glm::mix(box.bottom, box.top, t.y), -glm::mix(box.nearPlane, box.farPlane, t.z));
+            if (!outline.empty()) {
+                // On the outline's edges and inside it: its corners, the midpoints of its sides.
+                const glm::dvec2 a = outline[std::size_t(i % 4)], b = outline[std::size_t((i + 1) % 4)];
+                local = glm::dvec3(glm::mix(a, b, t.y * 0.5), local.z);
+            }
+            const glm::dvec3 world(inverseView * glm::dvec4(local, 1.0));
+            const glm::dvec4 c = frame.shadowMatrix * glm::dvec4(world, 1.0);
+            QVERIFY(c.w > 0.0);
+            const glm::dvec3 uvw = glm::dvec3(c) / c.w;
+            const double slack = 1e-9;
+            QVERIFY2(glm::all(glm::greaterThanEqual(uvw, glm::dvec3(-slack))) && glm::all(glm::lessThanEqual(uvw, glm::dvec3(1.0 + slack))),
+                     qPrintable(QString("point %1 of the box maps to %2,%3,%4").arg(i).arg(uvw.x).arg(uvw.y).arg(uvw.z)));
+            // What the GPU computes in float lands within a tenth of a texel of a 4096 map.
+            const glm::vec4 f = single * glm::vec4(glm::vec3(world), 1.0f);
+            const glm::dvec2 fuv = glm::dvec2(f.x / f.w, f.y / f.w);
+            QVERIFY2(glm::length(fuv - glm::dvec2(uvw)) * mapSize < 0.1,
+                     qPrintable(QString("float is %1 texels off").arg(glm::length(fuv - glm::dvec2(uvw)) * mapSize)));
+        }
+        if (!warped.warped)
+            return;
+        // Finer than the unwarped map where the camera is, coarser on the far side.
+        const double plain = texelWorldSize(box, mapSize);
+        const glm::dvec3 eye(frame.view * glm::dvec4(camera.position, 1.0));
+        const double atEye = warpedTexelSize(warped, mapSize, glm::dvec3(eye.x, eye.y, eye.z));
+        QVERIFY2(atEye < plain, qPrintable(QString("texel at the camera %1, unwarped %2").arg(atEye).arg(plain)));
+        // ... growing away from the camera: the warp spends the far field's texels on the near.
+        const double far = warpedTexelSize(warped, mapSize, glm::dvec3(eye.x, box.top, eye.z));
+        QVERIFY2(far > atEye, qPrintable(QString("texel far away %1, at the camera %2").arg(far).arg(atEye)));
+        QVERIFY(texelWorldSize(warped, mapSize) >= far);
+        QVERIFY(shape.nearDistance > 0.0 && shape.nearDistance <= kWarpLongest * shape.depth);
+    }
+
+    // Turning the camera toward the light's direction weakens the warp smoothly to none: the
+    // warp's near distance only grows, and no texel size jumps on the way.
+    void lispsmFadesOutAlongTheLight()
+    {
+        LightSettings light;
+        light.position = lightPosition(light.target, {30.0, 50.0, 10.0});
+        const glm::dvec3 toward = glm::normalize(light.target - light.position);
+        LightVolume box = manualVolume(light);
+        box.left = box.bottom = -10.0;
+        box.right = box.top = 10.0;
+        box.nearPlane = -5.0;
+        box.farPlane = 5.0;
+        const glm::dvec3 side = glm::normalize(glm::cross(toward, glm::dvec3(0.0, 1.0, 0.0)));
+        double previousNear = 0.0, previousTexel = 0.0;
+        bool warpedBefore = true;
+        for (int step = 0; step <= 400; ++step) {
+            const double angle = glm::radians(20.0) * (1.0 - step / 400.0);     // 20 degrees to 0
+            for (double sign : {1.0, -1.0}) {       // looking with the light, and toward it
+                CameraSettings c;
+                c.position = glm::dvec3(0.0, 1.0, 0.0);
+                c.target = c.position + sign * (toward * std::cos(angle) + side * std::sin(angle));
+                const CameraFrame camera = computeCameraFrame(c, 1.0, Bounds{glm::dvec3(-20.0), glm::dvec3(20.0)});
+                WarpShape shape;
+                const LightVolume warped = lispsmVolume(box, camera, {.nearDepth = 0.5, .farDepth = 30.0, .scale = 1.0, .outline = {}}, &shape);
+                QVERIFY(isFinite(computeLightFrame(light, warped).shadowMatrix));
+                if (sign < 0.0)
+                    continue;
+                const double texel = texelWorldSize(warped, 2048);
+                QVERIFY(std::isfinite(texel) && texel > 0.0);
+                if (shape.warped) {
+                    QVERIFY2(warpedBefore, "the warp comes back closer to the light's direction");
+                    QVERIFY2(shape.nearDistance >= previousNear * (1.0 - 1e-9), qPrintable(QString("step %1: n fell").arg(step)));
+                    if (previousTexel > 0.0)
+                        QVERIFY2(std::abs(texel / previousTexel - 1.0) < 0.05, qPrintable(QString("step %1: texel %2 after %3").arg(step).arg(texel).arg(previousTexel)));
+                    previousNear = shape.nearDistance;
+                    previousTexel = texel;
+                }
+                warpedBefore = shape.warped;
+            }
+        }
+        QVERIFY2(!warpedBefore, "no warp looking along the light");
     }
 };
 

@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FrameStatsText.h"
 #include "HeadlessPlatform.h"
 #include "HeadlessRenderer.h"
 #include "ImageFile.h"
@@ -70,6 +71,8 @@ int runRender(const QStringList& arguments)
         HeadlessRenderer headless;
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
+        if (const QString warp = warpStatusText(headless.renderer().lastFrame()); !warp.isEmpty())
+            out() << warp << Qt::endl;
         if (const ShadowViewFrames& views = headless.renderer().shadowViews(); views.set.cascaded) {
             QStringList splits;
             for (const ShadowView& view : views.set.views)

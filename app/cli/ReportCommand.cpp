@@ -145,7 +145,8 @@ int runReport(const QStringList& arguments)
             row.defaults = sweep[c].settings == base;
             row.tutorial = sweep[c].settings == tutorial;
             row.accuracy = measureAccuracy(meter, headless.renderer(), sweep[c].settings, size,
-                                         [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); });
+                                         [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); },
+                                         &row.density);
             if (flickerFrames > 1) {
                 progress.show(start + step, sweep[c].label + QStringLiteral(": flicker"));
                 row.flicker = measureFlicker(headless.renderer(), sweep[c].settings,

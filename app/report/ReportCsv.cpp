@@ -25,7 +25,7 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
     // SSIM), a plain number.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
-                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim\n");
+                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct\n");
     for (const ReportRow& r : rows) {
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
@@ -36,7 +36,8 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                            number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light),
                            number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4),
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
-                           r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6)}
+                           r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6),
+                           number(100 * r.density.fineShare(), 3)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
     }

@@ -295,7 +295,7 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
         table += QStringLiteral("<th>area MAE %</th>");
     for (const Column* c : shown)
         table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
-    table += QStringLiteral("<th>DSSIM</th></tr>");
+    table += QStringLiteral("<th>DSSIM</th><th>texels ≤ 1 px %</th></tr>");
     for (const ReportRow& r : rows) {
         QStringList fronts;
         if (r.paretoFront)
@@ -315,11 +315,12 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
             table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
         for (const Column* c : shown)
             table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
-        table += QStringLiteral("<td>%1</td></tr>").arg(number(dssim(r), 5));
+        table += QStringLiteral("<td>%1</td><td>%2</td></tr>").arg(number(dssim(r), 5), number(100 * r.density.fineShare(), 1));
     }
     table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
                             "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
-                            "picture.</p>");
+                            "picture. Texels ≤ 1 px: the share of the measured receivers inside the light's map whose shadow texel "
+                            "covers at most one screen pixel (blue in the texel density view).</p>");
     if (!zero.isEmpty())
         table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
     return table;

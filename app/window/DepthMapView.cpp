@@ -283,10 +283,10 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
         return;
     }
     // Distance from the light along its axis: depth is linear for an ortho light, and the
-    // perspective depth curve inverted for a perspective one.
+    // perspective depth curve inverted for a perspective one (or the warp, at this texel).
     const LightFrame& light = renderer.lightFrame();
     const double d = *depth;
-    const double distance = depthToDistance(light, d);
+    const double distance = depthToDistance(light, d, glm::dvec2((x + 0.5) / width, (y + 0.5) / height));
     const QString where = d >= 1.0 ? QStringLiteral("empty (far plane)")
                                    : QStringLiteral("%1 from the light").arg(distance, 0, 'f', 3);
     emit texelHovered(QStringLiteral("texel %1, %2 · depth %3 · %4").arg(x).arg(y).arg(d, 0, 'f', 5).arg(where));

@@ -5,6 +5,7 @@
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "ElidedLabel.h"
+#include "FrameStatsText.h"
 #include "FrameTimeHistory.h"
 #include "ImageFile.h"
 #include "LightMath.h"
@@ -978,6 +979,8 @@ void MainWindow::updateStatus()
         mapTip += QLatin1Char(' ') + tr("Fitted to the scene: %1 wu a texel, against %2 wu with the volume as set.")
                                          .arg(stats.texelWorldSize, 0, 'g', 3)
                                          .arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3);
+    if (const QString warp = warpStatusText(stats); shown.shadow.enabled && !warp.isEmpty())
+        mapTip += QLatin1Char(' ') + warp + QLatin1Char('.');
     m_mapLabel->setToolTip(mapTip);
 }
 

@@ -1,0 +1,109 @@
+#include "TexelDensity.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace shadowlab {
+
+namespace {
+
+// The view a receiver at `p` reads, as the lit pass picks it (shadow_lookup.glsl).
+std::optional<std::size_t> viewOf(const ShadowViewFrames& views, const LightFrame& light, const glm::dvec3& p)
+{
+    const std::vector<ShadowView>& set = views.set.views;
+    if (set.empty() || views.frames.size() != set.size())
+        return std::nullopt;
+    if (views.set.cube) {
+        const glm::dvec3 d = p - light.position;
+        const glm::dvec3 a = glm::abs(d);
+        const std::size_t face = a.x >= a.y && a.x >= a.z ? (d.x >= 0 ? 0 : 1) : a.y >= a.z ? (d.y >= 0 ? 2 : 3) : (d.z >= 0 ? 4 : 5);
+        return face < set.size() ? std::optional(face) : std::nullopt;
+    }
+    if (views.set.cascaded) {
+        const glm::dmat4& v = views.camera.view;
+        const glm::dvec3 forward = -glm::dvec3(v[0][2], v[1][2], v[2][2]);
+        const double depth = glm::dot(p - views.camera.position, forward);
+        for (std::size_t i = 0; i < set.size(); ++i) {
+            if (depth <= set[i].splitFar)
+                return i;
+        }
+        return std::nullopt;        // beyond shadow.distance: no lookup
+    }
+    return 0;
+}
+
+} // namespace
+
+TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowViewFrames& views, const LightFrame& light, int mapSize,
+                                 std::vector<double>* perPixel)
+{
+    TexelDensity density;
+    const int w = buffer.size.width(), h = buffer.size.height();
+    if (perPixel)
+        perPixel->assign(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)), std::nan(""));
+    if (w < 2 || h < 2 || buffer.positionVisibility.size() < std::size_t(w) * std::size_t(h))
+        return density;
+    std::vector<double> pixelsPerTexel;
+    const auto at = [w](int x, int y) { return y * w + x; };
+    const auto texelOf = [&](std::size_t view, int i) -> std::optional<glm::dvec2> {
+        const glm::dvec4 c = views.frames[view].shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
+        if (!(c.w > 0.0))
+            return std::nullopt;
+        return glm::dvec2(c) / c.w * double(mapSize);
+    };
+    // A neighbour on the same surface: light-facing, the same normal, on the pixel's plane.
+    const auto sameSurface = [&](int i, int j) {
+        if (buffer.mask(j) != VisibilityBuffer::FacingLight)
+            return false;
+        const glm::dvec3 n = buffer.normal(i);
+        const glm::dvec3 step = buffer.worldPosition(j) - buffer.worldPosition(i);
+        return glm::dot(n, buffer.normal(j)) > 0.999 && std::abs(glm::dot(n, step)) <= 1e-3 * glm::length(step) + 1e-9;
+    };
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const int i = at(x, y);
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                continue;
+            const std::optional<std::size_t> view = viewOf(views, light, buffer.worldPosition(i));
+            if (!view)
+                continue;
+            const std::optional<glm::dvec2> t = texelOf(*view, i);
+            if (!t || t->x < 0.0 || t->y < 0.0 || t->x > mapSize || t->y > mapSize)
+                continue;       // outside the view's map: lit without a lookup
+            // One step right (or left) and one down (or up), on the same surface.
+            std::optional<glm::dvec2> dx, dy;
+            for (int sx : {1, -1}) {
+                const int nx = x + sx;
+                if (!dx && nx >= 0 && nx < w && sameSurface(i, at(nx, y)))
+                    if (const auto u = texelOf(*view, at(nx, y)))
+                        dx = (*u - *t) * double(sx);
+            }
+            for (int sy : {1, -1}) {
+                const int ny = y + sy;
+                if (!dy && ny >= 0 && ny < h && sameSurface(i, at(x, ny)))
+                    if (const auto u = texelOf(*view, at(x, ny)))
+                        dy = (*u - *t) * double(sy);
+            }
+            if (!dx || !dy)
+                continue;
+            const double texelsPerPixel = std::sqrt(std::abs(dx->x * dy->y - dx->y * dy->x));
+            const double perTexel = texelsPerPixel > 0.0 ? 1.0 / texelsPerPixel : 1e30;
+            ++density.counted;
+            density.fine += perTexel <= 1.0;
+            pixelsPerTexel.push_back(perTexel);
+            if (perPixel)
+                (*perPixel)[std::size_t(i)] = perTexel;
+        }
+    }
+    if (!pixelsPerTexel.empty()) {
+        auto middle = pixelsPerTexel.begin() + std::ptrdiff_t(pixelsPerTexel.size() / 2);
+        std::nth_element(pixelsPerTexel.begin(), middle, pixelsPerTexel.end());
+        density.medianPixelsPerTexel = *middle;
+    }
+    return density;
+}
+
+} // namespace shadowlab
