@@ -152,6 +152,12 @@ struct ShadowSettings {
     // Cut-out casters (SceneObject::alphaCutoff) cast through their holes; false casts them whole,
     // as a renderer that ignores the mask does (the eye and the reference still see the holes).
     bool cutouts = true;
+    // Virtual shadow maps for a directional light (core/VirtualPages.h): clipmap levels of
+    // 16384² virtual texels each, cut into pages of 128², of which only those the visible pixels
+    // need are drawn, into a pool of virtualPool² physical pages, and kept while the light stays.
+    bool virtualMap = false;
+    int virtualPool = 30;                   // pages per side of the physical pool, [4, 64]
+    int virtualLevels = 16;                 // clipmap levels, each twice the texel of the one before, [1, 16]
 
     bool operator==(const ShadowSettings&) const = default;
 };

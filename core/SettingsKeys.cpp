@@ -8,6 +8,7 @@
 #include "SettingsError.h"
 #include "ShadowTechnique.h"
 #include "ShadowViews.h"
+#include "VirtualPages.h"
 #include "MomentMath.h"
 
 #include <QFile>
@@ -500,6 +501,20 @@ std::vector<Entry> makeEntries()
                         "in the shadow pass; off casts them as solid as their quads, as a renderer that ignores the mask "
                         "(the eye and the reference still see the holes, so the report shows what ignoring it costs)"),
                           {.label = QStringLiteral("Cut-out casters"), .group = kShadowMap}));
+    e.push_back(presented(boolKey("shadow.virtual", [](auto& s) -> auto& { return s.shadow.virtualMap; },
+                        "Virtual shadow maps (directional lights): clipmap levels of 16384² texels cut into 128² pages; each visible "
+                        "pixel asks for the page of the level whose texel covers at most one screen pixel, and only those pages are "
+                        "drawn, into a pool of shadow.virtual_pool² pages, and kept until the light or the scene changes; "
+                        "replaces map.size and cascades"),
+                          {.label = QStringLiteral("Virtual shadow map"), .group = kShadowMap}));
+    e.push_back(presented(integerKey("shadow.virtual_pool", 4, 64, false, [](auto& s) -> auto& { return s.shadow.virtualPool; },
+                           "With shadow.virtual: pages per side of the physical pool (each 128² texels and a 4-texel border), the "
+                           "memory budget; when a view asks for more pages, the finest ones are coarsened a level, with a warning"),
+                          {.label = QStringLiteral("Page pool (per side)"), .unit = QStringLiteral(" pages"), .sliderLow = 4.0, .sliderHigh = 64.0, .group = kShadowMap}));
+    e.push_back(presented(integerKey("shadow.virtual_levels", 1, 16, false, [](auto& s) -> auto& { return s.shadow.virtualLevels; },
+                           "With shadow.virtual: clipmap levels; the coarsest holds the whole scene in 2 x 2 pages (256 texels "
+                           "across), each finer one has half its texel, so the finest texel is the scene's width / 256 / 2^(levels - 1)"),
+                          {.label = QStringLiteral("Clipmap levels"), .sliderLow = 1.0, .sliderHigh = 16.0, .group = kShadowMap}));
     e.push_back(presented(boolKey("contact.enabled", [](auto& s) -> auto& { return s.contact.enabled; },
                         "Contact shadows: a short march toward the light over the camera's depth of the casters (front and back faces), "
                         "combined with the map's shadow as the smaller visibility; brings back the shadow a bias lifts off contacts "
@@ -755,6 +770,32 @@ std::vector<SettingsIssue> validate(const Settings& s)
     if (const ShadowStorageLimits& storage = shadowStorageLimits(shadowTechnique(s.filter.mode).map);
         usesShadowViews(s) && !storage.refusedWithViews.isEmpty() && settingValue(s, storage.refusedWithViews) == u"true")
         error(storage.refusedWithViews.toUtf8().constData(), storage.reason);
+    if (s.shadow.virtualMap) {
+        const auto refuse = [&](const char* key, const QString& why) {
+            error(key, QStringLiteral("%1 (shadow.virtual=true); %2").arg(why, QStringLiteral("set shadow.virtual=false to use it")));
+        };
+        const ShadowTechnique& technique = shadowTechnique(s.filter.mode);
+        const std::optional<double> reach = technique.tapReach(s.filter);
+        if (s.light.type != LightType::Directional)
+            refuse("light.type", QStringLiteral("virtual shadow maps are clipmaps of a directional light, not of a %1 light").arg(toString(s.light.type)));
+        else if (s.shadow.cascades > 1)
+            refuse("shadow.cascades", QStringLiteral("a virtual map replaces cascades: its clipmap levels give each pixel its own texel size; set shadow.cascades=1"));
+        else if (s.light.warp != LightWarp::None)
+            refuse("light.warp", QStringLiteral("a virtual map's pages are plain ortho views; set light.warp=none"));
+        else if (s.light.fit == LightFit::Manual)
+            refuse("light.fit", QStringLiteral("a virtual map's coarsest level covers the whole scene, not a manual volume; set light.fit=scene"));
+        else if (technique.map == ShadowMapKind::Moments)
+            refuse("filter.mode", QStringLiteral("%1 filters a moments map, and a virtual map stores depth pages").arg(toString(s.filter.mode)));
+        else if (!reach)
+            refuse("filter.mode", QStringLiteral("%1 may read anywhere in the map, beyond a page and its border").arg(toString(s.filter.mode)));
+        else if (*reach + s.bias.normal > kVirtualPageBorder)
+            refuse(s.bias.normal > 0.0 ? "bias.normal" : "filter.mode",
+                   QStringLiteral("the taps (%1 texels) and the normal offset (%2 texels) reach past a page's border of %3 texels; "
+                                  "choose a smaller kernel, radius or bias.normal")
+                       .arg(formatNumber(*reach), formatNumber(s.bias.normal)).arg(kVirtualPageBorder));
+        else if (s.filter.earlyOut && technique.penumbraOnly)
+            refuse("filter.early_out", QStringLiteral("penumbra-only filtering reads a min/max mip of one map, not of pages; set filter.early_out=false"));
+    }
     if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
         error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
 

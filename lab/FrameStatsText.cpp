@@ -18,4 +18,20 @@ QString warpStatusText(const FrameStats& stats)
     return tr("lispsm warp not drawn: the camera looks along the light, where no warp helps");
 }
 
+QString virtualMapStatusText(const FrameStats& stats)
+{
+    const auto tr = [](const char* text) { return QCoreApplication::translate("FrameStats", text); };
+    if (!stats.virtualMap)
+        return {};
+    const VirtualMapStats& v = stats.virtualPages;
+    QString text = tr("virtual map: %1 pages requested, %2 resident of %3, %4 drawn this frame")
+                       .arg(v.requested).arg(v.resident).arg(v.poolPages).arg(v.drawn);
+    if (v.coarsened > 0)
+        text += tr("; the pool is too small for this view: %1 pages coarsened by up to %2 levels (raise shadow.virtual_pool)")
+                    .arg(v.coarsened).arg(v.levelsCoarsened);
+    if (v.overflow > 0)
+        text += tr("; %1 pages of the coarsest level did not fit and read lit (raise shadow.virtual_pool)").arg(v.overflow);
+    return text;
+}
+
 } // namespace shadowlab

@@ -13,8 +13,10 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
 {
     const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
     if (density != nullptr)
-        *density = settings.shadow.enabled ? measureTexelDensity(buffer, renderer.shadowViews(), renderer.lightFrame(), settings.map.size)
-                                           : TexelDensity{};
+        *density = !settings.shadow.enabled ? TexelDensity{}
+            : settings.shadow.virtualMap && renderer.virtualMap()
+            ? measureVirtualTexelDensity(buffer, *renderer.virtualMap())
+            : measureTexelDensity(buffer, renderer.shadowViews(), renderer.lightFrame(), settings.map.size);
     return meter.measure(buffer, *renderer.scene(), renderer.lightFrame(), settings, progress);
 }
 

@@ -313,10 +313,27 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
     return sweep;
 }
 
+// Virtual shadow maps against one map and against stabilised cascades of about the same
+// memory (a pool of 30² pages of 136² is 4080², 16.6 M texels; 4 x 2048² is 16.8 M), with a
+// filter, and with a pool too small for the view.
+std::vector<SweepEntry> virtualSweep()
+{
+    const QString cascades = QStringLiteral("shadow.cascades=4");
+    return {
+        {QStringLiteral("1 map of 4096 x 4096"), {QStringLiteral("map.size=4096")}},
+        {QStringLiteral("4 stabilised cascades of 2048 x 2048"), {cascades, QStringLiteral("map.size=2048"), QStringLiteral("light.stabilize=true")}},
+        {QStringLiteral("4 stabilised cascades of 2048 x 2048, pcf 3x3"),
+         {cascades, QStringLiteral("map.size=2048"), QStringLiteral("light.stabilize=true"), QStringLiteral("filter.mode=pcf")}},
+        {QStringLiteral("virtual, pool of 30 x 30 pages"), {QStringLiteral("shadow.virtual=true")}},
+        {QStringLiteral("virtual, pool of 30 x 30 pages, pcf 3x3"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("filter.mode=pcf")}},
+        {QStringLiteral("virtual, pool of 6 x 6 pages"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=6")}},
+    };
+}
+
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("warp"), QStringLiteral("around")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("warp"), QStringLiteral("virtual"), QStringLiteral("around")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& base)
@@ -339,6 +356,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& bas
         return cascadesSweep();
     if (nameOrFile == u"warp")
         return warpSweep();
+    if (nameOrFile == u"virtual")
+        return virtualSweep();
     if (nameOrFile == u"filterable")
         return filterableSweep();
     QByteArray bytes;

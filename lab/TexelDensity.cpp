@@ -37,8 +37,13 @@ std::optional<std::size_t> viewOf(const ShadowViewFrames& views, const LightFram
 
 } // namespace
 
-TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowViewFrames& views, const LightFrame& light, int mapSize,
-                                 std::vector<double>* perPixel)
+namespace {
+
+// Over the light-facing receiver pixels of `buffer`: `texelOf(i, j)` is pixel j's texel in the
+// map that pixel i reads (nullopt: i reads none there), `adjust(i, t)` turns i's texels per pixel
+// in that map into those of what it really reads (nullopt: it reads nothing).
+template<typename TexelOf, typename Adjust>
+TexelDensity measureDensity(const VisibilityBuffer& buffer, std::vector<double>* perPixel, TexelOf texelOf, Adjust adjust)
 {
     TexelDensity density;
     const int w = buffer.size.width(), h = buffer.size.height();
@@ -48,12 +53,6 @@ TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowVie
         return density;
     std::vector<double> pixelsPerTexel;
     const auto at = [w](int x, int y) { return y * w + x; };
-    const auto texelOf = [&](std::size_t view, int i) -> std::optional<glm::dvec2> {
-        const glm::dvec4 c = views.frames[view].shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
-        if (!(c.w > 0.0))
-            return std::nullopt;
-        return glm::dvec2(c) / c.w * double(mapSize);
-    };
     // A neighbour on the same surface: light-facing, the same normal, on the pixel's plane.
     const auto sameSurface = [&](int i, int j) {
         if (buffer.mask(j) != VisibilityBuffer::FacingLight)
@@ -67,30 +66,29 @@ TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowVie
             const int i = at(x, y);
             if (buffer.mask(i) != VisibilityBuffer::FacingLight)
                 continue;
-            const std::optional<std::size_t> view = viewOf(views, light, buffer.worldPosition(i));
-            if (!view)
-                continue;
-            const std::optional<glm::dvec2> t = texelOf(*view, i);
-            if (!t || t->x < 0.0 || t->y < 0.0 || t->x > mapSize || t->y > mapSize)
-                continue;       // outside the view's map: lit without a lookup
+            const std::optional<glm::dvec2> t = texelOf(i, i);
+            if (!t)
+                continue;       // outside the map: lit without a lookup
             // One step right (or left) and one down (or up), on the same surface.
             std::optional<glm::dvec2> dx, dy;
             for (int sx : {1, -1}) {
                 const int nx = x + sx;
                 if (!dx && nx >= 0 && nx < w && sameSurface(i, at(nx, y)))
-                    if (const auto u = texelOf(*view, at(nx, y)))
+                    if (const auto u = texelOf(i, at(nx, y)))
                         dx = (*u - *t) * double(sx);
             }
             for (int sy : {1, -1}) {
                 const int ny = y + sy;
                 if (!dy && ny >= 0 && ny < h && sameSurface(i, at(x, ny)))
-                    if (const auto u = texelOf(*view, at(x, ny)))
+                    if (const auto u = texelOf(i, at(x, ny)))
                         dy = (*u - *t) * double(sy);
             }
             if (!dx || !dy)
                 continue;
-            const double texelsPerPixel = std::sqrt(std::abs(dx->x * dy->y - dx->y * dy->x));
-            const double perTexel = texelsPerPixel > 0.0 ? 1.0 / texelsPerPixel : 1e30;
+            const std::optional<double> texelsPerPixel = adjust(i, std::sqrt(std::abs(dx->x * dy->y - dx->y * dy->x)));
+            if (!texelsPerPixel)
+                continue;
+            const double perTexel = *texelsPerPixel > 0.0 ? 1.0 / *texelsPerPixel : 1e30;
             ++density.counted;
             density.fine += perTexel <= 1.0;
             pixelsPerTexel.push_back(perTexel);
@@ -104,6 +102,67 @@ TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowVie
         density.medianPixelsPerTexel = *middle;
     }
     return density;
+}
+
+} // namespace
+
+TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowViewFrames& views, const LightFrame& light, int mapSize,
+                                 std::vector<double>* perPixel)
+{
+    const auto texelOf = [&](int center, int i) -> std::optional<glm::dvec2> {
+        const std::optional<std::size_t> view = viewOf(views, light, buffer.worldPosition(center));
+        if (!view)
+            return std::nullopt;
+        const glm::dvec4 c = views.frames[*view].shadowMatrix * glm::dvec4(buffer.worldPosition(i), 1.0);
+        if (!(c.w > 0.0))
+            return std::nullopt;
+        const glm::dvec2 t = glm::dvec2(c) / c.w * double(mapSize);
+        if (center == i && (t.x < 0.0 || t.y < 0.0 || t.x > mapSize || t.y > mapSize))
+            return std::nullopt;
+        return t;
+    };
+    return measureDensity(buffer, perPixel, texelOf, [](int, double t) { return std::optional<double>(t); });
+}
+
+TexelDensity measureVirtualTexelDensity(const VisibilityBuffer& buffer, const VirtualShadowMap& map, std::vector<double>* perPixel)
+{
+    const std::optional<VirtualLayout>& layout = map.currentLayout();
+    const std::vector<glm::ivec2>& windows = map.windows();
+    if (!layout || int(windows.size()) != layout->levels)
+        return {};
+    // Level-0 texels on the grid, as the lookup takes them (virtual_pages.glsl), in double.
+    const double page0 = layout->pageWorld(0);
+    const auto gridTexel = [&](int i) {
+        const glm::dvec3 p = glm::dvec3(layout->view * glm::dvec4(buffer.worldPosition(i), 1.0));
+        return glm::dvec2(p) / page0 * double(kVirtualPageTexels);
+    };
+    const auto inWindow = [&](int level, const glm::dvec2& texel0, glm::ivec2& page) {
+        const glm::dvec2 pages = texel0 / double(kVirtualPageTexels) * std::ldexp(1.0, -level);
+        page = glm::ivec2(glm::floor(pages));
+        const glm::ivec2 w = windows[std::size_t(level)];
+        return page.x >= w.x && page.x < w.x + kVirtualLevelPages && page.y >= w.y && page.y < w.y + kVirtualLevelPages;
+    };
+    const auto texelOf = [&](int, int i) -> std::optional<glm::dvec2> { return gridTexel(i); };
+    // The level the pixel asks for, then the one finer or the nearest coarser one resident.
+    const auto adjust = [&](int i, double level0) -> std::optional<double> {
+        const glm::dvec2 t = gridTexel(i);
+        int asked = level0 > 1.0 ? int(std::floor(std::log2(level0))) : 0;
+        asked = std::clamp(asked, 0, layout->levels - 1);
+        glm::ivec2 page;
+        while (asked < layout->levels && !inWindow(asked, t, page))
+            ++asked;
+        if (asked >= layout->levels)
+            return std::nullopt;
+        for (int k = -1; k < layout->levels; ++k) {
+            const int level = k < 0 ? asked : (k == 0 ? asked - 1 : asked + k);
+            if (level < 0 || level >= layout->levels || !inWindow(level, t, page))
+                continue;
+            if (map.cache().slotOf({level, page.x, page.y}))
+                return level0 * std::ldexp(1.0, -level);
+        }
+        return std::nullopt;
+    };
+    return measureDensity(buffer, perPixel, texelOf, adjust);
 }
 
 } // namespace shadowlab

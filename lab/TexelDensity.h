@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ShadowViewFrames.h"
+#include "VirtualShadowMap.h"
 #include "VisibilityBuffer.h"
 
 #include <vector>
@@ -23,5 +24,9 @@ struct TexelDensity {
 // pixels per texel (NaN where it is not counted), to compare two frames over the same pixels.
 TexelDensity measureTexelDensity(const VisibilityBuffer& buffer, const ShadowViewFrames& views, const LightFrame& light, int mapSize,
                                  std::vector<double>* perPixel = nullptr);
+
+// The same for a virtual shadow map (shadow.virtual), at the level each pixel reads: the one
+// its density asks for, or the resident one the lookup falls back to.
+TexelDensity measureVirtualTexelDensity(const VisibilityBuffer& buffer, const VirtualShadowMap& map, std::vector<double>* perPixel = nullptr);
 
 } // namespace shadowlab

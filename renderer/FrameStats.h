@@ -4,6 +4,18 @@
 
 namespace shadowlab {
 
+// What a frame of a virtual shadow map did, for FrameStats and the window.
+struct VirtualMapStats {
+    int requested = 0;          // distinct pages the visible pixels asked for
+    int resident = 0;           // pages held in the pool after the frame
+    int drawn = 0;              // pages drawn this frame (new, or invalid)
+    int coarsened = 0;          // requests served a coarser level than asked, the pool being too small
+    int levelsCoarsened = 0;    // ... by at most this many levels
+    int overflow = 0;           // coarsest-level pages that did not fit at all
+    int poolPages = 0;
+    int requestDraws = 0;       // draw calls of the request pass (0 when the requests were kept)
+};
+
 // What one frame cost and did. GPU times come from GL_TIME_ELAPSED (on a software renderer
 // they are CPU time too). With TimingMode::Finish they are this frame's; with Async, the newest
 // finished measurement of each pass, which may be a frame or two old.
@@ -42,6 +54,9 @@ struct FrameStats {
     std::vector<bool> viewRendered;
     std::vector<int> viewDraws;
     std::vector<double> viewWallMs;
+    // shadow.virtual: what the frame's pages did (all 0 otherwise).
+    bool virtualMap = false;
+    VirtualMapStats virtualPages;
 };
 
 enum class TimingMode {

@@ -22,6 +22,7 @@ namespace {
 constexpr GLuint kDiffuseUnit = 0;
 constexpr GLuint kShadowUnit = 1;
 constexpr GLuint kContactUnit = 8;     // after the shadow samplers and the min/max depth mip
+constexpr GLuint kPageTableUnit = 9;   // a virtual map's page table
 
 // Above this share of the frame a mask saves less than drawing the straddling receivers twice
 // costs (both halves still run every vertex and set up every triangle).
@@ -94,6 +95,8 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         if (settings.shadow.showCascades)
             defines << QStringLiteral("SHOW_CASCADES");
     }
+    if (settings.shadow.enabled && settings.shadow.virtualMap && lookups)
+        defines << QStringLiteral("VIRTUAL_MAP");
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
     if (lookups && settings.bias.space == BiasSpace::Depth)
@@ -233,6 +236,18 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
         const bool readsMoments = samplers[i] == ShadowSampler::Moments;
         p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap,
                       int(kShadowUnit + GLuint(i)));
+    }
+    if (m_virtualMap && settings.shadow.virtualMap) {
+        const VirtualMapUniforms& v = *m_virtualMap;
+        if (v.levelOffsets.empty())
+            throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
+        p.program.set(p.techniqueUniform("uVsmLight"), v.light);
+        p.program.set(p.techniqueUniform("uVsmLevels"), v.levels);
+        m_gl->glUniform2fv(p.techniqueUniform("uVsmLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
+        m_gl->glUniform2iv(p.techniqueUniform("uVsmWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
+        p.program.set(p.techniqueUniform("uVsmPoolSide"), v.poolSide);
+        p.program.set(p.techniqueUniform("uVsmTexel0"), v.finestTexel);
+        p.program.set(p.techniqueUniform("uVsmPageTable"), int(kPageTableUnit));
     }
     if (usesContactShadows(settings)) {
         p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));
@@ -501,6 +516,13 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
     }
 
+    const bool pageTable = shadows && settings.shadow.virtualMap && m_virtualMap != nullptr;
+    if (pageTable) {
+        m_gl->glActiveTexture(GL_TEXTURE0 + kPageTableUnit);
+        m_gl->glBindTexture(GL_TEXTURE_2D, m_virtualMap->pageTable);
+        m_gl->glBindSampler(kPageTableUnit, 0);
+        m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
+    }
     const ShadowMap* shadowMap = shadows ? map : nullptr;
     Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
     if (m_views) {
@@ -530,8 +552,10 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (shadows)
         unbindShadowTextures(settings, readsRange);
-    if (contact) {
-        m_gl->glActiveTexture(GL_TEXTURE0 + kContactUnit);
+    for (const auto& [unit, used] : {std::pair{kContactUnit, contact}, std::pair{kPageTableUnit, pageTable}}) {
+        if (!used)
+            continue;
+        m_gl->glActiveTexture(GL_TEXTURE0 + unit);
         m_gl->glBindTexture(GL_TEXTURE_2D, 0);
         m_gl->glActiveTexture(GL_TEXTURE0);
     }

@@ -9,6 +9,7 @@
 #include "ShadowMap.h"
 #include "ShadowReach.h"
 #include "ShadowViewFrames.h"
+#include "VirtualShadowMap.h"
 
 #include <map>
 #include <memory>
@@ -68,6 +69,8 @@ public:
     // The light's views the next render() reads (one map, cascades or cube faces, each in its
     // tile of `map`); needed when shadows are on. Not owned; must outlive render().
     void setShadowViews(const ShadowViewFrames* views) { m_views = views; }
+    // shadow.virtual: the page table and clipmap the lookups read (null: not a virtual map).
+    void setVirtualMap(const VirtualMapUniforms* virtualMap) { m_virtualMap = virtualMap; }
     // Where the next render()'s lookups can find a caster, per object of the scene (computed by
     // the Renderer with the fit): receivers out of reach are shaded without a lookup, and those
     // that straddle it are drawn twice under a stencil mask of the reach where the target has a
@@ -133,6 +136,7 @@ private:
     // shaded without a lookup outside the mask, shaded without a lookup everywhere.
     std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
+    const VirtualMapUniforms* m_virtualMap = nullptr;
     const ShadowReach* m_reach = nullptr;
     GLuint m_contactDepth = 0;
     ReachUse m_reachUse;

@@ -50,9 +50,15 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
         m_warnedNoReversedDepth = true;
     }
-    const ShadowTileGrid grid = shadowTileGrid(settings);
+    const bool virtualMap = settings.shadow.enabled && settings.shadow.virtualMap;
+    // A virtual map's pool is the map: a slot per page, poolSide² of them.
+    const ShadowTileGrid grid = virtualMap ? ShadowTileGrid{settings.shadow.virtualPool, settings.shadow.virtualPool} : shadowTileGrid(settings);
+    if (virtualMap && settings.shadow.virtualPool * kVirtualSlotTexels > maxTextureSize())
+        throw SettingsError(QStringLiteral("shadow.virtual_pool"),
+                            QStringLiteral("a pool of %1² pages needs a %2² texture, and this driver allows %3² at most; lower shadow.virtual_pool")
+                                .arg(settings.shadow.virtualPool).arg(settings.shadow.virtualPool * kVirtualSlotTexels).arg(maxTextureSize()));
     if (settings.shadow.enabled) {
-        m_shadowMap.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
+        m_shadowMap.ensureTiles(virtualMap ? kVirtualSlotTexels : settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
         storage.ensure(settings, grid);
     }
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
@@ -62,6 +68,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     }
     const double aspect = double(size.width()) / double(size.height());
     const CameraFrame camera = computeCameraFrame(settings.camera, aspect, m_scene->bounds());
+    m_camera = camera;
 
     // The fit is a pure function of the scene, the settings, the fitting camera and the frame's
     // size: when none of them changed (a still frame, a window repaint), the last one stands.
@@ -79,6 +86,20 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         ShadowViewFrames views;
         FittedLight fitted;
         fitViews(settings, fitCamera, aspect, reversed, views, fitted);
+        if (virtualMap) {
+            // One view, the coarsest level's window over the whole scene: what the depth-map
+            // view, the reach and the depth convention read; pages are its sub-squares.
+            if (!m_virtual)
+                m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
+            const VirtualLayout& layout = m_virtual->layout(settings, m_scene->bounds());
+            views.set.views.resize(1);
+            views.set.views.front().fit.volume = layout.coarsest;
+            views.set.views.front().fit.anythingToShadow = true;
+            views.frames.assign(1, computeLightFrame(settings.light, layout.coarsest, reversed));
+            fitted.volume = layout.coarsest;
+            fitted.anythingToShadow = true;
+            fitted.texelAfter = layout.finestTexel;
+        }
         m_views = std::move(views);
         m_fit = std::move(fitted);
         m_fitInputs = std::move(inputs);
@@ -106,7 +127,9 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         }
     }
 
-    if (settings.shadow.enabled)
+    if (virtualMap)
+        renderPages(settings, storage, grid, size, timing, stats);
+    else if (settings.shadow.enabled)
         renderViews(settings, storage, grid, timing, stats);
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
     // filtering is turned on over a map it was not built from. Timed with the shadow pass.
@@ -123,7 +146,6 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         }
     }
     m_light = light;
-    m_camera = camera;
     m_viewSettings = settings;
 }
 
@@ -269,6 +291,41 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
 }
 
+void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats)
+{
+    ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
+    shared.mapSize = kVirtualSlotTexels;
+    const bool invalidate = m_shadowKey != shared;
+    m_shadowKey = shared;
+    m_viewVolumes.clear();
+    GLint previousDraw = 0, previousRead = 0;
+    m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
+    m_gl->glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    QElapsedTimer total;
+    total.start();
+    m_shadowTimer.begin();
+    const auto frameOf = [&](const LightVolume& volume) { return computeLightFrame(settings.light, volume, m_shadowMap.reversedDepth()); };
+    if (invalidate)
+        storage.clear(m_views.frames.front(), settings);    // every slot reads lit until a page is drawn there
+    int draws = 0;
+    stats.virtualMap = true;
+    stats.virtualPages = m_virtual->update(*m_scene, settings, m_camera, size, invalidate, storage, frameOf, &draws);
+    m_shadowTimer.end();
+    m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
+    m_virtualUniforms = m_virtual->uniforms(m_camera);
+    stats.shadowDraws = draws;
+    if (stats.virtualPages.drawn == 0 && !invalidate)
+        return;
+    ++m_mapGeneration;
+    stats.shadowPassRendered = stats.virtualPages.drawn > 0;
+    m_shadowPassCount += stats.shadowPassRendered;
+    if (timing == TimingMode::Finish) {
+        m_gl->glFinish();
+        stats.shadowPassWallMs = double(total.nsecsElapsed()) * 1e-6;
+    }
+}
+
 void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
 {
     if (timing == TimingMode::Finish) {
@@ -300,6 +357,7 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
         m_litPass.setContactDepth(0);
     }
     m_litPass.setShadowViews(&m_views);
+    m_litPass.setVirtualMap(settings.shadow.enabled && settings.shadow.virtualMap ? &m_virtualUniforms : nullptr);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
                                       m_depthRange.get(), storageFor(settings).momentsMap());

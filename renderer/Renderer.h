@@ -20,6 +20,7 @@
 #include "ShadowStorage.h"
 #include "ShadowTechnique.h"
 #include "ShadowViewFrames.h"
+#include "VirtualShadowMap.h"
 
 #include <QRectF>
 
@@ -98,6 +99,9 @@ public:
     // Whether the lit pass shades receivers out of the casters' reach without a lookup (on by
     // default; the frame is the same either way, which the tests check with this off).
     void setSkipsOutOfReach(bool skips) { m_skipsOutOfReach = skips; }
+    // The virtual shadow map of shadow.virtual (null until first used): its layout, page cache
+    // and windows as of the last frame.
+    const VirtualShadowMap* virtualMap() const { return m_virtual.get(); }
     // Forces the next render() to redraw the shadow map.
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
@@ -114,6 +118,8 @@ private:
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
     void renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats);
+    // shadow.virtual's shadow pass: the pages the frame's pixels need, drawn where new.
+    void renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats);
     // The storage of the technique in `settings` (built on first use).
     ShadowStorage& storageFor(const Settings& settings) const;
     // The moments map the last frame's technique read, or null when it read depth.
@@ -137,6 +143,8 @@ private:
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
     std::unique_ptr<CameraDepthPass> m_cameraDepth;  // built when contact shadows are first used
     std::unique_ptr<VisibleDepthPass> m_visibleDepth;  // built when sdsm cascades are first used
+    std::unique_ptr<VirtualShadowMap> m_virtual;        // built when shadow.virtual is first used
+    VirtualMapUniforms m_virtualUniforms;               // the last frame's, for the lit pass
     std::optional<VisibleDepthRange> m_visibleRange;   // what the last fit split (sdsm)
     Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
     int m_mapGeneration = 0;        // counts changes of the shadow map's content

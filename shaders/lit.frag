@@ -62,6 +62,12 @@ void main()
     vec2 tx = dFdx(texel), ty = dFdy(texel);
     float texelsPerPixel = sqrt(abs(tx.x * ty.y - tx.y * ty.x));
     bool inMap = vShadowCoord.w > 0.0 && all(greaterThanEqual(mapCoord.xy, vec2(0.0))) && all(lessThanEqual(mapCoord.xy, vec2(1.0)));
+#ifdef VIRTUAL_MAP
+    // A virtual map's texel is its level's: level 0's density, halved per level read.
+    vec2 q0 = (uVsmLight * vec4(vPosition, 1.0)).xy;
+    vec2 dqx = dFdx(q0), dqy = dFdy(q0);
+    float texelsPerPixelLevel0 = kVsmPageTexels * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
+#endif
 #endif
     vec4 base = texture(uDiffuse, vUv);
 #ifdef MEASURE
@@ -112,6 +118,10 @@ void main()
 #endif
     fragColor = vec4(ambient + visibility * direct, 1.0);
 #ifdef TEXEL_DENSITY
+#ifdef VIRTUAL_MAP
+    inMap = gViewIndex >= 0;
+    texelsPerPixel = texelsPerPixelLevel0 * exp2(-float(max(gViewIndex, 0)));
+#endif
     if (uReceives && inMap)
         fragColor.rgb = mix(fragColor.rgb, densityRamp(1.0 / max(texelsPerPixel, 1e-6)), 0.6);
 #endif

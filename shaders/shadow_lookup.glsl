@@ -13,7 +13,7 @@ uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
 uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
 // Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
 // here, per pixel; one plain view takes it from the vertex stage.
-#if defined(SHADOW_VIEWS) || defined(LIGHT_WARP)
+#if defined(SHADOW_VIEWS) || defined(LIGHT_WARP) || defined(VIRTUAL_MAP)
 #define VIEW_PER_PIXEL
 uniform float uNormalOffsetTexels;  // bias.normal
 #endif
@@ -26,17 +26,41 @@ uniform vec3 uViewOrigin;           // ... and its position, camera-relative
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
 
+#ifdef VIRTUAL_MAP
+#include "virtual_pages.glsl"
+uniform usampler2D uVsmPageTable;   // per level 128 rows of 128: slot + 1 of the page there, 0 none
+uniform ivec2 uVsmWrap[16];         // each level's window origin, mod 128 (the table wraps)
+uniform int uVsmPoolSide;           // slots per side of the pool (the map)
+uniform float uVsmTexel0;           // world size of a level-0 texel
+#endif
+
+// What the lookup needs of a view: its matrix (camera-relative world to map uv and depth), its
+// tile in map uv, the world size of the whole map's uv square at its scale, its depth range and
+// the world size of its texel.
+struct ShadowViewLookup {
+    mat4 matrix;
+    vec4 tile;
+    vec2 uvWorld;
+    vec2 depth;
+    float texel;
+};
+
+ShadowViewLookup shadowView(int i)
+{
+    return ShadowViewLookup(uShadowViews[i], uShadowTiles[i], uShadowViewUvWorld[i], uShadowViewDepth[i], uShadowViewTexel[i]);
+}
+
 #ifdef LIGHT_WARP
 // A warped map's texels differ in size over the map: the world size of the whole map's uv
 // square at the map position `c` of view i, per axis of the map, from how uv changes across
 // the light's rays (which stay parallel under the warp, each one texel).
-vec2 warpUvWorld(int i, vec4 c, vec3 toLight)
+vec2 warpUvWorld(mat4 view, vec4 c, vec3 toLight)
 {
     if (c.w <= 0.0)
         return vec2(0.0);       // behind the warp's centre: outside the map, lit
     vec3 a = normalize(cross(toLight, abs(toLight.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
     vec3 b = cross(toLight, a);
-    vec4 ca = uShadowViews[i] * vec4(a, 0.0), cb = uShadowViews[i] * vec4(b, 0.0);
+    vec4 ca = view * vec4(a, 0.0), cb = view * vec4(b, 0.0);
     vec2 uv = c.xy / c.w;
     vec2 ja = (ca.xy - uv * ca.w) / c.w, jb = (cb.xy - uv * cb.w) / c.w;   // uv per world unit along a and b
     float det = ja.x * jb.y - jb.x * ja.y;
@@ -53,29 +77,29 @@ float warpTexel(vec2 uvWorld)
 // The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
 // view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
 // interpolated); several views' are taken here, as each pixel picks its own.
-vec4 viewPosition(int i, vec3 normal, vec3 toLight)
+vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
 {
 #ifdef VIEW_PER_PIXEL
-    vec4 plain = uShadowViews[i] * vec4(vPosition, 1.0);
+    vec4 plain = view.matrix * vec4(vPosition, 1.0);
 #ifdef LIGHT_WARP
-    float offset = uNormalOffsetTexels * warpTexel(warpUvWorld(i, plain, toLight));
+    float offset = uNormalOffsetTexels * warpTexel(warpUvWorld(view.matrix, plain, toLight));
 #else
-    float offset = uNormalOffsetTexels * uShadowViewTexel[i];
+    float offset = uNormalOffsetTexels * view.texel;
 #endif
 #ifdef LIGHT_PERSPECTIVE
     offset *= plain.w;
 #endif
-    return plain + uShadowViews[i] * vec4(normal * offset, 0.0);
+    return plain + view.matrix * vec4(normal * offset, 0.0);
 #else
     return vShadowCoord;
 #endif
 }
 
-// View i's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
+// A view's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
 // camera-relative world with several views, in the map coordinate looked up with one.
-float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
+float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
-    vec4 shadowCoord = viewPosition(i, normal, toLight);
+    vec4 shadowCoord = viewPosition(view, normal, toLight);
     if (shadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
@@ -88,16 +112,16 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #endif
     if (dot(normal, toLight) <= 0.0)
         return 0.0;             // facing away from the light: unlit anyway
-    vec4 tile = uShadowTiles[i];
+    vec4 tile = view.tile;
     if (any(lessThan(coord.xy, tile.xy)) || any(greaterThan(coord.xy, tile.zw)))
         return 1.0;             // outside the view's fitted volume every tap would read lit
     // Taps stay inside the tile (half a texel in), so a wide filter never reads a neighbour.
     gShadowTile = vec4(tile.xy + 0.5 * uShadowTexel, tile.zw - 0.5 * uShadowTexel);
 #ifdef LIGHT_WARP
-    gShadowUvWorld = warpUvWorld(i, shadowCoord, toLight);
+    gShadowUvWorld = warpUvWorld(view.matrix, shadowCoord, toLight);
 #else
-    gShadowUvWorld = uShadowViewUvWorld[i];
-    gShadowDepthRange = uShadowViewDepth[i];
+    gShadowUvWorld = view.uvWorld;
+    gShadowDepthRange = view.depth;
 #endif
 #ifdef RECEIVER_PLANE
     // The receiver's depth as a plane over the map, as depth change per uv unit, from the
@@ -106,8 +130,8 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #ifdef VIEW_PER_PIXEL
     // Through this view's matrix: derivatives of coord itself are undefined where neighbours
     // pick other views.
-    vec4 c0 = uShadowViews[i] * vec4(vPosition, 1.0);
-    vec4 cx = uShadowViews[i] * vec4(vPosition + dx, 1.0), cy = uShadowViews[i] * vec4(vPosition + dy, 1.0);
+    vec4 c0 = view.matrix * vec4(vPosition, 1.0);
+    vec4 cx = view.matrix * vec4(vPosition + dx, 1.0), cy = view.matrix * vec4(vPosition + dy, 1.0);
     vec3 ddx = cx.xyz / cx.w - c0.xyz / c0.w, ddy = cy.xyz / cy.w - c0.xyz / c0.w;
 #else
     vec3 ddx = dx, ddy = dy;
@@ -121,7 +145,7 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
     // where N.L and so the light term is nearly 0 anyway).
     float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
-    vec4 alongRay = uShadowViews[i] * vec4(toLight, 0.0);
+    vec4 alongRay = view.matrix * vec4(toLight, 0.0);
     float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
     gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
     gShadowW = shadowCoord.w;
@@ -141,7 +165,7 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #ifdef LIGHT_WARP
     bias *= warpTexel(gShadowUvWorld);
 #else
-    bias *= uShadowViewTexel[i];
+    bias *= view.texel;
 #endif
 #ifdef LIGHT_PERSPECTIVE
     bias *= shadowCoord.w;      // a perspective texel grows with the distance from the light
@@ -149,10 +173,58 @@ float viewVisibility(int i, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #endif
     // Compare from a point moved toward the light by `bias` world units: on the ray to the
     // light, so it stays on the same texel, and the same offset whatever the depth range.
-    vec4 moved = shadowCoord + uShadowViews[i] * vec4(toLight * bias, 0.0);
+    vec4 moved = shadowCoord + view.matrix * vec4(toLight * bias, 0.0);
     return filterShadow(coord.xy, moved.z / moved.w);
 #endif
 }
+
+#ifdef VIRTUAL_MAP
+// The page table's entry for level `level` at its window-relative position q: slot + 1, or 0.
+uint vsmEntry(int level, vec2 q)
+{
+    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(127)) + uVsmWrap[level]) % 128;
+    return texelFetch(uVsmPageTable, ivec2(at.x, at.y + level * 128), 0).r;
+}
+
+// A virtual map's lookup: the level the pixel asked for (virtual_pages.glsl), else the one
+// finer (the request pass's rounding of the same derivatives) or the nearest coarser level
+// with the page resident; then that page's slot of the pool as an ortho view of its own.
+float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
+{
+    vec2 q0 = (uVsmLight * vec4(vPosition, 1.0)).xy;
+    vec2 dqx = (uVsmLight * vec4(dx, 0.0)).xy, dqy = (uVsmLight * vec4(dy, 0.0)).xy;
+    vec2 q;
+    int asked = vsmRequestLevel(q0, dqx, dqy, q);
+    if (asked < 0)
+        return 1.0;             // beyond the coarsest window: beyond the scene, lit
+    int level = -1;
+    uint entry = 0u;
+    for (int k = -1; k < uVsmLevels && entry == 0u; ++k) {
+        int l = k < 0 ? asked : (k == 0 ? asked - 1 : asked + k);
+        if (l < 0 || l >= uVsmLevels || !vsmInWindow(l, q0, q))
+            continue;
+        entry = vsmEntry(l, q);
+        level = l;
+    }
+    gViewIndex = level;
+    if (entry == 0u)
+        return 1.0;             // no page resident at any level (cannot happen once requested)
+    int slot = int(entry) - 1;
+    vec2 slotOrigin = vec2(slot % uVsmPoolSide, slot / uVsmPoolSide) * float(kVirtualSlot);
+    // q0 -> the slot's texels: level scale, the page's place in the window, its border.
+    float scale = exp2(-float(level));
+    vec2 page = floor(q);
+    vec2 atlas = 1.0 / uShadowTexel;
+    mat4 toSlot = mat4(1.0);
+    toSlot[0][0] = kVsmPageTexels * scale / atlas.x;
+    toSlot[1][1] = kVsmPageTexels * scale / atlas.y;
+    toSlot[3].xy = (slotOrigin + float(kVirtualBorder) + kVsmPageTexels * (uVsmLevelOffset[level] - page)) / atlas;
+    float texel = uVsmTexel0 * exp2(float(level));
+    ShadowViewLookup view = ShadowViewLookup(toSlot * uVsmLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlot)) / atlas),
+                                             atlas * texel, uShadowViewDepth[0], texel);
+    return viewVisibility(view, normal, toLight, dx, dy);
+}
+#endif
 
 // The light rig's choice of view, then that view's visibility.
 float shadowVisibility(vec3 normal, vec3 toLight)
@@ -170,24 +242,26 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     vec3 a = abs(d);
     int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
     gViewIndex = face;
-    return viewVisibility(face, normal, toLight, dx, dy);
+    return viewVisibility(shadowView(face), normal, toLight, dx, dy);
 #elif defined(CASCADES)
     float depth = dot(vPosition - uViewOrigin, uViewForward);
     for (int i = 0; i < uShadowViewCount; ++i) {
         if (depth <= uCascadeFar[i]) {
             gViewIndex = i;
-            float v = viewVisibility(i, normal, toLight, dx, dy);
+            float v = viewVisibility(shadowView(i), normal, toLight, dx, dy);
             if (i + 1 < uShadowViewCount && depth > uCascadeBlendStart[i]) {
                 float t = (depth - uCascadeBlendStart[i]) / max(uCascadeFar[i] - uCascadeBlendStart[i], 1e-30);
-                v = mix(v, viewVisibility(i + 1, normal, toLight, dx, dy), t);
+                v = mix(v, viewVisibility(shadowView(i + 1), normal, toLight, dx, dy), t);
             }
             return v;
         }
     }
     return 1.0;                 // beyond shadow.distance
+#elif defined(VIRTUAL_MAP)
+    return virtualVisibility(normal, toLight, dx, dy);
 #else
     gViewIndex = 0;
-    return viewVisibility(0, normal, toLight, dx, dy);
+    return viewVisibility(shadowView(0), normal, toLight, dx, dy);
 #endif
 }
 
@@ -196,5 +270,5 @@ vec3 viewTint(int i)
 {
     const vec3 tints[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 0.9, 0.2),
                                   vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
-    return i < 0 ? vec3(1.0) : tints[i];
+    return i < 0 ? vec3(1.0) : tints[i % 6];   // virtual maps' levels go round them
 }

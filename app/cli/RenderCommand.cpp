@@ -73,6 +73,8 @@ int runRender(const QStringList& arguments)
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
         if (const QString warp = warpStatusText(headless.renderer().lastFrame()); !warp.isEmpty())
             out() << warp << Qt::endl;
+        if (const QString pages = virtualMapStatusText(headless.renderer().lastFrame()); !pages.isEmpty())
+            out() << pages << Qt::endl;
         if (const ShadowViewFrames& views = headless.renderer().shadowViews(); views.set.cascaded) {
             QStringList splits;
             for (const ShadowView& view : views.set.views)

@@ -973,7 +973,8 @@ void MainWindow::updateStatus()
     // Short enough for the default window; the tooltip says it in full.
     const bool refitted = stats.lightFitted && stats.texelWorldSizeBeforeFit != stats.texelWorldSize;
     const QString footprint = tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
-    m_mapLabel->setText(shown.shadow.enabled ? tr("map %1 · %2").arg(squareSize(shown.map.size), footprint) : tr("no shadow map"));
+    const QString mapName = shown.shadow.virtualMap ? tr("virtual map, %1 pages").arg(stats.virtualPages.resident) : tr("map %1").arg(squareSize(shown.map.size));
+    m_mapLabel->setText(shown.shadow.enabled ? tr("%1 · %2").arg(mapName, footprint) : tr("no shadow map"));
     QString mapTip = tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow.");
     if (shown.shadow.enabled && refitted)
         mapTip += QLatin1Char(' ') + tr("Fitted to the scene: %1 wu a texel, against %2 wu with the volume as set.")
@@ -981,6 +982,8 @@ void MainWindow::updateStatus()
                                          .arg(stats.texelWorldSizeBeforeFit, 0, 'g', 3);
     if (const QString warp = warpStatusText(stats); shown.shadow.enabled && !warp.isEmpty())
         mapTip += QLatin1Char(' ') + warp + QLatin1Char('.');
+    if (const QString pages = virtualMapStatusText(stats); shown.shadow.enabled && !pages.isEmpty())
+        mapTip += QLatin1Char(' ') + pages + QLatin1Char('.');
     m_mapLabel->setToolTip(mapTip);
 }
 

@@ -1,0 +1,235 @@
+#include "VirtualShadowMap.h"
+
+#include "PassState.h"
+#include "RenderError.h"
+#include "ShadowStorage.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl) {}
+
+VirtualShadowMap::~VirtualShadowMap() = default;
+
+const VirtualLayout& VirtualShadowMap::layout(const Settings& settings, const Bounds& sceneBounds)
+{
+    const LayoutKey key{settings.light, sceneBounds, settings.shadow.virtualLevels};
+    if (!m_layoutKey || !(*m_layoutKey == key)) {
+        m_layout = virtualLayout(settings.light, sceneBounds, settings.shadow.virtualLevels);
+        m_layoutKey = key;
+        ++m_layoutGeneration;
+    }
+    return *m_layout;
+}
+
+void VirtualShadowMap::allocateTargets(QSize size)
+{
+    m_requestFramebuffer.reset();
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    m_requestTexture = makeTexture(m_gl);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_requestTexture.id());
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_R32UI, size.width(), size.height(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_requestDepth = makeTexture(m_gl);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_requestDepth.id());
+    m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size.width(), size.height(), 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    const QString dimensions = QStringLiteral("%1 x %2").arg(size.width()).arg(size.height());
+    labelGlObject(GlLabelKind::Texture, m_requestTexture.id(), QStringLiteral("virtual shadow map page requests, ") + dimensions);
+    m_requestFramebuffer = makeFramebuffer(m_gl);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_requestFramebuffer.id());
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_requestTexture.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_requestDepth.id(), 0);
+    m_gl->glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    m_gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    labelGlObject(GlLabelKind::Framebuffer, m_requestFramebuffer.id(), QStringLiteral("virtual shadow map page requests"));
+    if (const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER); status != GL_FRAMEBUFFER_COMPLETE) {
+        m_requestTexture.reset();
+        throw RenderError(QStringLiteral("the %1 page-request target of shadow.virtual is incomplete (status 0x%2); set shadow.virtual=false")
+                              .arg(dimensions).arg(status, 0, 16));
+    }
+    m_requestSize = size;
+}
+
+VirtualMapUniforms VirtualShadowMap::uniforms(const CameraFrame& camera) const
+{
+    VirtualMapUniforms u;
+    if (!m_layout || m_windows.empty())
+        return u;
+    const VirtualLayout& layout = *m_layout;
+    // q0 = light-view xy in level-0 pages from level 0's window, in double before the float.
+    const double page0 = layout.pageWorld(0);
+    const glm::dvec2 origin0(m_windows.front());
+    glm::dmat4 toPages(1.0);
+    toPages[0][0] = 1.0 / page0;
+    toPages[1][1] = 1.0 / page0;
+    toPages[3][0] = -origin0.x;
+    toPages[3][1] = -origin0.y;
+    glm::dmat4 m = toPages * layout.view * glm::translate(glm::dmat4(1.0), camera.position);
+    // Depth as the pages store it: every page's frame has the coarsest window's depth row.
+    const glm::dmat4 depth = m_depthMatrix * glm::translate(glm::dmat4(1.0), camera.position);
+    for (int column = 0; column < 4; ++column)
+        m[column][2] = depth[column][2];
+    u.light = glm::mat4(m);
+    u.levels = layout.levels;
+    for (int level = 0; level < layout.levels; ++level) {
+        const glm::dvec2 w(m_windows[std::size_t(level)]);
+        const glm::dvec2 offset = origin0 * std::ldexp(1.0, -level) - w;
+        u.levelOffsets.emplace_back(glm::vec2(offset));
+        u.wraps.emplace_back(((m_windows[std::size_t(level)].x % kVirtualLevelPages) + kVirtualLevelPages) % kVirtualLevelPages,
+                             ((m_windows[std::size_t(level)].y % kVirtualLevelPages) + kVirtualLevelPages) % kVirtualLevelPages);
+    }
+    u.poolSide = m_cache.poolSide();
+    u.finestTexel = float(layout.finestTexel);
+    u.pageTable = m_pageTable.id();
+    return u;
+}
+
+int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size)
+{
+    if (!m_program) {
+        m_program = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("lit.vert"), QStringLiteral("vsm_request.frag"), QStringList());
+        m_model = m_program->uniform("uModel");
+        m_normalMatrix = m_program->uniform("uNormalMatrix");
+        m_mvp = m_program->uniform("uModelViewProjection");
+        m_receives = m_program->uniform("uReceives");
+        m_light = m_program->uniform("uVsmLight");
+        m_levels = m_program->uniform("uVsmLevels");
+        m_offsets = m_program->uniform("uVsmLevelOffset");
+    }
+    if (!m_requestTexture || m_requestSize != size)
+        allocateTargets(size);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_requestFramebuffer.id());
+    PassState state;
+    state.viewport = QRect(QPoint(0, 0), size);
+    state.depthTest = true;
+    state.cullFace = GL_BACK;   // as the lit pass draws
+    applyPassState(m_gl, state);
+    const GLuint none[4] = {0, 0, 0, 0};
+    m_gl->glClearBufferuiv(GL_COLOR, 0, none);
+    m_gl->glClearDepth(1.0);
+    m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+    const VirtualMapUniforms u = uniforms(camera);
+    m_program->bind();
+    m_program->set(m_light, u.light);
+    m_program->set(m_levels, u.levels);
+    m_gl->glUniform2fv(m_offsets, GLsizei(u.levelOffsets.size()), &u.levelOffsets[0][0]);
+    const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    int draws = 0;
+    for (const DrawItem& item : scene.drawItems()) {
+        if (isOutsideFrustum(camera.viewProjection, item.bounds, false))
+            continue;
+        m_program->set(m_model, glm::mat4(toCamera * item.model));
+        m_program->set(m_normalMatrix, glm::mat3(item.normalMatrix));
+        m_program->set(m_mvp, glm::mat4(camera.viewProjection * item.model));
+        m_program->set(m_receives, int(item.receivesShadow));
+        scene.draw(item, false);
+        ++draws;
+    }
+    m_gl->glBindVertexArray(0);
+    applyPassState(m_gl, PassState{});
+    return draws;
+}
+
+std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size)
+{
+    m_readback.resize(std::size_t(size.width()) * std::size_t(size.height()));
+    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    m_gl->glReadPixels(0, 0, size.width(), size.height(), GL_RED_INTEGER, GL_UNSIGNED_INT, m_readback.data());
+    // Deduplicated over a flag per page of every window; neighbouring pixels mostly ask for the
+    // same page, so the last one is remembered too.
+    const std::size_t pagesPerLevel = std::size_t(kVirtualLevelPages) * kVirtualLevelPages;
+    std::vector<std::uint8_t> seen(pagesPerLevel * m_windows.size(), 0);
+    std::vector<VirtualPage> pages;
+    std::uint32_t last = 0;
+    for (const std::uint32_t value : m_readback) {
+        if (value == 0 || value == last)
+            continue;
+        last = value;
+        if (value - 1 >= seen.size() || seen[value - 1])
+            continue;
+        seen[value - 1] = 1;
+        if (const std::optional<VirtualPage> page = decodePageRequest(value, m_windows))
+            pages.push_back(*page);
+    }
+    return pages;
+}
+
+void VirtualShadowMap::uploadPageTable()
+{
+    const std::vector<std::uint16_t> table = m_cache.pageTable(m_windows);
+    const int levels = int(m_windows.size());
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    if (!m_pageTable || m_pageTableLevels != levels) {
+        m_pageTable = makeTexture(m_gl);
+        m_gl->glBindTexture(GL_TEXTURE_2D, m_pageTable.id());
+        m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_R16UI, kVirtualLevelPages, kVirtualLevelPages * levels, 0, GL_RED_INTEGER, GL_UNSIGNED_SHORT, nullptr);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        labelGlObject(GlLabelKind::Texture, m_pageTable.id(), QStringLiteral("virtual shadow map page table"));
+        m_pageTableLevels = levels;
+    }
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_pageTable.id());
+    m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    m_gl->glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kVirtualLevelPages, kVirtualLevelPages * levels, GL_RED_INTEGER, GL_UNSIGNED_SHORT, table.data());
+    m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& settings, const CameraFrame& camera, QSize size, bool invalidate,
+                                         ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws)
+{
+    if (!m_layout)
+        throw RenderError(QStringLiteral("the virtual shadow map has no layout: layout() comes first"));
+    VirtualMapStats stats;
+    m_depthMatrix = frameOf(m_layout->coarsest).depthShadowMatrix;
+    // A new layout (the light turned, the scene changed) leaves no page where it was.
+    if (invalidate || m_poolSide != settings.shadow.virtualPool || m_cacheLayoutGeneration != m_layoutGeneration) {
+        m_cache.reset(settings.shadow.virtualPool);
+        m_poolSide = settings.shadow.virtualPool;
+        m_cacheLayoutGeneration = m_layoutGeneration;
+        m_tableDirty = true;
+    }
+    const QSize requestSize(std::max(size.width(), 1), std::max(size.height(), 1));
+    const RequestKey key{camera.viewProjection, camera.position, requestSize, m_layoutGeneration};
+    std::vector<glm::ivec2> windows = virtualWindows(*m_layout, camera.position);
+    if (windows != m_windows) {
+        m_windows = std::move(windows);
+        m_tableDirty = true;
+    }
+    if (!m_requestKey || !(*m_requestKey == key)) {
+        stats.requestDraws = drawRequests(scene, camera, requestSize);
+        m_requests = readRequests(requestSize);
+        m_requestKey = key;
+    }
+    const VirtualPageCache::Update placed = m_cache.update(m_requests, m_layout->levels);
+    stats.requested = placed.requested;
+    stats.coarsened = placed.coarsened;
+    stats.levelsCoarsened = placed.levelsCoarsened;
+    stats.overflow = placed.overflow;
+    stats.poolPages = m_cache.capacity();
+    int draws = 0;
+    for (const auto& [page, slot] : placed.draw) {
+        const QRect tile((slot % m_poolSide) * kVirtualSlotTexels, (slot / m_poolSide) * kVirtualSlotTexels, kVirtualSlotTexels, kVirtualSlotTexels);
+        draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), settings, tile, nullptr);
+    }
+    stats.drawn = int(placed.draw.size());
+    stats.resident = m_cache.resident();
+    if (casterDraws)
+        *casterDraws = draws;
+    if (m_tableDirty || !placed.draw.empty()) {
+        uploadPageTable();
+        m_tableDirty = false;
+    }
+    return stats;
+}
+
+} // namespace shadowlab

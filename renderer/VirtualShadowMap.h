@@ -1,0 +1,108 @@
+#pragma once
+
+#include "FrameStats.h"
+#include "GpuScene.h"
+#include "LightMath.h"
+#include "Settings.h"
+#include "ShaderProgram.h"
+#include "VirtualPages.h"
+
+#include <glm/vec2.hpp>
+
+#include <QSize>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace shadowlab {
+
+class ShadowMap;
+class ShadowStorage;
+
+// The uniforms the lit pass's VIRTUAL_MAP lookup reads (shadow_lookup.glsl).
+struct VirtualMapUniforms {
+    glm::mat4 light{1.0f};                      // camera-relative world -> (level-0 pages, depth)
+    int levels = 1;
+    std::vector<glm::vec2> levelOffsets;
+    std::vector<glm::ivec2> wraps;
+    int poolSide = 1;
+    float finestTexel = 1.0f;
+    GLuint pageTable = 0;
+};
+
+// A directional light's virtual shadow map (core/VirtualPages.h) on the GL side: the request
+// pass over the camera's view, read back in the same frame and deduplicated; the page cache's
+// new pages drawn into their slots of the pool (the renderer's map, through the depth storage);
+// the integer page table the lit pass reads.
+class VirtualShadowMap {
+public:
+    explicit VirtualShadowMap(GlFunctions* gl);
+    ~VirtualShadowMap();
+
+    // The layout for the light of `settings` over the scene (kept while both stay the same).
+    const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
+
+    // The frame: asks which pages the pixels `camera` sees at `size` need (again only when the
+    // camera, the size or the layout changed), makes them resident, draws the new ones with
+    // `storage` into its slots of the renderer's map, and rebuilds the page table. `invalidate`
+    // (what the pages depend on changed: the light, the scene, the depth pass's state) drops
+    // every cached page first. `frameOf` gives a page volume's light frame; `casterDraws` gets
+    // the casters drawn. Leaves the framebuffer binding to the caller.
+    VirtualMapStats update(const GpuScene& scene, const Settings& settings, const CameraFrame& camera, QSize size, bool invalidate,
+                           ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws);
+
+    VirtualMapUniforms uniforms(const CameraFrame& camera) const;
+    const VirtualPageCache& cache() const { return m_cache; }
+    const std::vector<glm::ivec2>& windows() const { return m_windows; }
+    const std::optional<VirtualLayout>& currentLayout() const { return m_layout; }
+
+private:
+    int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
+    std::vector<VirtualPage> readRequests(QSize size);
+    void allocateTargets(QSize size);
+    void uploadPageTable();
+
+    GlFunctions* m_gl;
+    std::unique_ptr<ShaderProgram> m_program;
+    GLint m_model = -1, m_normalMatrix = -1, m_mvp = -1, m_receives = -1, m_light = -1, m_levels = -1, m_offsets = -1;
+    GlTexture m_requestTexture;
+    GlTexture m_requestDepth;
+    GlFramebuffer m_requestFramebuffer;
+    QSize m_requestSize;
+    std::vector<std::uint32_t> m_readback;
+    GlTexture m_pageTable;
+    int m_pageTableLevels = 0;
+
+    struct LayoutKey {
+        LightSettings light;
+        Bounds bounds;
+        int levels = 0;
+        bool operator==(const LayoutKey& o) const
+        {
+            return light == o.light && bounds.min == o.bounds.min && bounds.max == o.bounds.max && levels == o.levels;
+        }
+    };
+    std::optional<LayoutKey> m_layoutKey;
+    std::optional<VirtualLayout> m_layout;
+    std::vector<glm::ivec2> m_windows;
+    int m_layoutGeneration = 0;
+    int m_cacheLayoutGeneration = -1;   // the layout the cached pages were drawn with
+    glm::dmat4 m_depthMatrix{1.0};      // the coarsest window's depthShadowMatrix: every page's depth
+    VirtualPageCache m_cache;
+    int m_poolSide = 0;
+    bool m_tableDirty = true;
+    // What the last requests were taken for: while it stays, they stand.
+    struct RequestKey {
+        glm::dmat4 viewProjection{1.0};
+        glm::dvec3 position{0.0};
+        QSize size;
+        int layoutGeneration = 0;
+        bool operator==(const RequestKey&) const = default;
+    };
+    std::optional<RequestKey> m_requestKey;
+    std::vector<VirtualPage> m_requests;
+};
+
+} // namespace shadowlab
