@@ -60,6 +60,10 @@ void recordFrame(FrameSamples& s, const FrameStats& f)
             s.viewDraws[v] = f.viewDraws[v];
         }
     }
+    if (f.virtualMap) {
+        s.pagesDrawn.push_back(f.virtualPages.drawn);
+        s.pagesResident.push_back(f.virtualPages.resident);
+    }
     s.lit.push_back(f.litPassMs);
     s.litWall.push_back(f.litPassWallMs);
     s.wall.push_back(f.frameWallMs);

@@ -26,6 +26,8 @@ struct FrameSamples {
     std::vector<double> blurWall;   // of shadowWall, the moments blur and mips (moment techniques only)
     int shadowPassesRun = 0;
     int shadowDraws = 0;
+    // shadow.virtual: pages drawn and resident, every frame.
+    std::vector<double> pagesDrawn, pagesResident;
     FrameStats last;
     // Lights with several views: per view, wall ms of the frames that drew it, and how many did.
     std::vector<std::vector<double>> viewWall;

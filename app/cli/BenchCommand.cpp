@@ -32,6 +32,7 @@ struct Phase {
     std::vector<double> blurWall;
     int shadowPassesRun = 0;
     int shadowDraws = 0;
+    std::vector<double> pagesDrawn, pagesResident;  // shadow.virtual, every frame
     FrameStats last;
     FittedLight fit;        // of the last frame
     std::vector<std::vector<double>> viewWall;  // cascades or cube faces: wall ms of the frames that drew each
@@ -80,6 +81,8 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.wall = std::move(s.wall);
         p.shadowPassesRun = s.shadowPassesRun;
         p.shadowDraws = s.shadowDraws;
+        p.pagesDrawn = std::move(s.pagesDrawn);
+        p.pagesResident = std::move(s.pagesResident);
         p.last = s.last;
         p.fit = p.headless->renderer().lastFit();
         p.viewWall = std::move(s.viewWall);
@@ -217,6 +220,8 @@ int runBench(const QStringList& arguments)
                                               {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
                                               {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
                                               {QStringLiteral("shadow_draws"), r.shadowDraws},
+                                              {QStringLiteral("virtual_pages_drawn"), statsJson(summarize(r.pagesDrawn))},
+                                              {QStringLiteral("virtual_pages_resident"), statsJson(summarize(r.pagesResident))},
                                               {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
                                               {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
                                               {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
@@ -257,6 +262,10 @@ int runBench(const QStringList& arguments)
             out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << runs << '\n';
             if (!r.blurWall.empty())
                 out() << statsRow(QStringLiteral("  of which blur (wall)"), summarize(r.blurWall)) << "   (moments blur and mips)\n";
+            if (!r.pagesDrawn.empty()) {
+                out() << statsRow(QStringLiteral("virtual pages drawn"), summarize(r.pagesDrawn)) << "   a frame\n";
+                out() << statsRow(QStringLiteral("virtual pages resident"), summarize(r.pagesResident)) << '\n';
+            }
             if (!software)
                 out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
             out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
