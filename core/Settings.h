@@ -158,6 +158,7 @@ struct ShadowSettings {
     bool virtualMap = false;
     int virtualPool = 30;                   // pages per side of the physical pool, [4, 64]
     int virtualLevels = 16;                 // clipmap levels, each twice the texel of the one before, [1, 16]
+    int virtualLodBias = 0;                 // levels finer than a texel per screen pixel, [0, 4]
 
     bool operator==(const ShadowSettings&) const = default;
 };

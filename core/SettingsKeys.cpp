@@ -515,6 +515,11 @@ std::vector<Entry> makeEntries()
                            "With shadow.virtual: clipmap levels; the coarsest holds the whole scene in 2 x 2 pages (256 texels "
                            "across), each finer one has half its texel, so the finest texel is the scene's width / 256 / 2^(levels - 1)"),
                           {.label = QStringLiteral("Clipmap levels"), .sliderLow = 1.0, .sliderHigh = 16.0, .group = kShadowMap}));
+    e.push_back(presented(integerKey("shadow.virtual_lod_bias", 0, 4, false, [](auto& s) -> auto& { return s.shadow.virtualLodBias; },
+                           "With shadow.virtual: how many levels finer than one texel per screen pixel each pixel asks for; every "
+                           "level halves the texel, so a shadow edge's error shrinks to half a pixel and less, for about four "
+                           "times the pages a level"),
+                          {.label = QStringLiteral("Level bias (finer)"), .sliderLow = 0.0, .sliderHigh = 4.0, .group = kShadowMap}));
     e.push_back(presented(boolKey("contact.enabled", [](auto& s) -> auto& { return s.contact.enabled; },
                         "Contact shadows: a short march toward the light over the camera's depth of the casters (front and back faces), "
                         "combined with the map's shadow as the smaller visibility; brings back the shadow a bias lifts off contacts "

@@ -146,7 +146,7 @@ TexelDensity measureVirtualTexelDensity(const VisibilityBuffer& buffer, const Vi
     // The level the pixel asks for, then the one finer or the nearest coarser one resident.
     const auto adjust = [&](int i, double level0) -> std::optional<double> {
         const glm::dvec2 t = gridTexel(i);
-        int asked = level0 > 1.0 ? int(std::floor(std::log2(level0))) : 0;
+        int asked = (level0 > 1.0 ? int(std::floor(std::log2(level0))) : 0) - map.lodBias();
         asked = std::clamp(asked, 0, layout->levels - 1);
         glm::ivec2 page;
         while (asked < layout->levels && !inWindow(asked, t, page))

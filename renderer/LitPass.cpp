@@ -243,6 +243,7 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
             throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
         p.program.set(p.techniqueUniform("uVsmLight"), v.light);
         p.program.set(p.techniqueUniform("uVsmLevels"), v.levels);
+        p.program.set(p.techniqueUniform("uVsmLodBias"), v.lodBias);
         m_gl->glUniform2fv(p.techniqueUniform("uVsmLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
         m_gl->glUniform2iv(p.techniqueUniform("uVsmWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
         p.program.set(p.techniqueUniform("uVsmPoolSide"), v.poolSide);

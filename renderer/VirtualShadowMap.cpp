@@ -79,6 +79,7 @@ VirtualMapUniforms VirtualShadowMap::uniforms(const CameraFrame& camera) const
         m[column][2] = depth[column][2];
     u.light = glm::mat4(m);
     u.levels = layout.levels;
+    u.lodBias = m_lodBias;
     for (int level = 0; level < layout.levels; ++level) {
         const glm::dvec2 w(m_windows[std::size_t(level)]);
         const glm::dvec2 offset = origin0 * std::ldexp(1.0, -level) - w;
@@ -103,6 +104,7 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
         m_light = m_program->uniform("uVsmLight");
         m_levels = m_program->uniform("uVsmLevels");
         m_offsets = m_program->uniform("uVsmLevelOffset");
+        m_lodBiasUniform = m_program->uniform("uVsmLodBias");
     }
     if (!m_requestTexture || m_requestSize != size)
         allocateTargets(size);
@@ -120,6 +122,7 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     m_program->bind();
     m_program->set(m_light, u.light);
     m_program->set(m_levels, u.levels);
+    m_program->set(m_lodBiasUniform, u.lodBias);
     m_gl->glUniform2fv(m_offsets, GLsizei(u.levelOffsets.size()), &u.levelOffsets[0][0]);
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     int draws = 0;
@@ -199,7 +202,8 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         m_tableDirty = true;
     }
     const QSize requestSize(std::max(size.width(), 1), std::max(size.height(), 1));
-    const RequestKey key{camera.viewProjection, camera.position, requestSize, m_layoutGeneration};
+    m_lodBias = settings.shadow.virtualLodBias;
+    const RequestKey key{camera.viewProjection, camera.position, requestSize, m_layoutGeneration, m_lodBias};
     std::vector<glm::ivec2> windows = virtualWindows(*m_layout, camera.position);
     if (windows != m_windows) {
         m_windows = std::move(windows);

@@ -25,6 +25,7 @@ class ShadowStorage;
 struct VirtualMapUniforms {
     glm::mat4 light{1.0f};                      // camera-relative world -> (level-0 pages, depth)
     int levels = 1;
+    int lodBias = 0;
     std::vector<glm::vec2> levelOffsets;
     std::vector<glm::ivec2> wraps;
     int poolSide = 1;
@@ -57,6 +58,8 @@ public:
     const VirtualPageCache& cache() const { return m_cache; }
     const std::vector<glm::ivec2>& windows() const { return m_windows; }
     const std::optional<VirtualLayout>& currentLayout() const { return m_layout; }
+    // The last frame's shadow.virtual_lod_bias.
+    int lodBias() const { return m_lodBias; }
 
 private:
     int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
@@ -66,7 +69,7 @@ private:
 
     GlFunctions* m_gl;
     std::unique_ptr<ShaderProgram> m_program;
-    GLint m_model = -1, m_normalMatrix = -1, m_mvp = -1, m_receives = -1, m_light = -1, m_levels = -1, m_offsets = -1;
+    GLint m_model = -1, m_normalMatrix = -1, m_mvp = -1, m_receives = -1, m_light = -1, m_levels = -1, m_offsets = -1, m_lodBiasUniform = -1;
     GlTexture m_requestTexture;
     GlTexture m_requestDepth;
     GlFramebuffer m_requestFramebuffer;
@@ -92,6 +95,7 @@ private:
     glm::dmat4 m_depthMatrix{1.0};      // the coarsest window's depthShadowMatrix: every page's depth
     VirtualPageCache m_cache;
     int m_poolSide = 0;
+    int m_lodBias = 0;
     bool m_tableDirty = true;
     // What the last requests were taken for: while it stays, they stand.
     struct RequestKey {
@@ -99,6 +103,7 @@ private:
         glm::dvec3 position{0.0};
         QSize size;
         int layoutGeneration = 0;
+        int lodBias = 0;
         bool operator==(const RequestKey&) const = default;
     };
     std::optional<RequestKey> m_requestKey;

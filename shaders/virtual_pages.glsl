@@ -3,6 +3,7 @@
 // pages from that level's window; level l's window-relative position is q0 / 2^l + offset[l].
 uniform mat4 uVsmLight;             // camera-relative world -> (q0, depth as the pages store it)
 uniform int uVsmLevels;
+uniform int uVsmLodBias;            // levels finer than a texel per pixel (shadow.virtual_lod_bias)
 uniform vec2 uVsmLevelOffset[16];
 const float kVsmWindowPages = 128.0;
 const float kVsmPageTexels = 128.0;
@@ -14,7 +15,7 @@ const int kVirtualSlot = 136;           // a slot's texels per side: the page an
 int vsmDensityLevel(vec2 dqx, vec2 dqy)
 {
     float texelsPerPixel = kVsmPageTexels * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
-    int level = texelsPerPixel > 1.0 ? int(floor(log2(texelsPerPixel))) : 0;
+    int level = (texelsPerPixel > 1.0 ? int(floor(log2(texelsPerPixel))) : 0) - uVsmLodBias;
     return clamp(level, 0, uVsmLevels - 1);
 }
 

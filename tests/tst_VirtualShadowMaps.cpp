@@ -280,6 +280,7 @@ private Q_SLOTS:
             {"map.format=depth32f"},
             {"shadow.virtual_levels=12"},
             {"shadow.virtual_pool=12", "filter.mode=pcf"},
+            {"shadow.virtual_lod_bias=1"},
         };
         int k = 0;
         for (const QString& scene : sceneNames()) {
@@ -292,6 +293,12 @@ private Q_SLOTS:
                 ++k;
             }
         }
+        // The extremes of the camera: straight down from high up, along the light (the light at
+        // its back), at grazing view over the ground.
+        QTest::newRow("seed camera straight down from high") << "seed" << 200.0 << 50.0 << QStringList{"camera.position=0,60,0.01", "camera.target=0,0,0"};
+        QTest::newRow("cubes camera along the light") << "cubes" << 200.0 << 50.0
+                                                     << QStringList{"camera.position=-4.53,5.75,-1.65", "camera.target=0,0,0", "filter.mode=pcf"};
+        QTest::newRow("torus camera grazing") << "torus" << 300.0 << 30.0 << QStringList{"camera.position=0.3,0.08,4", "camera.target=0,0.05,0"};
     }
     void virtualAgreesWithTheReference()
     {
