@@ -95,8 +95,11 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         if (settings.shadow.showCascades)
             defines << QStringLiteral("SHOW_CASCADES");
     }
-    if (settings.shadow.enabled && settings.shadow.virtualMap && lookups)
+    if (settings.shadow.enabled && settings.shadow.virtualMap && lookups) {
         defines << QStringLiteral("VIRTUAL_MAP");
+        if (settings.shadow.showCascades)
+            defines << QStringLiteral("SHOW_CASCADES");     // tinted by the level read
+    }
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
     if (lookups && settings.bias.space == BiasSpace::Depth)

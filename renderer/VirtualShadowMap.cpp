@@ -213,6 +213,14 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         stats.requestDraws = drawRequests(scene, camera, requestSize);
         m_requests = readRequests(requestSize);
         m_requestKey = key;
+    } else if (!m_tableDirty) {
+        // The same requests over the same pages and windows: nothing to place, draw or upload.
+        stats = m_lastStats;
+        stats.drawn = 0;
+        stats.requestDraws = 0;
+        if (casterDraws)
+            *casterDraws = 0;
+        return stats;
     }
     const VirtualPageCache::Update placed = m_cache.update(m_requests, m_layout->levels);
     stats.requested = placed.requested;
@@ -233,6 +241,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         uploadPageTable();
         m_tableDirty = false;
     }
+    m_lastStats = stats;
     return stats;
 }
 

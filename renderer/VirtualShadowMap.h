@@ -108,6 +108,7 @@ private:
     };
     std::optional<RequestKey> m_requestKey;
     std::vector<VirtualPage> m_requests;
+    VirtualMapStats m_lastStats;        // what the last frame that placed pages found
 };
 
 } // namespace shadowlab

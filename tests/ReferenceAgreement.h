@@ -7,7 +7,9 @@
 #include <glm/glm.hpp>
 
 #include <QSize>
+#include <QString>
 
+#include <cmath>
 #include <vector>
 
 // How a rendered shadow term agrees with the Embree hard reference at exactly the rendered
@@ -61,6 +63,21 @@ inline Agreement agreement(shadowlab::Renderer& renderer, const shadowlab::Setti
 {
     const shadowlab::VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
     return agreement(buffer, hardReference(renderer, buffer), renderer.lightFrame());
+}
+
+// The counts of `a` in words, for a test's failure message and log.
+inline QString describe(const Agreement& a)
+{
+    return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
+        .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
+}
+
+// A unit vector toward the light from azimuth (from +x toward +z) and elevation (above the
+// ground plane), in degrees: the light placements the reference tests sweep.
+inline glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
+{
+    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
+    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
 }
 
 } // namespace probe

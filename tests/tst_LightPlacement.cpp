@@ -24,13 +24,8 @@ Q_DECLARE_METATYPE(glm::dvec3)
 namespace {
 
 using probe::Agreement;
+using probe::fromAngles;
 using probe::agreement;
-
-glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
-{
-    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
-    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
-}
 
 } // namespace
 

@@ -28,19 +28,9 @@ Q_DECLARE_METATYPE(glm::dvec3)
 namespace {
 
 using probe::Agreement;
+using probe::fromAngles;
+using probe::describe;
 using probe::agreement;
-
-glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
-{
-    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
-    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
-}
-
-QString describe(const Agreement& a)
-{
-    return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
-        .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
-}
 
 // A closed room (six inward-facing walls that receive) around a point light, with a small cube
 // between the light and the middle of each wall.

@@ -29,18 +29,8 @@ using namespace shadowlab;
 namespace {
 
 using probe::Agreement;
-
-glm::dvec3 fromAngles(double azimuthDegrees, double elevationDegrees)
-{
-    const double az = glm::radians(azimuthDegrees), el = glm::radians(elevationDegrees);
-    return {std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)};
-}
-
-QString describe(const Agreement& a)
-{
-    return QString("%1 counted, %2 shadowed in the reference, %3 false shadow, %4 false light")
-        .arg(a.counted).arg(a.referenceShadowed).arg(a.falseShadow).arg(a.falseLight);
-}
+using probe::fromAngles;
+using probe::describe;
 
 // The camera brought down toward its target's height: a view across the receivers, where the
 // warp's gain near the camera is largest.
