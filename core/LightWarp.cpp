@@ -44,6 +44,65 @@ glm::dvec3 warpAxis(const CameraFrame& camera, const glm::dvec3& direction)
     return length > kWarpFadeStart && std::isfinite(length) ? across / length : glm::dvec3(0.0);
 }
 
+namespace {
+
+// Wimmer's optimum n = (z_n + sqrt(z_n z_f)) / sin(gamma), times the user's scale, and
+// growing without bound as the fade goes to 0. The depths are the focus's own where they are
+// narrower than the receivers' (casters over part of a wide ground): the warp is fitted to what
+// the map covers.
+double warpNearDistance(const std::vector<glm::dvec3>& corners, const glm::dmat4& lightView, const CameraFrame& camera,
+                        const WarpFocus& focus, double sinGamma, double fade)
+{
+    const glm::dmat4 toCamera = camera.view * glm::inverse(lightView);
+    double focusNear = 1e300, focusFar = 0.0;
+    for (const glm::dvec3& c : corners) {
+        const double depth = -(toCamera * glm::dvec4(c, 1.0)).z;
+        focusNear = std::min(focusNear, depth);
+        focusFar = std::max(focusFar, depth);
+    }
+    const double zNear = std::max({focus.nearDepth, focusNear, 1e-9});
+    const double zFar = std::max(std::min(focus.farDepth, focusFar), zNear);
+    const double optimum = (zNear + std::sqrt(zNear * zFar)) / sinGamma;
+    return optimum * focus.scale / fade;
+}
+
+// The perspective along the turned map's y: the centre of projection n before the focus's near
+// side (`low`) and across from the eye; clip (n x, A y + B, n z, y), y in [n, n + d] to [-1, 1].
+glm::dmat4 warpPerspective(double n, double d, double low, double eyeX)
+{
+    glm::dmat4 shift(1.0);
+    shift[3] = glm::dvec4(-eyeX, -(low - n), 0.0, 1.0);
+    const double far = n + d;
+    glm::dmat4 perspective(0.0);
+    perspective[0][0] = n;
+    perspective[1][1] = (far + n) / d;
+    perspective[1][3] = 1.0;
+    perspective[2][2] = n;
+    perspective[3][1] = -2.0 * n * far / d;
+    return perspective * shift;
+}
+
+// x and depth fitted to the warped focus: the image of a convex prism is the hull of its corners'.
+glm::dmat4 fitWarpedFocus(const glm::dmat4& warp, const std::vector<glm::dvec3>& corners)
+{
+    glm::dvec2 xRange(1e300, -1e300), zRange(1e300, -1e300);
+    for (const glm::dvec3& c : corners) {
+        const glm::dvec4 q = warp * glm::dvec4(c, 1.0);
+        xRange = glm::dvec2(std::min(xRange.x, q.x / q.w), std::max(xRange.y, q.x / q.w));
+        zRange = glm::dvec2(std::min(zRange.x, q.z / q.w), std::max(zRange.y, q.z / q.w));
+    }
+    const double xSpan = std::max(xRange.y - xRange.x, 1e-12), zSpan = std::max(zRange.y - zRange.x, 1e-12);
+    glm::dmat4 fit(1.0);
+    fit[0][0] = 2.0 / xSpan;
+    fit[3][0] = -(xRange.x + xRange.y) / xSpan;
+    // Nearest the light (largest view z) to -1, as glm::ortho's depth.
+    fit[2][2] = -2.0 / zSpan;
+    fit[3][2] = (zRange.x + zRange.y) / zSpan;
+    return fit * warp;
+}
+
+} // namespace
+
 LightVolume lispsmVolume(const LightVolume& box, const CameraFrame& camera, const WarpFocus& focus, WarpShape* shape)
 {
     WarpShape unused;
@@ -79,54 +138,12 @@ LightVolume lispsmVolume(const LightVolume& box, const CameraFrame& camera, cons
     }
     const double extent = std::max({box.width(), box.height(), box.farPlane - box.nearPlane});
     const double d = std::max(high - low, extent * 1e-9);
-
-    // Wimmer's optimum n = (z_n + sqrt(z_n z_f)) / sin(gamma), times the user's scale, and
-    // growing without bound as the fade goes to 0.
-    // The depths are the focus's own where they are narrower than the receivers' (casters
-    // over part of a wide ground): the warp is fitted to what the map covers.
-    const glm::dmat4 toCamera = camera.view * glm::inverse(view);
-    double focusNear = 1e300, focusFar = 0.0;
-    for (const glm::dvec3& c : corners) {
-        const double depth = -(toCamera * glm::dvec4(c, 1.0)).z;
-        focusNear = std::min(focusNear, depth);
-        focusFar = std::max(focusFar, depth);
-    }
-    const double zNear = std::max({focus.nearDepth, focusNear, 1e-9});
-    const double zFar = std::max(std::min(focus.farDepth, focusFar), zNear);
-    const double optimum = (zNear + std::sqrt(zNear * zFar)) / out.sinGamma;
-    const double n = std::max(optimum * focus.scale / fade, d * 1e-6);
+    const double n = std::max(warpNearDistance(corners, view, camera, focus, out.sinGamma, fade), d * 1e-6);
     if (!std::isfinite(n) || n > kWarpLongest * d)
         return result;
 
-    // Centre of projection: n before the box's near side along the axis, across from the eye.
     const glm::dvec3 eye(turn * view * glm::dvec4(camera.position, 1.0));
-    glm::dmat4 shift(1.0);
-    shift[3] = glm::dvec4(-eye.x, -(low - n), 0.0, 1.0);
-    // The perspective along y: clip (n x, A y + B, n z, y), y in [n, n + d] to [-1, 1].
-    const double far = n + d;
-    glm::dmat4 perspective(0.0);
-    perspective[0][0] = n;
-    perspective[1][1] = (far + n) / d;
-    perspective[1][3] = 1.0;
-    perspective[2][2] = n;
-    perspective[3][1] = -2.0 * n * far / d;
-    const glm::dmat4 warp = perspective * shift * turn;
-
-    // Fit x and depth to the warped focus: the image of a convex prism is the hull of its corners'.
-    glm::dvec2 xRange(1e300, -1e300), zRange(1e300, -1e300);
-    for (const glm::dvec3& c : corners) {
-        const glm::dvec4 q = warp * glm::dvec4(c, 1.0);
-        xRange = glm::dvec2(std::min(xRange.x, q.x / q.w), std::max(xRange.y, q.x / q.w));
-        zRange = glm::dvec2(std::min(zRange.x, q.z / q.w), std::max(zRange.y, q.z / q.w));
-    }
-    const double xSpan = std::max(xRange.y - xRange.x, 1e-12), zSpan = std::max(zRange.y - zRange.x, 1e-12);
-    glm::dmat4 fit(1.0);
-    fit[0][0] = 2.0 / xSpan;
-    fit[3][0] = -(xRange.x + xRange.y) / xSpan;
-    // Nearest the light (largest view z) to -1, as glm::ortho's depth.
-    fit[2][2] = -2.0 / zSpan;
-    fit[3][2] = (zRange.x + zRange.y) / zSpan;
-    const glm::dmat4 projection = fit * warp;
+    const glm::dmat4 projection = fitWarpedFocus(warpPerspective(n, d, low, eye.x) * turn, corners);
     if (!isFinite(projection))
         return result;
     result.warped = true;

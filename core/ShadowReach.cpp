@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace shadowlab {
 
@@ -163,105 +164,103 @@ std::vector<UvRect> mergedRects(std::vector<UvRect> rects)
     return rects;
 }
 
-} // namespace
+// How far a view's taps reach around a caster: the taps' grow and, with a normal offset, the
+// shift of each lookup off its receiver.
+struct TapReach {
+    std::optional<double> texels;   // none: the taps may read anywhere
+    double grow = 1.0;              // the taps' reach in the map's uv
+    bool nearerIsLit = true;        // receivers nearer the light than every caster read lit
+};
 
-ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
-                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
+// One view's boxes: each caster's footprint, grown by the taps' reach, within the map's square
+// (outside it every tap reads the lit border). None when lookups may land anywhere.
+std::optional<std::vector<ReachBox>> viewBoxes(const Settings& settings, const LightFrame& view, int mapSize,
+                                               const std::vector<ReachObject>& casters, const TapReach& taps)
 {
-    ShadowReach reach;
-    const std::optional<double> texels = tapReachTexels(settings);
-    const double grow = texels ? *texels / double(std::max(mapSize, 1)) : 1.0;
-    const bool nearerIsLit = referencesStayNearer(settings);
-    // Per view: each caster's footprint, grown by the taps' reach, within the map's square
-    // (outside it every tap reads the lit border).
-    std::vector<std::vector<ReachBox>> perView;
-    for (const LightFrame& view : views) {
-        // The normal offset moves each lookup off its receiver by up to bias.normal texels of
-        // the wider axis: on the narrower one, and in depth, by that length over their spans.
-        // Receivers outside the map or beyond the far plane may look up inside: the boxes grow
-        // past both by as much. Off a perspective light's axis the shift has no small bound.
-        glm::dvec2 offsetUv(0.0);
-        double offsetDepth = 0.0;
-        if (settings.bias.normal > 0.0) {
-            if (view.perspective || view.volume.warped)
-                return lookupsEverywhere(objects);      // a warped texel's size varies over the map
-            const double length = settings.bias.normal * texelWorldSize(view.volume, mapSize);
-            offsetUv = length / glm::max(glm::dvec2(view.volume.width(), view.volume.height()), glm::dvec2(1e-300));
-            offsetDepth = length / std::max(view.volume.farPlane - view.volume.nearPlane, 1e-300);
-        }
-        // The far face a little beyond the far plane, for rounding: in depth for an ortho view,
-        // in distance for a perspective one, whose depth reaches only just past 1 at infinity
-        // (with a near plane close to the light, a depth of 1 + 1e-4 lies behind the light).
-        const double farFace = view.perspective ? perspectiveDepthAt(view, view.volume.farPlane * 1.001) : 1.0 + offsetDepth + 1e-4;
-        std::vector<UvRect> rects;
-        bool anywhere = false;
-        for (const ReachObject& object : casters) {
-            if (!object.casts || culledFrom(object, view))
-                continue;
-            const TextureFootprint f = footprint(object.bounds, view.shadowMatrix);
-            if (f.empty)
-                continue;
-            anywhere = anywhere || f.straddles || !texels;
-            // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
-            const double depth = nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : 0.0;
-            UvRect r{glm::clamp(glm::dvec2(f.min) - grow, 0.0, 1.0) - offsetUv, glm::clamp(glm::dvec2(f.max) + grow, 0.0, 1.0) + offsetUv, depth};
-            if (r.min.x < r.max.x && r.min.y < r.max.y)
-                rects.push_back(r);
-        }
-        if (anywhere)
-            rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0});
-        std::vector<ReachBox> boxes;
-        const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
-        for (const UvRect& r : mergedRects(std::move(rects))) {
-            ReachBox box;
-            box.textureToWorld = textureToWorld;
-            box.uvMin = r.min;
-            box.uvMax = r.max;
-            box.depthMin = r.depth;
-            box.depthMax = farFace;
-            for (const glm::dvec3& c : box.worldCorners()) {
-                if (!finite(c))
-                    return lookupsEverywhere(objects);  // a degenerate light matrix: no box to draw
-            }
-            boxes.push_back(box);
-            reach.boxes.push_back(box);
-        }
-        perView.push_back(std::move(boxes));
+    // The normal offset moves each lookup off its receiver by up to bias.normal texels of
+    // the wider axis: on the narrower one, and in depth, by that length over their spans.
+    // Receivers outside the map or beyond the far plane may look up inside: the boxes grow
+    // past both by as much. Off a perspective light's axis the shift has no small bound.
+    glm::dvec2 offsetUv(0.0);
+    double offsetDepth = 0.0;
+    if (settings.bias.normal > 0.0) {
+        if (view.perspective || view.volume.warped)
+            return std::nullopt;      // a warped texel's size varies over the map
+        const double length = settings.bias.normal * texelWorldSize(view.volume, mapSize);
+        offsetUv = length / glm::max(glm::dvec2(view.volume.width(), view.volume.height()), glm::dvec2(1e-300));
+        offsetDepth = length / std::max(view.volume.farPlane - view.volume.nearPlane, 1e-300);
     }
-
-    // Each receiver against each view's boxes, in that view's texture space.
-    reach.objects.assign(objects.size(), Reach::Outside);
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (!objects[i].receives)
+    // The far face a little beyond the far plane, for rounding: in depth for an ortho view,
+    // in distance for a perspective one, whose depth reaches only just past 1 at infinity
+    // (with a near plane close to the light, a depth of 1 + 1e-4 lies behind the light).
+    const double farFace = view.perspective ? perspectiveDepthAt(view, view.volume.farPlane * 1.001) : 1.0 + offsetDepth + 1e-4;
+    std::vector<UvRect> rects;
+    bool anywhere = false;
+    for (const ReachObject& object : casters) {
+        if (!object.casts || culledFrom(object, view))
             continue;
-        Reach r = Reach::Outside;
-        for (std::size_t v = 0; v < views.size() && r != Reach::Inside; ++v) {
-            if (perView[v].empty())
-                continue;
-            const TextureFootprint f = footprint(objects[i].bounds, views[v].shadowMatrix);
-            if (f.empty)
-                continue;
-            if (f.straddles) {
-                r = Reach::Partly;
-                continue;
-            }
-            for (const ReachBox& box : perView[v]) {
-                const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
-                    || f.max.z < box.depthMin || f.min.z > box.depthMax;
-                const bool within = f.min.x >= box.uvMin.x && f.max.x <= box.uvMax.x && f.min.y >= box.uvMin.y && f.max.y <= box.uvMax.y
-                    && f.min.z >= box.depthMin && f.max.z <= box.depthMax;
-                if (within) {
-                    r = Reach::Inside;
-                    break;
-                }
-                if (!apart)
-                    r = Reach::Partly;
-            }
-        }
-        reach.objects[i] = r;
+        const TextureFootprint f = footprint(object.bounds, view.shadowMatrix);
+        if (f.empty)
+            continue;
+        anywhere = anywhere || f.straddles || !taps.texels;
+        // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
+        const double depth = taps.nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : 0.0;
+        UvRect r{glm::clamp(glm::dvec2(f.min) - taps.grow, 0.0, 1.0) - offsetUv, glm::clamp(glm::dvec2(f.max) + taps.grow, 0.0, 1.0) + offsetUv,
+                 depth};
+        if (r.min.x < r.max.x && r.min.y < r.max.y)
+            rects.push_back(r);
     }
+    if (anywhere)
+        rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0});
+    std::vector<ReachBox> boxes;
+    const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
+    for (const UvRect& r : mergedRects(std::move(rects))) {
+        ReachBox box;
+        box.textureToWorld = textureToWorld;
+        box.uvMin = r.min;
+        box.uvMax = r.max;
+        box.depthMin = r.depth;
+        box.depthMax = farFace;
+        for (const glm::dvec3& c : box.worldCorners()) {
+            if (!finite(c))
+                return std::nullopt;  // a degenerate light matrix: no box to draw
+        }
+        boxes.push_back(box);
+    }
+    return boxes;
+}
 
-    // What share of the frame the boxes may cover: their corners' bounding rectangle on screen.
+// Where a receiver lies against each view's boxes, in that view's texture space.
+Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& views, const std::vector<std::vector<ReachBox>>& perView)
+{
+    Reach r = Reach::Outside;
+    for (std::size_t v = 0; v < views.size() && r != Reach::Inside; ++v) {
+        if (perView[v].empty())
+            continue;
+        const TextureFootprint f = footprint(object.bounds, views[v].shadowMatrix);
+        if (f.empty)
+            continue;
+        if (f.straddles) {
+            r = Reach::Partly;
+            continue;
+        }
+        for (const ReachBox& box : perView[v]) {
+            const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
+                || f.max.z < box.depthMin || f.min.z > box.depthMax;
+            const bool within = f.min.x >= box.uvMin.x && f.max.x <= box.uvMax.x && f.min.y >= box.uvMin.y && f.max.y <= box.uvMax.y
+                && f.min.z >= box.depthMin && f.max.z <= box.depthMax;
+            if (within)
+                return Reach::Inside;
+            if (!apart)
+                r = Reach::Partly;
+        }
+    }
+    return r;
+}
+
+// What share of the frame the boxes may cover: their corners' bounding rectangle on screen.
+void measureScreenShare(ShadowReach& reach, const CameraFrame& camera)
+{
     double share = 0.0;
     glm::dvec2 all0(1.0), all1(-1.0);
     for (const ReachBox& box : reach.boxes) {
@@ -288,6 +287,32 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
     }
     reach.screenShare = std::min(share, 1.0);
     reach.screenRect = reach.boxes.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
+}
+
+} // namespace
+
+ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
+                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
+{
+    TapReach taps;
+    taps.texels = tapReachTexels(settings);
+    taps.grow = taps.texels ? *taps.texels / double(std::max(mapSize, 1)) : 1.0;
+    taps.nearerIsLit = referencesStayNearer(settings);
+    ShadowReach reach;
+    std::vector<std::vector<ReachBox>> perView;
+    for (const LightFrame& view : views) {
+        std::optional<std::vector<ReachBox>> boxes = viewBoxes(settings, view, mapSize, casters, taps);
+        if (!boxes)
+            return lookupsEverywhere(objects);
+        reach.boxes.insert(reach.boxes.end(), boxes->begin(), boxes->end());
+        perView.push_back(std::move(*boxes));
+    }
+    reach.objects.assign(objects.size(), Reach::Outside);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (objects[i].receives)
+            reach.objects[i] = receiverReach(objects[i], views, perView);
+    }
+    measureScreenShare(reach, camera);
     return reach;
 }
 

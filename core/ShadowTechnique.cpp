@@ -54,8 +54,9 @@ TechniqueVariation momentVariation(const QString& label, const QString& key, QSt
 
 // Filterable maps: a moments pass stores a few powers (or exponential warps) of depth, a
 // blur and mips prefilter them, and the lit pass reconstructs how much of the filtered
-// footprint lies behind the receiver from a single filtered lookup.
-void addMomentTechniques(std::vector<ShadowTechnique>& t)
+// footprint lies behind the receiver from a single filtered lookup. First the variance family:
+// two or four moments, plain or exponentially warped.
+void addVarianceTechniques(std::vector<ShadowTechnique>& t)
 {
     const QString bleeding = QStringLiteral("filter.bleeding"), bias = QStringLiteral("filter.moment_bias");
     const QString positive = QStringLiteral("filter.exponent_positive"), negative = QStringLiteral("filter.exponent_negative");
@@ -106,6 +107,13 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {momentVariation(QStringLiteral("evsm4"), QStringLiteral("evsm4")),
             momentVariation(QStringLiteral("evsm4 16-bit"), QStringLiteral("evsm4"), {QStringLiteral("moments.format=16")})},
     });
+}
+
+// Four power moments (Hamburger or Hausdorff), and one exponential.
+void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
+{
+    const QString bleeding = QStringLiteral("filter.bleeding"), bias = QStringLiteral("filter.moment_bias");
+    const QString positive = QStringLiteral("filter.exponent_positive");
     t.push_back({
         .mode = FilterMode::Msm,
         .key = QStringLiteral("msm"),
@@ -155,9 +163,9 @@ void addMomentTechniques(std::vector<ShadowTechnique>& t)
     });
 }
 
-std::vector<ShadowTechnique> makeTechniques()
+// One compare per tap on a depth map: a single tap, and boxes of filter.kernel texels.
+void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
 {
-    std::vector<ShadowTechnique> t;
     t.push_back({
         .mode = FilterMode::Hard,
         .key = QStringLiteral("hard"),
@@ -215,6 +223,11 @@ std::vector<ShadowTechnique> makeTechniques()
         .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double(optimizedPcfKernel(f) - 1) / 2.0 + 0.5; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
+}
+
+// Kernels of a fixed size: dithered, 8 x 8, and the hardware's bilinear compare.
+void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
+{
     t.push_back({
         .mode = FilterMode::PcfDither4,
         .key = QStringLiteral("pcf-dither4"),
@@ -263,6 +276,11 @@ std::vector<ShadowTechnique> makeTechniques()
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 0.0; },
         .referencesStayNearer = [](const Settings&) { return true; },
     });
+}
+
+// Disks of taps: a fixed radius, and a penumbra estimated from a blocker search.
+void addDiskTechniques(std::vector<ShadowTechnique>& t)
+{
     t.push_back({
         .mode = FilterMode::Poisson,
         .key = QStringLiteral("poisson"),
@@ -317,7 +335,16 @@ std::vector<ShadowTechnique> makeTechniques()
             {QStringLiteral("dpcf 32"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
     });
-    addMomentTechniques(t);
+}
+
+std::vector<ShadowTechnique> makeTechniques()
+{
+    std::vector<ShadowTechnique> t;
+    addHardAndBoxTechniques(t);
+    addFixedKernelTechniques(t);
+    addDiskTechniques(t);
+    addVarianceTechniques(t);
+    addMomentAndExponentialTechniques(t);
     for (std::size_t i = 0; i < t.size(); ++i) {
         if (int(t[i].mode) != int(i))
             throw std::logic_error("the technique table must list techniques in FilterMode order");

@@ -106,20 +106,18 @@ void VirtualPageCache::reset(int poolSide)
         m_free.push_back(slot);
 }
 
-VirtualPageCache::Update VirtualPageCache::update(std::vector<VirtualPage> requests, int levels)
+namespace {
+
+// The frame's distinct requests, made to fit `capacity` pages: while there are too many, the
+// finest level's requests move to their parents (merged parents keep the deepest coarsening of
+// their children); what still does not fit at the coarsest level is cut and counted.
+std::vector<VirtualPage> fitRequests(std::vector<VirtualPage> requests, int levels, int capacity, VirtualPageCache::Update& result)
 {
-    ++m_frame;
-    Update result;
-    const auto unique = [](std::vector<VirtualPage>& pages) {
-        std::unordered_set<std::uint64_t> seen;
-        std::erase_if(pages, [&](const VirtualPage& p) { return !seen.insert(p.key()).second; });
-    };
-    unique(requests);
+    std::unordered_set<std::uint64_t> seen;
+    std::erase_if(requests, [&](const VirtualPage& p) { return !seen.insert(p.key()).second; });
     result.requested = int(requests.size());
-    // Too many for the pool: the finest level's requests move to their parents until they fit.
-    std::unordered_map<std::uint64_t, int> coarsenedBy;     // by the key of the page asked for
     std::vector<int> levelsOf(requests.size(), 0);
-    while (int(requests.size()) > capacity()) {
+    while (int(requests.size()) > capacity) {
         int finest = levels;
         for (const VirtualPage& p : requests)
             finest = std::min(finest, p.level);
@@ -132,7 +130,6 @@ VirtualPageCache::Update VirtualPageCache::update(std::vector<VirtualPage> reque
             p = {p.level + 1, int(std::floor(p.x / 2.0)), int(std::floor(p.y / 2.0))};
             ++levelsOf[i];
         }
-        // Merged parents keep the deepest coarsening of their children.
         std::unordered_map<std::uint64_t, std::size_t> firstOf;
         std::vector<VirtualPage> merged;
         std::vector<int> mergedLevels;
@@ -148,16 +145,26 @@ VirtualPageCache::Update VirtualPageCache::update(std::vector<VirtualPage> reque
         requests = std::move(merged);
         levelsOf = std::move(mergedLevels);
     }
-    for (std::size_t i = 0; i < requests.size(); ++i) {
-        if (levelsOf[i] > 0) {
+    for (int coarsenedBy : levelsOf) {
+        if (coarsenedBy > 0) {
             ++result.coarsened;
-            result.levelsCoarsened = std::max(result.levelsCoarsened, levelsOf[i]);
+            result.levelsCoarsened = std::max(result.levelsCoarsened, coarsenedBy);
         }
     }
-    if (int(requests.size()) > capacity()) {
-        result.overflow = int(requests.size()) - capacity();
-        requests.resize(std::size_t(capacity()));
+    if (int(requests.size()) > capacity) {
+        result.overflow = int(requests.size()) - capacity;
+        requests.resize(std::size_t(capacity));
     }
+    return requests;
+}
+
+} // namespace
+
+VirtualPageCache::Update VirtualPageCache::update(std::vector<VirtualPage> requests, int levels)
+{
+    ++m_frame;
+    Update result;
+    requests = fitRequests(std::move(requests), levels, capacity(), result);
     // Mark what stays, then place what is new, taking free slots first and then the least
     // recently used pages that this frame does not need.
     std::vector<VirtualPage> missing;
