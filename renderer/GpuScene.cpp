@@ -5,34 +5,11 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_inverse.hpp>
-#include <glm/gtc/matrix_transform.hpp>
-
-#include <algorithm>
 #include <cstddef>
-#include <map>
-#include <tuple>
 
 namespace shadowlab {
 
 namespace {
-
-// From this many objects a scene is drawn in batches; below it every object keeps its own draw
-// (and its own culling and shadow reach, which a few draws make cheap).
-constexpr std::size_t kBatchFrom = 64;
-// Cells per side of the grid batches are cut by: draws stay at most cells² per material.
-constexpr int kBatchCells = 8;
-// Objects with larger meshes draw alone: merging copies every vertex.
-constexpr std::size_t kMaxBatchedVertices = 4096;
-
-struct BatchVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv;
-    glm::vec3 colour;
-};
 
 void setAttributes(GlFunctions* gl, GLsizei stride, bool colour)
 {
@@ -50,14 +27,10 @@ void setAttributes(GlFunctions* gl, GLsizei stride, bool colour)
 
 } // namespace
 
-GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_es(QOpenGLContext::currentContext()->functions()), m_scene(std::move(scene))
+GpuScene::GpuScene(GlFunctions* gl, Scene scene)
+    : m_gl(gl), m_es(QOpenGLContext::currentContext()->functions()), m_scene(std::move(scene)), m_layout(m_scene)
 {
-    for (const SceneObject& object : m_scene.objects) {
-        m_objectBounds.push_back(m_scene.worldBounds(object));
-        m_bounds.extend(m_objectBounds.back());
-    }
     for (const Mesh& mesh : m_scene.meshes) {
-        m_meshPlanes.push_back(flatPlane(mesh));
         GpuMesh g{makeVertexArray(gl), makeBuffer(gl), makeBuffer(gl), GLsizei(mesh.indices.size())};
         gl->glBindVertexArray(g.vertexArray.id());
         gl->glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
@@ -72,7 +45,7 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene) : m_gl(gl), m_es(QOpenGLContext
         labelGlObject(GlLabelKind::Buffer, g.indices.id(), name + QStringLiteral(": indices"));
         m_meshes.push_back(std::move(g));
     }
-    buildDrawItems();
+    uploadBatches();
     m_hasCutouts = m_scene.hasCutouts();
     gl->glBindVertexArray(0);
 
@@ -108,88 +81,22 @@ GLuint GpuScene::texture(const SceneObject& object) const
     return m_textures[std::size_t(object.texture)].id();
 }
 
-void GpuScene::buildDrawItems()
+void GpuScene::uploadBatches()
 {
-    const auto& objects = m_scene.objects;
-    const auto alone = [&](std::size_t i) {
-        const SceneObject& object = objects[i];
-        DrawItem item;
-        item.objects = {i};
-        item.bounds = m_objectBounds[i];
-        item.model = object.model;
-        item.normalMatrix = glm::inverseTranspose(glm::dmat3(object.model));
-        item.baseColour = object.baseColour;
-        item.castsShadow = object.castsShadow;
-        item.receivesShadow = object.receivesShadow;
-        item.alphaCutoff = textureAlphaCutoff(object);
-        item.mesh = object.mesh;
-        return item;
-    };
-    // Batches: per cell of a grid over the scene's ground plan and per material and flags.
-    // Flat one-sided meshes (grounds) stay alone: the shadow reach knows them by their plane.
-    using Key = std::tuple<int, int, int, bool, bool, float>;    // cell, texture kind, image, casts, receives, alpha cut-off
-    std::map<Key, std::vector<std::size_t>> groups;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const SceneObject& object = objects[i];
-        const Mesh& mesh = m_scene.meshes.at(std::size_t(object.mesh));
-        if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh))) {
-            m_items.push_back(alone(i));
+    for (const DrawItem& item : m_layout.drawItems()) {
+        if (!item.batch)
             continue;
-        }
-        const glm::dvec3 size = glm::max(m_bounds.max - m_bounds.min, glm::dvec3(1e-30));
-        const glm::dvec3 at = (m_objectBounds[i].center() - m_bounds.min) / size;
-        const int cx = std::clamp(int(at.x * kBatchCells), 0, kBatchCells - 1);
-        const int cz = std::clamp(int(at.z * kBatchCells), 0, kBatchCells - 1);
-        groups[{cz * kBatchCells + cx, int(object.texture), object.image, object.castsShadow, object.receivesShadow,
-                textureAlphaCutoff(object)}].push_back(i);
-    }
-    for (const auto& [key, members] : groups) {
-        if (members.size() == 1) {
-            m_items.push_back(alone(members.front()));
-            continue;
-        }
-        DrawItem item;
-        item.objects = members;
-        for (std::size_t i : members)
-            item.bounds.extend(m_objectBounds[i]);
-        const glm::dvec3 origin = item.bounds.center();
-        item.model = glm::translate(glm::dmat4(1.0), origin);
-        item.castsShadow = std::get<3>(key);
-        item.receivesShadow = std::get<4>(key);
-        item.alphaCutoff = std::get<5>(key);
-        item.batch = true;
-        std::vector<BatchVertex> vertices;
-        std::vector<std::uint32_t> indices;
-        for (std::size_t i : members) {
-            const SceneObject& object = objects[i];
-            const Mesh& mesh = m_scene.meshes.at(std::size_t(object.mesh));
-            const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(object.model));
-            const auto base = std::uint32_t(vertices.size());
-            for (const Vertex& v : mesh.vertices) {
-                const glm::dvec3 p = glm::dvec3(object.model * glm::dvec4(glm::dvec3(v.position), 1.0)) - origin;
-                const glm::dvec3 n = normalMatrix * glm::dvec3(v.normal);
-                const double length = glm::length(n);
-                vertices.push_back({glm::vec3(p), glm::vec3(length > 0.0 ? n / length : n), v.uv, object.baseColour});
-            }
-            // A mirroring placement turns the winding: keep front faces counter-clockwise.
-            const bool mirrored = glm::determinant(glm::dmat3(object.model)) < 0.0;
-            for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
-                indices.push_back(base + mesh.indices[k]);
-                indices.push_back(base + mesh.indices[mirrored ? k + 2 : k + 1]);
-                indices.push_back(base + mesh.indices[mirrored ? k + 1 : k + 2]);
-            }
-        }
-        GpuMesh g{makeVertexArray(m_gl), makeBuffer(m_gl), makeBuffer(m_gl), GLsizei(indices.size())};
+        const BatchGeometry geometry = SceneLayout::batchGeometry(m_scene, item);
+        GpuMesh g{makeVertexArray(m_gl), makeBuffer(m_gl), makeBuffer(m_gl), GLsizei(geometry.indices.size())};
         m_gl->glBindVertexArray(g.vertexArray.id());
         m_gl->glBindBuffer(GL_ARRAY_BUFFER, g.vertices.id());
-        m_gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(BatchVertex)), vertices.data(), GL_STATIC_DRAW);
+        m_gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(geometry.vertices.size() * sizeof(BatchVertex)), geometry.vertices.data(), GL_STATIC_DRAW);
         m_gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices.id());
-        m_gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(std::uint32_t)), indices.data(), GL_STATIC_DRAW);
+        m_gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(geometry.indices.size() * sizeof(std::uint32_t)), geometry.indices.data(),
+                           GL_STATIC_DRAW);
         setAttributes(m_gl, sizeof(BatchVertex), true);
         labelGlObject(GlLabelKind::VertexArray, g.vertexArray.id(), QStringLiteral("%1 batch %2").arg(m_scene.name).arg(m_batches.size()));
-        item.mesh = int(m_batches.size());
         m_batches.push_back(std::move(g));
-        m_items.push_back(std::move(item));
     }
 }
 

@@ -480,20 +480,42 @@ void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const Ca
     m_gl->glDisable(GL_STENCIL_TEST);
 }
 
+namespace {
+
+// What the lit pass reads must have been drawn: a moments map for a moment technique (`shadowMap`:
+// null without shadows), the min/max mip for penumbra-only filtering (`range`: whether it is
+// read), the camera's depth for contact shadows (`contactDepth`: 1 without them).
+void checkInputs(const Settings& settings, const ShadowMap* shadowMap, bool range, const DepthRangePass* depthRange, const MomentsMap* moments,
+                 GLuint contactDepth)
+{
+    if (shadowMap != nullptr && isMomentTechnique(settings.filter.mode) && (moments == nullptr || moments->size() != shadowMap->size()))
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
+    if (range && (depthRange == nullptr || depthRange->levels() == 0))
+        throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
+    if (contactDepth == 0)
+        throw RenderError(QStringLiteral("contact.enabled needs the camera's depth of the casters, which was not drawn"));
+}
+
+// `texture` on `unit` with no sampler object, then `after` active again.
+void bindUnit(GlFunctions* gl, GLuint unit, GLuint texture, GLenum after = GL_TEXTURE0 + kDiffuseUnit)
+{
+    gl->glActiveTexture(GL_TEXTURE0 + unit);
+    gl->glBindTexture(GL_TEXTURE_2D, texture);
+    if (texture != 0)
+        gl->glBindSampler(unit, 0);
+    gl->glActiveTexture(after);
+}
+
+} // namespace
+
 int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
                     const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
                     const MomentsMap* moments)
 {
-    if (settings.shadow.enabled && map != nullptr && isMomentTechnique(settings.filter.mode)
-        && (moments == nullptr || moments->size() != map->size()))
-        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
-    const bool readsRange = usesDepthRange(settings) && map != nullptr;
-    if (readsRange && (depthRange == nullptr || depthRange->levels() == 0))
-        throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
     const bool shadows = settings.shadow.enabled && map != nullptr;
+    const bool readsRange = usesDepthRange(settings) && map != nullptr;
     const bool contact = shadows && usesContactShadows(settings);
-    if (contact && m_contactDepth == 0)
-        throw RenderError(QStringLiteral("contact.enabled needs the camera's depth of the casters, which was not drawn"));
+    checkInputs(settings, shadows ? map : nullptr, readsRange, depthRange, moments, contact ? m_contactDepth : GLuint(1));
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     sortByReach(scene, camera, shadows);
@@ -513,20 +535,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     }
     if (shadows)
         bindShadowTextures(settings, *map, moments, readsRange ? depthRange : nullptr);
-    if (contact) {
-        m_gl->glActiveTexture(GL_TEXTURE0 + kContactUnit);
-        m_gl->glBindTexture(GL_TEXTURE_2D, m_contactDepth);
-        m_gl->glBindSampler(kContactUnit, 0);
-        m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
-    }
-
+    if (contact)
+        bindUnit(m_gl, kContactUnit, m_contactDepth);
     const bool pageTable = shadows && settings.shadow.virtualMap && m_virtualMap != nullptr;
-    if (pageTable) {
-        m_gl->glActiveTexture(GL_TEXTURE0 + kPageTableUnit);
-        m_gl->glBindTexture(GL_TEXTURE_2D, m_virtualMap->pageTable);
-        m_gl->glBindSampler(kPageTableUnit, 0);
-        m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
-    }
+    if (pageTable)
+        bindUnit(m_gl, kPageTableUnit, m_virtualMap->pageTable);
     const ShadowMap* shadowMap = shadows ? map : nullptr;
     Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
     if (m_views) {
@@ -557,11 +570,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (shadows)
         unbindShadowTextures(settings, readsRange);
     for (const auto& [unit, used] : {std::pair{kContactUnit, contact}, std::pair{kPageTableUnit, pageTable}}) {
-        if (!used)
-            continue;
-        m_gl->glActiveTexture(GL_TEXTURE0 + unit);
-        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-        m_gl->glActiveTexture(GL_TEXTURE0);
+        if (used)
+            bindUnit(m_gl, unit, 0, GL_TEXTURE0);
     }
     m_gl->glDisable(GL_CULL_FACE);
     return draws;

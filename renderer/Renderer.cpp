@@ -43,13 +43,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     computeLightFrame(settings.light);
     ShadowStorage& storage = storageFor(settings);
-    // A moments map keeps its precision in its own format; its pass uses conventional depth.
-    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !storage.momentsMap();
-    const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
-    if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
-        qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
-        m_warnedNoReversedDepth = true;
-    }
+    const bool reversed = reversedDepth(settings, storage);
     const bool virtualMap = settings.shadow.enabled && settings.shadow.virtualMap;
     // A virtual map's pool is the map: a slot per page, poolSide² of them.
     const ShadowTileGrid grid = virtualMap ? ShadowTileGrid{settings.shadow.virtualPool, settings.shadow.virtualPool} : shadowTileGrid(settings);
@@ -57,151 +51,94 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         throw SettingsError(QStringLiteral("shadow.virtual_pool"),
                             QStringLiteral("a pool of %1² pages needs a %2² texture, and this driver allows %3² at most; lower shadow.virtual_pool")
                                 .arg(settings.shadow.virtualPool).arg(settings.shadow.virtualPool * kVirtualSlotTexels).arg(maxTextureSize()));
-    if (settings.shadow.enabled) {
-        m_shadowMap.ensureTiles(virtualMap ? kVirtualSlotTexels : settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
-        storage.ensure(settings, grid);
+    ensureMap(settings, storage, grid, reversed);
+    ensureScene(settings);
+
+    // Update: the cameras, and the fit when one of its inputs changed.
+    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, settings, m_fitCamera, size, reversed}, m_scene->bounds());
+    m_camera = frame.camera;
+    if (frame.refit)
+        refit(frame, storage, stats);
+    m_update.describe(settings, stats);
+    stats.reversedDepth = reversed;
+
+    // Render: the shadow pass where its inputs changed, then what it feeds.
+    if (virtualMap)
+        renderPages(settings, storage, grid, size, timing, stats);
+    else if (settings.shadow.enabled)
+        renderViews(settings, storage, grid, timing, stats);
+    buildDepthRange(settings, timing, stats);
+    m_light = m_update.views().frames.front();
+    m_viewSettings = settings;
+}
+
+bool Renderer::reversedDepth(const Settings& settings, const ShadowStorage& storage)
+{
+    // A moments map keeps its precision in its own format; its pass uses conventional depth.
+    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !storage.momentsMap();
+    const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
+    if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
+        qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
+        m_warnedNoReversedDepth = true;
     }
+    return reversed;
+}
+
+void Renderer::ensureMap(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, bool reversed)
+{
+    if (!settings.shadow.enabled)
+        return;
+    const bool virtualMap = settings.shadow.virtualMap;
+    m_shadowMap.ensureTiles(virtualMap ? kVirtualSlotTexels : settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
+    storage.ensure(settings, grid);
+}
+
+void Renderer::ensureScene(const Settings& settings)
+{
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
         m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
         m_sceneChanged = false;
         ++m_sceneGeneration;
     }
-    const double aspect = double(size.width()) / double(size.height());
-    const CameraFrame camera = computeCameraFrame(settings.camera, aspect, m_scene->bounds());
-    m_camera = camera;
+}
 
-    // The fit is a pure function of the scene, the settings, the fitting camera and the frame's
-    // size: when none of them changed (a still frame, a window repaint), the last one stands.
-    // For the city that is 2,000 objects clipped against the view each frame, left out.
-    FitInputs inputs{m_sceneGeneration, settings, m_fitCamera, size, reversed};
-    if (!m_fitInputs || !(*m_fitInputs == inputs)) {
-        const CameraFrame fitCamera = m_fitCamera ? computeCameraFrame(*m_fitCamera, aspect, m_scene->bounds()) : camera;
-        // Sample-distribution cascades split the depth range the fitting camera draws.
-        m_visibleRange.reset();
-        if (usesVisibleDepth(settings)) {
-            if (!m_visibleDepth)
-                m_visibleDepth = std::make_unique<VisibleDepthPass>(m_gl);
-            m_visibleRange = m_visibleDepth->ensure(*m_scene, m_sceneGeneration, fitCamera, size, &stats.visibleDepthDraws);
-        }
-        ShadowViewFrames views;
-        FittedLight fitted;
-        fitViews(settings, fitCamera, aspect, reversed, views, fitted);
-        if (virtualMap) {
-            // One view, the coarsest level's window over the whole scene: what the depth-map
-            // view, the reach and the depth convention read; pages are its sub-squares.
-            if (!m_virtual)
-                m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
-            const VirtualLayout& layout = m_virtual->layout(settings, m_scene->bounds());
-            views.set.views.resize(1);
-            views.set.views.front().fit.volume = layout.coarsest;
-            views.set.views.front().fit.anythingToShadow = true;
-            views.frames.assign(1, computeLightFrame(settings.light, layout.coarsest, reversed));
-            fitted.volume = layout.coarsest;
-            fitted.anythingToShadow = true;
-            fitted.texelAfter = layout.finestTexel;
-        }
-        m_views = std::move(views);
-        m_fit = std::move(fitted);
-        m_fitInputs = std::move(inputs);
-        ++m_fitCount;
-        // Where lookups can find a caster follows the fit, and so is kept with it.
-        const int generation = m_reach.generation + 1;
-        m_reach = settings.shadow.enabled ? reachOf(settings, camera) : ShadowReach{};
-        m_reach.generation = generation;
+void Renderer::refit(const FrameUpdate::Frame& frame, const ShadowStorage& storage, FrameStats& stats)
+{
+    const Settings& settings = frame.inputs.settings;
+    FrameUpdate::FitSources sources;
+    // Sample-distribution cascades split the depth range the fitting camera draws.
+    m_visibleRange.reset();
+    if (usesVisibleDepth(settings)) {
+        if (!m_visibleDepth)
+            m_visibleDepth = std::make_unique<VisibleDepthPass>(m_gl);
+        m_visibleRange = m_visibleDepth->ensure(*m_scene, m_sceneGeneration, frame.fitCamera, frame.inputs.size, &stats.visibleDepthDraws);
     }
-    const FittedLight& fit = m_fit;
-    const ShadowViewFrames& views = m_views;
-    const LightFrame& light = views.frames.front();
-    stats.texelWorldSizeBeforeFit = fit.texelBefore;
-    stats.texelWorldSize = fit.texelAfter;
-    stats.lightFitted = fit.fitted;
-    stats.reversedDepth = reversed;
-    if (settings.shadow.enabled && usesLightWarp(settings)) {
-        stats.warpViews = int(views.set.views.size());
-        for (const ShadowView& view : views.set.views) {
-            stats.warpedViews += view.fit.warped;
-            if (stats.warpGain == 0.0)
-                stats.warpGain = view.fit.warpGain;
-            if (stats.warpDeclined == FrameStats::WarpDeclined::No && view.fit.warpSkip != FittedLight::WarpSkip::None)
-                stats.warpDeclined = view.fit.warpSkip == FittedLight::WarpSkip::NoGain ? FrameStats::WarpDeclined::NoGain : FrameStats::WarpDeclined::AlongLight;
-        }
+    sources.visibleRange = m_visibleRange;
+    if (settings.shadow.enabled && settings.shadow.virtualMap) {
+        if (!m_virtual)
+            m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
+        sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
+    sources.cullsFrontFaces = storage.cullsFrontFaces(settings);
+    m_update.fit(frame, m_scene->scene(), m_scene->layout(), sources);
+}
 
-    if (virtualMap)
-        renderPages(settings, storage, grid, size, timing, stats);
-    else if (settings.shadow.enabled)
-        renderViews(settings, storage, grid, timing, stats);
+void Renderer::buildDepthRange(const Settings& settings, TimingMode timing, FrameStats& stats)
+{
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
-    // filtering is turned on over a map it was not built from. Timed with the shadow pass.
-    if (LitPass::usesDepthRange(settings) && m_depthRangeGeneration != m_mapGeneration) {
-        if (!m_depthRange)
-            m_depthRange = std::make_unique<DepthRangePass>(m_gl);
-        QElapsedTimer wall;
-        wall.start();
-        m_depthRange->build(m_shadowMap);
-        m_depthRangeGeneration = m_mapGeneration;
-        if (timing == TimingMode::Finish && stats.shadowPassRendered) {
-            m_gl->glFinish();
-            stats.shadowPassWallMs += double(wall.nsecsElapsed()) * 1e-6;
-        }
+    // filtering is turned on over a map it was not built from.
+    if (!LitPass::usesDepthRange(settings) || m_depthRangeGeneration == m_mapGeneration)
+        return;
+    if (!m_depthRange)
+        m_depthRange = std::make_unique<DepthRangePass>(m_gl);
+    QElapsedTimer wall;
+    wall.start();
+    m_depthRange->build(m_shadowMap);
+    m_depthRangeGeneration = m_mapGeneration;
+    if (timing == TimingMode::Finish && stats.shadowPassRendered) {
+        m_gl->glFinish();
+        stats.shadowPassWallMs += double(wall.nsecsElapsed()) * 1e-6;
     }
-    m_light = light;
-    m_viewSettings = settings;
-}
-
-ShadowReach Renderer::reachOf(const Settings& settings, const CameraFrame& camera) const
-{
-    const Scene& scene = m_scene->scene();
-    std::vector<ReachObject> objects;
-    objects.reserve(scene.objects.size());
-    const bool culls = storageFor(settings).cullsFrontFaces(settings);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        ReachObject r{.bounds = m_scene->objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}};
-        if (const std::optional<MeshPlane>& plane = m_scene->meshPlane(object.mesh); culls && plane) {
-            // Through the model matrix by two edges, so a mirroring one turns the winding too.
-            const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-            const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
-            const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
-            const glm::dvec3 origin = world(plane->point);
-            const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
-            if (glm::length(normal) > 0.0) {
-                r.culledPlanePoint = origin;
-                r.culledPlaneNormal = glm::normalize(normal);
-            }
-        }
-        objects.push_back(r);
-    }
-    std::vector<ReachObject> receivers;
-    for (const DrawItem& item : m_scene->drawItems())
-        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}});
-    return shadowlab::shadowReach(settings, m_views.frames, settings.map.size, objects, receivers, camera);
-}
-
-void Renderer::fitViews(const Settings& settings, const CameraFrame& fitCamera, double aspect, bool reversed, ShadowViewFrames& views,
-                        FittedLight& fit) const
-{
-    const Scene& scene = m_scene->scene();
-    // Receivers and casters as the scene's objects say.
-    std::vector<FitObject> objects;
-    objects.reserve(scene.objects.size());
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        objects.push_back({m_scene->objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
-    }
-    views.camera = fitCamera;
-    views.set = fitShadowViews(settings, objects, views.camera, aspect, m_visibleRange);
-    fit = views.set.views.front().fit;
-    // The fit the window and warnings show: the first view's volume, every view's cuts,
-    // and something to shadow when any view has.
-    for (std::size_t i = 1; i < views.set.views.size(); ++i) {
-        const FittedLight& other = views.set.views[i].fit;
-        fit.anythingToShadow = fit.anythingToShadow || other.anythingToShadow;
-        fit.cutShare = std::max(fit.cutShare, other.cutShare);
-        fit.cuts.insert(fit.cuts.end(), other.cuts.begin(), other.cuts.end());
-    }
-    for (const ShadowView& view : views.set.views)
-        views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, reversed));
 }
 
 ShadowStorage& Renderer::storageFor(const Settings& settings) const
@@ -218,7 +155,7 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
 {
     // What all views share: when it changes, every view is drawn or cleared again.
     const ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
-    const std::size_t count = m_views.set.views.size();
+    const std::size_t count = m_update.views().set.views.size();
     bool fresh = false;
     if (m_shadowKey != shared || m_viewVolumes.size() != count) {
         m_viewVolumes.assign(count, std::nullopt);
@@ -235,7 +172,7 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     const int size = m_shadowMap.size();
     // Nothing to shadow: the tile reads lit, and stays so until the view has something.
     const auto wantedVolume = [this](std::size_t i) {
-        const FittedLight& fit = m_views.set.views[i].fit;
+        const FittedLight& fit = m_update.views().set.views[i].fit;
         return fit.anythingToShadow ? std::optional<LightVolume>(fit.volume) : std::nullopt;
     };
     bool any = fresh, draws = false;
@@ -254,9 +191,9 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     total.start();
     // A fresh map reads lit everywhere first, tiles no view uses included (3 cascades in 2 x 2).
     if (fresh && count < std::size_t(grid.columns * grid.rows))
-        storage.clear(m_views.frames.front(), settings);
+        storage.clear(m_update.views().frames.front(), settings);
     for (std::size_t i = 0; i < count; ++i) {
-        const ShadowView& view = m_views.set.views[i];
+        const ShadowView& view = m_update.views().set.views[i];
         const QRect tile(view.column * size, view.row * size, size, size);
         const std::optional<LightVolume> wanted = wantedVolume(i);
         if (!fresh && m_viewVolumes[i] == wanted)
@@ -265,9 +202,9 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         wall.start();
         int viewDraws = 0;
         if (wanted)
-            viewDraws = storage.draw(*m_scene, m_views.frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
+            viewDraws = storage.draw(*m_scene, m_update.views().frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
         else
-            storage.clear(m_views.frames[i], settings, tile);
+            storage.clear(m_update.views().frames[i], settings, tile);
         if (timing == TimingMode::Finish && perView) {
             m_gl->glFinish();
             stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
@@ -306,7 +243,7 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
     m_shadowTimer.begin();
     const auto frameOf = [&](const LightVolume& volume) { return computeLightFrame(settings.light, volume, m_shadowMap.reversedDepth()); };
     if (invalidate)
-        storage.clear(m_views.frames.front(), settings);    // every slot reads lit until a page is drawn there
+        storage.clear(m_update.views().frames.front(), settings);    // every slot reads lit until a page is drawn there
     int draws = 0;
     stats.virtualMap = true;
     stats.virtualPages = m_virtual->update(*m_scene, settings, m_camera, size, invalidate, storage, frameOf, &draws);
@@ -356,9 +293,9 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
     } else {
         m_litPass.setContactDepth(0);
     }
-    m_litPass.setShadowViews(&m_views);
+    m_litPass.setShadowViews(&m_update.views());
     m_litPass.setVirtualMap(settings.shadow.enabled && settings.shadow.virtualMap ? &m_virtualUniforms : nullptr);
-    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_reach : nullptr);
+    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_update.reach() : nullptr);
     stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
                                       m_depthRange.get(), storageFor(settings).momentsMap());
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;

@@ -6,6 +6,7 @@
 #include "DepthRangePass.h"
 #include "DepthViewPass.h"
 #include "FrameStats.h"
+#include "FrameUpdate.h"
 #include "GpuScene.h"
 #include "GpuTimer.h"
 #include "LightMath.h"
@@ -75,10 +76,10 @@ public:
     // the next render().
     void setScene(std::optional<Scene> scene);
     // The light volume of the last frame after light.fit (the passes' volume), with what it cut.
-    const FittedLight& lastFit() const { return m_fit; }
+    const FittedLight& lastFit() const { return m_update.fitted(); }
     // The views of the last frame when the light has several (cascades, cube faces); their
     // frames are empty otherwise.
-    const ShadowViewFrames& shadowViews() const { return m_views; }
+    const ShadowViewFrames& shadowViews() const { return m_update.views(); }
     // Whether depth32f maps get reversed depth here (glClipControl: GL 4.5 or ARB_clip_control).
     bool supportsReversedDepth() const { return m_depthPass.supportsReversedDepth(); }
     // How many times the shadow pass has actually run (drawn a view) since construction.
@@ -86,7 +87,7 @@ public:
     // Counts every change of the map's content: a pass, or a view's tile cleared to lit.
     int mapGeneration() const { return m_mapGeneration; }
     // How many times the light's views were fitted; a frame whose inputs did not change does not.
-    int fitCount() const { return m_fitCount; }
+    int fitCount() const { return m_update.fitCount(); }
     int compiledLitVariants() const { return m_litPass.compiledVariantCount(); }
     // Cut-out variants compiled so far, lit pass and shadow pass (none until a scene has cut-outs).
     int compiledCutoutVariants() const { return m_litPass.compiledCutoutVariantCount() + int(m_depthPass.hasCutoutVariant()); }
@@ -95,7 +96,7 @@ public:
     // the measured pixels stay put.
     void setFitCamera(std::optional<CameraSettings> camera) { m_fitCamera = std::move(camera); }
     // Where the lookups of the last frame could find a caster (core/ShadowReach.h).
-    const ShadowReach& shadowReach() const { return m_reach; }
+    const ShadowReach& shadowReach() const { return m_update.reach(); }
     // Whether the lit pass shades receivers out of the casters' reach without a lookup (on by
     // default; the frame is the same either way, which the tests check with this off).
     void setSkipsOutOfReach(bool skips) { m_skipsOutOfReach = skips; }
@@ -112,6 +113,16 @@ private:
     // Validation, scene, light and camera, and the shadow pass when its inputs changed; fills
     // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
     void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
+    // Whether the frame's depth32f map gets reversed depth (warns once when it cannot).
+    bool reversedDepth(const Settings& settings, const ShadowStorage& storage);
+    // The map's tiles (a virtual map's pool: a slot per page) and the storage for them.
+    void ensureMap(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, bool reversed);
+    // The scene the settings name, uploaded when it changed.
+    void ensureScene(const Settings& settings);
+    // The fit of `frame`, with what it reads from passes: sdsm's visible depth, the virtual layout.
+    void refit(const FrameUpdate::Frame& frame, const ShadowStorage& storage, FrameStats& stats);
+    // The min/max depth mip of penumbra-only filtering, when the map changed; timed with the shadow pass.
+    void buildDepthRange(const Settings& settings, TimingMode timing, FrameStats& stats);
     void finishTiming(TimingMode timing, FrameStats& stats);
     // The lit pass into `target` (with its camera depth prepass for contact shadows), timed.
     void drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats);
@@ -124,14 +135,6 @@ private:
     ShadowStorage& storageFor(const Settings& settings) const;
     // The moments map the last frame's technique read, or null when it read depth.
     const MomentsMap* momentsShown() const;
-    // Fits the light's views to what the camera sees: the views, their light frames and the fit
-    // the window shows.
-    // Fits the light's views to `fitCamera` (the frame's camera, or setFitCamera()'s).
-    void fitViews(const Settings& settings, const CameraFrame& fitCamera, double aspect, bool reversed, ShadowViewFrames& views,
-                  FittedLight& fit) const;
-    // Where the lookups of the fitted views can find a caster: casters one by one (a flat
-    // one-sided one whose front faces the pass culls as its plane), receivers as drawn.
-    ShadowReach reachOf(const Settings& settings, const CameraFrame& camera) const;
 
     GlFunctions* m_gl;
     ShadowMap m_shadowMap;
@@ -159,30 +162,17 @@ private:
     // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
     // m_shadowKey holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;
-    ShadowViewFrames m_views;
-    // What the last fit was computed from (Renderer::prepareFrame).
-    struct FitInputs {
-        int sceneGeneration = 0;
-        Settings settings;
-        std::optional<CameraSettings> fitCamera;
-        QSize size;
-        bool reversed = false;
-        bool operator==(const FitInputs&) const = default;
-    };
-    std::optional<FitInputs> m_fitInputs;
+    FrameUpdate m_update;           // the camera, the fitted views and their reach
     std::optional<Scene> m_customScene;
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
-    FittedLight m_fit;
-    ShadowReach m_reach;            // computed with the fit
     bool m_skipsOutOfReach = true;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;
     int m_shadowPassCount = 0;
-    int m_fitCount = 0;
     double m_lastShadowMs = 0.0;    // newest finished measurements, for TimingMode::Async
     double m_lastLitMs = 0.0;
 };

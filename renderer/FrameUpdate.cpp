@@ -1,0 +1,128 @@
+#include "FrameUpdate.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace shadowlab {
+
+namespace {
+
+// Receivers and casters as the scene's objects say.
+std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
+{
+    std::vector<FitObject> objects;
+    objects.reserve(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        objects.push_back({layout.objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
+    }
+    return objects;
+}
+
+// A caster of the reach; a flat one-sided mesh whose front faces the pass culls keeps its plane.
+ReachObject reachCaster(const SceneObject& object, const Bounds& bounds, const std::optional<MeshPlane>& plane, bool cullsFrontFaces)
+{
+    ReachObject r{.bounds = bounds, .casts = object.castsShadow, .receives = object.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}};
+    if (!cullsFrontFaces || !plane)
+        return r;
+    // Through the model matrix by two edges, so a mirroring one turns the winding too.
+    const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
+    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
+    const glm::dvec3 origin = world(plane->point);
+    const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
+    if (glm::length(normal) > 0.0) {
+        r.culledPlanePoint = origin;
+        r.culledPlaneNormal = glm::normalize(normal);
+    }
+    return r;
+}
+
+} // namespace
+
+ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
+                       bool cullsFrontFaces, const CameraFrame& camera)
+{
+    std::vector<ReachObject> casters;
+    casters.reserve(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        casters.push_back(reachCaster(object, layout.objectBounds(i), layout.meshPlane(object.mesh), cullsFrontFaces));
+    }
+    std::vector<ReachObject> receivers;
+    for (const DrawItem& item : layout.drawItems())
+        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}});
+    return shadowReach(settings, views, settings.map.size, casters, receivers, camera);
+}
+
+FrameUpdate::Frame FrameUpdate::begin(Inputs inputs, const Bounds& sceneBounds) const
+{
+    Frame frame;
+    frame.aspect = double(inputs.size.width()) / double(inputs.size.height());
+    frame.camera = computeCameraFrame(inputs.settings.camera, frame.aspect, sceneBounds);
+    frame.refit = !m_inputs || !(*m_inputs == inputs);
+    if (frame.refit)
+        frame.fitCamera = inputs.fitCamera ? computeCameraFrame(*inputs.fitCamera, frame.aspect, sceneBounds) : frame.camera;
+    frame.inputs = std::move(inputs);
+    return frame;
+}
+
+void FrameUpdate::fit(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources)
+{
+    if (!frame.refit)
+        return;
+    const Settings& settings = frame.inputs.settings;
+    ShadowViewFrames views;
+    views.camera = frame.fitCamera;
+    views.set = fitShadowViews(settings, fitObjects(scene, layout), views.camera, frame.aspect, sources.visibleRange);
+    FittedLight fitted = views.set.views.front().fit;
+    // The fit the window and warnings show: the first view's volume, every view's cuts,
+    // and something to shadow when any view has.
+    for (std::size_t i = 1; i < views.set.views.size(); ++i) {
+        const FittedLight& other = views.set.views[i].fit;
+        fitted.anythingToShadow = fitted.anythingToShadow || other.anythingToShadow;
+        fitted.cutShare = std::max(fitted.cutShare, other.cutShare);
+        fitted.cuts.insert(fitted.cuts.end(), other.cuts.begin(), other.cuts.end());
+    }
+    for (const ShadowView& view : views.set.views)
+        views.frames.push_back(computeLightFrame(settings.light, view.fit.volume, frame.inputs.reversed));
+    if (const std::optional<VirtualLayout>& layoutOfPages = sources.virtualLayout) {
+        // One view, the coarsest level's window over the whole scene: what the depth-map
+        // view, the reach and the depth convention read; pages are its sub-squares.
+        views.set.views.resize(1);
+        views.set.views.front().fit.volume = layoutOfPages->coarsest;
+        views.set.views.front().fit.anythingToShadow = true;
+        views.frames.assign(1, computeLightFrame(settings.light, layoutOfPages->coarsest, frame.inputs.reversed));
+        fitted.volume = layoutOfPages->coarsest;
+        fitted.anythingToShadow = true;
+        fitted.texelAfter = layoutOfPages->finestTexel;
+    }
+    m_views = std::move(views);
+    m_fit = std::move(fitted);
+    m_inputs = frame.inputs;
+    ++m_fitCount;
+    // Where lookups can find a caster follows the fit, and so is kept with it.
+    const int generation = m_reach.generation + 1;
+    m_reach = settings.shadow.enabled ? sceneReach(settings, m_views.frames, scene, layout, sources.cullsFrontFaces, frame.camera) : ShadowReach{};
+    m_reach.generation = generation;
+}
+
+void FrameUpdate::describe(const Settings& settings, FrameStats& stats) const
+{
+    stats.texelWorldSizeBeforeFit = m_fit.texelBefore;
+    stats.texelWorldSize = m_fit.texelAfter;
+    stats.lightFitted = m_fit.fitted;
+    if (!settings.shadow.enabled || !usesLightWarp(settings))
+        return;
+    stats.warpViews = int(m_views.set.views.size());
+    for (const ShadowView& view : m_views.set.views) {
+        stats.warpedViews += view.fit.warped;
+        if (stats.warpGain == 0.0)
+            stats.warpGain = view.fit.warpGain;
+        if (stats.warpDeclined == FrameStats::WarpDeclined::No && view.fit.warpSkip != FittedLight::WarpSkip::None)
+            stats.warpDeclined = view.fit.warpSkip == FittedLight::WarpSkip::NoGain ? FrameStats::WarpDeclined::NoGain : FrameStats::WarpDeclined::AlongLight;
+    }
+}
+
+} // namespace shadowlab

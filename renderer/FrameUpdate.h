@@ -1,0 +1,79 @@
+#pragma once
+
+#include "FrameStats.h"
+#include "LightFitting.h"
+#include "LightMath.h"
+#include "SceneLayout.h"
+#include "Settings.h"
+#include "ShadowReach.h"
+#include "ShadowViewFrames.h"
+#include "ShadowViews.h"
+#include "VirtualPages.h"
+
+#include <QSize>
+
+#include <optional>
+
+namespace shadowlab {
+
+// The frame's pure half, as Filament splits update() from render(): from the settings, the
+// frame's size and the scene's layout, the cameras, the light's views fitted to what the fitting
+// camera sees, and where lookups can find a caster. The fit is a pure function of its inputs,
+// so when none changed (a still frame, a window repaint) the last one stands: for the city that
+// is 2,000 objects clipped against the view each frame, left out. No GL: the renderer runs the
+// passes it plans, and it is tested without a context.
+class FrameUpdate {
+public:
+    // What the fit is computed from: when all of it is as last time, the fit stands.
+    struct Inputs {
+        int sceneGeneration = 0;
+        Settings settings;
+        std::optional<CameraSettings> fitCamera;    // fit to this instead of settings.camera
+        QSize size;
+        bool reversed = false;                      // depth32f with reversed depth
+        bool operator==(const Inputs&) const = default;
+    };
+    // A frame's cameras, and whether its fit is due.
+    struct Frame {
+        Inputs inputs;
+        CameraFrame camera;         // draws the frame
+        CameraFrame fitCamera;      // the light is fitted to: the frame's, or Inputs::fitCamera's
+        double aspect = 1.0;
+        bool refit = false;         // an input changed since the last fit
+    };
+    // What a fit reads besides the scene: results of passes run for it, and the storage's culling.
+    struct FitSources {
+        std::optional<VisibleDepthRange> visibleRange;     // sdsm: the depth range the fitting camera draws
+        std::optional<VirtualLayout> virtualLayout;        // shadow.virtual: one view, its coarsest level
+        bool cullsFrontFaces = false;                      // the shadow pass culls front faces (for the reach)
+    };
+
+    Frame begin(Inputs inputs, const Bounds& sceneBounds) const;
+    // Fits the light's views to `frame`'s fitting camera and finds their reach; a no-op when
+    // the frame needs no refit.
+    void fit(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources);
+
+    // The last fit: every view with its light frame, the fit the window and warnings show (the
+    // first view's volume with every view's cuts), and where lookups can find a caster.
+    const ShadowViewFrames& views() const { return m_views; }
+    const FittedLight& fitted() const { return m_fit; }
+    const ShadowReach& reach() const { return m_reach; }
+    // How many times the views were fitted.
+    int fitCount() const { return m_fitCount; }
+    // The fit's half of the frame's statistics: texel sizes before and after, and the warp.
+    void describe(const Settings& settings, FrameStats& stats) const;
+
+private:
+    std::optional<Inputs> m_inputs;
+    ShadowViewFrames m_views;
+    FittedLight m_fit;
+    ShadowReach m_reach;
+    int m_fitCount = 0;
+};
+
+// Where the lookups of `views` can find a caster: casters one by one (a flat one-sided one whose
+// front faces the pass culls as its plane), receivers as drawn.
+ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
+                       bool cullsFrontFaces, const CameraFrame& camera);
+
+} // namespace shadowlab

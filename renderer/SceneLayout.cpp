@@ -1,0 +1,119 @@
+#include "SceneLayout.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+namespace shadowlab {
+
+namespace {
+
+// From this many objects a scene is drawn in batches; below it every object keeps its own draw
+// (and its own culling and shadow reach, which a few draws make cheap).
+constexpr std::size_t kBatchFrom = 64;
+// Cells per side of the grid batches are cut by: draws stay at most cells² per material.
+constexpr int kBatchCells = 8;
+// Objects with larger meshes draw alone: merging copies every vertex.
+constexpr std::size_t kMaxBatchedVertices = 4096;
+
+DrawItem aloneItem(const Scene& scene, std::size_t i, const Bounds& bounds)
+{
+    const SceneObject& object = scene.objects[i];
+    DrawItem item;
+    item.objects = {i};
+    item.bounds = bounds;
+    item.model = object.model;
+    item.normalMatrix = glm::inverseTranspose(glm::dmat3(object.model));
+    item.baseColour = object.baseColour;
+    item.castsShadow = object.castsShadow;
+    item.receivesShadow = object.receivesShadow;
+    item.alphaCutoff = textureAlphaCutoff(object);
+    item.mesh = object.mesh;
+    return item;
+}
+
+} // namespace
+
+SceneLayout::SceneLayout(const Scene& scene)
+{
+    for (const SceneObject& object : scene.objects) {
+        m_objectBounds.push_back(scene.worldBounds(object));
+        m_bounds.extend(m_objectBounds.back());
+    }
+    for (const Mesh& mesh : scene.meshes)
+        m_meshPlanes.push_back(flatPlane(mesh));
+    layOutItems(scene);
+}
+
+void SceneLayout::layOutItems(const Scene& scene)
+{
+    const auto& objects = scene.objects;
+    // Batches: per cell of a grid over the scene's ground plan and per material and flags.
+    // Flat one-sided meshes (grounds) stay alone: the shadow reach knows them by their plane.
+    using Key = std::tuple<int, int, int, bool, bool, float>;    // cell, texture kind, image, casts, receives, alpha cut-off
+    std::map<Key, std::vector<std::size_t>> groups;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const SceneObject& object = objects[i];
+        const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
+        if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh))) {
+            m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
+            continue;
+        }
+        const glm::dvec3 size = glm::max(m_bounds.max - m_bounds.min, glm::dvec3(1e-30));
+        const glm::dvec3 at = (m_objectBounds[i].center() - m_bounds.min) / size;
+        const int cx = std::clamp(int(at.x * kBatchCells), 0, kBatchCells - 1);
+        const int cz = std::clamp(int(at.z * kBatchCells), 0, kBatchCells - 1);
+        groups[{cz * kBatchCells + cx, int(object.texture), object.image, object.castsShadow, object.receivesShadow,
+                textureAlphaCutoff(object)}].push_back(i);
+    }
+    for (const auto& [key, members] : groups) {
+        if (members.size() == 1) {
+            m_items.push_back(aloneItem(scene, members.front(), m_objectBounds[members.front()]));
+            continue;
+        }
+        DrawItem item;
+        item.objects = members;
+        for (std::size_t i : members)
+            item.bounds.extend(m_objectBounds[i]);
+        item.model = glm::translate(glm::dmat4(1.0), item.bounds.center());
+        item.castsShadow = std::get<3>(key);
+        item.receivesShadow = std::get<4>(key);
+        item.alphaCutoff = std::get<5>(key);
+        item.batch = true;
+        item.mesh = m_batchCount++;
+        m_items.push_back(std::move(item));
+    }
+}
+
+BatchGeometry SceneLayout::batchGeometry(const Scene& scene, const DrawItem& item)
+{
+    BatchGeometry g;
+    const glm::dvec3 origin(item.model[3]);
+    for (std::size_t i : item.objects) {
+        const SceneObject& object = scene.objects.at(i);
+        const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
+        const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(object.model));
+        const auto base = std::uint32_t(g.vertices.size());
+        for (const Vertex& v : mesh.vertices) {
+            const glm::dvec3 p = glm::dvec3(object.model * glm::dvec4(glm::dvec3(v.position), 1.0)) - origin;
+            const glm::dvec3 n = normalMatrix * glm::dvec3(v.normal);
+            const double length = glm::length(n);
+            g.vertices.push_back({glm::vec3(p), glm::vec3(length > 0.0 ? n / length : n), v.uv, object.baseColour});
+        }
+        // A mirroring placement turns the winding: keep front faces counter-clockwise.
+        const bool mirrored = glm::determinant(glm::dmat3(object.model)) < 0.0;
+        for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
+            g.indices.push_back(base + mesh.indices[k]);
+            g.indices.push_back(base + mesh.indices[mirrored ? k + 2 : k + 1]);
+            g.indices.push_back(base + mesh.indices[mirrored ? k + 1 : k + 2]);
+        }
+    }
+    return g;
+}
+
+} // namespace shadowlab

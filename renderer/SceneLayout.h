@@ -1,0 +1,77 @@
+#pragma once
+
+#include "Scene.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace shadowlab {
+
+// What one draw call draws: a scene object, or a batch of small objects that share a texture,
+// shadow flags and alpha cut-off, merged into one vertex buffer in world space around the batch's centre
+// (so float keeps the precision of a scene far from the origin), its base colours per vertex.
+struct DrawItem {
+    std::vector<std::size_t> objects;   // indices into scene().objects
+    Bounds bounds;                      // world
+    glm::dmat4 model{1.0};              // the item's vertices to world
+    glm::dmat3 normalMatrix{1.0};
+    glm::vec3 baseColour{1.0f};         // an object's; a batch's colours are on its vertices
+    bool castsShadow = true;
+    bool receivesShadow = true;
+    bool batch = false;
+    // A cut-out's texture alpha below which it is not there (textureAlphaCutoff); 0: opaque.
+    // Items that honour a mask draw with their pass's ALPHA_CUTOUT variant (shaders/cutout.glsl).
+    float alphaCutoff = 0.0f;
+    int mesh = 0;                       // an object's mesh; a batch's index among the batches otherwise
+};
+
+// A batch's merged geometry: its members' vertices in world space around the batch's centre.
+struct BatchVertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+    glm::vec3 colour;
+};
+struct BatchGeometry {
+    std::vector<BatchVertex> vertices;
+    std::vector<std::uint32_t> indices;
+};
+
+// The CPU side of a scene as the frame uses it, computed once: each object's world bounds, each
+// mesh's plane, and the draw items, every object once, alone or in a batch. Scenes of many
+// objects are drawn in batches: a fixed grid of cells over the scene, one batch per cell and
+// material, so that draw calls do not grow with the objects. No GL: the fit, the reach and the
+// passes' culling read it, GpuScene uploads what it lays out, and it is tested without a context.
+class SceneLayout {
+public:
+    explicit SceneLayout(const Scene& scene);
+
+    // World bounds of scene.objects[i] (culling runs per frame).
+    const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
+    // The scene's bounds: Scene::bounds() visits every vertex.
+    const Bounds& bounds() const { return m_bounds; }
+    // flatPlane() of scene.meshes[mesh].
+    const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
+    const std::vector<DrawItem>& drawItems() const { return m_items; }
+    // The batched items, in the order of their DrawItem::mesh.
+    int batchCount() const { return m_batchCount; }
+    // The merged vertices of a batched item of `scene` (the one this layout was made from).
+    static BatchGeometry batchGeometry(const Scene& scene, const DrawItem& item);
+
+private:
+    void layOutItems(const Scene& scene);
+
+    std::vector<Bounds> m_objectBounds;
+    std::vector<std::optional<MeshPlane>> m_meshPlanes;
+    std::vector<DrawItem> m_items;
+    Bounds m_bounds;
+    int m_batchCount = 0;
+};
+
+} // namespace shadowlab

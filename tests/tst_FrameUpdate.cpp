@@ -1,0 +1,257 @@
+// The frame's pure half without GL: the scene's layout (every object drawn once, batches that
+// keep every vertex and the winding of mirrored placements) and the update (a fit only when an
+// input changed, the cameras it fits to, the reach kept with it, a virtual map's one view).
+#include "FrameUpdate.h"
+#include "SceneLayout.h"
+#include "SceneLibrary.h"
+#include "SceneNames.h"
+#include "SettingsKeys.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QtTest>
+
+#include <functional>
+#include <set>
+
+using namespace shadowlab;
+
+namespace {
+
+Settings with(const QString& scene, std::initializer_list<const char*> assignments = {})
+{
+    Settings s = presetSettings(scene);
+    for (const char* a : assignments)
+        applyAssignment(s, QString::fromLatin1(a));
+    ensureValid(s);
+    return s;
+}
+
+bool contains(const Bounds& outer, const Bounds& inner, double slack)
+{
+    return glm::all(glm::lessThanEqual(outer.min - slack, inner.min)) && glm::all(glm::lessThanEqual(inner.max, outer.max + slack));
+}
+
+// A hundred small cubes on a grid, every third one mirrored in x: enough to be batched.
+Scene mirroredCubes()
+{
+    Scene s;
+    s.name = QStringLiteral("mirrored cubes");
+    s.meshes.push_back(meshes::cube());
+    for (int i = 0; i < 100; ++i) {
+        glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(3.0 * (i % 10), 0.5, 3.0 * (i / 10)));
+        m = glm::rotate(m, glm::radians(17.0 * i), glm::dvec3(0.0, 1.0, 0.0));
+        m = glm::scale(m, glm::dvec3(i % 3 == 0 ? -0.4 : 0.4, 0.4, 0.4));
+        s.objects.push_back({QStringLiteral("cube %1").arg(i), 0, m, TextureKind::Wood, true});
+    }
+    return s;
+}
+
+struct Update {
+    Scene scene;
+    SceneLayout layout;
+    FrameUpdate update;
+    explicit Update(Scene built) : scene(std::move(built)), layout(scene) {}
+
+    // One frame: returns whether it fitted again.
+    bool frame(const Settings& s, QSize size = QSize(320, 180), int sceneGeneration = 1, std::optional<CameraSettings> fitCamera = {},
+               FrameUpdate::FitSources sources = {})
+    {
+        const FrameUpdate::Frame f = update.begin({sceneGeneration, s, fitCamera, size, false}, layout.bounds());
+        update.fit(f, scene, layout, sources);
+        return f.refit;
+    }
+};
+
+} // namespace
+
+class TestFrameUpdate : public QObject {
+    Q_OBJECT
+
+private slots:
+    void layoutDrawsEveryObjectOnce_data()
+    {
+        QTest::addColumn<QString>("scene");
+        for (const QString& name : sceneNames())
+            QTest::newRow(qPrintable(name)) << name;
+        QTest::newRow("city:500") << QStringLiteral("city:500");
+        QTest::newRow("city:8000") << QStringLiteral("city:8000");
+    }
+    void layoutDrawsEveryObjectOnce()
+    {
+        QFETCH(QString, scene);
+        const Scene built = buildScene(scene);
+        const SceneLayout layout(built);
+        std::vector<int> drawn(built.objects.size(), 0);
+        int batches = 0;
+        for (const DrawItem& item : layout.drawItems()) {
+            QVERIFY(!item.objects.empty());
+            for (std::size_t i : item.objects) {
+                ++drawn.at(i);
+                QVERIFY2(contains(item.bounds, layout.objectBounds(i), 1e-9), qPrintable(built.objects[i].name));
+                QCOMPARE(item.castsShadow, built.objects[i].castsShadow);
+                QCOMPARE(item.receivesShadow, built.objects[i].receivesShadow);
+            }
+            if (item.batch)
+                QCOMPARE(item.mesh, batches++);
+            QVERIFY(contains(layout.bounds(), item.bounds, 1e-9));
+        }
+        QCOMPARE(batches, layout.batchCount());
+        for (std::size_t i = 0; i < drawn.size(); ++i)
+            QVERIFY2(drawn[i] == 1, qPrintable(QStringLiteral("%1 is drawn %2 times").arg(built.objects[i].name).arg(drawn[i])));
+        // Draw calls do not grow with the objects: a city's are a fraction of its buildings.
+        if (built.objects.size() >= 500)
+            QVERIFY2(layout.drawItems().size() * 4 < built.objects.size(),
+                     qPrintable(QStringLiteral("%1 items for %2 objects").arg(layout.drawItems().size()).arg(built.objects.size())));
+        else if (built.objects.size() < 64)
+            QCOMPARE(layout.drawItems().size(), built.objects.size());
+    }
+
+    // Merged vertices are the members' in world space, and a mirrored member's triangles still
+    // face the way their normals say (front faces counter-clockwise).
+    void batchesKeepVerticesAndWinding()
+    {
+        const Scene scene = mirroredCubes();
+        const SceneLayout layout(scene);
+        int batched = 0;
+        for (const DrawItem& item : layout.drawItems()) {
+            if (!item.batch)
+                continue;
+            const BatchGeometry g = SceneLayout::batchGeometry(scene, item);
+            std::size_t vertices = 0, indices = 0;
+            for (std::size_t i : item.objects) {
+                vertices += scene.meshes[std::size_t(scene.objects[i].mesh)].vertices.size();
+                indices += scene.meshes[std::size_t(scene.objects[i].mesh)].indices.size();
+            }
+            QCOMPARE(g.vertices.size(), vertices);
+            QCOMPARE(g.indices.size(), indices);
+            const glm::dvec3 origin(item.model[3]);
+            for (const BatchVertex& v : g.vertices) {
+                const glm::dvec3 world = glm::dvec3(v.position) + origin;
+                QVERIFY(glm::all(glm::lessThanEqual(item.bounds.min - 1e-4, world)) && glm::all(glm::lessThanEqual(world, item.bounds.max + 1e-4)));
+                QVERIFY(std::abs(glm::length(v.normal) - 1.0f) < 1e-4f);
+            }
+            for (std::size_t k = 0; k + 2 < g.indices.size(); k += 3) {
+                const BatchVertex& a = g.vertices[g.indices[k]];
+                const BatchVertex& b = g.vertices[g.indices[k + 1]];
+                const BatchVertex& c = g.vertices[g.indices[k + 2]];
+                const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
+                QVERIFY2(glm::dot(face, a.normal + b.normal + c.normal) > 0.0f, "a batched triangle faces away from its normal");
+            }
+            batched += int(item.objects.size());
+        }
+        QVERIFY2(batched > 50, "the test scene should be batched");
+    }
+
+    // The fit runs when one of its inputs changes and never on a still frame.
+    void fitsOnlyWhenAnInputChanges()
+    {
+        Update u(buildScene(QStringLiteral("seed")));
+        const Settings s = with(QStringLiteral("seed"));
+        QVERIFY(u.frame(s));
+        QCOMPARE(u.update.fitCount(), 1);
+        QVERIFY(!u.frame(s));
+        QVERIFY(!u.frame(s));
+        QCOMPARE(u.update.fitCount(), 1);
+
+        Settings moved = s;
+        moved.camera.position += glm::dvec3(0.5, 0.0, 0.0);
+        QVERIFY(u.frame(moved));
+        QVERIFY(u.frame(moved, QSize(640, 360)));
+        QVERIFY(u.frame(moved, QSize(640, 360), 2));
+        QVERIFY(!u.frame(moved, QSize(640, 360), 2));
+        Settings light = moved;
+        light.light.position.x += 0.25;
+        QVERIFY(u.frame(light, QSize(640, 360), 2));
+        QCOMPARE(u.update.fitCount(), 5);
+    }
+
+    // The light is fitted to the fitting camera while the frame's camera still draws.
+    void fitsToTheFittingCamera()
+    {
+        Update u(buildScene(QStringLiteral("city")));
+        const Settings s = with(QStringLiteral("city"), {"shadow.cascades=4"});
+        u.frame(s);
+        const glm::dvec3 before = u.update.views().set.views.front().fit.volume.origin;
+        CameraSettings away = s.camera;
+        away.position += glm::dvec3(200.0, 0.0, 0.0);
+        away.target += glm::dvec3(200.0, 0.0, 0.0);
+        QVERIFY(u.frame(s, QSize(320, 180), 1, away));
+        const CameraFrame expected = computeCameraFrame(away, 320.0 / 180.0, u.layout.bounds());
+        QCOMPARE(u.update.views().camera.position, expected.position);
+        QCOMPARE(u.update.views().set.views.size(), std::size_t(4));
+        // The nearest cascade moved with the fitting camera.
+        QVERIFY(glm::length(u.update.views().set.views.front().fit.volume.origin - before) > 50.0);
+        QVERIFY(!u.frame(s, QSize(320, 180), 1, away));
+    }
+
+    // The reach follows each fit: one entry per draw item, and none with shadows off.
+    void reachIsKeptWithTheFit_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("seed") << QStringLiteral("seed") << QStringList{};
+        QTest::newRow("seed, front faces culled") << QStringLiteral("seed") << QStringList{QStringLiteral("bias.cull_front=true")};
+        QTest::newRow("seed, spot") << QStringLiteral("seed") << QStringList{QStringLiteral("light.type=spot")};
+        QTest::newRow("seed, point") << QStringLiteral("seed") << QStringList{QStringLiteral("light.type=point")};
+        QTest::newRow("cubes, pcf 7") << QStringLiteral("cubes") << QStringList{QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")};
+        QTest::newRow("city, 3 cascades") << QStringLiteral("city") << QStringList{QStringLiteral("shadow.cascades=3")};
+    }
+    void reachIsKeptWithTheFit()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        Update u(buildScene(scene));
+        Settings s = presetSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(s, a);
+        ensureValid(s);
+        u.frame(s);
+        const ShadowReach& reach = u.update.reach();
+        QCOMPARE(reach.objects.size(), u.layout.drawItems().size());
+        QVERIFY(!reach.boxes.empty());
+        // Something in every built-in scene is shadowed, so some receiver needs a lookup.
+        QVERIFY(std::any_of(reach.objects.begin(), reach.objects.end(), [](Reach r) { return r != Reach::Outside; }));
+        const int generation = reach.generation;
+        u.frame(s);
+        QCOMPARE(u.update.reach().generation, generation);
+        Settings off = s;
+        off.shadow.enabled = false;
+        u.frame(off);
+        QVERIFY(u.update.reach().objects.empty());
+        QCOMPARE(u.update.reach().generation, generation + 1);
+    }
+
+    // A virtual map is one view, its coarsest level, whatever the fit would have made.
+    void virtualMapIsOneView()
+    {
+        Update u(buildScene(QStringLiteral("city")));
+        const Settings s = with(QStringLiteral("city"), {"shadow.virtual=true"});
+        FrameUpdate::FitSources sources;
+        sources.virtualLayout = virtualLayout(s.light, u.layout.bounds(), s.shadow.virtualLevels);
+        u.frame(s, QSize(320, 180), 1, {}, sources);
+        QCOMPARE(u.update.views().set.views.size(), std::size_t(1));
+        QCOMPARE(u.update.views().frames.size(), std::size_t(1));
+        QVERIFY(u.update.fitted().volume == sources.virtualLayout->coarsest);
+        QCOMPARE(u.update.fitted().texelAfter, sources.virtualLayout->finestTexel);
+        QVERIFY(u.update.fitted().anythingToShadow);
+    }
+
+    // The fit's statistics say how a warp went.
+    void describesTheWarp()
+    {
+        Update u(buildScene(QStringLiteral("city")));
+        const Settings s = with(QStringLiteral("city"), {"light.warp=lispsm"});
+        u.frame(s);
+        FrameStats stats;
+        u.update.describe(s, stats);
+        QCOMPARE(stats.warpViews, 1);
+        QVERIFY(stats.warpedViews == 1 || stats.warpDeclined != FrameStats::WarpDeclined::No);
+        QVERIFY(stats.texelWorldSize > 0.0);
+        QVERIFY(stats.lightFitted);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFrameUpdate)
+#include "tst_FrameUpdate.moc"
