@@ -47,6 +47,95 @@ glm::dvec2 concentricDisk(double u, double v)
     return {r * std::cos(phi), r * std::sin(phi)};
 }
 
+// What every row's tracing shares: its inputs, and the buffers the rows fill, each pixel once.
+struct Tracing {
+    const RayTracer& tracer;
+    const VisibilityBuffer& buffer;
+    const LightFrame& light;
+    const ReferenceOptions& options;
+    int n;                          // samples per axis: n * n rays per pixel for the area reference
+    glm::dvec3 u, v;                // the disk light's plane, perpendicular to the light direction
+    std::vector<float>& hard;
+    std::vector<float>& area;
+};
+
+// Outside a spot light's cone: unlit, nothing to trace (both buffers stay 0).
+bool outsideSpotCone(const LightFrame& light, const glm::dvec3& p)
+{
+    if (light.spotCosine >= -1.0) {
+        const glm::dvec3 fromLight = p - light.position;
+        const double length = glm::length(fromLight);
+        return !(length > 0.0) || glm::dot(fromLight / length, light.direction) <= light.spotCosine;
+    }
+    return false;
+}
+
+// The share of n * n stratified points of the disk light that pixel `i`, at `from`, sees;
+// `directions` is room for the rays.
+float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, std::vector<glm::dvec3>& directions)
+{
+    const int n = t.n;
+    const LightFrame& light = t.light;
+    for (int s = 0; s < n * n; ++s) {
+        const std::uint32_t h = hash(std::uint32_t(i) * 9781u + std::uint32_t(s) * 6271u);
+        const double su = (double(s % n) + unitFloat(h)) / n;
+        const double sv = (double(s / n) + unitFloat(hash(h))) / n;
+        const glm::dvec2 d = concentricDisk(su, sv) * t.options.lightRadius;
+        const glm::dvec3 offset = t.u * d.x + t.v * d.y;
+        // A directional light: of the angular size the disk has seen from the target.
+        directions[std::size_t(s)] = light.perspective ? light.position + offset - from : -light.direction * light.targetDistance + offset;
+    }
+    const int unoccluded = n * n - t.tracer.occludedCount(from, directions.data(), n * n, light.perspective ? 1.0 : 1e30);
+    return float(unoccluded) / float(n * n);
+}
+
+// Traces every pixel of row `y` that faces the light; returns the rays it took.
+std::int64_t traceRow(const Tracing& t, int y)
+{
+    const int width = t.buffer.size.width(), n = t.n;
+    const LightFrame& light = t.light;
+    std::int64_t rays = 0;
+    std::vector<glm::dvec3> directions(t.options.area ? std::size_t(n * n) : 0);
+    for (int x = 0; x < width; ++x) {
+        const int i = y * width + x;
+        if (t.buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        const glm::dvec3 p = t.buffer.worldPosition(i);
+        const glm::dvec3 normal = t.buffer.normal(i);
+        // Off the surface by a distance that scales with the coordinates' magnitude relative
+        // to the tracer's origin, so float rounding cannot put the origin behind the surface.
+        const double scale = std::max(1.0, glm::length(p - t.tracer.origin()));
+        const glm::dvec3 from = p + normal * (2e-4 * scale);
+        if (outsideSpotCone(light, p))
+            continue;
+        if (light.perspective)
+            t.hard[std::size_t(i)] = t.tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
+        else
+            t.hard[std::size_t(i)] = t.tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
+        ++rays;
+        if (!t.options.area)
+            continue;
+        t.area[std::size_t(i)] = areaVisibility(t, i, from, directions);
+        rays += n * n;
+    }
+    return rays;
+}
+
+// The mean standard error of the area estimate over the pixels that face the light.
+double areaNoiseFloor(const VisibilityBuffer& buffer, const ReferenceVisibility& result)
+{
+    double sum = 0.0;
+    int counted = 0;
+    for (int i = 0; i < buffer.pixelCount(); ++i) {
+        if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+            continue;
+        const double a = result.area[std::size_t(i)];
+        sum += std::sqrt(a * (1.0 - a) / result.samplesPerPixel);
+        ++counted;
+    }
+    return counted ? sum / counted : 0.0;
+}
+
 } // namespace
 
 ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPerAxis)
@@ -63,7 +152,7 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
 {
     QElapsedTimer timer;
     timer.start();
-    const int width = buffer.size.width(), height = buffer.size.height();
+    const int height = buffer.size.height();
     const int n = std::max(1, options.samplesPerAxis);
     ReferenceVisibility result;
     result.hard.assign(std::size_t(buffer.pixelCount()), 0.0f);
@@ -76,62 +165,18 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
     const glm::dvec3 w = light.direction;
     const glm::dvec3 helper = std::abs(w.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
     const glm::dvec3 u = glm::normalize(glm::cross(helper, w));
-    const glm::dvec3 v = glm::cross(w, u);
+    const Tracing tracing{tracer, buffer, light, options, n, u, glm::cross(w, u), result.hard, result.area};
 
     std::vector<int> rows(static_cast<std::size_t>(height));
     std::iota(rows.begin(), rows.end(), 0);
     std::atomic<std::int64_t> rays{0};
     std::atomic<int> rowsDone{0};
-
-    auto traceRow = [&](int y) {
+    QFuture<void> future = QtConcurrent::map(rows, [&](int y) {
         if (cancel && cancel->load())
             return;
-        std::int64_t rowRays = 0;
-        std::vector<glm::dvec3> directions(options.area ? std::size_t(n * n) : 0);
-        for (int x = 0; x < width; ++x) {
-            const int i = y * width + x;
-            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
-                continue;
-            const glm::dvec3 p = buffer.worldPosition(i);
-            const glm::dvec3 normal = buffer.normal(i);
-            // Off the surface by a distance that scales with the coordinates' magnitude relative
-            // to the tracer's origin, so float rounding cannot put the origin behind the surface.
-            const double scale = std::max(1.0, glm::length(p - tracer.origin()));
-            const glm::dvec3 from = p + normal * (2e-4 * scale);
-            // Outside a spot light's cone: unlit, nothing to trace (both buffers stay 0).
-            if (light.spotCosine >= -1.0) {
-                const glm::dvec3 fromLight = p - light.position;
-                const double length = glm::length(fromLight);
-                if (!(length > 0.0) || glm::dot(fromLight / length, light.direction) <= light.spotCosine)
-                    continue;
-            }
-
-            if (light.perspective)
-                result.hard[std::size_t(i)] = tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
-            else
-                result.hard[std::size_t(i)] = tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
-            ++rowRays;
-
-            if (!options.area)
-                continue;
-            for (int s = 0; s < n * n; ++s) {
-                const std::uint32_t h = hash(std::uint32_t(i) * 9781u + std::uint32_t(s) * 6271u);
-                const double su = (double(s % n) + unitFloat(h)) / n;
-                const double sv = (double(s / n) + unitFloat(hash(h))) / n;
-                const glm::dvec2 d = concentricDisk(su, sv) * options.lightRadius;
-                const glm::dvec3 offset = u * d.x + v * d.y;
-                // A directional light: of the angular size the disk has seen from the target.
-                directions[std::size_t(s)] = light.perspective ? light.position + offset - from : -light.direction * light.targetDistance + offset;
-            }
-            const int unoccluded = n * n - tracer.occludedCount(from, directions.data(), n * n, light.perspective ? 1.0 : 1e30);
-            rowRays += n * n;
-            result.area[std::size_t(i)] = float(unoccluded) / float(n * n);
-        }
-        rays += rowRays;
+        rays += traceRow(tracing, y);
         ++rowsDone;
-    };
-
-    QFuture<void> future = QtConcurrent::map(rows, traceRow);
+    });
     while (!future.isFinished()) {
         if (progress)
             progress(double(rowsDone.load()) / height);
@@ -142,18 +187,8 @@ ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuff
     if (progress && !result.cancelled)
         progress(1.0);
 
-    if (options.area) {
-        double sum = 0.0;
-        int counted = 0;
-        for (int i = 0; i < buffer.pixelCount(); ++i) {
-            if (buffer.mask(i) != VisibilityBuffer::FacingLight)
-                continue;
-            const double a = result.area[std::size_t(i)];
-            sum += std::sqrt(a * (1.0 - a) / result.samplesPerPixel);
-            ++counted;
-        }
-        result.areaNoiseFloor = counted ? sum / counted : 0.0;
-    }
+    if (options.area)
+        result.areaNoiseFloor = areaNoiseFloor(buffer, result);
     result.rays = rays.load();
     result.seconds = double(timer.nsecsElapsed()) * 1e-9;
     return result;

@@ -21,6 +21,8 @@ namespace {
 
 const QSize kSize(192, 108);
 
+using AuditRun = std::function<AuditOutcome(HeadlessRenderer&)>;
+
 Settings seedWith(const QStringList& assignments)
 {
     Settings s = presetSettings(QStringLiteral("seed"));
@@ -88,7 +90,7 @@ enum class Judge {
 };
 
 // Rendered, finite, and within `limit` of the ray-cast reference.
-std::function<AuditOutcome(HeadlessRenderer&)> accurate(Settings settings, double limit, Judge judge = Judge::Pixels)
+AuditRun accurate(Settings settings, double limit, Judge judge = Judge::Pixels)
 {
     return [settings, limit, judge](HeadlessRenderer& h) {
         const Measurement m = measure(h, settings);
@@ -108,7 +110,7 @@ std::function<AuditOutcome(HeadlessRenderer&)> accurate(Settings settings, doubl
 }
 
 // Refused before anything is drawn, with a message naming `key`.
-std::function<AuditOutcome(HeadlessRenderer&)> refused(Settings settings, QString key)
+AuditRun refused(Settings settings, QString key)
 {
     return [settings, key](HeadlessRenderer& h) {
         AuditOutcome o;
@@ -152,7 +154,7 @@ Scene groundAndCube(const QString& name, const glm::dmat4& cube)
 }
 
 // Runs `body` with `scene` in place of the preset.
-std::function<AuditOutcome(HeadlessRenderer&)> onScene(Scene scene, std::function<AuditOutcome(HeadlessRenderer&)> body)
+AuditRun onScene(Scene scene, AuditRun body)
 {
     return [scene, body](HeadlessRenderer& h) {
         h.renderer().setScene(scene);
@@ -203,73 +205,90 @@ Scene degenerateTriangleScene()
     return s;
 }
 
-std::vector<AuditCase> makeCatalogue()
+// The catalogue as it is built: each group below appends its cases, in the order the audit
+// prints them.
+struct CaseList {
+    std::vector<AuditCase> cases;
+    void add(const QString& name, const QString& expected, AuditRun run) { cases.push_back({name, expected, std::move(run)}); }
+};
+
+// The light straight above, straight below and grazing the ground plane.
+void addLightPlacements(CaseList& c)
 {
-    std::vector<AuditCase> c;
-    const auto add = [&c](const char* name, const char* expected, std::function<AuditOutcome(HeadlessRenderer&)> run) {
-        c.push_back({QString::fromUtf8(name), QString::fromUtf8(expected), std::move(run)});
-    };
+    c.add("light straight above", "finite orthonormal frame (up vector parallel); error <= 2 %",
+          accurate(seedWith({"light.position=0,6,0", "light.far=10"}), 0.02));
+    c.add("light straight below", "finite frame; the ground shadows what faces the light; error <= 2 %",
+          accurate(seedWith({"light.position=0,-6,0", "light.far=10"}), 0.02));
+    c.add("light grazing the plane (N.L = 1e-3)",
+          "bounded bias, finite; the plane (direct light 1e-3) may go dark, the N.L-weighted error <= 2 %",
+          accurate(seedWith({"light.position=10,-0.49,0", "light.target=0,-0.5,0", "light.near=0.5", "light.far=30"}), 0.02, Judge::Light));
+    c.add("N.L = 0 exactly", "the plane counts as facing away (unlit), the rest finite; error <= 5 %",
+          accurate(seedWith({"light.position=10,-0.5,0", "light.target=0,-0.5,0", "light.near=0.5", "light.far=30"}), 0.05));
+}
 
-    add("light straight above", "finite orthonormal frame (up vector parallel); error <= 2 %",
-        accurate(seedWith({"light.position=0,6,0", "light.far=10"}), 0.02));
-    add("light straight below", "finite frame; the ground shadows what faces the light; error <= 2 %",
-        accurate(seedWith({"light.position=0,-6,0", "light.far=10"}), 0.02));
-    add("light grazing the plane (N.L = 1e-3)",
-        "bounded bias, finite; the plane (direct light 1e-3) may go dark, the N.L-weighted error <= 2 %",
-        accurate(seedWith({"light.position=10,-0.49,0", "light.target=0,-0.5,0", "light.near=0.5", "light.far=30"}), 0.02, Judge::Light));
-    add("N.L = 0 exactly", "the plane counts as facing away (unlit), the rest finite; error <= 5 %",
-        accurate(seedWith({"light.position=10,-0.5,0", "light.target=0,-0.5,0", "light.near=0.5", "light.far=30"}), 0.05));
-
+// A perspective light's depth over eight decades: warned of in depth24, exact with reversed Z.
+void addDepthPrecision(CaseList& c)
+{
     const QStringList wideRange{"light.projection=perspective", "light.fit=manual", "light.near=0.001", "light.far=100000",
                                 "bias.slope=0", "bias.min=0", "bias.normal=1.5"};
-    add("perspective near/far 1e-3/1e5, depth24", "renders with a precision warning naming light.near; finite",
-        [s = seedWith(wideRange)](HeadlessRenderer& h) {
-            AuditOutcome o = accurate(s, 1.0)(h);
-            const auto issues = validate(s);
-            const bool warned = !issues.empty() && issues.front().severity == SettingsIssue::Severity::Warning
-                                && issues.front().key == u"light.near";
-            o.pass = o.pass && warned;
-            o.happened += warned ? QStringLiteral("; warned") : QStringLiteral("; NO WARNING");
-            return o;
-        });
-    add("perspective near/far 1e-3/1e5, depth32f + reversed Z", "no warning, reversed depth in use; error <= 3 %",
-        [s = seedWith(wideRange + QStringList{"map.format=depth32f"})](HeadlessRenderer& h) {
-            AuditOutcome o = accurate(s, 0.03)(h);
-            const bool reversed = h.renderer().lastFrame().reversedDepth;
-            o.pass = o.pass && validate(s).empty() && (reversed || !h.renderer().supportsReversedDepth());
-            o.happened += reversed ? QStringLiteral("; reversed Z") : QStringLiteral("; conventional Z (no clip control)");
-            return o;
-        });
-    // Light types and cascades at their extremes.
-    add("point light inside a caster", "every receiver it could light is behind the cube's walls; finite; error <= 1 %",
-        accurate(seedWith({"light.type=point", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
-    add("spot light inside a caster", "unlit everywhere; finite; error <= 1 %",
-        accurate(seedWith({"light.type=spot", "light.fov=120", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
-    add("point light on a receiver", "the ground it rests on is lit edge-on (N.L = 0); finite",
-        accurate(seedWith({"light.type=point", "light.position=0.8,-0.5,0.4", "light.target=0,-1,0"}), 1.0, Judge::FiniteOnly));
-    add("point light on a cube-face seam", "a direction exactly between two faces picks one; error <= 2 %",
-        accurate(seedWith({"light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
-    add("cascade splits at shadow distance 1e5", "four finite slices up to the camera's far plane; error <= 2 %",
-        accurate(seedWith({"shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
-    add("evsm4 on cascades at shadow distance 1e5", "one moments tile per cascade, blurred within it; finite; error <= 2 %",
-        accurate(seedWith({"filter.mode=evsm4", "shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
-    add("msm on a point light on a cube-face seam", "a moments tile per face; finite; error <= 2 %",
-        accurate(seedWith({"filter.mode=msm", "light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
-    add("moment mipmaps over several views", "refused, naming moments.mipmaps",
-        refused(seedWith({"filter.mode=vsm", "moments.mipmaps=true", "shadow.cascades=3"}), "moments.mipmaps"));
-    add("cascades on a spot light", "refused, naming shadow.cascades",
-        refused(seedWith({"light.type=spot", "shadow.cascades=4"}), "shadow.cascades"));
-    add("perspective near = 0", "refused, naming light.near", refused(seedWith({"light.projection=perspective", "light.near=0"}), "light.near"));
-    add("ortho near = 0", "valid for a directional light: renders; error <= 2 %", accurate(seedWith({"light.near=0"}), 0.02));
-    add("near = far", "refused, naming light.far", refused(seedWith({"light.near=5", "light.far=5"}), "light.far"));
-    add("near > far", "refused, naming light.far", refused(seedWith({"light.near=9", "light.far=5"}), "light.far"));
-    add("light at its target", "refused, naming light.position", refused(seedWith({"light.position=0,0,0"}), "light.position"));
-    add("fov 180", "refused, naming light.fov", [](HeadlessRenderer& h) {
+    c.add("perspective near/far 1e-3/1e5, depth24", "renders with a precision warning naming light.near; finite",
+          [s = seedWith(wideRange)](HeadlessRenderer& h) {
+              AuditOutcome o = accurate(s, 1.0)(h);
+              const auto issues = validate(s);
+              const bool warned = !issues.empty() && issues.front().severity == SettingsIssue::Severity::Warning
+                                  && issues.front().key == u"light.near";
+              o.pass = o.pass && warned;
+              o.happened += warned ? QStringLiteral("; warned") : QStringLiteral("; NO WARNING");
+              return o;
+          });
+    c.add("perspective near/far 1e-3/1e5, depth32f + reversed Z", "no warning, reversed depth in use; error <= 3 %",
+          [s = seedWith(wideRange + QStringList{"map.format=depth32f"})](HeadlessRenderer& h) {
+              AuditOutcome o = accurate(s, 0.03)(h);
+              const bool reversed = h.renderer().lastFrame().reversedDepth;
+              o.pass = o.pass && validate(s).empty() && (reversed || !h.renderer().supportsReversedDepth());
+              o.happened += reversed ? QStringLiteral("; reversed Z") : QStringLiteral("; conventional Z (no clip control)");
+              return o;
+          });
+}
+
+// Light types and cascades at their extremes.
+void addLightTypes(CaseList& c)
+{
+    c.add("point light inside a caster", "every receiver it could light is behind the cube's walls; finite; error <= 1 %",
+          accurate(seedWith({"light.type=point", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
+    c.add("spot light inside a caster", "unlit everywhere; finite; error <= 1 %",
+          accurate(seedWith({"light.type=spot", "light.fov=120", "light.position=0.05,1.5,-0.03", "light.target=0,0,0"}), 0.01));
+    c.add("point light on a receiver", "the ground it rests on is lit edge-on (N.L = 0); finite",
+          accurate(seedWith({"light.type=point", "light.position=0.8,-0.5,0.4", "light.target=0,-1,0"}), 1.0, Judge::FiniteOnly));
+    c.add("point light on a cube-face seam", "a direction exactly between two faces picks one; error <= 2 %",
+          accurate(seedWith({"light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
+    c.add("cascade splits at shadow distance 1e5", "four finite slices up to the camera's far plane; error <= 2 %",
+          accurate(seedWith({"shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
+    c.add("evsm4 on cascades at shadow distance 1e5", "one moments tile per cascade, blurred within it; finite; error <= 2 %",
+          accurate(seedWith({"filter.mode=evsm4", "shadow.cascades=4", "shadow.distance=100000", "shadow.split=logarithmic"}), 0.02));
+    c.add("msm on a point light on a cube-face seam", "a moments tile per face; finite; error <= 2 %",
+          accurate(seedWith({"filter.mode=msm", "light.type=point", "light.position=0,2.5,0", "light.target=0,0,0"}), 0.02));
+}
+
+// Settings no frame can be drawn with, refused with the key to change; beside them, ortho
+// near = 0, which is valid.
+void addRefusedSettings(CaseList& c)
+{
+    c.add("moment mipmaps over several views", "refused, naming moments.mipmaps",
+          refused(seedWith({"filter.mode=vsm", "moments.mipmaps=true", "shadow.cascades=3"}), "moments.mipmaps"));
+    c.add("cascades on a spot light", "refused, naming shadow.cascades",
+          refused(seedWith({"light.type=spot", "shadow.cascades=4"}), "shadow.cascades"));
+    c.add("perspective near = 0", "refused, naming light.near", refused(seedWith({"light.projection=perspective", "light.near=0"}), "light.near"));
+    c.add("ortho near = 0", "valid for a directional light: renders; error <= 2 %", accurate(seedWith({"light.near=0"}), 0.02));
+    c.add("near = far", "refused, naming light.far", refused(seedWith({"light.near=5", "light.far=5"}), "light.far"));
+    c.add("near > far", "refused, naming light.far", refused(seedWith({"light.near=9", "light.far=5"}), "light.far"));
+    c.add("light at its target", "refused, naming light.position", refused(seedWith({"light.position=0,0,0"}), "light.position"));
+    c.add("fov 180", "refused, naming light.fov", [](HeadlessRenderer& h) {
         Settings s = seedWith({"light.projection=perspective"});
         s.light.fov = 180.0;
         return refused(s, "light.fov")(h);
     });
-    add("NaN in a setting", "refused, naming the key (struct field and --set alike)", [](HeadlessRenderer& h) {
+    c.add("NaN in a setting", "refused, naming the key (struct field and --set alike)", [](HeadlessRenderer& h) {
         Settings s = presetSettings(QStringLiteral("seed"));
         s.light.extent = std::nan("");
         AuditOutcome o = refused(s, "light.extent")(h);
@@ -281,26 +300,31 @@ std::vector<AuditCase> makeCatalogue()
         }
         return o;
     });
-    add("PCF kernel 4 (even)", "refused, naming filter.kernel", [](HeadlessRenderer& h) {
+    c.add("PCF kernel 4 (even)", "refused, naming filter.kernel", [](HeadlessRenderer& h) {
         Settings s = seedWith({"filter.mode=pcf"});
         s.filter.kernel = 4;
         return refused(s, "filter.kernel")(h);
     });
-    add("map size 8", "refused, naming map.size", [](HeadlessRenderer& h) {
+}
+
+// The shadow map from too small to the driver's largest.
+void addMapSizes(CaseList& c)
+{
+    c.add("map size 8", "refused, naming map.size", [](HeadlessRenderer& h) {
         Settings s = presetSettings(QStringLiteral("seed"));
         s.map.size = 8;
         return refused(s, "map.size")(h);
     });
-    add("map size above the driver maximum", "refused, naming map.size and the driver's limit", [](HeadlessRenderer& h) {
+    c.add("map size above the driver maximum", "refused, naming map.size and the driver's limit", [](HeadlessRenderer& h) {
         Settings s = presetSettings(QStringLiteral("seed"));
         s.map.size = std::min(h.renderer().maxTextureSize() * 2, kMaxImageSide);
         if (s.map.size <= h.renderer().maxTextureSize())
             return AuditOutcome{true, true, std::nullopt, QStringLiteral("the driver allows every size the key allows")};
         return refused(s, "map.size")(h);
     });
-    add("map size 16", "blocky but finite (error reported, not judged: 16 texels cannot resolve the scene)",
-        accurate(seedWith({"map.size=16"}), 0.0, Judge::FiniteOnly));
-    add("map size at the driver maximum", "allocates and renders, or fails with a clear message; finite", [](HeadlessRenderer& h) {
+    c.add("map size 16", "blocky but finite (error reported, not judged: 16 texels cannot resolve the scene)",
+          accurate(seedWith({"map.size=16"}), 0.0, Judge::FiniteOnly));
+    c.add("map size at the driver maximum", "allocates and renders, or fails with a clear message; finite", [](HeadlessRenderer& h) {
         const int size = std::min(h.renderer().maxTextureSize(), kMaxImageSide);
         Settings s = seedWith({QStringLiteral("map.size=%1").arg(size)});
         try {
@@ -311,85 +335,111 @@ std::vector<AuditCase> makeCatalogue()
             return AuditOutcome{true, true, std::nullopt, QStringLiteral("%1 x %1 refused: %2").arg(size).arg(QString::fromStdString(e.what()))};
         }
     });
-    // Every filter of the technique table, in each variation a sweep tries.
+}
+
+// Every filter of the technique table, in each variation a sweep tries.
+void addFilters(CaseList& c)
+{
     for (const ShadowTechnique& technique : shadowTechniques()) {
         for (const TechniqueVariation& variation : technique.sweep)
-            c.push_back({QStringLiteral("filter %1 on seed").arg(variation.label), QStringLiteral("renders; finite; error <= 1 %"),
-                         accurate(seedWith(variation.assignments), 0.01)});
+            c.add(QStringLiteral("filter %1 on seed").arg(variation.label), QStringLiteral("renders; finite; error <= 1 %"),
+                  accurate(seedWith(variation.assignments), 0.01));
     }
-    add("PCF kernel 1 equals hard", "identical images", [](HeadlessRenderer& h) {
+    c.add("PCF kernel 1 equals hard", "identical images", [](HeadlessRenderer& h) {
         const QImage hard = h.renderScene(seedWith({"filter.mode=hard"}), kSize);
         const QImage pcf = h.renderScene(seedWith({"filter.mode=pcf", "filter.kernel=1"}), kSize);
         const bool same = hard == pcf;
         return AuditOutcome{same, true, std::nullopt, same ? QStringLiteral("identical") : QStringLiteral("images differ")};
     });
-    add("1 x 1 viewport", "one finite pixel", [](HeadlessRenderer& h) {
+}
+
+// Viewports of one pixel and of none.
+void addViewports(CaseList& c)
+{
+    c.add("1 x 1 viewport", "one finite pixel", [](HeadlessRenderer& h) {
         const QImage image = h.renderScene(presetSettings(QStringLiteral("seed")), QSize(1, 1));
         const bool ok = image.size() == QSize(1, 1) && isFinite(h.renderer().cameraFrame().viewProjection);
         return AuditOutcome{ok, ok, std::nullopt, QStringLiteral("%1 x %2 image").arg(image.width()).arg(image.height())};
     });
-    add("0 x 0 viewport", "nothing drawn, no error", [](HeadlessRenderer& h) {
+    c.add("0 x 0 viewport", "nothing drawn, no error", [](HeadlessRenderer& h) {
         h.makeCurrent();
         const int passes = h.renderer().shadowPassCount();
         h.renderer().render(presetSettings(QStringLiteral("seed")), RenderTarget{0, QSize(0, 0)});
         const bool ok = h.renderer().shadowPassCount() == passes;
         return AuditOutcome{ok, true, std::nullopt, ok ? QStringLiteral("returned without drawing") : QStringLiteral("drew")};
     });
+}
+
+// Scenes far from the origin, empty, touching, and smaller than a texel.
+void addSceneExtremes(CaseList& c)
+{
     for (const double offset : {1e5, 1e6}) {
         const glm::dvec3 shift(offset, 0.5 * offset, -offset);
         const QByteArray name = QByteArray("scene and camera offset by ") + (offset == 1e5 ? "1e5" : "1e6");
-        c.push_back({QString::fromLatin1(name), QStringLiteral("as accurate as at the origin: error <= 2 %"),
-                     onScene(withOffset(buildScene(QStringLiteral("seed")), shift),
-                             accurate(offsetSettings(presetSettings(QStringLiteral("seed")), shift), 0.02))});
+        c.add(QString::fromLatin1(name), QStringLiteral("as accurate as at the origin: error <= 2 %"),
+              onScene(withOffset(buildScene(QStringLiteral("seed")), shift),
+                      accurate(offsetSettings(presetSettings(QStringLiteral("seed")), shift), 0.02)));
     }
-    add("empty scene", "no shadow pass, no draws, background only", onScene([] { Scene s; s.name = QStringLiteral("empty"); return s; }(), [](HeadlessRenderer& h) {
+    c.add("empty scene", "no shadow pass, no draws, background only", onScene([] { Scene s; s.name = QStringLiteral("empty"); return s; }(), [](HeadlessRenderer& h) {
         const int passes = h.renderer().shadowPassCount();
         h.renderFrame(presetSettings(QStringLiteral("seed")), kSize);
         const FrameStats& f = h.renderer().lastFrame();
         const bool ok = h.renderer().shadowPassCount() == passes && f.shadowDraws == 0 && f.litDraws == 0;
         return AuditOutcome{ok, true, std::nullopt, QStringLiteral("%1 shadow draws, %2 lit draws").arg(f.shadowDraws).arg(f.litDraws)};
     }));
-    add("caster touching its receiver", "shadow starts within one texel of the contact; no leak before it",
-        onScene(groundAndCube(QStringLiteral("contact"), glm::scale(glm::dmat4(1.0), glm::dvec3(0.5))), contactShadow));
-    add("sub-texel occluder", "at most a speck, nothing spurious elsewhere; error <= 1 %",
-        onScene(groundAndCube(QStringLiteral("speck"), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
-                accurate(presetSettings(QStringLiteral("seed")), 0.01)));
-    // The moment techniques' own extremes, in both moments formats: depth squeezed into a sliver
-    // of a huge range (the moments lose their precision), a caster touching its receiver (where
-    // filtered moments leak by design) and an occluder smaller than a texel. Each must stay finite.
+    c.add("caster touching its receiver", "shadow starts within one texel of the contact; no leak before it",
+          onScene(groundAndCube(QStringLiteral("contact"), glm::scale(glm::dmat4(1.0), glm::dvec3(0.5))), contactShadow));
+    c.add("sub-texel occluder", "at most a speck, nothing spurious elsewhere; error <= 1 %",
+          onScene(groundAndCube(QStringLiteral("speck"), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
+                  accurate(presetSettings(QStringLiteral("seed")), 0.01)));
+}
+
+// The moment techniques' own extremes, in both moments formats: depth squeezed into a sliver
+// of a huge range (the moments lose their precision), a caster touching its receiver (where
+// filtered moments leak by design) and an occluder smaller than a texel. Each must stay finite.
+void addMomentExtremes(CaseList& c)
+{
     for (const ShadowTechnique& technique : shadowTechniques()) {
         if (!isMomentTechnique(technique.mode))
             continue;
         for (const char* bits : {"32", "16"}) {
             const QStringList mode{QStringLiteral("filter.mode=") + technique.key, QStringLiteral("moments.format=%1").arg(QLatin1String(bits))};
             const QString name = QStringLiteral("%1 %2-bit").arg(technique.key, QLatin1String(bits));
-            c.push_back({name + QStringLiteral(": huge depth range (manual ortho volume, near -1e6, far 1e6)"),
-                         QStringLiteral("finite; error reported"),
-                         accurate(seedWith(mode + QStringList{"light.fit=manual", "light.near=-1e6", "light.far=1e6"}), 0.0, Judge::FiniteOnly)});
-            c.push_back({name + QStringLiteral(": perspective light, far/near 1e7"), QStringLiteral("finite; error reported"),
-                         accurate(seedWith(mode + QStringList{"light.projection=perspective", "light.fit=manual", "light.near=0.001", "light.far=1e4"}),
-                                  0.0, Judge::FiniteOnly)});
-            c.push_back({name + QStringLiteral(": caster touching its receiver"), QStringLiteral("finite; error reported (filtered moments leak at contacts)"),
-                         onScene(groundAndCube(QStringLiteral("contact"), glm::scale(glm::dmat4(1.0), glm::dvec3(0.5))),
-                                 accurate(seedWith(mode + QStringList{"light.position=-4,4,0", "light.target=0,-0.5,0", "camera.position=0,4,1.5",
-                                                                      "camera.target=0,-0.5,0"}),
-                                          0.0, Judge::FiniteOnly))});
-            c.push_back({name + QStringLiteral(": sub-texel occluder"), QStringLiteral("finite; error <= 1 %"),
-                         onScene(groundAndCube(QStringLiteral("speck"),
-                                               glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
-                                 accurate(seedWith(mode), 0.01))});
+            c.add(name + QStringLiteral(": huge depth range (manual ortho volume, near -1e6, far 1e6)"), QStringLiteral("finite; error reported"),
+                  accurate(seedWith(mode + QStringList{"light.fit=manual", "light.near=-1e6", "light.far=1e6"}), 0.0, Judge::FiniteOnly));
+            c.add(name + QStringLiteral(": perspective light, far/near 1e7"), QStringLiteral("finite; error reported"),
+                  accurate(seedWith(mode + QStringList{"light.projection=perspective", "light.fit=manual", "light.near=0.001", "light.far=1e4"}),
+                           0.0, Judge::FiniteOnly));
+            c.add(name + QStringLiteral(": caster touching its receiver"), QStringLiteral("finite; error reported (filtered moments leak at contacts)"),
+                  onScene(groundAndCube(QStringLiteral("contact"), glm::scale(glm::dmat4(1.0), glm::dvec3(0.5))),
+                          accurate(seedWith(mode + QStringList{"light.position=-4,4,0", "light.target=0,-0.5,0", "camera.position=0,4,1.5",
+                                                               "camera.target=0,-0.5,0"}),
+                                   0.0, Judge::FiniteOnly)));
+            c.add(name + QStringLiteral(": sub-texel occluder"), QStringLiteral("finite; error <= 1 %"),
+                  onScene(groundAndCube(QStringLiteral("speck"), glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0)), glm::dvec3(1e-3))),
+                          accurate(seedWith(mode), 0.01)));
         }
     }
-    add("degenerate (zero-area) triangle in a mesh", "ignored: finite; error <= 2 %",
-        onScene(degenerateTriangleScene(), accurate(presetSettings(QStringLiteral("seed")), 0.02)));
-    add("cut-out with nothing left (base alpha 0)", "neither seen nor cast, in the map and the reference alike; finite; error <= 2 %",
-        onScene([] {
-            Scene s = groundAndCube(QStringLiteral("vanished cube"), glm::dmat4(1.0));
-            s.objects[1].alphaCutoff = 0.5f;
-            s.objects[1].baseAlpha = 0.0f;
-            return s;
-        }(), accurate(seedWith({QStringLiteral("light.position=-4,4,0"), QStringLiteral("light.target=0,-0.5,0")}), 0.02)));
-    add("fit = scene on seed", "smaller texels than the classic +-10 volume, error no worse (+0.5 %)", [](HeadlessRenderer& h) {
+}
+
+// Geometry that draws nothing: a zero-area triangle, a cut-out with nothing left.
+void addDegenerateGeometry(CaseList& c)
+{
+    c.add("degenerate (zero-area) triangle in a mesh", "ignored: finite; error <= 2 %",
+          onScene(degenerateTriangleScene(), accurate(presetSettings(QStringLiteral("seed")), 0.02)));
+    c.add("cut-out with nothing left (base alpha 0)", "neither seen nor cast, in the map and the reference alike; finite; error <= 2 %",
+          onScene([] {
+              Scene s = groundAndCube(QStringLiteral("vanished cube"), glm::dmat4(1.0));
+              s.objects[1].alphaCutoff = 0.5f;
+              s.objects[1].baseAlpha = 0.0f;
+              return s;
+          }(), accurate(seedWith({QStringLiteral("light.position=-4,4,0"), QStringLiteral("light.target=0,-0.5,0")}), 0.02)));
+}
+
+// What fitting the light volume to the scene buys, and what a volume leaves out.
+void addFitting(CaseList& c)
+{
+    c.add("fit = scene on seed", "smaller texels than the classic +-10 volume, error no worse (+0.5 %)", [](HeadlessRenderer& h) {
         const Measurement manual = measure(h, seedWith({"light.fit=manual"}));
         const double manualTexel = h.renderer().lastFrame().texelWorldSize;
         const Measurement fitted = measure(h, presetSettings(QStringLiteral("seed")));
@@ -402,12 +452,12 @@ std::vector<AuditCase> makeCatalogue()
                          .arg(manualTexel, 0, 'g', 3).arg(fittedTexel, 0, 'g', 3).arg(percent(manual.error()), percent(fitted.error()));
         return o;
     });
-    add("casters outside the light volume", "not drawn in the depth pass", [](HeadlessRenderer& h) {
+    c.add("casters outside the light volume", "not drawn in the depth pass", [](HeadlessRenderer& h) {
         const Settings s = [] {
-            Settings c = presetSettings(QStringLiteral("cubes"));
-            applyAssignment(c, QStringLiteral("light.fit=manual"));
-            applyAssignment(c, QStringLiteral("light.extent=1.5"));
-            return c;
+            Settings cubes = presetSettings(QStringLiteral("cubes"));
+            applyAssignment(cubes, QStringLiteral("light.fit=manual"));
+            applyAssignment(cubes, QStringLiteral("light.extent=1.5"));
+            return cubes;
         }();
         h.renderer().invalidateShadowMap();
         h.renderFrame(s, kSize);
@@ -415,7 +465,23 @@ std::vector<AuditCase> makeCatalogue()
         const int casters = int(h.renderer().scene()->objects.size());
         return AuditOutcome{draws < casters, true, std::nullopt, QStringLiteral("%1 of %2 casters drawn").arg(draws).arg(casters)};
     });
-    return c;
+}
+
+std::vector<AuditCase> makeCatalogue()
+{
+    CaseList c;
+    addLightPlacements(c);
+    addDepthPrecision(c);
+    addLightTypes(c);
+    addRefusedSettings(c);
+    addMapSizes(c);
+    addFilters(c);
+    addViewports(c);
+    addSceneExtremes(c);
+    addMomentExtremes(c);
+    addDegenerateGeometry(c);
+    addFitting(c);
+    return std::move(c.cases);
 }
 
 } // namespace

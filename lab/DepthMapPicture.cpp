@@ -189,6 +189,189 @@ int DepthMapPicture::depthDecimals(double a, double b)
     return apart > 0.0 && std::isfinite(apart) ? std::clamp(int(std::ceil(-std::log10(apart))) + 1, 4, 9) : 4;
 }
 
+namespace {
+
+// What the steps of DepthMapPicture::paint() draw with: the painter, the label font's metrics
+// and the map's area.
+struct Canvas {
+    QPainter& painter;
+    const QFontMetrics& metrics;
+    QRect area;
+};
+
+// What the light volume's label says, longest first: its kind and size, and the map's texels.
+QStringList volumeTexts(const DepthMapFacts& facts)
+{
+    const LightVolume& v = facts.light.volume;
+    const QString size = v.perspective ? QStringLiteral("%1° × %2°")
+                                             .arg(glm::degrees(std::atan(v.right) - std::atan(v.left)), 0, 'f', 0)
+                                             .arg(glm::degrees(std::atan(v.top) - std::atan(v.bottom)), 0, 'f', 0)
+                                       : QStringLiteral("%1 × %2 wu%3").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2)
+                                             .arg(v.warped ? QStringLiteral(", lispsm-warped") : QString());
+    const QString kind = facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual");
+    const QString volumeText = facts.views > 1
+        ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
+        : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(kind, size).arg(facts.mapSize);
+    return {volumeText, QStringLiteral("%1 light volume %2").arg(kind, size), size};
+}
+
+// The light volume: the map's border, dashed, and its label in the top corner.
+void drawVolume(const Canvas& c, const QRectF& border, const DepthMapFacts& facts)
+{
+    QPainter& painter = c.painter;
+    const QFontMetrics& metrics = c.metrics;
+    painter.setPen(QPen(kVolumeColour, 1.0, Qt::DashLine));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(border);
+    // On a dark plate, so it reads over the map's brightest depths and never runs past the pane.
+    const int labelRoom = std::max(0, c.area.width() - 16);
+    const QString volumeShown = fitting(metrics, volumeTexts(facts), labelRoom);
+    const QPointF volumeLabel(std::max(border.left(), double(c.area.left())) + 6, std::max(border.top(), double(c.area.top())) + 6 + metrics.ascent());
+    const double volumeX = std::min(volumeLabel.x(), double(c.area.right()) - 6 - metrics.horizontalAdvance(volumeShown));
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 150));
+    painter.drawRoundedRect(QRectF(volumeX - 3, volumeLabel.y() - metrics.ascent() - 2, metrics.horizontalAdvance(volumeShown) + 6, metrics.height() + 3), 3, 3);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(kVolumeColour);
+    painter.drawText(QPointF(volumeX, volumeLabel.y()), volumeShown);
+}
+
+// Where the footprint `polygon` (pixels) leaves `frame`: an arrowhead on the edge, pointing the way out.
+void drawExitArrows(QPainter& painter, const QPolygonF& polygon, const QRectF& frame)
+{
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(kFootprintColour);
+    for (qsizetype i = 0; i < polygon.size(); ++i) {
+        const QPointF a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+        if (frame.contains(a) == frame.contains(b))
+            continue;
+        const QPointF in = frame.contains(a) ? a : b, out = frame.contains(a) ? b : a;
+        const QPointF tip = exitPoint(in, out, frame);
+        QPointF dir = out - in;
+        dir /= std::max(1e-9, std::hypot(dir.x(), dir.y()));
+        const QPointF side(-dir.y(), dir.x());
+        painter.drawPolygon(QPolygonF{tip, tip - dir * 10.0 + side * 5.0, tip - dir * 10.0 - side * 5.0});
+    }
+    painter.setBrush(Qt::NoBrush);
+}
+
+// The footprint's label at the polygon's lowest point on screen, kept inside the pane; `cut`
+// when the footprint goes on beyond the picture.
+void drawFootprintLabel(const Canvas& c, const QPolygonF& polygon, bool cut)
+{
+    const QFontMetrics& metrics = c.metrics;
+    const QRect& area = c.area;
+    const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
+    // The longest that fits: a narrow pane (compare mode) still reads what it is.
+    const QString text = cut ? fitting(metrics, {QStringLiteral("what the camera sees (it goes on beyond the frame)"),
+                                                 QStringLiteral("what the camera sees (and beyond)"), QStringLiteral("what the camera sees")},
+                                       std::max(0, area.width() - 8))
+                             : fitting(metrics, {QStringLiteral("what the camera sees")}, std::max(0, area.width() - 8));
+    const double width = metrics.horizontalAdvance(text);
+    const double x = std::max(double(area.left() + 4), std::min(anchor.x() - width / 2.0, double(area.right() - 4) - width));
+    const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
+    c.painter.setPen(QColor(0, 0, 0, 160));
+    c.painter.drawText(QPointF(x + 1, y + 1), text);
+    c.painter.setPen(kFootprintColour);
+    c.painter.drawText(QPointF(x, y), text);
+}
+
+// The camera's visible region over the map, where it has one.
+void drawFootprint(const Canvas& c, const DepthMapPicture& picture, const DepthMapFacts& facts, const QRectF& visible)
+{
+    if (facts.footprint.size() < 3)
+        return;
+    QPolygonF polygon;
+    bool cut = false;
+    for (const glm::dvec2& p : facts.footprint) {
+        polygon << picture.toPixel({p.x, p.y}, visible);
+        cut = cut || !visible.contains(QPointF(p.x, p.y));
+    }
+    c.painter.setPen(QPen(kFootprintColour, 2.0));
+    c.painter.drawPolygon(polygon);
+    drawExitArrows(c.painter, polygon, QRectF(c.area).adjusted(1, 1, -1, -1));
+    drawFootprintLabel(c, polygon, cut);
+}
+
+// Where the picture shows beyond the map: lit, as clamp-to-border makes it. Said in the top
+// corner when it lies outside the map (the camera's label takes the bottom).
+void drawOutsideNote(const Canvas& c, const DepthMapPicture& picture, const QRectF& visible)
+{
+    const QString outside = QStringLiteral("outside the map: lit");
+    const QRectF outsideBox(c.area.left() + 4, c.area.top() + 4, c.metrics.horizontalAdvance(outside), c.metrics.height());
+    const QRectF outsideMap(picture.toMap(outsideBox.bottomLeft(), visible), picture.toMap(outsideBox.topRight(), visible));
+    if (!outsideMap.intersects(QRectF(0.0, 0.0, 1.0, 1.0))) {
+        c.painter.setPen(QColor(150, 156, 170));
+        c.painter.drawText(outsideBox, Qt::AlignLeft | Qt::AlignVCenter, outside);
+    }
+}
+
+// What the colour bar shows, longest first.
+QStringList legendTitles(const DepthMapFacts& facts)
+{
+    if (facts.moment == 1)
+        return {QStringLiteral("moments map, first moment: depth from near (black) to far (white)"),
+                QStringLiteral("first moment: depth, near to far"), QStringLiteral("first moment")};
+    if (facts.moment > 1)
+        return {QStringLiteral("moments map, moment %1 (grey, 0 to 1)").arg(facts.moment), QStringLiteral("moment %1 (0 to 1)").arg(facts.moment)};
+    if (facts.span)
+        return {QStringLiteral("depth from the light · stretched to the map's contents"), QStringLiteral("depth from the light, stretched"),
+                QStringLiteral("depth")};
+    return {QStringLiteral("nothing drawn into the map"), QStringLiteral("empty map")};
+}
+
+// The legend's first row: its title, and the swatch of an empty texel with its words, each
+// shortened to what the pane's width leaves them.
+void drawLegendTitle(const Canvas& c, const QRect& legend, const DepthMapFacts& facts)
+{
+    QPainter& painter = c.painter;
+    const QFontMetrics& metrics = c.metrics;
+    const int titleBaseline = legend.top() + 6 + metrics.ascent();
+    const int width = std::max(0, legend.width() - 2 * kMargin);
+    const QString empty = fitting(metrics, {QStringLiteral("empty: far plane, lit"), QStringLiteral("empty: lit")}, width / 3);
+    const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(empty) - 18, legend.top() + 6, 14, metrics.height() - 2);
+    painter.setPen(kTextColour);
+    const int titleRoom = swatch.left() - kMargin - 6;
+    painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, titleRoom, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                     fitting(metrics, legendTitles(facts), titleRoom));
+    painter.fillRect(swatch, QColor(77, 77, 77));
+    painter.fillRect(swatch, QBrush(QColor(90, 90, 90), Qt::BDiagPattern));
+    painter.drawText(QPointF(swatch.right() + 5, titleBaseline), empty);
+}
+
+// The colour bar's frame (its ramp is GL's; a moments map's grey is drawn here) and near and far
+// under its ends.
+void drawLegendBar(const Canvas& c, const QRect& bar, const DepthMapFacts& facts)
+{
+    QPainter& painter = c.painter;
+    const QFontMetrics& metrics = c.metrics;
+    if (facts.moment > 0) {
+        // A moments map is drawn in grey over the light volume's whole depth range: the bar
+        // says so instead of the depth ramp.
+        QLinearGradient grey(bar.topLeft(), bar.topRight());
+        grey.setColorAt(0.0, Qt::black);
+        grey.setColorAt(1.0, Qt::white);
+        painter.fillRect(bar, grey);
+    }
+    painter.setPen(QPen(kTextColour, 1.0));
+    painter.drawRect(QRectF(bar).adjusted(-0.5, -0.5, 0.5, 0.5));
+    const DepthSpan span = facts.moment > 0 ? DepthSpan{0.0, 1.0} : facts.span.value_or(DepthSpan{});
+    const int rowBaseline = bar.bottom() + 3 + metrics.ascent();
+    // As many decimals as make near and far read apart (a perspective map packs its depths near 1).
+    const int decimals = DepthMapPicture::depthDecimals(span.nearest, span.farthest);
+    QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(DepthMapPicture::depthText(facts.light, span.nearest, decimals));
+    QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(DepthMapPicture::depthText(facts.light, span.farthest, decimals));
+    if (facts.moment <= 1 && !facts.light.volume.warped && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > bar.width()) {
+        // A narrow pane: the world distances only (the depths are in the PNG's text and the tooltip).
+        nearText = QStringLiteral("near %1 wu").arg(distanceText(depthToDistance(facts.light, span.nearest)));
+        farText = QStringLiteral("far %1 wu").arg(distanceText(depthToDistance(facts.light, span.farthest)));
+    }
+    painter.drawText(QPointF(bar.left(), rowBaseline), nearText);
+    painter.drawText(QPointF(bar.right() - metrics.horizontalAdvance(farText), rowBaseline), farText);
+}
+
+} // namespace
+
 void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const QRectF& visible) const
 {
     painter.save();
@@ -197,130 +380,19 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
     font.setPixelSize(11);
     painter.setFont(font);
     const QFontMetrics metrics(font);
-    const QRect area = mapArea();
+    const Canvas canvas{painter, metrics, mapArea()};
 
     // Over the map: the light volume (the map's border) and the camera's visible region.
-    painter.setClipRect(area);
-    const QRectF border = QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible));
-    painter.setPen(QPen(kVolumeColour, 1.0, Qt::DashLine));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(border);
-    const LightVolume& v = facts.light.volume;
-    const QString size = v.perspective ? QStringLiteral("%1° × %2°")
-                                             .arg(glm::degrees(std::atan(v.right) - std::atan(v.left)), 0, 'f', 0)
-                                             .arg(glm::degrees(std::atan(v.top) - std::atan(v.bottom)), 0, 'f', 0)
-                                       : QStringLiteral("%1 × %2 wu%3").arg(v.width(), 0, 'f', 2).arg(v.height(), 0, 'f', 2)
-                                             .arg(v.warped ? QStringLiteral(", lispsm-warped") : QString());
-    const QString volumeText = facts.views > 1
-        ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
-        : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size).arg(facts.mapSize);
-    // On a dark plate, so it reads over the map's brightest depths and never runs past the pane.
-    const int labelRoom = std::max(0, area.width() - 16);
-    const QString volumeShown = fitting(metrics, {volumeText, QStringLiteral("%1 light volume %2").arg(facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual"), size), size}, labelRoom);
-    const QPointF volumeLabel(std::max(border.left(), double(area.left())) + 6, std::max(border.top(), double(area.top())) + 6 + metrics.ascent());
-    const double volumeX = std::min(volumeLabel.x(), double(area.right()) - 6 - metrics.horizontalAdvance(volumeShown));
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(QColor(0, 0, 0, 150));
-    painter.drawRoundedRect(QRectF(volumeX - 3, volumeLabel.y() - metrics.ascent() - 2, metrics.horizontalAdvance(volumeShown) + 6, metrics.height() + 3), 3, 3);
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(kVolumeColour);
-    painter.drawText(QPointF(volumeX, volumeLabel.y()), volumeShown);
-    if (facts.footprint.size() >= 3) {
-        QPolygonF polygon;
-        bool cut = false;
-        for (const glm::dvec2& p : facts.footprint) {
-            polygon << toPixel({p.x, p.y}, visible);
-            cut = cut || !visible.contains(QPointF(p.x, p.y));
-        }
-        painter.setPen(QPen(kFootprintColour, 2.0));
-        painter.drawPolygon(polygon);
-        // Where the footprint leaves the picture: an arrowhead on the edge, pointing the way out.
-        const QRectF frame = QRectF(area).adjusted(1, 1, -1, -1);
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(kFootprintColour);
-        for (qsizetype i = 0; i < polygon.size(); ++i) {
-            const QPointF a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-            if (frame.contains(a) == frame.contains(b))
-                continue;
-            const QPointF in = frame.contains(a) ? a : b, out = frame.contains(a) ? b : a;
-            const QPointF tip = exitPoint(in, out, frame);
-            QPointF dir = out - in;
-            dir /= std::max(1e-9, std::hypot(dir.x(), dir.y()));
-            const QPointF side(-dir.y(), dir.x());
-            painter.drawPolygon(QPolygonF{tip, tip - dir * 10.0 + side * 5.0, tip - dir * 10.0 - side * 5.0});
-        }
-        painter.setBrush(Qt::NoBrush);
-        // The label at the polygon's lowest point on screen, kept inside the pane.
-        const QPointF anchor = *std::max_element(polygon.begin(), polygon.end(), [](QPointF a, QPointF b) { return a.y() < b.y(); });
-        // The longest that fits: a narrow pane (compare mode) still reads what it is.
-        const QString text = cut ? fitting(metrics, {QStringLiteral("what the camera sees (it goes on beyond the frame)"),
-                                                     QStringLiteral("what the camera sees (and beyond)"), QStringLiteral("what the camera sees")},
-                                           std::max(0, area.width() - 8))
-                                 : fitting(metrics, {QStringLiteral("what the camera sees")}, std::max(0, area.width() - 8));
-        const double width = metrics.horizontalAdvance(text);
-        const double x = std::max(double(area.left() + 4), std::min(anchor.x() - width / 2.0, double(area.right() - 4) - width));
-        const double y = std::clamp(anchor.y() + metrics.ascent() + 3, double(area.top() + metrics.ascent() + 4), double(area.bottom() - 4));
-        painter.setPen(QColor(0, 0, 0, 160));
-        painter.drawText(QPointF(x + 1, y + 1), text);
-        painter.setPen(kFootprintColour);
-        painter.drawText(QPointF(x, y), text);
-    }
-    // Where the picture shows beyond the map: lit, as clamp-to-border makes it. Said in the top
-    // corner when it lies outside the map (the camera's label takes the bottom).
-    const QString outside = QStringLiteral("outside the map: lit");
-    const QRectF outsideBox(area.left() + 4, area.top() + 4, metrics.horizontalAdvance(outside), metrics.height());
-    const QRectF outsideMap(toMap(outsideBox.bottomLeft(), visible), toMap(outsideBox.topRight(), visible));
-    if (!outsideMap.intersects(QRectF(0.0, 0.0, 1.0, 1.0))) {
-        painter.setPen(QColor(150, 156, 170));
-        painter.drawText(outsideBox, Qt::AlignLeft | Qt::AlignVCenter, outside);
-    }
+    painter.setClipRect(canvas.area);
+    drawVolume(canvas, QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible)), facts);
+    drawFootprint(canvas, *this, facts, visible);
+    drawOutsideNote(canvas, *this, visible);
     painter.setClipping(false);
 
     // The legend, on the pane's clear colour: title and the empty swatch, the colour bar (drawn
     // by GL), near and far.
-    const QRect legend(0, area.bottom() + 1, m_size.width(), kLegendHeight);
-    const int titleBaseline = legend.top() + 6 + metrics.ascent();
-    // The swatch's words and the title each shorten to what the pane's width leaves them.
-    const int width = std::max(0, m_size.width() - 2 * kMargin);
-    const QString empty = fitting(metrics, {QStringLiteral("empty: far plane, lit"), QStringLiteral("empty: lit")}, width / 3);
-    const QRect swatch(legend.right() - kMargin - metrics.horizontalAdvance(empty) - 18, legend.top() + 6, 14, metrics.height() - 2);
-    painter.setPen(kTextColour);
-    const QStringList titles = facts.moment == 1 ? QStringList{QStringLiteral("moments map, first moment: depth from near (black) to far (white)"),
-                                                               QStringLiteral("first moment: depth, near to far"), QStringLiteral("first moment")}
-                               : facts.moment > 1 ? QStringList{QStringLiteral("moments map, moment %1 (grey, 0 to 1)").arg(facts.moment),
-                                                                QStringLiteral("moment %1 (0 to 1)").arg(facts.moment)}
-                               : facts.span      ? QStringList{QStringLiteral("depth from the light · stretched to the map's contents"),
-                                                               QStringLiteral("depth from the light, stretched"), QStringLiteral("depth")}
-                                                 : QStringList{QStringLiteral("nothing drawn into the map"), QStringLiteral("empty map")};
-    const int titleRoom = swatch.left() - kMargin - 6;
-    painter.drawText(QRect(legend.left() + kMargin, legend.top() + 6, titleRoom, metrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
-                     fitting(metrics, titles, titleRoom));
-    painter.fillRect(swatch, QColor(77, 77, 77));
-    painter.fillRect(swatch, QBrush(QColor(90, 90, 90), Qt::BDiagPattern));
-    painter.drawText(QPointF(swatch.right() + 5, titleBaseline), empty);
-    if (facts.moment > 0) {
-        // A moments map is drawn in grey over the light volume's whole depth range: the bar
-        // says so instead of the depth ramp.
-        QLinearGradient grey(legendBar().topLeft(), legendBar().topRight());
-        grey.setColorAt(0.0, Qt::black);
-        grey.setColorAt(1.0, Qt::white);
-        painter.fillRect(legendBar(), grey);
-    }
-    painter.setPen(QPen(kTextColour, 1.0));
-    painter.drawRect(QRectF(legendBar()).adjusted(-0.5, -0.5, 0.5, 0.5));
-    const DepthSpan span = facts.moment > 0 ? DepthSpan{0.0, 1.0} : facts.span.value_or(DepthSpan{});
-    const int rowBaseline = legendBar().bottom() + 3 + metrics.ascent();
-    // As many decimals as make near and far read apart (a perspective map packs its depths near 1).
-    const int decimals = depthDecimals(span.nearest, span.farthest);
-    QString nearText = facts.moment > 1 ? QStringLiteral("0") : QStringLiteral("near %1").arg(depthText(facts.light, span.nearest, decimals));
-    QString farText = facts.moment > 1 ? QStringLiteral("1") : QStringLiteral("far %1").arg(depthText(facts.light, span.farthest, decimals));
-    if (facts.moment <= 1 && !facts.light.volume.warped && metrics.horizontalAdvance(nearText) + metrics.horizontalAdvance(farText) + 12 > legendBar().width()) {
-        // A narrow pane: the world distances only (the depths are in the PNG's text and the tooltip).
-        nearText = QStringLiteral("near %1 wu").arg(distanceText(depthToDistance(facts.light, span.nearest)));
-        farText = QStringLiteral("far %1 wu").arg(distanceText(depthToDistance(facts.light, span.farthest)));
-    }
-    painter.drawText(QPointF(legendBar().left(), rowBaseline), nearText);
-    painter.drawText(QPointF(legendBar().right() - metrics.horizontalAdvance(farText), rowBaseline), farText);
+    drawLegendTitle(canvas, QRect(0, canvas.area.bottom() + 1, m_size.width(), kLegendHeight), facts);
+    drawLegendBar(canvas, legendBar(), facts);
     painter.restore();
 }
 

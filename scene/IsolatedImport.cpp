@@ -187,6 +187,84 @@ QString buildTreeWorker()
     return QString();
 }
 
+// Starts the worker on `path`, under `control`'s limits, with `answerFd` as its fd 3.
+void startWorker(QProcess& process, const QString& program, const QString& path, const ImportControl& control, int answerFd)
+{
+    const ImportLimits limits = control.limits;
+    const qint64 outputLimit = qint64(limits.outputMiB) << 20;
+    process.setProgram(program);
+    process.setArguments({QFileInfo(path).absoluteFilePath(), QStringLiteral("--answer-fd"), QString::number(kAnswerFd)});
+    process.setProcessEnvironment(workerEnvironment(limits));
+    process.setStandardInputFile(QProcess::nullDevice());
+    process.setStandardOutputFile(QProcess::nullDevice());
+    process.setWorkingDirectory(QDir::tempPath());
+    process.setChildProcessModifier([limits, outputLimit, answerFd] { limitWorker(limits, outputLimit, answerFd); });
+    process.start(QIODevice::ReadOnly);
+    if (!process.waitForStarted(kStartTimeoutMs))
+        throw SceneFileError(path, QStringLiteral("cannot be read: the import worker did not start (%1); reinstall ShadowLab").arg(process.errorString()));
+}
+
+// Waits for the worker, passing on its progress; stops it (and whatever it started) when the
+// user cancels or it runs past the time limit.
+void waitForWorker(QProcess& process, const QString& path, const ImportControl& control)
+{
+    const qint64 timeLimitMs = qint64(control.limits.timeSeconds * 1000.0);
+    QElapsedTimer clock;
+    clock.start();
+    QByteArray pendingProgress;
+    const qint64 pid = process.processId();
+    const auto stop = [&process, pid] {
+        ::kill(pid_t(-pid), SIGKILL);
+        process.kill();
+        process.waitForFinished(-1);
+    };
+    while (!process.waitForFinished(kPollMs)) {
+        readProgress(process, pendingProgress, control);
+        if (control.cancel && control.cancel->load()) {
+            stop();
+            throw ImportCancelled(path);
+        }
+        if (clock.elapsed() > timeLimitMs) {
+            stop();
+            throw SceneFileError(path, QStringLiteral("took longer than %1 s to read, the import time limit, and was stopped; the file is "
+                                                      "damaged or very large — raise --import-time-limit if it is only large; nothing was changed")
+                                           .arg(control.limits.timeSeconds));
+        }
+        if (process.state() == QProcess::NotRunning)
+            break;
+    }
+    readProgress(process, pendingProgress, control);
+    ::kill(pid_t(-pid), SIGKILL);   // anything the worker left running in its group
+}
+
+// The scene in the finished worker's answer, or the refusal that says why there is none.
+Scene sceneFromAnswer(const QString& path, const QProcess& process, AnswerFile& answerFile, const ImportLimits& limits)
+{
+    if (process.exitStatus() == QProcess::CrashExit)
+        throw deathRefusal(path, process.exitCode(), limits);   // the exit code of a crash is its signal
+    const QByteArray answer = answerFile.contents(qint64(limits.outputMiB) << 20);
+    if (process.exitCode() != 0 && answer.isEmpty())
+        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer (exit code %1): the file is damaged or not what "
+                                                  "its name says; nothing was changed").arg(process.exitCode()));
+    if (answer.isEmpty())
+        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer; the file is damaged or not what its name says; "
+                                                  "nothing was changed"));
+    ImportReply reply = decodeImportReply(answer, path);
+    if (reply.kind == ImportReplyKind::Scene) {
+        // The name and the cache key are the parent's to say, not the answer's: the file's own
+        // path, and the worker's hash of what it read bound to the parent's hash of the file.
+        reply.scene.name = QFileInfo(path).absoluteFilePath();
+        reply.scene.identity = boundIdentity(path, reply.scene.identity);
+    }
+    if (reply.kind == ImportReplyKind::OutOfMemory)
+        throw SceneFileError(path, QStringLiteral("needs more memory to read than the import memory limit of %1 MiB (%2); the file is "
+                                                  "damaged or very large — raise --import-memory-limit if it is only large; nothing was changed")
+                                       .arg(limits.memoryMiB).arg(reply.message));
+    if (reply.kind == ImportReplyKind::Refusal)
+        throw SceneFileError(path, reply.message);
+    return std::move(reply.scene);
+}
+
 } // namespace
 
 QString importWorkerProgram()
@@ -217,77 +295,15 @@ Scene importModelIsolated(const QString& path, const ImportControl& control)
     if (!QFileInfo(program).isExecutable())
         throw SceneFileError(path, QStringLiteral("cannot be read: the import worker '%1' is not an executable (check SHADOWLAB_IMPORT_WORKER, "
                                                   "or reinstall ShadowLab)").arg(program));
-
-    const ImportLimits limits = control.limits;
-    const qint64 outputLimit = qint64(limits.outputMiB) << 20;
     // The answer comes back through an anonymous memory file, the worker's fd 3: no copy through a
     // pipe, and the kernel stops the worker (SIGXFSZ) at the output limit.
     AnswerFile answerFile;
     if (answerFile.fd < 0)
         throw SceneFileError(path, QStringLiteral("cannot be read: no memory for the importer's answer (%1)").arg(QString::fromLocal8Bit(strerror(errno))));
     QProcess process;
-    process.setProgram(program);
-    process.setArguments({QFileInfo(path).absoluteFilePath(), QStringLiteral("--answer-fd"), QString::number(kAnswerFd)});
-    process.setProcessEnvironment(workerEnvironment(control.limits));
-    process.setStandardInputFile(QProcess::nullDevice());
-    process.setStandardOutputFile(QProcess::nullDevice());
-    process.setWorkingDirectory(QDir::tempPath());
-    process.setChildProcessModifier([limits, outputLimit, fd = answerFile.fd] { limitWorker(limits, outputLimit, fd); });
-    process.start(QIODevice::ReadOnly);
-    if (!process.waitForStarted(kStartTimeoutMs))
-        throw SceneFileError(path, QStringLiteral("cannot be read: the import worker did not start (%1); reinstall ShadowLab").arg(process.errorString()));
-
-    const qint64 timeLimitMs = qint64(limits.timeSeconds * 1000.0);
-    QElapsedTimer clock;
-    clock.start();
-    QByteArray pendingProgress;
-    const qint64 pid = process.processId();
-    const auto stop = [&process, pid] {
-        ::kill(pid_t(-pid), SIGKILL);
-        process.kill();
-        process.waitForFinished(-1);
-    };
-    while (!process.waitForFinished(kPollMs)) {
-        readProgress(process, pendingProgress, control);
-        if (control.cancel && control.cancel->load()) {
-            stop();
-            throw ImportCancelled(path);
-        }
-        if (clock.elapsed() > timeLimitMs) {
-            stop();
-            throw SceneFileError(path, QStringLiteral("took longer than %1 s to read, the import time limit, and was stopped; the file is "
-                                                      "damaged or very large — raise --import-time-limit if it is only large; nothing was changed")
-                                           .arg(limits.timeSeconds));
-        }
-        if (process.state() == QProcess::NotRunning)
-            break;
-    }
-    readProgress(process, pendingProgress, control);
-    ::kill(pid_t(-pid), SIGKILL);   // anything the worker left running in its group
-
-    if (process.exitStatus() == QProcess::CrashExit)
-        throw deathRefusal(path, process.exitCode(), limits);   // the exit code of a crash is its signal
-    const QByteArray answer = answerFile.contents(outputLimit);
-    if (process.exitCode() != 0 && answer.isEmpty())
-        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer (exit code %1): the file is damaged or not what "
-                                                  "its name says; nothing was changed").arg(process.exitCode()));
-    if (answer.isEmpty())
-        throw SceneFileError(path, QStringLiteral("the importer stopped without an answer; the file is damaged or not what its name says; "
-                                                  "nothing was changed"));
-    ImportReply reply = decodeImportReply(answer, path);
-    if (reply.kind == ImportReplyKind::Scene) {
-        // The name and the cache key are the parent's to say, not the answer's: the file's own
-        // path, and the worker's hash of what it read bound to the parent's hash of the file.
-        reply.scene.name = QFileInfo(path).absoluteFilePath();
-        reply.scene.identity = boundIdentity(path, reply.scene.identity);
-    }
-    if (reply.kind == ImportReplyKind::OutOfMemory)
-        throw SceneFileError(path, QStringLiteral("needs more memory to read than the import memory limit of %1 MiB (%2); the file is "
-                                                  "damaged or very large — raise --import-memory-limit if it is only large; nothing was changed")
-                                       .arg(limits.memoryMiB).arg(reply.message));
-    if (reply.kind == ImportReplyKind::Refusal)
-        throw SceneFileError(path, reply.message);
-    return std::move(reply.scene);
+    startWorker(process, program, path, control, answerFile.fd);
+    waitForWorker(process, path, control);
+    return sceneFromAnswer(path, process, answerFile, control.limits);
 }
 
 } // namespace shadowlab

@@ -466,6 +466,83 @@ QByteArray hashFiles(const std::set<QString>& files)
     return hash.result().toHex();
 }
 
+// Refuses what is no model file, before Assimp opens it; returns its suffix in lower case.
+QString checkModelFile(const QString& path, const QFileInfo& info)
+{
+    if (!info.exists())
+        throw SceneFileError(path, QStringLiteral("no such file; check the path"));
+    if (!info.isFile() || !info.isReadable())
+        throw SceneFileError(path, QStringLiteral("is not a readable file; check its permissions"));
+    if (info.size() > kMaxModelFileBytes)
+        throw SceneFileError(path, QStringLiteral("is %1 MiB, larger than the %2 MiB ShadowLab reads; decimate or split the model")
+                                       .arg(info.size() >> 20).arg(kMaxModelFileBytes >> 20));
+    if (info.size() == 0)
+        throw SceneFileError(path, QStringLiteral("is empty (0 bytes); the export or copy did not finish"));
+    const QString suffix = info.suffix().toLower();
+    if (!modelSuffixes().contains(suffix))
+        throw SceneFileError(path, QStringLiteral("'.%1' is not a model format ShadowLab reads; use glTF 2 (.gltf, .glb), OBJ, PLY, STL, "
+                                                  "COLLADA (.dae) or FBX, or a scene file (.json)").arg(suffix));
+    if (const QString problem = declaredCountProblem(info.absoluteFilePath(), suffix, info.size()); !problem.isEmpty())
+        throw SceneFileError(path, problem);
+    return suffix;
+}
+
+// Assimp's reason for not reading `path`, as a refusal that says what to do.
+[[noreturn]] void refuseUnread(const QString& path, const QString& suffix, const Assimp::Importer& importer)
+{
+    const QString reason = QString::fromUtf8(importer.GetErrorString()).trimmed();
+    if (reason.contains(QStringLiteral("no faces")))
+        throw SceneFileError(path, QStringLiteral("has no triangles (%1); export surfaces, not a point cloud or curves").arg(reason));
+    // Every mesh was points or lines, which are dropped (see readModel).
+    if (reason.contains(QStringLiteral("No meshes remaining")))
+        throw SceneFileError(path, QStringLiteral("has no triangles, only points or lines; export surfaces, not a point cloud or curves"));
+    // The suffix is known, the contents are not: another version or variant of the format.
+    if (reason.contains(QStringLiteral("No suitable reader")))
+        throw SceneFileError(path, QStringLiteral("is a version or variant of .%1 that cannot be read (glTF 1 binaries, for one); export "
+                                                  "it again as glTF 2 (.glb) or OBJ").arg(suffix));
+    throw SceneFileError(path, QStringLiteral("cannot be read: %1; the file is damaged, truncated or not what its name says — "
+                                              "open it in another tool or export it again (glTF 2 .glb is the safest choice)")
+                                   .arg(reason));
+}
+
+// Reads the file, brings absurd sizes into range, then post-processes: Assimp's vertex
+// welding and normal generation use tolerances that merge a 10^-6 model's vertices.
+const aiScene* readModel(Assimp::Importer& importer, const QString& path, const QFileInfo& info, const QString& suffix, QStringList& warnings)
+{
+    // Points and lines are dropped: they cast no shadow and have no normal.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.0f);
+    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType
+                           | aiProcess_ValidateDataStructure | aiProcess_FlipUVs;
+    if (!importer.ReadFile(info.absoluteFilePath().toStdString(), 0))
+        refuseUnread(path, suffix, importer);
+    normaliseVertices(const_cast<aiScene*>(importer.GetScene()), warnings);
+    const aiScene* ai = importer.ApplyPostProcessing(flags);
+    if (!ai)
+        refuseUnread(path, suffix, importer);
+    if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
+        throw SceneFileError(path, QStringLiteral("has no complete scene (no triangles, or parts missing); export surfaces again"));
+    return ai;
+}
+
+// The scene as placed by its nodes: refused when it has no size, scaled when its size is absurd.
+void checkPlacedSize(Importing& in)
+{
+    const Bounds bounds = in.scene.bounds();
+    const double size = glm::length(bounds.max - bounds.min);
+    if (!std::isfinite(size))
+        throw SceneFileError(in.path, QStringLiteral("has node transforms that are not finite numbers; repair the hierarchy"));
+    if (size <= 0.0)
+        throw SceneFileError(in.path, QStringLiteral("has all its vertices at one point; there is nothing to shadow"));
+    if (size < kMinModelSize || size > kMaxModelSize) {
+        const double factor = kNormalisedModelSize / size;
+        const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(factor));
+        for (SceneObject& object : in.scene.objects)
+            object.model = scale * object.model;
+        in.scene.warnings << scaledWarning(size, factor);
+    }
+}
+
 } // namespace
 
 QStringList modelSuffixes()
@@ -482,59 +559,14 @@ QStringList modelSuffixes()
 Scene importModel(const QString& path, const std::function<void(double)>& progress)
 {
     const QFileInfo info(path);
-    if (!info.exists())
-        throw SceneFileError(path, QStringLiteral("no such file; check the path"));
-    if (!info.isFile() || !info.isReadable())
-        throw SceneFileError(path, QStringLiteral("is not a readable file; check its permissions"));
-    if (info.size() > kMaxModelFileBytes)
-        throw SceneFileError(path, QStringLiteral("is %1 MiB, larger than the %2 MiB ShadowLab reads; decimate or split the model")
-                                       .arg(info.size() >> 20).arg(kMaxModelFileBytes >> 20));
-    if (info.size() == 0)
-        throw SceneFileError(path, QStringLiteral("is empty (0 bytes); the export or copy did not finish"));
-    const QString suffix = info.suffix().toLower();
-    if (!modelSuffixes().contains(suffix))
-        throw SceneFileError(path, QStringLiteral("'.%1' is not a model format ShadowLab reads; use glTF 2 (.gltf, .glb), OBJ, PLY, STL, "
-                                                  "COLLADA (.dae) or FBX, or a scene file (.json)").arg(suffix));
-
-    if (const QString problem = declaredCountProblem(info.absoluteFilePath(), suffix, info.size()); !problem.isEmpty())
-        throw SceneFileError(path, problem);
-
+    const QString suffix = checkModelFile(path, info);
     Assimp::Importer importer;
     auto* io = new RecordingIoSystem;   // owned by the importer
     importer.SetIOHandler(io);
     if (progress)
         importer.SetProgressHandler(new ProgressForwarder(progress));   // owned by the importer
-    // Points and lines are dropped: they cast no shadow and have no normal.
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 60.0f);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType
-                           | aiProcess_ValidateDataStructure | aiProcess_FlipUVs;
-    // Read first, then bring absurd sizes into range, then post-process: Assimp's vertex
-    // welding and normal generation use tolerances that merge a 10^-6 model's vertices.
-    const auto fail = [&] {
-        const QString reason = QString::fromUtf8(importer.GetErrorString()).trimmed();
-        if (reason.contains(QStringLiteral("no faces")))
-            throw SceneFileError(path, QStringLiteral("has no triangles (%1); export surfaces, not a point cloud or curves").arg(reason));
-        // Every mesh was points or lines, which are dropped above.
-        if (reason.contains(QStringLiteral("No meshes remaining")))
-            throw SceneFileError(path, QStringLiteral("has no triangles, only points or lines; export surfaces, not a point cloud or curves"));
-        // The suffix is known, the contents are not: another version or variant of the format.
-        if (reason.contains(QStringLiteral("No suitable reader")))
-            throw SceneFileError(path, QStringLiteral("is a version or variant of .%1 that cannot be read (glTF 1 binaries, for one); export "
-                                                      "it again as glTF 2 (.glb) or OBJ").arg(suffix));
-        throw SceneFileError(path, QStringLiteral("cannot be read: %1; the file is damaged, truncated or not what its name says — "
-                                                  "open it in another tool or export it again (glTF 2 .glb is the safest choice)")
-                                       .arg(reason));
-    };
-    if (!importer.ReadFile(info.absoluteFilePath().toStdString(), 0))
-        fail();
     QStringList warnings;
-    normaliseVertices(const_cast<aiScene*>(importer.GetScene()), warnings);
-    const aiScene* ai = importer.ApplyPostProcessing(flags);
-    if (!ai)
-        fail();
-    if ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !ai->mRootNode)
-        throw SceneFileError(path, QStringLiteral("has no complete scene (no triangles, or parts missing); export surfaces again"));
+    const aiScene* ai = readModel(importer, path, info, suffix, warnings);
 
     Importing in;
     in.path = path;
@@ -545,20 +577,7 @@ Scene importModel(const QString& path, const std::function<void(double)>& progre
     addNode(in, ai->mRootNode, glm::dmat4(1.0), 0);
     if (in.scene.objects.empty())
         throw SceneFileError(path, QStringLiteral("places no triangle mesh in its scene; export the meshes as part of the scene"));
-
-    const Bounds bounds = in.scene.bounds();
-    const double size = glm::length(bounds.max - bounds.min);
-    if (!std::isfinite(size))
-        throw SceneFileError(path, QStringLiteral("has node transforms that are not finite numbers; repair the hierarchy"));
-    if (size <= 0.0)
-        throw SceneFileError(path, QStringLiteral("has all its vertices at one point; there is nothing to shadow"));
-    if (size < kMinModelSize || size > kMaxModelSize) {
-        const double factor = kNormalisedModelSize / size;
-        const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(factor));
-        for (SceneObject& object : in.scene.objects)
-            object.model = scale * object.model;
-        in.scene.warnings << scaledWarning(size, factor);
-    }
+    checkPlacedSize(in);
     if (!in.ignored.empty()) {
         in.scene.warnings << QStringLiteral("materials: only the base colour and base-colour texture are drawn; ignored: %1")
                                  .arg(QStringList(in.ignored.begin(), in.ignored.end()).join(QStringLiteral(", ")));

@@ -130,174 +130,237 @@ QJsonArray viewsJson(const Phase& p)
     return views;
 }
 
+void addBenchOptions(QCommandLineParser& parser)
+{
+    parser.setApplicationDescription(QStringLiteral("Time the shadow pass, the lit pass and the whole frame (median and spread)."));
+    parser.addHelpOption();
+    addSettingsOptions(parser);
+    parser.addOption({QStringLiteral("size"), QStringLiteral("Frame size (default 1280x720)."), QStringLiteral("WxH"),
+                      QStringLiteral("1280x720")});
+    parser.addOption({QStringLiteral("frames"), QStringLiteral("Measured frames per phase (default 200)."), QStringLiteral("n"),
+                      QStringLiteral("200")});
+    parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
+                      QStringLiteral("10")});
+    parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (the scene's camera path, light fitted to it every frame; with and without "
+                                     "shadows), moving-light, both (steady and moving-light) or all (default all)."),
+                      QStringLiteral("name"), QStringLiteral("all")});
+    parser.addOption({QStringLiteral("baseline"),
+                      QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
+    parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
+}
+
+// What the command line asks for, checked, with the scene it names loaded once.
+struct BenchRequest {
+    Settings settings;
+    double loadMs = 0.0;            // importing a model or scene file, then checking it
+    std::size_t triangles = 0;
+    std::size_t objects = 0;
+    QSize size;
+    int frames = 0;
+    int warmup = 0;
+    QString phase;
+    bool baseline = false;          // also the tutorial's configuration
+};
+
+BenchRequest readBenchRequest(const QCommandLineParser& parser)
+{
+    BenchRequest r;
+    // A model or scene file is imported here (then cached), so this is its load time.
+    QElapsedTimer loadTimer;
+    loadTimer.start();
+    r.settings = settingsFromOptions(parser);
+    r.loadMs = double(loadTimer.nsecsElapsed()) * 1e-6;
+    const Scene scene = buildScene(r.settings.scene);
+    for (const SceneObject& object : scene.objects)
+        r.triangles += scene.meshes.at(std::size_t(object.mesh)).indices.size() / 3;
+    r.objects = scene.objects.size();
+    r.size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kBenchSize);
+    r.frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
+    r.warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
+    r.phase = parser.value(QStringLiteral("phase"));
+    if (r.phase != u"both" && r.phase != u"all" && r.phase != u"steady" && r.phase != u"moving-light" && r.phase != u"moving-camera")
+        throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(r.phase));
+    r.baseline = parser.isSet(QStringLiteral("baseline"));
+    return r;
+}
+
+bool wantsMovingCamera(const BenchRequest& r)
+{
+    return r.phase == u"all" || r.phase == u"moving-camera";
+}
+
+// The phases `--phase` names, each with its own renderer, and the tutorial's after them.
+std::vector<Phase> makePhases(const BenchRequest& r)
+{
+    std::vector<Phase> phases;
+    auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
+        Phase p;
+        p.name = QString::fromLatin1(name);
+        p.description = QString::fromLatin1(description);
+        p.settings = s;
+        p.moving = moving;
+        p.headless = std::make_unique<HeadlessRenderer>();
+        phases.push_back(std::move(p));
+    };
+    const bool all = r.phase == u"all";
+    if (all || r.phase == u"both" || r.phase == u"steady")
+        addPhase("steady", "light and camera still: cached shadow map, lit pass only", r.settings, false);
+    if (all || r.phase == u"both" || r.phase == u"moving-light")
+        addPhase("moving-light", "shadow pass every frame", r.settings, true);
+    if (wantsMovingCamera(r)) {
+        // A walk of 0.05 world units per frame: maps (cascades) are redrawn only when their
+        // fitted volume changes. The same walk without shadows gives their cost as one ratio.
+        addPhase("moving-camera", "camera walking 0.05 units a frame, maps refitted and redrawn when they change", r.settings, false);
+        phases.back().cameraPath = cameraPath(r.settings.camera, 64, 0.05);
+        Settings withoutShadows = r.settings;
+        withoutShadows.shadow.enabled = false;
+        addPhase("moving-camera-no-shadows", "the same camera walk with shadow.enabled=false", withoutShadows, false);
+        phases.back().cameraPath = cameraPath(r.settings.camera, 64, 0.05);
+    }
+    if (r.baseline)
+        addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
+                 tutorialSettings(r.settings), true);
+    return phases;
+}
+
+QString configurationSummary(const BenchRequest& r)
+{
+    const Settings& settings = r.settings;
+    return QStringLiteral("scene %1, %2x%3, map %4x%4 %5, filter %6, bias slope %7 min %8")
+        .arg(settings.scene)
+        .arg(r.size.width())
+        .arg(r.size.height())
+        .arg(settings.map.size)
+        .arg(toString(settings.map.format), filterLabel(settings.filter))
+        .arg(settings.bias.slope)
+        .arg(settings.bias.min);
+}
+
+QJsonObject phaseJson(const Phase& r, int frames)
+{
+    return {{QStringLiteral("phase"), r.name},
+            {QStringLiteral("description"), r.description},
+            {QStringLiteral("frames"), frames},
+            {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
+            {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
+            {QStringLiteral("shadow_draws"), r.shadowDraws},
+            {QStringLiteral("virtual_pages_drawn"), statsJson(summarize(r.pagesDrawn))},
+            {QStringLiteral("virtual_pages_resident"), statsJson(summarize(r.pagesResident))},
+            {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
+            {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
+            {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
+            {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
+            {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
+            {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
+            {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
+            {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
+            {QStringLiteral("views"), viewsJson(r)}};
+}
+
+void printJson(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
+{
+    QJsonArray phaseArray;
+    for (const Phase& r : phases)
+        phaseArray.append(phaseJson(r, request.frames));
+    out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
+                                       {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
+                                       {QStringLiteral("configuration"), configurationSummary(request)},
+                                       {QStringLiteral("scene_load_ms"), request.loadMs},
+                                       {QStringLiteral("triangles"), qint64(request.triangles)},
+                                       {QStringLiteral("objects"), qint64(request.objects)},
+                                       {QStringLiteral("settings"), settingsToJson(request.settings)},
+                                       {QStringLiteral("phases"), phaseArray}})
+                 .toJson(QJsonDocument::Indented);
+}
+
+// One phase's table; a software renderer's "GPU" rows are left out (see printText).
+void printPhase(const Phase& r, const BenchRequest& request, bool software)
+{
+    const int frames = request.frames;
+    out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << request.warmup << " warm-up\n";
+    out() << statsHeader() << '\n';
+    const QString runs = QStringLiteral("   run in %1/%2 frames").arg(r.shadowPassesRun).arg(frames)
+                         + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws));
+    if (!software)
+        out() << statsRow(QStringLiteral("shadow pass (GPU)"), summarize(r.shadow)) << '\n';
+    out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << runs << '\n';
+    if (!r.blurWall.empty())
+        out() << statsRow(QStringLiteral("  of which blur (wall)"), summarize(r.blurWall)) << "   (moments blur and mips)\n";
+    if (!r.pagesDrawn.empty()) {
+        out() << statsRow(QStringLiteral("virtual pages drawn"), summarize(r.pagesDrawn)) << "   a frame\n";
+        out() << statsRow(QStringLiteral("virtual pages resident"), summarize(r.pagesResident)) << '\n';
+    }
+    if (!software)
+        out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
+    out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
+    out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';
+    out() << "  " << formatTexelLine(r.last) << '\n';
+    for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
+        const bool cube = r.settings.light.type == LightType::Point;
+        out() << statsRow(QStringLiteral("  %1 %2 (wall)").arg(cube ? QStringLiteral("face") : QStringLiteral("cascade")).arg(v),
+                          summarize(r.viewWall[v]))
+              << "   drawn in " << r.viewPassesRun[v] << "/" << frames << " frames, " << r.viewDraws[v] << " draws\n";
+    }
+    printFitWarnings(r.fit, r.name);
+}
+
+// Each phase's median frame against the last one's, and shadows on against off on the walk.
+void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
+{
+    if (phases.size() > 1) {
+        const double reference = summarize(phases.back().wall).median;
+        out() << "\nmedian frame wall time relative to " << phases.back().name << ":\n";
+        for (const Phase& r : phases)
+            out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth)
+                  << '\n';
+    }
+    if (wantsMovingCamera(request)) {
+        auto median = [&](const char* name) {
+            for (const Phase& r : phases) {
+                if (r.name == QLatin1String(name))
+                    return summarize(r.wall).median;
+            }
+            return 0.0;
+        };
+        out() << "median frame wall time, shadows on / off with the camera moving: "
+              << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
+    }
+}
+
+void printText(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
+{
+    out() << "renderer: " << rendererString << '\n' << "configuration: " << configurationSummary(request) << '\n';
+    // A software renderer's timer queries miss its deferred rasterisation: its "GPU" rows
+    // would only mislead, so they are left out and the wall times (CPU time there) stand.
+    const bool software = isSoftwareRenderer(rendererString);
+    if (software)
+        out() << "times: wall clock between glFinish calls, which is CPU time on this software renderer (its GPU timer "
+                 "misses the deferred rasterisation, so those rows are left out)\n";
+    out() << "scene: " << request.triangles << " triangles in " << request.objects << " drawn objects, loaded and checked in "
+          << QString::number(request.loadMs, 'f', 1) << " ms\n";
+    for (const Phase& r : phases)
+        printPhase(r, request, software);
+    printRatios(request, phases);
+    out().flush();
+}
+
 } // namespace
 
 int runBench(const QStringList& arguments)
 {
     return guarded(QStringLiteral("bench"), [&] {
         QCommandLineParser parser;
-        parser.setApplicationDescription(QStringLiteral("Time the shadow pass, the lit pass and the whole frame (median and spread)."));
-        parser.addHelpOption();
-        addSettingsOptions(parser);
-        parser.addOption({QStringLiteral("size"), QStringLiteral("Frame size (default 1280x720)."), QStringLiteral("WxH"),
-                          QStringLiteral("1280x720")});
-        parser.addOption({QStringLiteral("frames"), QStringLiteral("Measured frames per phase (default 200)."), QStringLiteral("n"),
-                          QStringLiteral("200")});
-        parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
-                          QStringLiteral("10")});
-        parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (the scene's camera path, light fitted to it every frame; with and without "
-                                         "shadows), moving-light, both (steady and moving-light) or all (default all)."),
-                          QStringLiteral("name"), QStringLiteral("all")});
-        parser.addOption({QStringLiteral("baseline"),
-                          QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
-        parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
+        addBenchOptions(parser);
         if (!parseArguments(parser, QStringLiteral("bench"), arguments))
             return kExitOk;
-        // A model or scene file is imported here (then cached), so this is its load time.
-        QElapsedTimer loadTimer;
-        loadTimer.start();
-        const Settings settings = settingsFromOptions(parser);
-        const double loadMs = double(loadTimer.nsecsElapsed()) * 1e-6;
-        std::size_t triangles = 0, meshes = 0;
-        {
-            const Scene scene = buildScene(settings.scene);
-            for (const SceneObject& object : scene.objects)
-                triangles += scene.meshes.at(std::size_t(object.mesh)).indices.size() / 3;
-            meshes = scene.objects.size();
-        }
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kBenchSize);
-        const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
-        const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
-        const QString phase = parser.value(QStringLiteral("phase"));
-        if (phase != u"both" && phase != u"all" && phase != u"steady" && phase != u"moving-light" && phase != u"moving-camera")
-            throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(phase));
-
-        std::vector<Phase> phases;
-        auto addPhase = [&](const char* name, const char* description, const Settings& s, bool moving) {
-            Phase p;
-            p.name = QString::fromLatin1(name);
-            p.description = QString::fromLatin1(description);
-            p.settings = s;
-            p.moving = moving;
-            p.headless = std::make_unique<HeadlessRenderer>();
-            phases.push_back(std::move(p));
-        };
-        const bool all = phase == u"all";
-        if (all || phase == u"both" || phase == u"steady")
-            addPhase("steady", "light and camera still: cached shadow map, lit pass only", settings, false);
-        if (all || phase == u"both" || phase == u"moving-light")
-            addPhase("moving-light", "shadow pass every frame", settings, true);
-        if (all || phase == u"moving-camera") {
-            // A walk of 0.05 world units per frame: maps (cascades) are redrawn only when their
-            // fitted volume changes. The same walk without shadows gives their cost as one ratio.
-            addPhase("moving-camera", "camera walking 0.05 units a frame, maps refitted and redrawn when they change", settings, false);
-            phases.back().cameraPath = cameraPath(settings.camera, 64, 0.05);
-            Settings withoutShadows = settings;
-            withoutShadows.shadow.enabled = false;
-            addPhase("moving-camera-no-shadows", "the same camera walk with shadow.enabled=false", withoutShadows, false);
-            phases.back().cameraPath = cameraPath(settings.camera, 64, 0.05);
-        }
-        if (parser.isSet(QStringLiteral("baseline")))
-            addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
-                     tutorialSettings(settings), true);
-        runInterleaved(phases, size, warmup, frames);
+        const BenchRequest request = readBenchRequest(parser);
+        std::vector<Phase> phases = makePhases(request);
+        runInterleaved(phases, request.size, request.warmup, request.frames);
         const QString rendererString = phases.front().headless->renderer().rendererString();
-        const QString filter = filterLabel(settings.filter);
-        const QString summary = QStringLiteral("scene %1, %2x%3, map %4x%4 %5, filter %6, bias slope %7 min %8")
-                                    .arg(settings.scene)
-                                    .arg(size.width())
-                                    .arg(size.height())
-                                    .arg(settings.map.size)
-                                    .arg(toString(settings.map.format), filter)
-                                    .arg(settings.bias.slope)
-                                    .arg(settings.bias.min);
-        if (parser.isSet(QStringLiteral("json"))) {
-            QJsonArray phaseArray;
-            for (const Phase& r : phases) {
-                phaseArray.append(QJsonObject{{QStringLiteral("phase"), r.name},
-                                              {QStringLiteral("description"), r.description},
-                                              {QStringLiteral("frames"), frames},
-                                              {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
-                                              {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
-                                              {QStringLiteral("shadow_draws"), r.shadowDraws},
-                                              {QStringLiteral("virtual_pages_drawn"), statsJson(summarize(r.pagesDrawn))},
-                                              {QStringLiteral("virtual_pages_resident"), statsJson(summarize(r.pagesResident))},
-                                              {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
-                                              {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
-                                              {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
-                                              {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
-                                              {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
-                                              {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
-                                              {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
-                                              {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
-                                              {QStringLiteral("views"), viewsJson(r)}});
-            }
-            out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
-                                               {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
-                                               {QStringLiteral("configuration"), summary},
-                                               {QStringLiteral("scene_load_ms"), loadMs},
-                                               {QStringLiteral("triangles"), qint64(triangles)},
-                                               {QStringLiteral("objects"), qint64(meshes)},
-                                               {QStringLiteral("settings"), settingsToJson(settings)},
-                                               {QStringLiteral("phases"), phaseArray}})
-                         .toJson(QJsonDocument::Indented);
-            return kExitOk;
-        }
-        out() << "renderer: " << rendererString << '\n' << "configuration: " << summary << '\n';
-        // A software renderer's timer queries miss its deferred rasterisation: its "GPU" rows
-        // would only mislead, so they are left out and the wall times (CPU time there) stand.
-        const bool software = isSoftwareRenderer(rendererString);
-        if (software)
-            out() << "times: wall clock between glFinish calls, which is CPU time on this software renderer (its GPU timer "
-                     "misses the deferred rasterisation, so those rows are left out)\n";
-        out() << "scene: " << triangles << " triangles in " << meshes << " drawn objects, loaded and checked in "
-              << QString::number(loadMs, 'f', 1) << " ms\n";
-        for (const Phase& r : phases) {
-            out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << warmup << " warm-up\n";
-            out() << statsHeader() << '\n';
-            const QString runs = QStringLiteral("   run in %1/%2 frames").arg(r.shadowPassesRun).arg(frames)
-                                 + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws));
-            if (!software)
-                out() << statsRow(QStringLiteral("shadow pass (GPU)"), summarize(r.shadow)) << '\n';
-            out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << runs << '\n';
-            if (!r.blurWall.empty())
-                out() << statsRow(QStringLiteral("  of which blur (wall)"), summarize(r.blurWall)) << "   (moments blur and mips)\n";
-            if (!r.pagesDrawn.empty()) {
-                out() << statsRow(QStringLiteral("virtual pages drawn"), summarize(r.pagesDrawn)) << "   a frame\n";
-                out() << statsRow(QStringLiteral("virtual pages resident"), summarize(r.pagesResident)) << '\n';
-            }
-            if (!software)
-                out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
-            out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
-            out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';
-            out() << "  " << formatTexelLine(r.last) << '\n';
-            for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
-                const bool cube = r.settings.light.type == LightType::Point;
-                out() << statsRow(QStringLiteral("  %1 %2 (wall)").arg(cube ? QStringLiteral("face") : QStringLiteral("cascade")).arg(v),
-                                  summarize(r.viewWall[v]))
-                      << "   drawn in " << r.viewPassesRun[v] << "/" << frames << " frames, " << r.viewDraws[v] << " draws\n";
-            }
-            printFitWarnings(r.fit, r.name);
-        }
-        if (phases.size() > 1) {
-            const double reference = summarize(phases.back().wall).median;
-            out() << "\nmedian frame wall time relative to " << phases.back().name << ":\n";
-            for (const Phase& r : phases)
-                out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth)
-                      << '\n';
-        }
-        if (all || phase == u"moving-camera") {
-            auto median = [&](const char* name) {
-                for (const Phase& r : phases) {
-                    if (r.name == QLatin1String(name))
-                        return summarize(r.wall).median;
-                }
-                return 0.0;
-            };
-            out() << "median frame wall time, shadows on / off with the camera moving: "
-                  << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
-        }
-        out().flush();
+        if (parser.isSet(QStringLiteral("json")))
+            printJson(request, phases, rendererString);
+        else
+            printText(request, phases, rendererString);
         return kExitOk;
     });
 }

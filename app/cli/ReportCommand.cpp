@@ -82,124 +82,191 @@ void printFronts(const std::vector<ReportRow>& rows)
     }
 }
 
+void addReportOptions(QCommandLineParser& parser)
+{
+    parser.setApplicationDescription(QStringLiteral("Error against run time over a sweep of configurations, "
+                                                    "measured against a ray-traced reference of the same pixels."));
+    parser.addHelpOption();
+    addSettingsOptions(parser);
+    parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
+    parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, filterable (moment techniques, blur "
+                                     "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not, and sdsm), around (the settings given, "
+                                     "one change at a time, as the accuracy dock sweeps), or a JSON file (default: default)."),
+                      QStringLiteral("name|file.json"), QStringLiteral("default")});
+    parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
+    parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration at most (default 30)."), QStringLiteral("n"),
+                      QStringLiteral("30")});
+    parser.addOption({QStringLiteral("min-frames"),
+                      QStringLiteral("Timed frames per configuration at least; timing stops there once its median and p10-p90 hold "
+                                     "from batch to batch (default 8; as many as --frames: always that many)."),
+                      QStringLiteral("n"), QStringLiteral("8")});
+    parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
+    parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
+                      QStringLiteral("n"), QStringLiteral("16")});
+    parser.addOption({QStringLiteral("flicker-frames"),
+                      QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
+                      QStringLiteral("n"), QString::number(kFlickerFrames)});
+}
+
+// What the command line asks for, all of it checked before any work starts.
+struct ReportRequest {
+    QString directory;
+    Settings base;
+    Settings tutorial;          // the base with the tutorial's assignments
+    QSize size;
+    int frames = 0;
+    int minFrames = 0;
+    int warmup = 0;
+    int samples = 0;            // area reference samples per axis
+    int flickerFrames = 0;
+    std::vector<SweepConfiguration> sweep;
+};
+
+ReportRequest readReportRequest(const QCommandLineParser& parser)
+{
+    if (!parser.isSet(QStringLiteral("out")))
+        throw UsageError(QStringLiteral("say where to write the report: --out DIR"));
+    ReportRequest r;
+    r.directory = parser.value(QStringLiteral("out"));
+    checkOutputFolder(r.directory, QStringLiteral("--out")); // before minutes of work, not after
+    r.base = settingsFromOptions(parser);
+    r.size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kReportSize);
+    r.frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
+    r.minFrames = std::min(r.frames, parseCount(parser.value(QStringLiteral("min-frames")), QStringLiteral("min-frames"), 1, 10000));
+    r.warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
+    r.samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
+    // Every entry is checked before any work starts; identical configurations are measured once.
+    r.sweep = distinctConfigurations(r.base, loadSweep(parser.value(QStringLiteral("sweep")), r.base));
+    r.tutorial = applySweepEntry(r.base, {QStringLiteral("tutorial"), tutorialAssignments()});
+    r.flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
+    return r;
+}
+
+// The rows with their accuracy, and what the reference cost.
+struct AccuracyPass {
+    std::vector<ReportRow> rows;
+    double raysPerSecond = 0.0;
+    double noiseFloor = 0.0;
+};
+
+// The share of the progress bar the accuracy pass takes; timing takes the rest.
+constexpr double kAccuracyShare = 0.5;
+
+// One configuration's accuracy and flicker, shown on the progress bar from `start`, `step` wide.
+ReportRow measureRow(const ReportRequest& request, const SweepConfiguration& configuration, HeadlessRenderer& headless,
+                     AccuracyMeter& meter, ProgressBar& progress, double start, double step)
+{
+    ReportRow row;
+    row.label = configuration.label;
+    row.assignments = configuration.assignments;
+    row.light = lightDescription(configuration.settings);
+    row.defaults = configuration.settings == request.base;
+    row.tutorial = configuration.settings == request.tutorial;
+    row.accuracy = measureAccuracy(meter, headless.renderer(), configuration.settings, request.size,
+                                   [&](double f) { progress.show(start + step * f, configuration.label + QStringLiteral(": accuracy")); },
+                                   &row.density);
+    if (request.flickerFrames > 1) {
+        progress.show(start + step, configuration.label + QStringLiteral(": flicker"));
+        row.flicker = measureFlicker(headless.renderer(), configuration.settings,
+                                     subTexelPath(headless.renderer(), configuration.settings, request.size, request.flickerFrames,
+                                                  kFlickerStepTexels),
+                                     request.size);
+    }
+    printFitWarnings(headless.renderer().lastFit(), configuration.label);
+    return row;
+}
+
+// First the accuracy of every configuration (the reference is traced once and reused)...
+AccuracyPass measureAllAccuracy(const ReportRequest& request, HeadlessRenderer& headless, AccuracyMeter& meter, ProgressBar& progress)
+{
+    AccuracyPass pass;
+    const std::vector<SweepConfiguration>& sweep = request.sweep;
+    for (std::size_t c = 0; c < sweep.size(); ++c) {
+        const double start = kAccuracyShare * double(c) / sweep.size(), step = kAccuracyShare / sweep.size();
+        ReportRow row = measureRow(request, sweep[c], headless, meter, progress, start, step);
+        if (row.accuracy.raysPerSecond > 0.0)
+            pass.raysPerSecond = row.accuracy.raysPerSecond;
+        pass.noiseFloor = std::max(pass.noiseFloor, row.accuracy.areaNoiseFloor);
+        pass.rows.push_back(std::move(row));
+    }
+    return pass;
+}
+
+// ...then their time, a batch of frames of each in turn, so a slow spell of a shared machine
+// lands on every configuration alike. The shadow pass runs every frame. Each batch follows an
+// unmeasured frame of the same configuration, so the switch from the previous configuration
+// (a shadow map of another size to allocate) is not timed.
+void timeAll(const ReportRequest& request, HeadlessRenderer& headless, ProgressBar& progress, std::vector<ReportRow>& rows)
+{
+    std::vector<TimedRun> runs;
+    for (const SweepConfiguration& configuration : request.sweep)
+        runs.push_back({&headless, configuration.settings, true, true, {}, {}});
+    SteadyTiming rule;
+    rule.minimum = request.minFrames;
+    rule.maximum = request.frames;
+    timeUntilSteady(runs, request.size, request.warmup, rule,
+                    [&](double f) { progress.show(kAccuracyShare + (1.0 - kAccuracyShare) * f, QStringLiteral("timing")); });
+    for (std::size_t c = 0; c < request.sweep.size(); ++c) {
+        rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
+        rows[c].litPass = summarize(runs[c].samples.litWall);
+        rows[c].frame = summarize(runs[c].samples.wall);
+    }
+}
+
+ReportFacts reportFacts(const ReportRequest& request, const Renderer& renderer, const AccuracyMeter& meter, const AccuracyPass& accuracy,
+                        const QElapsedTimer& total)
+{
+    ReportFacts facts;
+    facts.scene = request.base.scene;
+    facts.size = request.size;
+    facts.frames = request.frames;
+    facts.minFrames = request.minFrames;
+    facts.warmup = request.warmup;
+    facts.renderer = renderer.rendererString();
+    facts.machine = machineFacts();
+    facts.areaSamplesPerPixel = request.samples * request.samples;
+    facts.lightRadius = request.base.reference.lightRadius;
+    facts.areaNoiseFloor = accuracy.noiseFloor;
+    facts.raysPerSecond = accuracy.raysPerSecond;
+    facts.referenceComputations = meter.referenceComputations();
+    facts.seconds = double(total.elapsed()) / 1000.0;
+    return facts;
+}
+
+void printSummary(const ReportRequest& request, const std::vector<ReportRow>& rows, const ReportFacts& facts)
+{
+    out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
+          << QString::number(facts.raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
+    if (request.flickerFrames > 1)
+        printFlicker(rows);
+    printFronts(rows);
+    out() << "wrote " << QDir(request.directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
+}
+
 } // namespace
 
 int runReport(const QStringList& arguments)
 {
     return guarded(QStringLiteral("report"), [&] {
         QCommandLineParser parser;
-        parser.setApplicationDescription(QStringLiteral("Error against run time over a sweep of configurations, "
-                                                        "measured against a ray-traced reference of the same pixels."));
-        parser.addHelpOption();
-        addSettingsOptions(parser);
-        parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
-        parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, filterable (moment techniques, blur "
-                                         "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not, and sdsm), around (the settings given, "
-                                         "one change at a time, as the accuracy dock sweeps), or a JSON file (default: default)."),
-                          QStringLiteral("name|file.json"), QStringLiteral("default")});
-        parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});
-        parser.addOption({QStringLiteral("frames"), QStringLiteral("Timed frames per configuration at most (default 30)."), QStringLiteral("n"),
-                          QStringLiteral("30")});
-        parser.addOption({QStringLiteral("min-frames"),
-                          QStringLiteral("Timed frames per configuration at least; timing stops there once its median and p10-p90 hold "
-                                         "from batch to batch (default 8; as many as --frames: always that many)."),
-                          QStringLiteral("n"), QStringLiteral("8")});
-        parser.addOption({QStringLiteral("warmup"), QStringLiteral("Untimed frames first (default 3)."), QStringLiteral("n"), QStringLiteral("3")});
-        parser.addOption({QStringLiteral("area-samples"), QStringLiteral("Area reference samples per axis; n² rays per pixel (default 16)."),
-                          QStringLiteral("n"), QStringLiteral("16")});
-        parser.addOption({QStringLiteral("flicker-frames"),
-                          QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
-                          QStringLiteral("n"), QString::number(kFlickerFrames)});
+        addReportOptions(parser);
         if (!parseArguments(parser, QStringLiteral("report"), arguments))
             return kExitOk;
-        if (!parser.isSet(QStringLiteral("out")))
-            throw UsageError(QStringLiteral("say where to write the report: --out DIR"));
-        const QString directory = parser.value(QStringLiteral("out"));
-        checkOutputFolder(directory, QStringLiteral("--out")); // before minutes of work, not after
-        const Settings base = settingsFromOptions(parser);
-        const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kReportSize);
-        const int frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 10000);
-        const int minFrames = std::min(frames, parseCount(parser.value(QStringLiteral("min-frames")), QStringLiteral("min-frames"), 1, 10000));
-        const int warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 1000);
-        const int samples = parseCount(parser.value(QStringLiteral("area-samples")), QStringLiteral("area-samples"), 1, 64);
-        // Every entry is checked before any work starts; identical configurations are measured once.
-        const std::vector<SweepConfiguration> sweep = distinctConfigurations(base, loadSweep(parser.value(QStringLiteral("sweep")), base));
-        const Settings tutorial = applySweepEntry(base, {QStringLiteral("tutorial"), tutorialAssignments()});
-        const int flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
+        const ReportRequest request = readReportRequest(parser);
 
         QElapsedTimer total;
         total.start();
         HeadlessRenderer headless;
-        AccuracyMeter meter(ReferenceOptions{true, base.reference.lightRadius, samples});
+        AccuracyMeter meter(ReferenceOptions{true, request.base.reference.lightRadius, request.samples});
         ProgressBar progress;
-        std::vector<ReportRow> rows;
-        double raysPerSecond = 0.0, noiseFloor = 0.0;
-        // First the accuracy of every configuration (the reference is traced once and reused)...
-        const double accuracyShare = 0.5;
-        for (std::size_t c = 0; c < sweep.size(); ++c) {
-            const double start = accuracyShare * double(c) / sweep.size(), step = accuracyShare / sweep.size();
-            ReportRow row;
-            row.label = sweep[c].label;
-            row.assignments = sweep[c].assignments;
-            row.light = lightDescription(sweep[c].settings);
-            row.defaults = sweep[c].settings == base;
-            row.tutorial = sweep[c].settings == tutorial;
-            row.accuracy = measureAccuracy(meter, headless.renderer(), sweep[c].settings, size,
-                                         [&](double f) { progress.show(start + step * f, sweep[c].label + QStringLiteral(": accuracy")); },
-                                         &row.density);
-            if (flickerFrames > 1) {
-                progress.show(start + step, sweep[c].label + QStringLiteral(": flicker"));
-                row.flicker = measureFlicker(headless.renderer(), sweep[c].settings,
-                                             subTexelPath(headless.renderer(), sweep[c].settings, size, flickerFrames, kFlickerStepTexels), size);
-            }
-            printFitWarnings(headless.renderer().lastFit(), sweep[c].label);
-            if (row.accuracy.raysPerSecond > 0.0)
-                raysPerSecond = row.accuracy.raysPerSecond;
-            noiseFloor = std::max(noiseFloor, row.accuracy.areaNoiseFloor);
-            rows.push_back(std::move(row));
-        }
-        // ...then their time, a batch of frames of each in turn, so a slow spell of a shared
-        // machine lands on every configuration alike. The shadow pass runs every frame. Each
-        // batch follows an unmeasured frame of the same configuration, so the switch from the
-        // previous configuration (a shadow map of another size to allocate) is not timed.
-        std::vector<TimedRun> runs;
-        for (const SweepConfiguration& configuration : sweep)
-            runs.push_back({&headless, configuration.settings, true, true, {}, {}});
-        SteadyTiming rule;
-        rule.minimum = minFrames;
-        rule.maximum = frames;
-        timeUntilSteady(runs, size, warmup, rule,
-                        [&](double f) { progress.show(accuracyShare + (1.0 - accuracyShare) * f, QStringLiteral("timing")); });
-        for (std::size_t c = 0; c < sweep.size(); ++c) {
-            rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
-            rows[c].litPass = summarize(runs[c].samples.litWall);
-            rows[c].frame = summarize(runs[c].samples.wall);
-        }
+        AccuracyPass accuracy = measureAllAccuracy(request, headless, meter, progress);
+        timeAll(request, headless, progress, accuracy.rows);
         progress.done();
-        markParetoFronts(rows);
+        markParetoFronts(accuracy.rows);
 
-        ReportFacts facts;
-        facts.scene = base.scene;
-        facts.size = size;
-        facts.frames = frames;
-        facts.minFrames = minFrames;
-        facts.warmup = warmup;
-        facts.renderer = headless.renderer().rendererString();
-        facts.machine = machineFacts();
-        facts.areaSamplesPerPixel = samples * samples;
-        facts.lightRadius = base.reference.lightRadius;
-        facts.areaNoiseFloor = noiseFloor;
-        facts.raysPerSecond = raysPerSecond;
-        facts.referenceComputations = meter.referenceComputations();
-        facts.seconds = double(total.elapsed()) / 1000.0;
-        writeReport(directory, rows, facts);
-
-        out() << "configurations: " << rows.size() << ", reference traced " << facts.referenceComputations << " time(s) at "
-              << QString::number(raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
-        if (flickerFrames > 1)
-            printFlicker(rows);
-        printFronts(rows);
-        out() << "wrote " << QDir(directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
+        const ReportFacts facts = reportFacts(request, headless.renderer(), meter, accuracy, total);
+        writeReport(request.directory, accuracy.rows, facts);
+        printSummary(request, accuracy.rows, facts);
         return kExitOk;
     });
 }

@@ -38,99 +38,129 @@ QString measured(const BiasCandidate& c)
         .arg(percent(c.misclassified()), pixels(c), percent(c.falseShadow), percent(c.falseLight));
 }
 
+void addTuneOptions(QCommandLineParser& parser)
+{
+    parser.setApplicationDescription(QStringLiteral(
+        "Search the bias (bias.slope x bias.min, in the unit of bias.space) that misclassifies the fewest pixels against the "
+        "ray-traced hard reference, over the current view and a spread of light directions; print the acne-against-leak "
+        "trade-off and the best setting."));
+    parser.addHelpOption();
+    addSettingsOptions(parser);
+    parser.addOption({QStringLiteral("size"), QStringLiteral("Image size measured (default 320x180)."), QStringLiteral("WxH"),
+                      QStringLiteral("320x180")});
+    parser.addOption({QStringLiteral("out"), QStringLiteral("Write the settings with the best bias to this JSON file."),
+                      QStringLiteral("file.json")});
+    parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
+}
+
+BiasTuning searchBias(Renderer& renderer, const Settings& settings, QSize size)
+{
+    BiasTuner tuner(settings, size);
+    ProgressBar progress;
+    while (!tuner.done()) {
+        tuner.step(renderer);
+        progress.show(double(tuner.stepsDone()) / tuner.steps(), QStringLiteral("tuning bias"));
+    }
+    progress.done();
+    return tuner.result();
+}
+
+// A change within the error noise buys nothing: the settings stay as they are.
+Settings tunedSettings(Settings settings, const BiasTuning& t)
+{
+    if (t.improves) {
+        settings.bias.slope = t.candidates[t.best].slope;
+        settings.bias.min = t.candidates[t.best].min;
+    }
+    return settings;
+}
+
+void printJson(const BiasTuning& t, const QString& rendererString)
+{
+    QJsonArray front, all;
+    for (const std::size_t i : t.front)
+        front.append(candidateJson(t.candidates[i]));
+    for (const BiasCandidate& c : t.candidates)
+        all.append(candidateJson(c));
+    QJsonArray placements;
+    for (const glm::dvec3& p : t.placements)
+        placements.append(QJsonArray{p.x, p.y, p.z});
+    out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
+                                       {QStringLiteral("bias_space"), toString(t.space)},
+                                       {QStringLiteral("light_placements"), placements},
+                                       {QStringLiteral("current"), candidateJson(t.current)},
+                                       {QStringLiteral("best"), candidateJson(t.candidates[t.best])},
+                                       {QStringLiteral("improves"), t.improves},
+                                       {QStringLiteral("noise_pixels"), errorNoisePixels(t.current.misclassifiedPixels)},
+                                       {QStringLiteral("front"), front},
+                                       {QStringLiteral("candidates"), all}})
+                 .toJson(QJsonDocument::Indented);
+}
+
+// The front of false shadow against false light, the best and the current setting marked.
+void printTradeOff(const BiasTuning& t, QSize size, const QString& rendererString)
+{
+    out() << "renderer: " << rendererString << '\n'
+          << "bias in " << toString(t.space) << " units, " << t.candidates.size() << " settings x " << t.placements.size()
+          << " light directions at " << size.width() << "x" << size.height() << ", against the hard reference\n\n"
+          << "the trade-off (no other setting has less of both), in % of measured pixels:\n"
+          << QStringLiteral("  %1 %2 %3 %4\n").arg(QStringLiteral("slope"), 8).arg(QStringLiteral("min"), 8)
+                 .arg(QStringLiteral("false shadow"), 13).arg(QStringLiteral("false light"), 12);
+    for (const std::size_t i : t.front) {
+        const BiasCandidate& c = t.candidates[i];
+        QStringList marks;
+        if (i == t.best)
+            marks << QStringLiteral("best");
+        if (i == t.currentCandidate)
+            marks << QStringLiteral("as set");
+        out() << QStringLiteral("  %1 %2 %3 %4%5\n").arg(c.slope, 8).arg(c.min, 8).arg(percent(c.falseShadow), 13)
+                     .arg(percent(c.falseLight), 12).arg(marks.isEmpty() ? QString() : QStringLiteral("   <- ") + marks.join(QStringLiteral(", ")));
+    }
+}
+
+// The current and the best setting, and whether changing to the best is worth it.
+void printVerdict(const BiasTuning& t)
+{
+    const BiasCandidate& best = t.candidates[t.best];
+    out() << '\n' << "as set   " << measured(t.current) << '\n' << "best     " << measured(best) << '\n';
+    if (t.improves) {
+        out() << "apply with: --set bias.space=" << toString(t.space) << " --set bias.slope=" << best.slope << " --set bias.min=" << best.min << '\n';
+    } else {
+        const auto noise = [](const BiasCandidate& c) { return QString::number(errorNoisePixels(c.misclassifiedPixels), 'f', 0); };
+        out() << QStringLiteral("the current setting is already on the knee: %1 px against the best point's %2 px differ by less than "
+                                "their noise (±%3 and ±%4 px); nothing to change\n")
+                     .arg(pixels(t.current), pixels(best), noise(t.current), noise(best));
+    }
+}
+
 } // namespace
 
 int runTune(const QStringList& arguments)
 {
     return guarded(QStringLiteral("tune"), [&] {
         QCommandLineParser parser;
-        parser.setApplicationDescription(QStringLiteral(
-            "Search the bias (bias.slope x bias.min, in the unit of bias.space) that misclassifies the fewest pixels against the "
-            "ray-traced hard reference, over the current view and a spread of light directions; print the acne-against-leak "
-            "trade-off and the best setting."));
-        parser.addHelpOption();
-        addSettingsOptions(parser);
-        parser.addOption({QStringLiteral("size"), QStringLiteral("Image size measured (default 320x180)."), QStringLiteral("WxH"),
-                          QStringLiteral("320x180")});
-        parser.addOption({QStringLiteral("out"), QStringLiteral("Write the settings with the best bias to this JSON file."),
-                          QStringLiteral("file.json")});
-        parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
+        addTuneOptions(parser);
         if (!parseArguments(parser, QStringLiteral("tune"), arguments))
             return kExitOk;
         const Settings settings = settingsFromOptions(parser);
         const QSize size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kTuneSize);
-        if (parser.isSet(QStringLiteral("out")))
-            checkOutputFile(parser.value(QStringLiteral("out")), QStringLiteral("--out"));   // before minutes of work
+        const bool save = parser.isSet(QStringLiteral("out"));
+        const QString file = parser.value(QStringLiteral("out"));
+        if (save)
+            checkOutputFile(file, QStringLiteral("--out"));   // before minutes of work
 
         HeadlessRenderer headless;
-        BiasTuner tuner(settings, size);
-        ProgressBar progress;
-        while (!tuner.done()) {
-            tuner.step(headless.renderer());
-            progress.show(double(tuner.stepsDone()) / tuner.steps(), QStringLiteral("tuning bias"));
-        }
-        progress.done();
-        const BiasTuning t = tuner.result();
-        const BiasCandidate& best = t.candidates[t.best];
-        // A change within the error noise buys nothing: the settings stay as they are.
-        Settings tuned = settings;
-        if (t.improves) {
-            tuned.bias.slope = best.slope;
-            tuned.bias.min = best.min;
-        }
-        if (parser.isSet(QStringLiteral("out")))
-            saveSettingsFile(parser.value(QStringLiteral("out")), tuned);   // whole or not at all
-
-        const QString unit = toString(t.space);
+        const BiasTuning t = searchBias(headless.renderer(), settings, size);
+        if (save)
+            saveSettingsFile(file, tunedSettings(settings, t));   // whole or not at all
         if (parser.isSet(QStringLiteral("json"))) {
-            QJsonArray front, all;
-            for (const std::size_t i : t.front)
-                front.append(candidateJson(t.candidates[i]));
-            for (const BiasCandidate& c : t.candidates)
-                all.append(candidateJson(c));
-            QJsonArray placements;
-            for (const glm::dvec3& p : t.placements)
-                placements.append(QJsonArray{p.x, p.y, p.z});
-            out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), headless.renderer().rendererString()},
-                                               {QStringLiteral("bias_space"), unit},
-                                               {QStringLiteral("light_placements"), placements},
-                                               {QStringLiteral("current"), candidateJson(t.current)},
-                                               {QStringLiteral("best"), candidateJson(best)},
-                                               {QStringLiteral("improves"), t.improves},
-                                               {QStringLiteral("noise_pixels"), errorNoisePixels(t.current.misclassifiedPixels)},
-                                               {QStringLiteral("front"), front},
-                                               {QStringLiteral("candidates"), all}})
-                         .toJson(QJsonDocument::Indented);
+            printJson(t, headless.renderer().rendererString());
             return kExitOk;
         }
-        out() << "renderer: " << headless.renderer().rendererString() << '\n'
-              << "bias in " << unit << " units, " << t.candidates.size() << " settings x " << t.placements.size()
-              << " light directions at " << size.width() << "x" << size.height() << ", against the hard reference\n\n"
-              << "the trade-off (no other setting has less of both), in % of measured pixels:\n"
-              << QStringLiteral("  %1 %2 %3 %4\n").arg(QStringLiteral("slope"), 8).arg(QStringLiteral("min"), 8)
-                     .arg(QStringLiteral("false shadow"), 13).arg(QStringLiteral("false light"), 12);
-        for (const std::size_t i : t.front) {
-            const BiasCandidate& c = t.candidates[i];
-            QStringList marks;
-            if (i == t.best)
-                marks << QStringLiteral("best");
-            if (i == t.currentCandidate)
-                marks << QStringLiteral("as set");
-            out() << QStringLiteral("  %1 %2 %3 %4%5\n").arg(c.slope, 8).arg(c.min, 8).arg(percent(c.falseShadow), 13)
-                         .arg(percent(c.falseLight), 12).arg(marks.isEmpty() ? QString() : QStringLiteral("   <- ") + marks.join(QStringLiteral(", ")));
-        }
-        out() << '\n' << "as set   " << measured(t.current) << '\n' << "best     " << measured(best) << '\n';
-        if (t.improves) {
-            out() << "apply with: --set bias.space=" << unit << " --set bias.slope=" << best.slope << " --set bias.min=" << best.min << '\n';
-        } else {
-            const auto noise = [](const BiasCandidate& c) { return QString::number(errorNoisePixels(c.misclassifiedPixels), 'f', 0); };
-            out() << QStringLiteral("the current setting is already on the knee: %1 px against the best point's %2 px differ by less than "
-                                    "their noise (±%3 and ±%4 px); nothing to change\n")
-                         .arg(pixels(t.current), pixels(best), noise(t.current), noise(best));
-        }
-        if (parser.isSet(QStringLiteral("out")))
-            out() << "wrote " << QFileInfo(parser.value(QStringLiteral("out"))).absoluteFilePath()
-                  << (t.improves ? QString() : QStringLiteral(" (the settings as set)")) << '\n';
+        printTradeOff(t, size, headless.renderer().rendererString());
+        printVerdict(t);
+        if (save)
+            out() << "wrote " << QFileInfo(file).absoluteFilePath() << (t.improves ? QString() : QStringLiteral(" (the settings as set)")) << '\n';
         return kExitOk;
     });
 }

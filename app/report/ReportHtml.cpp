@@ -94,18 +94,46 @@ QString smallestBandText(const std::vector<ReportRow>& rows, ErrorAxis axis)
     return QStringLiteral("±%1 px is %2 % of %3 measured pixels").arg(band).arg(percentText(100.0 * band / std::max(1, pixels)), QLocale(QLocale::English).toString(pixels));
 }
 
-// An inline SVG scatter plot of each row's error on `axis` (in percent, on a log axis) against
-// frame time, with both noises as bars (p10–p90 across, the error's band up and down); each
-// light's Pareto front on that axis marked, joined in its colour and labelled, with the
-// defaults and the tutorial; labels placed where they hide nothing.
-QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle, ErrorAxis axis)
+double errorPercent(const ReportRow& r, ErrorAxis axis)
 {
-    const auto value = [axis](const ReportRow& r) { return 100.0 * errorShare(r, axis); };
-    const double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
+    return 100.0 * errorShare(r, axis);
+}
+
+QLatin1String lightColour(const ReportRow& r, const QStringList& lights)
+{
+    return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]);
+}
+
+// Where a chart puts its values: frame time (ms) across on round ticks, the error (%) up on a
+// log axis of whole decades, with a line of its own below them for 0 %.
+struct ChartScale {
+    static constexpr double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
+    double xMax = 0.0;
+    double xStep = 1.0;
+    int xTicks = 0;
+    int xDecimals = 0;
+    double yMin = 0.01;
+    double yMax = 1.0;
+    bool anyZero = false;
+    double zeroBand = 0.0;
+
+    double px(double x) const { return left + x / xMax * (w - left - right); }
+    double py(double y) const
+    {
+        if (y <= 0.0)
+            return h - bottom;
+        const double t = std::log10(std::max(y, yMin) / yMin) / std::log10(yMax / yMin);
+        return h - bottom - zeroBand - t * (h - top - bottom - zeroBand);
+    }
+};
+
+ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
+{
+    ChartScale c;
     double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
     for (const ReportRow& r : rows) {
         xMax = std::max(xMax, r.frame.p90);
-        const double v = value(r);
+        const double v = errorPercent(r, axis);
         if (v > 0.0) {
             yLow = yLow > 0.0 ? std::min(yLow, v) : v;
             yHigh = std::max(yHigh, v);
@@ -114,44 +142,43 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
     // Round ticks: a step of 1, 2 or 5 times a power of ten, about five of them.
     const double rough = (xMax > 0.0 ? xMax * 1.05 : 1.0) / 5.0;
     const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    const double xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
-    const int xTicks = int(std::ceil(xMax * 1.05 / xStep));
-    xMax = xStep * xTicks;
-    const int xDecimals = std::max(0, -int(std::floor(std::log10(xStep))));
+    c.xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
+    c.xTicks = int(std::ceil(xMax * 1.05 / c.xStep));
+    c.xMax = c.xStep * c.xTicks;
+    c.xDecimals = std::max(0, -int(std::floor(std::log10(c.xStep))));
     // Whole decades around the values: one outlier at 40 % leaves 0.01 % readable.
-    const double yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
-    double yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
-    if (yMax <= yMin)
-        yMax = yMin * 10.0;
+    c.yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
+    c.yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
+    if (c.yMax <= c.yMin)
+        c.yMax = c.yMin * 10.0;
     // 0 % has no place on a log axis: it gets a line of its own below the lowest decade.
-    const bool anyZero = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return value(r) <= 0.0; });
-    const double zeroBand = anyZero ? 22.0 : 0.0;
-    auto px = [&](double x) { return left + x / xMax * (w - left - right); };
-    auto py = [&](double y) {
-        if (y <= 0.0)
-            return h - bottom;
-        const double t = std::log10(std::max(y, yMin) / yMin) / std::log10(yMax / yMin);
-        return h - bottom - zeroBand - t * (h - top - bottom - zeroBand);
-    };
+    c.anyZero = std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return errorPercent(r, axis) <= 0.0; });
+    c.zeroBand = c.anyZero ? 22.0 : 0.0;
+    return c;
+}
 
-    QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(w).arg(h);
-    for (int i = 0; i <= xTicks; ++i) {
-        const double x = xStep * i;
-        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(px(x)).arg(top).arg(h - bottom);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(px(x)).arg(h - bottom + 18).arg(number(x, xDecimals));
+// The grid, its ticks and the two axis titles.
+QString chartAxes(const ChartScale& c, const QString& yTitle)
+{
+    const double w = c.w, h = c.h, left = c.left, right = c.right, top = c.top, bottom = c.bottom;
+    QString svg;
+    for (int i = 0; i <= c.xTicks; ++i) {
+        const double x = c.xStep * i;
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(c.px(x)).arg(top).arg(h - bottom);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(c.px(x)).arg(h - bottom + 18).arg(number(x, c.xDecimals));
     }
-    if (anyZero) {
-        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(py(0.0)).arg(w - right);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 %</text>").arg(left - 6).arg(py(0.0) + 4);
+    if (c.anyZero) {
+        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(c.py(0.0)).arg(w - right);
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">0 %</text>").arg(left - 6).arg(c.py(0.0) + 4);
     }
-    for (double y : logTicks(yMin, yMax)) {
+    for (double y : logTicks(c.yMin, c.yMax)) {
         const bool decade = std::abs(std::log10(y) - std::round(std::log10(y))) < 1e-9;
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"%4\"/>")
                    .arg(left)
-                   .arg(py(y))
+                   .arg(c.py(y))
                    .arg(w - right)
                    .arg(decade ? QStringLiteral("grid") : QStringLiteral("grid minor"));
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(py(y) + 4).arg(percentText(y));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(c.py(y) + 4).arg(percentText(y));
     }
     svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms; median, bar p10–p90)</text>")
                .arg((left + w - right) / 2)
@@ -159,54 +186,67 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
     svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2 (log scale)</text>")
                .arg((top + h - bottom) / 2)
                .arg(html(yTitle));
+    return svg;
+}
 
-    auto colour = [&](const ReportRow& r) { return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]); };
-    // Each light's front, from fast to slow.
+// Each light's front, from fast to slow. The line steps down through the front points that beat
+// every faster one; the points that tie with them are on the front as well, as large dots, but
+// a line through every tie would zig-zag.
+QString frontLines(const std::vector<ReportRow>& rows, const QStringList& lights, ErrorAxis axis, const ChartScale& c)
+{
+    QString svg;
     for (const QString& light : lights) {
-        // The line steps down through the front points that beat every faster one; the points that
-        // tie with them are on the front as well, as large dots, but a line through every tie
-        // would zig-zag.
         std::vector<const ReportRow*> steps;
         for (const ReportRow* r : frontOf(rows, light, axis)) {
-            if (steps.empty() || value(*r) < value(*steps.back()))
+            if (steps.empty() || errorPercent(*r, axis) < errorPercent(*steps.back(), axis))
                 steps.push_back(r);
         }
         if (steps.size() < 2)
             continue;
         QString points;
         for (const ReportRow* r : steps)
-            points += QStringLiteral("%1,%2 ").arg(px(r->frame.median)).arg(py(value(*r)));
-        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), colour(*steps.front()));
+            points += QStringLiteral("%1,%2 ").arg(c.px(r->frame.median)).arg(c.py(errorPercent(*r, axis)));
+        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), lightColour(*steps.front(), lights));
     }
-    std::vector<Box> taken;
+    return svg;
+}
+
+// Every row's noise bars, then its point; `taken` gets a box around each point, which labels
+// keep off.
+QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lights, ErrorAxis axis, const ChartScale& c, std::vector<Box>& taken)
+{
+    QString svg;
     for (const ReportRow& r : rows) {
-        const double x = px(r.frame.median), y = py(value(r));
+        const double x = c.px(r.frame.median), y = c.py(errorPercent(r, axis));
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
-                   .arg(px(r.frame.p10))
+                   .arg(c.px(r.frame.p10))
                    .arg(y)
-                   .arg(px(r.frame.p90))
-                   .arg(colour(r));
+                   .arg(c.px(r.frame.p90))
+                   .arg(lightColour(r, lights));
         if (measuredPixels(r, axis) > 0) {
             const auto [low, high] = noiseBand(r, axis);
             svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
                        .arg(x)
-                       .arg(py(std::min(high, yMax)))
-                       .arg(py(low))
-                       .arg(colour(r));
+                       .arg(c.py(std::min(high, c.yMax)))
+                       .arg(c.py(low))
+                       .arg(lightColour(r, lights));
         }
-        taken.push_back({x - 6, y - 6, x + 6, y + 6});  // labels keep off the points too
+        taken.push_back({x - 6, y - 6, x + 6, y + 6});
     }
     for (const ReportRow& r : rows) {
         svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7 ms (p10 %8, p90 %9), %10 %</title></circle>")
-                   .arg(px(r.frame.median))
-                   .arg(py(value(r)))
+                   .arg(c.px(r.frame.median))
+                   .arg(c.py(errorPercent(r, axis)))
                    .arg(onFront(r, axis) ? 6 : 4)
-                   .arg(colour(r), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
-                   .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(value(r)));
+                   .arg(lightColour(r, lights), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(errorPercent(r, axis)));
     }
-    // Labels for the front and the two reference configurations, first fit wins: right, left,
-    // above, below the point; a label that fits nowhere is left out (the point's tooltip and
-    // the table still name it).
+    return svg;
+}
+
+// The rows that get a label: the two reference configurations first, then the front.
+std::vector<const ReportRow*> labelledRows(const std::vector<ReportRow>& rows, ErrorAxis axis)
+{
     std::vector<const ReportRow*> labelled;
     for (const ReportRow& r : rows) {
         if (r.defaults || r.tutorial)
@@ -216,21 +256,35 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
         if (onFront(r, axis) && !r.defaults && !r.tutorial)
             labelled.push_back(&r);
     }
-    for (const ReportRow* r : labelled) {
-        const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
-        const double tw = kCharWidth * text.size(), x = px(r->frame.median), y = py(value(*r));
-        // Beside the point first, then further up or down with a leader line.
-        std::vector<Box> candidates;
-        for (int away = 0; away < 5; ++away) {
-            const double dy = 4 + away * (kLabelHeight + 2);
-            for (double side : {1.0, -1.0}) {
-                const double x0 = side > 0 ? x + 8 : x - 8 - tw;
-                candidates.push_back({x0, y - dy - kLabelHeight, x0 + tw, y - dy});
-                candidates.push_back({x0, y + dy, x0 + tw, y + dy + kLabelHeight});
-            }
+    return labelled;
+}
+
+// Where a label `width` wide may go for the point (x, y), in the order tried: beside the point
+// first, right then left, above then below, then further up or down (with a leader line).
+std::vector<Box> labelPlaces(double x, double y, double width)
+{
+    std::vector<Box> places;
+    for (int away = 0; away < 5; ++away) {
+        const double dy = 4 + away * (kLabelHeight + 2);
+        for (double side : {1.0, -1.0}) {
+            const double x0 = side > 0 ? x + 8 : x - 8 - width;
+            places.push_back({x0, y - dy - kLabelHeight, x0 + width, y - dy});
+            places.push_back({x0, y + dy, x0 + width, y + dy + kLabelHeight});
         }
-        for (const Box& b : candidates) {
-            const bool inside = b.x0 >= left + 2 && b.x1 <= w - right && b.y0 >= top && b.y1 <= h - bottom;
+    }
+    return places;
+}
+
+// Labels for the front and the two reference configurations, first fit wins; a label that fits
+// nowhere is left out (the point's tooltip and the table still name it).
+QString pointLabels(const std::vector<ReportRow>& rows, ErrorAxis axis, const ChartScale& c, std::vector<Box>& taken)
+{
+    QString svg;
+    for (const ReportRow* r : labelledRows(rows, axis)) {
+        const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
+        const double x = c.px(r->frame.median), y = c.py(errorPercent(*r, axis));
+        for (const Box& b : labelPlaces(x, y, kCharWidth * text.size())) {
+            const bool inside = b.x0 >= c.left + 2 && b.x1 <= c.w - c.right && b.y0 >= c.top && b.y1 <= c.h - c.bottom;
             if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); }))
                 continue;
             if (b.y1 < y - 4 - kLabelHeight || b.y0 > y + 4 + kLabelHeight) {
@@ -246,6 +300,22 @@ QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, con
             break;
         }
     }
+    return svg;
+}
+
+// An inline SVG scatter plot of each row's error on `axis` (in percent, on a log axis) against
+// frame time, with both noises as bars (p10–p90 across, the error's band up and down); each
+// light's Pareto front on that axis marked, joined in its colour and labelled, with the
+// defaults and the tutorial; labels placed where they hide nothing.
+QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle, ErrorAxis axis)
+{
+    const ChartScale c = chartScale(rows, axis);
+    std::vector<Box> taken;
+    QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(c.w).arg(c.h);
+    svg += chartAxes(c, yTitle);
+    svg += frontLines(rows, lights, axis, c);
+    svg += pointsAndBars(rows, lights, axis, c, taken);
+    svg += pointLabels(rows, axis, c, taken);
     return svg + QStringLiteral("</svg>");
 }
 
@@ -359,22 +429,10 @@ QString flickerSection(const std::vector<ReportRow>& rows)
     return section + QStringLiteral("</table>");
 }
 
-} // namespace
-
-QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& facts)
+// The page's head and style, and the facts of the run under its title.
+QString pageHead(const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
-    // The lights in order of appearance: each has its own front and colour.
-    const QStringList lights = lightsOf(rows);
-    const ReportRow* best = nullptr;
-    const ReportRow* worst = nullptr;
-    for (const ReportRow& r : rows) {
-        if (!best || r.accuracy.hard.misclassified < best->accuracy.hard.misclassified)
-            best = &r;
-        if (!worst || r.accuracy.hard.misclassified > worst->accuracy.hard.misclassified)
-            worst = &r;
-    }
-
-    QString page = QStringLiteral(R"(<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>ShadowLab report: %1</title>
+    return QStringLiteral(R"(<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>ShadowLab report: %1</title>
 <style>
 body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:#222;background:#fafafa}
 h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
@@ -394,60 +452,92 @@ Renderer: %6<br>Machine: %7<br>
 Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10 %);
 %11 Mrays/s; traced %12 time(s) for %13 configurations. Whole run: %14 s.</p>
 )")
-                       .arg(html(facts.scene))
-                       .arg(facts.size.width())
-                       .arg(facts.size.height())
-                       .arg(facts.minFrames < facts.frames ? QStringLiteral("%1–%2 (until its median and p10–p90 held)").arg(facts.minFrames).arg(facts.frames)
-                                                       : QString::number(facts.frames))
-                       .arg(facts.warmup)
-                       .arg(html(facts.renderer), html(facts.machine))
-                       .arg(facts.areaSamplesPerPixel)
-                       .arg(facts.lightRadius)
-                       .arg(percentText(100 * facts.areaNoiseFloor))
-                       .arg(number(facts.raysPerSecond * 1e-6, 2))
-                       .arg(facts.referenceComputations)
-                       .arg(rows.size())
-                       .arg(number(facts.seconds, 1));
-    if (lights.size() > 1) {
-        page += QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable):");
-        for (qsizetype i = 0; i < lights.size(); ++i)
-            page += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
-        page += QStringLiteral("</p>");
+        .arg(html(facts.scene))
+        .arg(facts.size.width())
+        .arg(facts.size.height())
+        .arg(facts.minFrames < facts.frames ? QStringLiteral("%1–%2 (until its median and p10–p90 held)").arg(facts.minFrames).arg(facts.frames)
+                                        : QString::number(facts.frames))
+        .arg(facts.warmup)
+        .arg(html(facts.renderer), html(facts.machine))
+        .arg(facts.areaSamplesPerPixel)
+        .arg(facts.lightRadius)
+        .arg(percentText(100 * facts.areaNoiseFloor))
+        .arg(number(facts.raysPerSecond * 1e-6, 2))
+        .arg(facts.referenceComputations)
+        .arg(rows.size())
+        .arg(number(facts.seconds, 1));
+}
+
+// Under several lights, the colour of each: every light has its own front.
+QString lightsLegend(const QStringList& lights)
+{
+    if (lights.size() <= 1)
+        return QString();
+    QString legend = QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable):");
+    for (qsizetype i = 0; i < lights.size(); ++i)
+        legend += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
+    return legend + QStringLiteral("</p>");
+}
+
+// Both charts and what their dots, lines and bars mean.
+QString chartsSection(const std::vector<ReportRow>& rows, const QStringList& lights)
+{
+    QString section = QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
+    section += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
+    section += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
+    section += chart(rows, lights, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
+    section += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
+                              "are more accurate than every faster one. A configuration leaves "
+                              "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
+                              "other's p10; the bars across) and clearly more accurate (their error bands apart; the bars up and down). "
+                              "Configurations that tie on either axis stay on the front together. An error is a count of pixels (MAE "
+                              "times the pixels measured, as fully wrong pixels), and a count n is known to n ± max(3, 2√n): a sub-texel "
+                              "move of camera or light slides the pixels along every shadow edge in or out of error, scattering a count "
+                              "by about √n, and fewer than a few pixels are not resolved at all (%1). Identical configurations are "
+                              "measured once, their names joined with “=”.</p>")
+                   .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)));
+    return section;
+}
+
+// The error images of the defaults, the tutorial, and the most and least accurate configuration.
+QString errorImages(const std::vector<ReportRow>& rows)
+{
+    if (rows.empty())
+        return QString();
+    const auto byError = [](const ReportRow& a, const ReportRow& b) { return a.accuracy.hard.misclassified < b.accuracy.hard.misclassified; };
+    const ReportRow* best = &*std::min_element(rows.begin(), rows.end(), byError);
+    const ReportRow* worst = &*std::max_element(rows.begin(), rows.end(), byError);
+    QString section = QStringLiteral("<h2>Error images</h2><p class=\"key\">Against the hard reference:<span style=\"background:#eb28c8\"></span>false shadow (acne)"
+                                     "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks). Beside each, the part of the frame "
+                                     "where its errors are densest, enlarged.</p>");
+    std::vector<std::pair<QString, const ReportRow*>> shown;
+    for (const ReportRow& r : rows) {
+        if (r.defaults)
+            shown.emplace_back(QStringLiteral("Defaults"), &r);
     }
-    page += QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
-    page += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
-    page += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
-    page += chart(rows, lights, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
-    page += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
-                           "are more accurate than every faster one. A configuration leaves "
-                           "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
-                           "other's p10; the bars across) and clearly more accurate (their error bands apart; the bars up and down). "
-                           "Configurations that tie on either axis stay on the front together. An error is a count of pixels (MAE "
-                           "times the pixels measured, as fully wrong pixels), and a count n is known to n ± max(3, 2√n): a sub-texel "
-                           "move of camera or light slides the pixels along every shadow edge in or out of error, scattering a count "
-                           "by about √n, and fewer than a few pixels are not resolved at all (%1). Identical configurations are "
-                           "measured once, their names joined with “=”.</p>")
-                .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)));
+    for (const ReportRow& r : rows) {
+        if (r.tutorial)
+            shown.emplace_back(QStringLiteral("Tutorial configuration"), &r);
+    }
+    shown.emplace_back(QStringLiteral("Most accurate"), best);
+    shown.emplace_back(QStringLiteral("Least accurate"), worst);
+    for (const auto& [title, row] : shown)
+        section += QStringLiteral("<div class=\"images\">") + errorFigure(title, *row) + QStringLiteral("</div>");
+    return section;
+}
+
+} // namespace
+
+QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& facts)
+{
+    // The lights in order of appearance: each has its own front and colour.
+    const QStringList lights = lightsOf(rows);
+    QString page = pageHead(rows, facts);
+    page += lightsLegend(lights);
+    page += chartsSection(rows, lights);
     page += configurationTable(rows, lights);
     page += flickerSection(rows);
-    if (best && worst) {
-        page += QStringLiteral("<h2>Error images</h2><p class=\"key\">Against the hard reference:<span style=\"background:#eb28c8\"></span>false shadow (acne)"
-                               "<span style=\"background:#28dceb\"></span>false light (peter panning, leaks). Beside each, the part of the frame "
-                               "where its errors are densest, enlarged.</p>");
-        std::vector<std::pair<QString, const ReportRow*>> shown;
-        for (const ReportRow& r : rows) {
-            if (r.defaults)
-                shown.emplace_back(QStringLiteral("Defaults"), &r);
-        }
-        for (const ReportRow& r : rows) {
-            if (r.tutorial)
-                shown.emplace_back(QStringLiteral("Tutorial configuration"), &r);
-        }
-        shown.emplace_back(QStringLiteral("Most accurate"), best);
-        shown.emplace_back(QStringLiteral("Least accurate"), worst);
-        for (const auto& [title, row] : shown)
-            page += QStringLiteral("<div class=\"images\">") + errorFigure(title, *row) + QStringLiteral("</div>");
-    }
+    page += errorImages(rows);
     page += QStringLiteral("</body></html>\n");
     return page.toUtf8();
 }

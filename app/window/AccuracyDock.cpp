@@ -26,7 +26,28 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
 
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
+    addMeasureRows(layout);
+    m_metrics = new AccuracyMetricsPanel;
+    layout->addWidget(m_metrics);
+    m_chart = new SweepChartPanel;
+    layout->addWidget(m_chart, 1);
+    addTuningRows(layout);
 
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    setWidget(scroll);
+
+    connectController();
+    m_metrics->showMeasurement(*m_controller);
+    updateButtons();
+}
+
+AccuracyDock::~AccuracyDock() = default;
+
+void AccuracyDock::addMeasureRows(QVBoxLayout* layout)
+{
     m_compareButton = new QPushButton(tr("Compare with reference"));
     m_compareButton->setObjectName(QStringLiteral("compareButton"));
     m_compareButton->setToolTip(tr("Measure the current view against a ray-traced reference (traced once, then reused "
@@ -49,12 +70,10 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_status);
+}
 
-    m_metrics = new AccuracyMetricsPanel;
-    layout->addWidget(m_metrics);
-    m_chart = new SweepChartPanel;
-    layout->addWidget(m_chart, 1);
-
+void AccuracyDock::addTuningRows(QVBoxLayout* layout)
+{
     auto* tuneRow = new QHBoxLayout;
     m_tuneButton = new QPushButton(tr("Tune bias"));
     m_tuneButton->setObjectName(QStringLiteral("tuneButton"));
@@ -75,13 +94,10 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     m_tuningResult = noteLabel(QStringLiteral("tuningResult"));
     m_tuningResult->setVisible(false);
     layout->addWidget(m_tuningResult);
+}
 
-    auto* scroll = new QScrollArea;
-    scroll->setWidget(content);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    setWidget(scroll);
-
+void AccuracyDock::connectController()
+{
     connect(m_compareButton, &QPushButton::clicked, m_controller, &AccuracyController::compare);
     connect(m_chart->sweepButton(), &QPushButton::clicked, m_controller, &AccuracyController::sweep);
     connect(m_cancelButton, &QPushButton::clicked, m_controller, &AccuracyController::cancel);
@@ -113,12 +129,7 @@ AccuracyDock::AccuracyDock(QWidget* parent) : QDockWidget(tr("Accuracy"), parent
     connect(m_controller, &AccuracyController::sweepStarted, m_chart, &SweepChartPanel::startSweep);
     connect(m_controller, &AccuracyController::sweepPointsChanged, this,
             [this] { m_chart->setPoints(m_controller->sweepPoints()); });
-
-    m_metrics->showMeasurement(*m_controller);
-    updateButtons();
 }
-
-AccuracyDock::~AccuracyDock() = default;
 
 void AccuracyDock::setSettings(const Settings& settings)
 {

@@ -13,6 +13,7 @@
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QVBoxLayout;
 
 class QChartView;
 
@@ -61,6 +62,11 @@ signals:
     void applySettingsRequested(const shadowlab::Settings& settings);
 
 private:
+    // The compare button, the progress bar with Cancel, and the status line.
+    void addMeasureRows(QVBoxLayout* layout);
+    // Tune bias, Apply tuned bias, and the tuning's chart and result.
+    void addTuningRows(QVBoxLayout* layout);
+    void connectController();
     void updateOverlay();
     void updateButtons();
     void showTuning();

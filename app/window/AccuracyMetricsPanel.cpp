@@ -70,7 +70,36 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(createHardGroup());
+    layout->addWidget(createAreaGroup());
 
+    m_referenceInfo = noteLabel(QStringLiteral("referenceInfo"));
+    m_referenceInfo->setToolTip(tr("Speed of the Embree ray tracer here. The reference depends on scene, camera, view "
+                                   "size and light placement only, so map, bias and filter changes reuse it."));
+    layout->addWidget(m_referenceInfo);
+    layout->addWidget(createCostGroup());
+
+    auto* overlayRow = new QHBoxLayout;
+    m_overlayCheck = new QCheckBox(tr("Show errors on the scene view"));
+    m_overlayCheck->setObjectName(QStringLiteral("overlayCheck"));
+    m_overlayCheck->setChecked(true);
+    m_overlayCheck->setToolTip(tr("Grey the scene view and paint false shadow magenta and false light cyan "
+                                  "(against the hard-shadow reference)"));
+    overlayRow->addWidget(m_overlayCheck);
+    overlayRow->addStretch(1);
+    layout->addLayout(overlayRow);
+    // The colours of errorImage().
+    auto* legend = noteLabel(QStringLiteral("overlayLegend"));
+    legend->setText(tr("<span style='color:%1'>■</span> false shadow &nbsp; <span style='color:%2'>■</span> false light")
+                        .arg(QColor(235, 40, 200).name(), QColor(40, 220, 235).name()));
+    legend->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);
+    layout->addWidget(legend);
+    connect(m_overlayCheck, &QCheckBox::toggled, this, &AccuracyMetricsPanel::overlayToggled);
+    setColumns(1);
+}
+
+QGroupBox* AccuracyMetricsPanel::createHardGroup()
+{
     auto* hard = new QGroupBox(tr("Hard-shadow reference"));
     hard->setObjectName(QStringLiteral("hardGroup"));
     QGridLayout* hardGrid = metricGrid(hard, m_headers);
@@ -95,8 +124,11 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
                           "pixels are measured; the share of them whose shadow flips from one step to the next. Stabilised "
                           "maps should barely flicker."),
                        Kind::Share);
-    layout->addWidget(hard);
+    return hard;
+}
 
+QGroupBox* AccuracyMetricsPanel::createAreaGroup()
+{
     auto* area = new QGroupBox(tr("Area-light reference"));
     area->setObjectName(QStringLiteral("areaGroup"));
     area->setToolTip(tr("A disk light of radius light.radius, sampled with stratified rays: how close a "
@@ -110,13 +142,11 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
                           tr("Mean standard error of the area reference itself: differences this small are sampling noise, "
                              "not error. More samples per pixel lower it."),
                           Kind::Error);
-    layout->addWidget(area);
+    return area;
+}
 
-    m_referenceInfo = noteLabel(QStringLiteral("referenceInfo"));
-    m_referenceInfo->setToolTip(tr("Speed of the Embree ray tracer here. The reference depends on scene, camera, view "
-                                   "size and light placement only, so map, bias and filter changes reuse it."));
-    layout->addWidget(m_referenceInfo);
-
+QGroupBox* AccuracyMetricsPanel::createCostGroup()
+{
     auto* cost = new QGroupBox(tr("Cost"));
     cost->setObjectName(QStringLiteral("costGroup"));
     cost->setToolTip(tr("What the scene view's frames took: medians over its last frames (View > Measure 100 Frames for "
@@ -127,25 +157,7 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
                           tr("Median wall time of the frames' shadow pass, over the frames that ran it."), Kind::Milliseconds);
     m_costInfo = noteLabel(QStringLiteral("costInfo"));
     costGrid->addWidget(m_costInfo, costGrid->rowCount(), 0, 1, 4);
-    layout->addWidget(cost);
-
-    auto* overlayRow = new QHBoxLayout;
-    m_overlayCheck = new QCheckBox(tr("Show errors on the scene view"));
-    m_overlayCheck->setObjectName(QStringLiteral("overlayCheck"));
-    m_overlayCheck->setChecked(true);
-    m_overlayCheck->setToolTip(tr("Grey the scene view and paint false shadow magenta and false light cyan "
-                                  "(against the hard-shadow reference)"));
-    overlayRow->addWidget(m_overlayCheck);
-    overlayRow->addStretch(1);
-    layout->addLayout(overlayRow);
-    // The colours of errorImage().
-    auto* legend = noteLabel(QStringLiteral("overlayLegend"));
-    legend->setText(tr("<span style='color:%1'>■</span> false shadow &nbsp; <span style='color:%2'>■</span> false light")
-                        .arg(QColor(235, 40, 200).name(), QColor(40, 220, 235).name()));
-    legend->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);
-    layout->addWidget(legend);
-    connect(m_overlayCheck, &QCheckBox::toggled, this, &AccuracyMetricsPanel::overlayToggled);
-    setColumns(1);
+    return cost;
 }
 
 AccuracyMetricsPanel::Row* AccuracyMetricsPanel::addRow(QGridLayout* grid, const QString& objectName, const QString& name,

@@ -10,6 +10,7 @@
 #include <vector>
 
 class QCheckBox;
+class QGroupBox;
 class QGridLayout;
 class QLabel;
 
@@ -41,6 +42,11 @@ signals:
     void overlayToggled(bool on);
 
 private:
+    // The groups of rows: against the hard-shadow reference (with flicker), against the area
+    // reference, and the frames' cost.
+    QGroupBox* createHardGroup();
+    QGroupBox* createAreaGroup();
+    QGroupBox* createCostGroup();
     enum class Kind { Share, Error, Milliseconds };
     // A metric's name and its three values: A (or the only side), B, B − A.
     struct Row {

@@ -12,6 +12,8 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+#include <QPixmap>
+#include <QPolygonF>
 
 #include <tuple>
 #include <QOpenGLVersionFunctionsFactory>
@@ -346,6 +348,29 @@ void DepthMapView::leaveEvent(QEvent* event)
 {
     emit texelHovered(QString());
     QOpenGLWidget::leaveEvent(event);
+}
+
+QIcon DepthMapView::framingIcon(bool withFootprint)
+{
+    QPixmap pixmap(32, 32);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QColor light(225, 228, 235);
+    painter.setPen(QPen(light, 2.5));
+    if (withFootprint) {
+        painter.drawRect(QRectF(11, 11, 10, 10));
+        painter.setPen(QPen(QColor(255, 150, 40), 2.5));
+        painter.drawPolygon(QPolygonF{QPointF(4, 28), QPointF(28, 28), QPointF(22, 4), QPointF(10, 4)});
+    } else {
+        painter.drawRect(QRectF(7, 7, 18, 18));
+        for (const QPointF corner : {QPointF(2, 2), QPointF(30, 2), QPointF(30, 30), QPointF(2, 30)}) {
+            const QPointF in((corner.x() < 16 ? 1 : -1) * 6.0, (corner.y() < 16 ? 1 : -1) * 6.0);
+            painter.drawLine(corner, corner + QPointF(in.x(), 0));
+            painter.drawLine(corner, corner + QPointF(0, in.y()));
+        }
+    }
+    return QIcon(pixmap);
 }
 
 } // namespace shadowlab

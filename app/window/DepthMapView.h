@@ -5,6 +5,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <QIcon>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QPointer>
@@ -40,6 +41,9 @@ public:
     void resetZoom();
     // Frames the map together with what the camera sees of the scene (F).
     void frameFootprint();
+    // The icons of the pane's two framing buttons: the map's square filling the frame
+    // (resetZoom()), or the small square inside the camera's orange footprint (frameFootprint()).
+    static QIcon framingIcon(bool withFootprint);
     double zoom() const { return m_zoom; }
     // The part of the map shown, in map coordinates ([0, 1]^2 is the whole map, y up).
     QRectF visibleRect() const;

@@ -4,7 +4,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "ArtifactPresets.h"
-#include "LightMath.h"
+#include "PropertyFields.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
@@ -12,10 +12,6 @@
 #include "SliderSpinBox.h"
 
 #include <QCheckBox>
-#include <QComboBox>
-#include <QCoreApplication>
-#include <QDoubleSpinBox>
-#include <QFileInfo>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QLabel>
@@ -23,7 +19,6 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
-#include <QSlider>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -33,64 +28,6 @@
 namespace shadowlab {
 
 namespace {
-
-// How a key is shown, from its presentation in the settings table (SettingsKeys.h).
-struct Look {
-    QString label;
-    QString unit;
-    int decimals;
-    double sliderLow;
-    double sliderHigh;
-    SliderSpinBox::Scale scale = SliderSpinBox::Scale::Linear;
-};
-
-Look presentation(const QString& key)
-{
-    const SettingKey* info = findSettingKey(key);
-    if (info && !info->presentation.label.isEmpty()) {
-        const SettingPresentation& p = info->presentation;
-        return {p.label, p.unit, p.decimals, p.sliderLow, p.sliderHigh,
-                p.logarithmic ? SliderSpinBox::Scale::Logarithmic : SliderSpinBox::Scale::Linear};
-    }
-    // A key added to the table without a presentation still gets a field: named by its key,
-    // its whole range on the slider.
-    return {key, QString(), 3, info ? std::max(info->minimum, -1e3) : 0.0, info ? std::min(info->maximum, 1e3) : 1.0};
-}
-
-const SettingKey& keyInfo(const QString& key)
-{
-    const SettingKey* info = findSettingKey(key);
-    if (!info)
-        throw SettingsError(key, QStringLiteral("unknown setting"));
-    return *info;
-}
-
-const ShadowTechnique* techniqueNamed(const QString& key)
-{
-    const std::vector<ShadowTechnique>& all = shadowTechniques();
-    const auto it = std::find_if(all.begin(), all.end(), [&](const ShadowTechnique& t) { return t.key == key; });
-    return it == all.end() ? nullptr : &*it;
-}
-
-// One filter's tooltip: its name, and a sentence or two of what it does and what it costs.
-QString choiceTooltip(const ShadowTechnique& technique)
-{
-    return QStringLiteral("<p><b>%1</b> (filter.mode=%2)</p><p>%3</p>").arg(technique.label.toHtmlEscaped(), technique.key, technique.help.toHtmlEscaped());
-}
-
-// Under the chosen filter's tooltip: where the others are explained, not all twelve at once.
-QString filterTooltipTail(const SettingKey& info)
-{
-    return QStringLiteral("<p><i>%1</i></p><p>Allowed: %2</p>")
-        .arg(QCoreApplication::translate("PropertiesDock", "Open the list and hover a filter for what it does and costs; Help → Shadow "
-                                                           "Artifacts compares them."),
-             info.range.toHtmlEscaped());
-}
-
-QString tooltipFor(const SettingKey& info)
-{
-    return QStringLiteral("<p><b>%1</b> — %2</p><p>Allowed: %3</p>").arg(info.key, info.help.toHtmlEscaped(), info.range.toHtmlEscaped());
-}
 
 constexpr double kDefaultSpeed = 30.0;  // degrees per second
 
@@ -120,6 +57,8 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
 
     addPresetButtons();
 
+    m_fields = new PropertyFields(m_pending, this);
+    connect(m_fields, &PropertyFields::edited, this, &PropertiesDock::edit);
     // Every key of the table gets a field, in the table's order, in its group.
     std::map<QString, QGridLayout*> groups;
     for (const QString& title : settingGroups())
@@ -128,15 +67,15 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
         const auto group = groups.find(info.presentation.group);
         QGridLayout* grid = group != groups.end() ? group->second : groups.at(settingGroups().back());
         if (info.key == u"light.position")
-            addDirection(grid);
+            m_fields->addDirection(grid);
         if (info.type == u"vec3")
-            addVector(grid, info.key);
+            m_fields->addVector(grid, info.key);
         else if (info.type == u"choice")
-            addChoice(grid, info.key);
+            m_fields->addChoice(grid, info.key);
         else if (info.type == u"bool")
-            addBool(grid, info.key, presentation(info.key).label);
+            m_fields->addBool(grid, info.key, PropertyFields::look(info.key).label);
         else
-            addNumber(grid, info.key);
+            m_fields->addNumber(grid, info.key);
     }
 
     QGridLayout* light = groups.at(QStringLiteral("Light"));
@@ -258,205 +197,6 @@ QGridLayout* PropertiesDock::addGroup(const QString& title)
     return grid;
 }
 
-void PropertiesDock::addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field)
-{
-    const int row = grid->rowCount();
-    auto* name = new QLabel(rangeText.trimmed().isEmpty() ? label
-                                                : QStringLiteral("%1<br><span style='color:gray; font-size:small'>%2</span>")
-                                                      .arg(label.toHtmlEscaped(), rangeText.trimmed().toHtmlEscaped()));
-    name->setToolTip(editor->toolTip());
-    grid->addWidget(name, row, 0);
-    grid->addWidget(editor, row, 1);
-    field.error = new QLabel;
-    field.error->setObjectName(field.key + QStringLiteral(".error"));
-    field.error->setWordWrap(true);
-    field.error->setStyleSheet(QStringLiteral("color: #d9534f;"));
-    field.error->setVisible(false);
-    grid->addWidget(field.error, row + 1, 0, 1, 2);
-    m_rows[field.key] = {name, editor};
-    m_fields.insert(field.key, std::move(field));
-}
-
-void PropertiesDock::addNumber(QGridLayout* grid, const QString& key)
-{
-    const SettingKey& info = keyInfo(key);
-    const Look look = presentation(key);
-    // Open ends of a range ((0, 180)) become the nearest value the spin box can show.
-    const double step = std::pow(10.0, -look.decimals);
-    const bool loOpen = info.range.startsWith(QLatin1Char('('));
-    const bool hiOpen = info.range.contains(QLatin1Char(')'));
-    auto* editor = new SliderSpinBox(info.minimum + (loOpen ? step : 0.0), info.maximum - (hiOpen ? step : 0.0), look.decimals);
-    editor->setObjectName(key);
-    editor->setSuffix(look.unit);
-    editor->setSliderSpan(look.sliderLow, look.sliderHigh, look.scale);
-    if (info.range.contains(QStringLiteral("odd")))
-        editor->setSingleStep(2.0);
-    else if (look.decimals > 0)
-        editor->setSingleStep(std::max(step, (look.sliderHigh - look.sliderLow) / 200.0));
-    editor->setToolTip(tooltipFor(info));
-    const bool integer = info.type == u"integer";
-    connect(editor, &SliderSpinBox::valueEdited, this, [this, key, integer](double v) {
-        edit(key, integer ? QString::number(qRound(v)) : QString::number(v, 'g', 12));
-    });
-    Field field{key, nullptr, {editor}, [editor, key](const Settings& s) { editor->setValue(settingValue(s, key).toDouble()); }};
-    // Huge limits ([-1e7, 1e7]) only say "any sensible number": the tooltip still has them.
-    const bool telling = std::max(std::abs(info.minimum), std::abs(info.maximum)) < 1e5;
-    addRow(grid, look.label, (telling ? info.range : QString()) + look.unit, editor,
-           std::move(field));
-}
-
-void PropertiesDock::addVector(QGridLayout* grid, const QString& key)
-{
-    const SettingKey& info = keyInfo(key);
-    const Look look = presentation(key);
-    auto* editor = new QWidget;
-    auto* layout = new QVBoxLayout(editor);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->setSpacing(2);
-    std::vector<QWidget*> parts;
-    std::vector<SliderSpinBox*> boxes;
-    for (int i = 0; i < 3; ++i) {
-        const QString axis = QString(QLatin1Char("xyz"[i]));
-        auto* box = new SliderSpinBox(info.minimum, info.maximum, look.decimals);
-        box->setObjectName(key + QLatin1Char('.') + axis);
-        box->setSuffix(look.unit);
-        box->setSliderSpan(look.sliderLow, look.sliderHigh);
-        box->setSingleStep(0.1);
-        box->setToolTip(tooltipFor(info));
-        box->spinBox()->setPrefix(axis + QStringLiteral("  "));
-        layout->addWidget(box);
-        parts.push_back(box);
-        boxes.push_back(box);
-        // A component edit is written as the whole vector, through the same parser as --set.
-        connect(box, &SliderSpinBox::valueEdited, this, [this, key, i](double v) {
-            QStringList xyz = settingValue(m_pending, key).split(QLatin1Char(','));
-            xyz[i] = QString::number(v, 'g', 12);
-            edit(key, xyz.join(QLatin1Char(',')));
-        });
-    }
-    editor->setToolTip(tooltipFor(info));
-    Field field{key, nullptr, parts, [boxes, key](const Settings& s) {
-                    const QStringList xyz = settingValue(s, key).split(QLatin1Char(','));
-                    for (int i = 0; i < 3; ++i)
-                        boxes[std::size_t(i)]->setValue(xyz.value(i).toDouble());
-                }};
-    addRow(grid, look.label, QString(), editor, std::move(field));
-}
-
-void PropertiesDock::addDirection(QGridLayout* grid)
-{
-    // A directional light is a direction: azimuth and elevation around its target, and the
-    // distance its manual volume's near and far count from. All three edit light.position.
-    auto* azimuth = new SliderSpinBox(-180.0, 180.0, 1);
-    auto* elevation = new SliderSpinBox(-90.0, 90.0, 1);
-    auto* distance = new SliderSpinBox(1e-6, 1e7, 2);
-    azimuth->setObjectName(QStringLiteral("light.azimuth"));
-    elevation->setObjectName(QStringLiteral("light.elevation"));
-    distance->setObjectName(QStringLiteral("light.distance"));
-    azimuth->setSuffix(QStringLiteral("°"));
-    elevation->setSuffix(QStringLiteral("°"));
-    distance->setSuffix(QStringLiteral(" wu"));
-    elevation->setSliderSpan(0.0, 90.0);
-    distance->setSliderSpan(0.5, 20.0, SliderSpinBox::Scale::Logarithmic);
-    azimuth->setToolTip(tr("<p><b>Azimuth</b> — the light's direction around the vertical through its target, in degrees: 0 from +z, "
-                           "90 from +x. Sets light.position. Ctrl+drag in the scene view turns the light.</p>"));
-    elevation->setToolTip(tr("<p><b>Elevation</b> — how high the light stands above the horizon, in degrees: 90 straight above. "
-                             "Sets light.position. Ctrl+drag in the scene view turns the light.</p>"));
-    distance->setToolTip(tr("<p><b>Distance</b> from light.target to light.position, in world units: where a manual volume's near and "
-                            "far count from; the direction alone decides the shadows.</p>"));
-    const auto apply = [this, azimuth, elevation, distance] {
-        const LightAngles angles{azimuth->value(), elevation->value(), distance->value()};
-        const glm::dvec3 p = lightPosition(m_pending.light.target, angles);
-        m_lastAzimuth = angles.azimuth;
-        edit(QStringLiteral("light.position"), QStringLiteral("%1,%2,%3").arg(p.x, 0, 'g', 12).arg(p.y, 0, 'g', 12).arg(p.z, 0, 'g', 12));
-    };
-    for (SliderSpinBox* box : {azimuth, elevation, distance})
-        connect(box, &SliderSpinBox::valueEdited, this, apply);
-    const auto load = [this, azimuth, elevation, distance](const Settings& s) {
-        const LightAngles angles = lightAngles(s.light.position, s.light.target, m_lastAzimuth);
-        m_lastAzimuth = angles.azimuth;
-        azimuth->setValue(angles.azimuth);
-        elevation->setValue(angles.elevation);
-        distance->setValue(angles.distance);
-    };
-    const std::pair<QString, SliderSpinBox*> rows[] = {{tr("Azimuth"), azimuth}, {tr("Elevation"), elevation}, {tr("Distance"), distance}};
-    for (const auto& [label, box] : rows) {
-        // Each its own row (hidden together for spot and point lights); the first one loads all three.
-        const QString key = QStringLiteral("light.direction.") + box->objectName().section(QLatin1Char('.'), 1);
-        addRow(grid, label, QString(), box, Field{key, nullptr, {box}, box == azimuth ? std::function<void(const Settings&)>(load) : [](const Settings&) {}});
-    }
-}
-
-void PropertiesDock::addChoice(QGridLayout* grid, const QString& key)
-{
-    const SettingKey& info = keyInfo(key);
-    auto* combo = new QComboBox;
-    combo->setObjectName(key);
-    // Each choice's value is its key; filters read as people name them, the key beside it, and
-    // each says in its own tooltip what it does and costs.
-    for (const QString& choice : info.choices) {
-        const ShadowTechnique* technique = key == u"filter.mode" ? techniqueNamed(choice) : nullptr;
-        combo->addItem(technique ? QStringLiteral("%1 — %2").arg(technique->label, choice) : choice, choice);
-        if (technique)
-            combo->setItemData(combo->count() - 1, choiceTooltip(*technique), Qt::ToolTipRole);
-    }
-    const auto showTooltip = [combo, info = &info] {
-        if (const ShadowTechnique* technique = info->key == u"filter.mode" ? techniqueNamed(combo->currentData().toString()) : nullptr)
-            combo->setToolTip(choiceTooltip(*technique) + filterTooltipTail(*info));
-        else
-            combo->setToolTip(tooltipFor(*info));
-    };
-    showTooltip();
-    connect(combo, &QComboBox::currentIndexChanged, this, [this, combo, key, showTooltip] {
-        showTooltip();
-        if (m_loading)
-            return;
-        const QString value = combo->currentData().toString();
-        if (key == u"scene")
-            editScene(value);
-        else
-            edit(key, value);
-    });
-    Field field{key, nullptr, {combo}, [combo, key, showTooltip](const Settings& s) {
-                    const QSignalBlocker block(combo);
-                    const QString value = settingValue(s, key);
-                    // A loaded model or scene file joins the presets, so it can be chosen again.
-                    if (combo->findData(value) < 0)
-                        combo->addItem(key == u"scene" ? QFileInfo(value).fileName() : value, value);
-                    combo->setCurrentIndex(combo->findData(value));
-                    if (key == u"scene")
-                        combo->setItemData(combo->currentIndex(), value, Qt::ToolTipRole);
-                    showTooltip();
-                }};
-    addRow(grid, presentation(key).label, QString(), combo, std::move(field));
-}
-
-void PropertiesDock::addBool(QGridLayout* grid, const QString& key, const QString& text)
-{
-    const SettingKey& info = keyInfo(key);
-    auto* check = new QCheckBox(text);
-    check->setObjectName(key);
-    check->setToolTip(tooltipFor(info));
-    connect(check, &QCheckBox::toggled, this, [this, key](bool on) {
-        if (!m_loading)
-            edit(key, on ? QStringLiteral("true") : QStringLiteral("false"));
-    });
-    Field field{key, nullptr, {check}, [check, key](const Settings& s) {
-                    const QSignalBlocker block(check);
-                    check->setChecked(settingValue(s, key) == u"true");
-                }};
-    const int row = grid->rowCount();
-    grid->addWidget(check, row, 0, 1, 2);
-    field.error = new QLabel;
-    field.error->setObjectName(key + QStringLiteral(".error"));
-    field.error->setStyleSheet(QStringLiteral("color: #d9534f;"));
-    field.error->setWordWrap(true);
-    field.error->setVisible(false);
-    grid->addWidget(field.error, row + 1, 0, 1, 2);
-    m_rows[key] = {check};
-    m_fields.insert(key, std::move(field));
-}
-
 void PropertiesDock::setSettings(const Settings& settings)
 {
     // A preset's sentences are about its scene: on another one they no longer say what is shown.
@@ -464,8 +204,7 @@ void PropertiesDock::setSettings(const Settings& settings)
         hidePreset();
     m_pending = settings;
     m_loading = true;
-    for (const Field& field : std::as_const(m_fields))
-        field.load(settings);
+    m_fields->loadAll(settings);
     m_loading = false;
     clearErrors();
     updateDependentRows();
@@ -494,6 +233,10 @@ void PropertiesDock::edit(const QString& key, const QString& value)
 {
     if (m_loading)
         return;
+    if (key == u"scene") {
+        editScene(value);
+        return;
+    }
     Settings candidate = m_pending;
     try {
         applySetting(candidate, key, value);
@@ -537,10 +280,8 @@ void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
     m_pending = candidate;
     // light.type and light.projection set each other, and the direction and the position are
     // two views of light.position (one of them hidden): every one shows the result.
-    for (const QString linked : {"light.type", "light.projection", "light.position", "light.direction.azimuth"}) {
-        if (const auto it = m_fields.find(linked); it != m_fields.end())
-            it->load(m_pending);
-    }
+    for (const QString linked : {"light.type", "light.projection", "light.position", "light.direction.azimuth"})
+        m_fields->load(linked, m_pending);
     clearErrors();
     updateDependentRows();
     QStringList warnings;
@@ -572,17 +313,7 @@ void PropertiesDock::accept(const Settings& candidate, const QString& editedKey)
 
 void PropertiesDock::clearErrors()
 {
-    for (const Field& field : std::as_const(m_fields)) {
-        field.error->setVisible(false);
-        field.error->clear();
-        field.error->setProperty("refusal", false);
-        for (QWidget* w : field.markable) {
-            if (auto* box = qobject_cast<SliderSpinBox*>(w))
-                box->setInvalid(false);
-            else
-                w->setStyleSheet(QString());
-        }
-    }
+    m_fields->clearErrors();
 }
 
 void PropertiesDock::markError(const QString& key, const QString& message)
@@ -592,26 +323,15 @@ void PropertiesDock::markError(const QString& key, const QString& message)
         markError(QStringLiteral("light.direction.distance"), message.startsWith(key + QStringLiteral(": ")) ? message : key + QStringLiteral(": ") + message);
         return;
     }
-    auto it = m_fields.find(key);
-    if (it == m_fields.end())
-        return;
     // The message without the "key: " prefix SettingsError puts in front: the field is the key.
     QString text = message;
     if (text.startsWith(key + QStringLiteral(": ")))
         text = text.mid(key.size() + 2);
-    it->error->setText(text);
-    it->error->setStyleSheet(QString());
-    it->error->setProperty("refusal", true);
-    it->error->setVisible(true);
+    if (!m_fields->markRefused(key, text))
+        return;
     m_warned.removeAll(key);
-    for (QWidget* w : it->markable) {
-        if (auto* box = qobject_cast<SliderSpinBox*>(w))
-            box->setInvalid(true);
-        else
-            w->setStyleSheet(QStringLiteral("border: 2px solid #d9534f; border-radius: 3px;"));
-    }
-    if (QWidget* row = m_rows.value(key).empty() ? nullptr : m_rows.value(key).back())
-        static_cast<QScrollArea*>(widget())->ensureWidgetVisible(row);
+    if (const std::vector<QWidget*> row = m_fields->row(key); !row.empty())
+        static_cast<QScrollArea*>(widget())->ensureWidgetVisible(row.back());
 }
 
 void PropertiesDock::showError(const QString& key, const QString& message)
@@ -621,14 +341,28 @@ void PropertiesDock::showError(const QString& key, const QString& message)
 
 QString PropertiesDock::errorText(const QString& key) const
 {
-    const auto it = m_fields.find(key);
-    return it == m_fields.end() ? QString() : it->error->text();
+    const QLabel* note = m_fields->note(key);
+    return note ? note->text() : QString();
 }
 
 namespace {
 
 // The light-volume keys that light.fit=scene computes instead of reading.
 const char* const kFittedKeys[] = {"light.extent", "light.fov", "light.near", "light.far"};
+
+// The fitted volume in the units of the keys: half-size or full angle, and near and far as
+// distances from the light's position along its direction.
+Settings fittedVolume(const LightVolume& v, const LightSettings& light, Settings shown)
+{
+    const double along = glm::dot(v.origin - light.position, v.direction);
+    if (v.perspective)
+        shown.light.fov = glm::degrees(2.0 * std::atan(std::max({-v.left, v.right, -v.bottom, v.top})));
+    else
+        shown.light.extent = 0.5 * std::max(v.width(), v.height());
+    shown.light.nearPlane = v.nearPlane + along;
+    shown.light.farPlane = v.farPlane + along;
+    return shown;
+}
 
 } // namespace
 
@@ -638,9 +372,9 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
         m_lastFit = fit;
     // Last frame's warnings off first; the fields keep their refusals (red) if any.
     for (const QString& key : std::as_const(m_warned)) {
-        if (auto it = m_fields.find(key); it != m_fields.end() && !it->error->property("refusal").toBool()) {
-            it->error->clear();
-            it->error->setVisible(false);
+        if (QLabel* note = m_fields->note(key); note && !note->property("refusal").toBool()) {
+            note->clear();
+            note->setVisible(false);
         }
     }
     m_warned.clear();
@@ -651,59 +385,43 @@ void PropertiesDock::showFit(const FittedLight& fit, const LightSettings& light)
     const auto isFitted = [&](const char* key) { return fitted && !(spot && qstrcmp(key, "light.fov") == 0); };
 
     for (const char* key : kFittedKeys) {
-        for (QWidget* w : m_rows.value(QString::fromLatin1(key))) {
+        for (QWidget* w : m_fields->row(QString::fromLatin1(key))) {
             w->setEnabled(!isFitted(key));
             w->setToolTip(isFitted(key) ? tr("Fitted to the scene (read-only): set Volume to manual to set it by hand")
-                                        : tooltipFor(keyInfo(QString::fromLatin1(key))));
+                                        : PropertyFields::toolTip(QString::fromLatin1(key)));
         }
     }
     if (fitted && fit.fitted) {
-        // The fitted volume in the units of the keys: half-size or full angle, and near and
-        // far as distances from the light's position along its direction.
-        Settings shown = m_pending;
-        const LightVolume& v = fit.volume;
-        const double along = glm::dot(v.origin - light.position, v.direction);
-        if (v.perspective)
-            shown.light.fov = glm::degrees(2.0 * std::atan(std::max({-v.left, v.right, -v.bottom, v.top})));
-        else
-            shown.light.extent = 0.5 * std::max(v.width(), v.height());
-        shown.light.nearPlane = v.nearPlane + along;
-        shown.light.farPlane = v.farPlane + along;
+        const Settings shown = fittedVolume(fit.volume, light, m_pending);
         const bool loading = m_loading;
         m_loading = true;
-        for (const char* key : kFittedKeys) {
-            if (const auto it = m_fields.find(QString::fromLatin1(key)); it != m_fields.end())
-                it->load(isFitted(key) ? shown : m_pending);
-        }
+        for (const char* key : kFittedKeys)
+            m_fields->load(QString::fromLatin1(key), isFitted(key) ? shown : m_pending);
         m_loading = loading;
-        if (spot && v.perspective) {
-            // What the fit chose inside the cone, said under the cone's own field.
-            const QString key = QStringLiteral("light.fov");
-            if (auto it = m_fields.find(key); it != m_fields.end() && !it->error->property("refusal").toBool()) {
-                it->error->setText(tr("The cone; the map fitted to what it lights spans %1°").arg(shown.light.fov, 0, 'f', 1));
-                it->error->setStyleSheet(QStringLiteral("color: palette(mid);"));
-                it->error->setVisible(true);
-                m_warned << key;
-            }
-        }
+        // What the fit chose inside the cone, said under the cone's own field.
+        if (spot && fit.volume.perspective)
+            showFitNote(QStringLiteral("light.fov"), tr("The cone; the map fitted to what it lights spans %1°").arg(shown.light.fov, 0, 'f', 1),
+                        QStringLiteral("color: palette(mid);"));
     } else if (!fitted) {
         const bool loading = m_loading;
         m_loading = true;
-        for (const char* key : kFittedKeys) {
-            if (const auto it = m_fields.find(QString::fromLatin1(key)); it != m_fields.end())
-                it->load(m_pending);
-        }
+        for (const char* key : kFittedKeys)
+            m_fields->load(QString::fromLatin1(key), m_pending);
         m_loading = loading;
     }
-    for (const SettingsIssue& issue : fitWarnings(fit)) {
-        auto it = m_fields.find(issue.key);
-        if (it == m_fields.end() || it->error->property("refusal").toBool())
-            continue;
-        it->error->setText(issue.message);
-        it->error->setStyleSheet(QStringLiteral("color: #b8860b;"));
-        it->error->setVisible(true);
-        m_warned << issue.key;
-    }
+    for (const SettingsIssue& issue : fitWarnings(fit))
+        showFitNote(issue.key, issue.message, QStringLiteral("color: #b8860b;"));
+}
+
+void PropertiesDock::showFitNote(const QString& key, const QString& text, const QString& style)
+{
+    QLabel* note = m_fields->note(key);
+    if (!note || note->property("refusal").toBool())
+        return;
+    note->setText(text);
+    note->setStyleSheet(style);
+    note->setVisible(true);
+    m_warned << key;
 }
 
 QString PropertiesDock::warningText(const QString& key) const
@@ -716,30 +434,30 @@ void PropertiesDock::updateDependentRows()
     // Show only what the current technique uses: extent for an ortho light, field of view for
     // a perspective one; a filter's parameters only while a filter that reads them is selected.
     const bool ortho = m_pending.light.projection == LightProjection::Ortho;
-    for (QWidget* w : m_rows.value(QStringLiteral("light.extent")))
+    for (QWidget* w : m_fields->row(QStringLiteral("light.extent")))
         w->setVisible(ortho);
-    for (QWidget* w : m_rows.value(QStringLiteral("light.fov")))
+    for (QWidget* w : m_fields->row(QStringLiteral("light.fov")))
         w->setVisible(!ortho);
     for (const TechniqueParameter& parameter : techniqueParameters()) {
-        for (QWidget* w : m_rows.value(parameter.key))
+        for (QWidget* w : m_fields->row(parameter.key))
             w->setEnabled(usesParameter(m_pending.filter, parameter.key));
     }
     // The cone's falloff for a spot light; cascades for a directional one, and their split
     // settings once there are several.
-    for (QWidget* w : m_rows.value(QStringLiteral("light.falloff")))
+    for (QWidget* w : m_fields->row(QStringLiteral("light.falloff")))
         w->setVisible(m_pending.light.type == LightType::Spot);
     const bool directional = m_pending.light.type == LightType::Directional;
     // A direction for a directional light, a place for the others.
-    for (QWidget* w : m_rows.value(QStringLiteral("light.position")))
+    for (QWidget* w : m_fields->row(QStringLiteral("light.position")))
         w->setVisible(!directional);
     for (const QString key : {"light.direction.azimuth", "light.direction.elevation", "light.direction.distance"}) {
-        for (QWidget* w : m_rows.value(key))
+        for (QWidget* w : m_fields->row(key))
             w->setVisible(directional);
     }
-    for (QWidget* w : m_rows.value(QStringLiteral("shadow.cascades")))
+    for (QWidget* w : m_fields->row(QStringLiteral("shadow.cascades")))
         w->setEnabled(directional);
     for (const QString key : {"shadow.split", "shadow.split_lambda", "shadow.distance", "shadow.blend"}) {
-        for (QWidget* w : m_rows.value(key))
+        for (QWidget* w : m_fields->row(key))
             w->setEnabled(directional && m_pending.shadow.cascades > 1);
     }
 }
@@ -755,7 +473,7 @@ void PropertiesDock::setSceneSize(const glm::dvec3& centre, double radius)
         return;
     const double scale = radius / seedRadius;
     for (const SettingKey& info : settingKeys()) {
-        const Look look = presentation(info.key);
+        const PropertyFields::Look look = PropertyFields::look(info.key);
         if (look.unit != u" wu")
             continue;
         if (info.type == u"vec3") {
@@ -787,16 +505,13 @@ void PropertiesDock::updateFrom(const Settings& applied, const QStringList& keys
 {
     m_pending.camera = applied.camera;
     m_loading = true;
-    for (const QString& key : {QStringLiteral("camera.position"), QStringLiteral("camera.target"), QStringLiteral("camera.fov")}) {
-        if (const auto it = m_fields.find(key); it != m_fields.end())
-            it->load(m_pending);
-    }
+    for (const QString& key : {QStringLiteral("camera.position"), QStringLiteral("camera.target"), QStringLiteral("camera.fov")})
+        m_fields->load(key, m_pending);
     for (const QString& key : keys) {
         applySetting(m_pending, key, settingValue(applied, key));
-        if (const auto it = m_fields.find(key); it != m_fields.end())
-            it->load(m_pending);
+        m_fields->load(key, m_pending);
         if (key.startsWith(u"light.position") || key.startsWith(u"light.target"))
-            m_fields[QStringLiteral("light.direction.azimuth")].load(m_pending);
+            m_fields->load(QStringLiteral("light.direction.azimuth"), m_pending);
     }
     m_loading = false;
 }

@@ -9,9 +9,7 @@
 #include "Settings.h"
 
 #include <QDockWidget>
-#include <QHash>
 
-#include <functional>
 #include <vector>
 
 class QCheckBox;
@@ -21,6 +19,7 @@ class QPushButton;
 
 namespace shadowlab {
 
+class PropertyFields;
 class SliderSpinBox;
 
 // The settings of one side (A or B): first one button per artifact preset (ArtifactPresets.h)
@@ -82,21 +81,8 @@ signals:
     void animationChanged(bool animate, double degreesPerSecond);
 
 private:
-    struct Field {
-        QString key;
-        QLabel* error = nullptr;
-        std::vector<QWidget*> markable;              // widgets that turn red when refused
-        std::function<void(const Settings&)> load;   // shows a value without emitting
-    };
-
     QGridLayout* addGroup(const QString& title);
     void addPresetButtons();
-    void addNumber(QGridLayout* grid, const QString& key);
-    void addVector(QGridLayout* grid, const QString& key);
-    void addDirection(QGridLayout* grid);
-    void addChoice(QGridLayout* grid, const QString& key);
-    void addBool(QGridLayout* grid, const QString& key, const QString& text);
-    void addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field);
 
     void edit(const QString& key, const QString& value);
     void editScene(const QString& name);
@@ -106,13 +92,14 @@ private:
     void markError(const QString& key, const QString& message);
     void updateDependentRows();
     void hidePreset();
+    // A note under `key` from the fit, unless the field shows a refusal.
+    void showFitNote(const QString& key, const QString& text, const QString& style);
 
     QStringList m_warned;       // keys showing a fit warning
     std::optional<FittedLight> m_lastFit;   // of the newest frame
 
     Settings m_pending;
-    QHash<QString, Field> m_fields;
-    QHash<QString, std::vector<QWidget*>> m_rows;   // label and editor of a key, to hide/disable
+    PropertyFields* m_fields = nullptr;
     QLabel* m_sideLabel = nullptr;
     QCheckBox* m_animate = nullptr;
     SliderSpinBox* m_speed = nullptr;
@@ -121,7 +108,6 @@ private:
     QPushButton* m_fixButton = nullptr;
     QString m_lastPreset;
     QString m_sideName;
-    double m_lastAzimuth = 0.0;     // kept while the light stands straight above its target
 };
 
 } // namespace shadowlab

@@ -1,5 +1,8 @@
 #include "ScreenshotDialog.h"
 
+#include "ImageFile.h"
+#include "OutputFile.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
@@ -68,6 +71,19 @@ void ScreenshotDialog::browse()
     const QString chosen = QFileDialog::getSaveFileName(this, tr("Save Screenshot"), m_path->text(), tr("PNG images (*.png)"));
     if (!chosen.isEmpty())
         m_path->setText(chosen);
+}
+
+QString ScreenshotDialog::write(const QImage& image, const QString& path)
+{
+    if (image.isNull())
+        return tr("There is nothing to capture: the view has no size.");
+    try {
+        checkOutputFile(path, tr("Screenshot"));
+        writeOutputFile(path, encodePng(image.convertToFormat(QImage::Format_RGB32)));
+    } catch (const OutputError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return QString();
 }
 
 } // namespace shadowlab

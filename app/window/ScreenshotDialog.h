@@ -3,6 +3,7 @@
 #include <QDialog>
 
 class QComboBox;
+class QImage;
 class QLineEdit;
 
 namespace shadowlab {
@@ -21,6 +22,9 @@ public:
     void setTarget(Target target);
     QString path() const;
     void setPath(const QString& path);
+    // Writes `image` to `path` as PNG; returns an empty string or what went wrong ("nothing to
+    // capture" for a null image).
+    static QString write(const QImage& image, const QString& path);
 
 private:
     void browse();

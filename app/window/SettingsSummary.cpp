@@ -1,5 +1,6 @@
 #include "SettingsSummary.h"
 
+#include "MomentMath.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
@@ -37,6 +38,15 @@ QString screenshotFileName(const Settings& settings, const QDateTime& when)
                                                       : QStringLiteral("noshadow");
     return QStringLiteral("shadowlab-%1-%2-%3.png").arg(when.toString(QStringLiteral("yyyy-MM-dd-HHmm")),
                                                             QFileInfo(settings.scene).completeBaseName(), technique);
+}
+
+QString shadowMapSummary(const Settings& shown)
+{
+    // What the map holds: depth in its format, or a moment technique's moments.
+    const bool moments = isMomentTechnique(shown.filter.mode);
+    const QString holds = moments ? QStringLiteral("moments RGBA%1F").arg(toString(shown.moments.format)) : toString(shown.map.format);
+    const QString light = QStringLiteral("%1 light, %2").arg(toString(shown.light.projection), holds);
+    return shown.shadow.enabled ? light : QStringLiteral("shadows are off");
 }
 
 } // namespace shadowlab

@@ -39,6 +39,33 @@ SweepChartPanel::SweepChartPanel(QWidget* parent) : QGroupBox(parent)
                                  "bias halved, doubled and off, and front-face culling toggled"));
     layout->addWidget(m_sweepButton);
 
+    createChart();
+
+    auto* view = new QChartView(m_chart);
+    view->setObjectName(QStringLiteral("sweepChart"));
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumHeight(240);
+    view->setToolTip(tr("Misclassified pixels against the hard-shadow reference, and the median wall time of %1 "
+                        "frames with the shadow map redrawn in each, at the measured size")
+                         .arg(AccuracyController::kTimedFrames));
+    view->setFrameShape(QFrame::NoFrame);
+    view->setBackgroundBrush(Qt::NoBrush);
+    // Scoped to the view: a bare "background: transparent" also reaches the tooltips shown
+    // for it, which then draw as black bars where windows cannot be translucent.
+    view->setStyleSheet(QStringLiteral("QChartView { background: transparent; }"));
+    layout->addWidget(view, 1);
+
+    m_pointInfo = noteLabel(QStringLiteral("pointInfo"));
+    m_pointInfo->setText(tr("Each point is one change to the current settings. Hover for what changed; click to apply it."));
+    layout->addWidget(m_pointInfo);
+    connect(m_variations, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
+    connect(m_currentMarker, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
+    connect(m_variations, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
+    connect(m_currentMarker, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
+}
+
+void SweepChartPanel::createChart()
+{
     m_chart = new QChart;
     m_chart->setBackgroundVisible(false);
     m_chart->setPlotAreaBackgroundBrush(palette().base());
@@ -64,7 +91,11 @@ SweepChartPanel::SweepChartPanel(QWidget* parent) : QGroupBox(parent)
     m_currentMarker->setBorderColor(kCurrentColor.darker(140));
     m_chart->addSeries(m_variations);
     m_chart->addSeries(m_currentMarker);
+    createAxes(small);
+}
 
+void SweepChartPanel::createAxes(const QFont& small)
+{
     m_timeAxis = new QValueAxis;
     m_timeAxis->setTitleText(tr("Frame time (ms)"));
     m_timeAxis->setLabelFormat(QStringLiteral("%.0f"));
@@ -89,28 +120,6 @@ SweepChartPanel::SweepChartPanel(QWidget* parent) : QGroupBox(parent)
         series->attachAxis(m_timeAxis);
         series->attachAxis(m_errorAxis);
     }
-
-    auto* view = new QChartView(m_chart);
-    view->setObjectName(QStringLiteral("sweepChart"));
-    view->setRenderHint(QPainter::Antialiasing);
-    view->setMinimumHeight(240);
-    view->setToolTip(tr("Misclassified pixels against the hard-shadow reference, and the median wall time of %1 "
-                        "frames with the shadow map redrawn in each, at the measured size")
-                         .arg(AccuracyController::kTimedFrames));
-    view->setFrameShape(QFrame::NoFrame);
-    view->setBackgroundBrush(Qt::NoBrush);
-    // Scoped to the view: a bare "background: transparent" also reaches the tooltips shown
-    // for it, which then draw as black bars where windows cannot be translucent.
-    view->setStyleSheet(QStringLiteral("QChartView { background: transparent; }"));
-    layout->addWidget(view, 1);
-
-    m_pointInfo = noteLabel(QStringLiteral("pointInfo"));
-    m_pointInfo->setText(tr("Each point is one change to the current settings. Hover for what changed; click to apply it."));
-    layout->addWidget(m_pointInfo);
-    connect(m_variations, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
-    connect(m_currentMarker, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
-    connect(m_variations, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
-    connect(m_currentMarker, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
 }
 
 void SweepChartPanel::startSweep(QSize size)

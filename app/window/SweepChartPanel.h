@@ -34,6 +34,9 @@ signals:
     void applySettingsRequested(const shadowlab::Settings& settings);
 
 private:
+    // The chart with its two series (the variations, the current settings) and its axes.
+    void createChart();
+    void createAxes(const QFont& small);
     // Where a point sits on the chart: on the log axis, no error sits on its floor.
     QPointF plotted(const AccuracyController::SweepPoint& point) const;
     // The sweep point plotted nearest to `point` (chart coordinates), -1 when there are none.
