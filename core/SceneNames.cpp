@@ -1,11 +1,34 @@
 #include "SceneNames.h"
 
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 namespace shadowlab {
 
 const QStringList& sceneNames()
 {
-    static const QStringList names{QStringLiteral("seed"), QStringLiteral("torus"), QStringLiteral("cubes"), QStringLiteral("occluder"),
-                                   QStringLiteral("bleeding"), QStringLiteral("foliage"), QStringLiteral("city")};
+    // One resource file per preset (resources/scenes/NAME.json, which the scene library carries),
+    // listed in the order each file gives itself.
+    static const QStringList names = [] {
+        std::vector<std::pair<double, QString>> found;
+        for (const QFileInfo& info : QDir(QString::fromLatin1(kScenePresetFolder)).entryInfoList({QStringLiteral("*.json")}, QDir::Files)) {
+            QFile file(info.filePath());
+            const double order = file.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("order")).toDouble(1e9)
+                                                                : 1e9;
+            found.emplace_back(order, info.completeBaseName());
+        }
+        std::sort(found.begin(), found.end());
+        QStringList list;
+        for (const auto& [order, name] : found)
+            list << name;
+        return list;
+    }();
     return names;
 }
 

@@ -4,8 +4,11 @@
 
 namespace shadowlab {
 
-// The built-in scene presets, by name: the values of the `scene` key. The scene library builds
-// each (buildScene(), presetSettings()); tst_Scene checks that every name builds.
+// The built-in scene presets, by name: the values of the `scene` key. Each is a resource file of
+// the scene library, kScenePresetFolder/NAME.json (resources/scenes/ in the source), that lists its
+// shapes (or names its generator) and its settings; adding a preset is adding a file. The scene
+// library builds each (buildScene(), presetSettings()); tst_Scene checks that every name builds.
+inline constexpr const char* kScenePresetFolder = ":/scenes";
 const QStringList& sceneNames();
 
 // The city preset takes its building count in its name: "city" (kCityBuildings) or "city:N"

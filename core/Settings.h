@@ -27,7 +27,7 @@ enum class MomentFormat { Rgba16F, Rgba32F };
 enum class ShadingModel { Phong, BlinnPhong };
 
 inline constexpr int kMaxCascades = 4;
-// Every field carries its range in a comment; SettingsKeys.cpp holds the same ranges for
+// Every field carries its range in a comment; SettingsTable.cpp holds the same ranges for
 // parsing and validate() enforces them, so GUI, CLI and JSON agree on what is allowed.
 struct LightSettings {
     glm::dvec3 position{-2.0, 4.0, -1.0};   // world units, finite, |x| <= 1e7, != target

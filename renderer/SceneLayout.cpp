@@ -103,7 +103,7 @@ BatchGeometry SceneLayout::batchGeometry(const Scene& scene, const DrawItem& ite
             const glm::dvec3 p = glm::dvec3(object.model * glm::dvec4(glm::dvec3(v.position), 1.0)) - origin;
             const glm::dvec3 n = normalMatrix * glm::dvec3(v.normal);
             const double length = glm::length(n);
-            g.vertices.push_back({glm::vec3(p), glm::vec3(length > 0.0 ? n / length : n), v.uv, object.baseColour});
+            g.vertices.push_back({{glm::vec3(p), glm::vec3(length > 0.0 ? n / length : n), v.uv}, object.baseColour});
         }
         // A mirroring placement turns the winding: keep front faces counter-clockwise.
         const bool mirrored = glm::determinant(glm::dmat3(object.model)) < 0.0;

@@ -31,11 +31,10 @@ struct DrawItem {
     int mesh = 0;                       // an object's mesh; a batch's index among the batches otherwise
 };
 
-// A batch's merged geometry: its members' vertices in world space around the batch's centre.
+// A batch's merged geometry: its members' vertices in world space around the batch's centre,
+// each with its object's base colour (a vertex first, so the attributes of both lie alike).
 struct BatchVertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-    glm::vec2 uv;
+    Vertex vertex;
     glm::vec3 colour;
 };
 struct BatchGeometry {

@@ -1,8 +1,16 @@
 #include "SceneLibrary.h"
 
 #include "ProceduralTexture.h"
+#include "SceneFileError.h"
 #include "SceneLoader.h"
+#include "SceneShapes.h"
+#include "SettingsKeys.h"
 #include "SettingsError.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,85 +26,12 @@ namespace shadowlab {
 
 namespace {
 
-glm::dmat4 placement(glm::dvec3 position, double scale, double angleDegrees = 0.0, glm::dvec3 axis = {0, 1, 0})
-{
-    glm::dmat4 m = glm::translate(glm::dmat4(1.0), position);
-    if (angleDegrees != 0.0)
-        m = glm::rotate(m, glm::radians(angleDegrees), glm::normalize(axis));
-    return glm::scale(m, glm::dvec3(scale));
-}
-
 void addGround(Scene& scene, double y)
 {
     scene.groundHeight = y;
     scene.meshes.push_back(meshes::plane(25.0f, 25.0f));
     scene.objects.push_back({QStringLiteral("ground"), int(scene.meshes.size() - 1),
                              glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, y, 0.0)), TextureKind::Checker, true});
-}
-
-Scene seedScene()
-{
-    // The classic tutorial scene: three wooden cubes over a large plane.
-    Scene s;
-    s.name = QStringLiteral("seed");
-    addGround(s, -0.5);
-    s.meshes.push_back(meshes::cube());
-    const int cube = int(s.meshes.size() - 1);
-    s.objects.push_back({QStringLiteral("high cube"), cube, placement({0.0, 1.5, 0.0}, 0.5), TextureKind::Wood, true});
-    s.objects.push_back({QStringLiteral("resting cube"), cube, placement({2.0, 0.0, 1.0}, 0.5), TextureKind::Wood, true});
-    s.objects.push_back({QStringLiteral("tilted cube"), cube, placement({-1.0, 0.0, 2.0}, 0.25, 60.0, {1.0, 0.0, 1.0}),
-                         TextureKind::Wood, true});
-    return s;
-}
-
-Scene torusScene()
-{
-    Scene s;
-    s.name = QStringLiteral("torus");
-    addGround(s, -0.5);
-    s.meshes.push_back(meshes::torus(1.0f, 0.35f, 64, 24));
-    s.objects.push_back({QStringLiteral("torus"), int(s.meshes.size() - 1), placement({-0.6, 0.75, 0.0}, 1.0, 70.0, {1.0, 0.0, 0.2}),
-                         TextureKind::Wood, true});
-    s.meshes.push_back(meshes::pyramid());
-    s.objects.push_back({QStringLiteral("pyramid"), int(s.meshes.size() - 1), placement({1.8, 0.1, 0.6}, 0.6, 20.0),
-                         TextureKind::Wood, true});
-    return s;
-}
-
-Scene cubesScene()
-{
-    Scene s;
-    s.name = QStringLiteral("cubes");
-    addGround(s, -0.5);
-    s.meshes.push_back(meshes::cube());
-    const int cube = int(s.meshes.size() - 1);
-    // Fixed placements (x, y, z, half-size, angle) so the preset is the same on every run.
-    const double table[10][5] = {{-3.0, 0.5, -2.0, 0.6, 15.0}, {-1.2, 1.8, -1.0, 0.4, 40.0}, {0.6, 0.2, -2.6, 0.5, 70.0},
-                                 {2.4, 1.2, -1.6, 0.45, 110.0}, {3.4, 0.0, 0.4, 0.5, 25.0},  {1.2, 2.6, 0.6, 0.35, 55.0},
-                                 {-0.4, 0.3, 1.2, 0.55, 80.0},  {-2.6, 1.4, 1.6, 0.4, 135.0}, {0.8, 0.9, 2.8, 0.3, 160.0},
-                                 {-3.6, 0.1, 3.2, 0.45, 5.0}};
-    for (int i = 0; i < 10; ++i) {
-        const auto& t = table[i];
-        s.objects.push_back({QStringLiteral("cube %1").arg(i + 1), cube,
-                             placement({t[0], t[1], t[2]}, t[3], t[4], {0.3 * (i % 3), 1.0, 0.2 * (i % 2)}), TextureKind::Wood, true});
-    }
-    return s;
-}
-
-Scene occluderScene()
-{
-    // The simplest shadow there is: a thin square board above a plane, turned 30 degrees so its
-    // edges cross the shadow map's texel grid. Under a light straight above, its shadow is
-    // exactly the board's square (half-size 1) on the plane.
-    Scene s;
-    s.name = QStringLiteral("occluder");
-    addGround(s, 0.0);
-    s.meshes.push_back(meshes::cube());
-    glm::dmat4 board = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 1.0, 0.0));
-    board = glm::rotate(board, glm::radians(30.0), glm::dvec3(0.0, 1.0, 0.0));
-    board = glm::scale(board, glm::dvec3(1.0, 0.02, 1.0));
-    s.objects.push_back({QStringLiteral("board"), int(s.meshes.size() - 1), board, TextureKind::Wood, true});
-    return s;
 }
 
 // A reproducible hash to [0, 1) (PCG output permutation): the same city and shrubs on every platform,
@@ -160,35 +95,6 @@ Scene cityScene(const QString& name, int buildings)
     return s;
 }
 
-Scene bleedingScene()
-{
-    // The classic failure of variance shadow maps: thin boards stacked at different heights
-    // over a ground, each partly over the shadow of the one above. Where a receiver sees two
-    // occluders at different depths within one filter footprint, Chebyshev's bound lets light
-    // through inside a shadow the ray tracer says is solid.
-    Scene s;
-    s.name = QStringLiteral("bleeding");
-    addGround(s, 0.0);
-    s.meshes.push_back(meshes::cube());
-    const int cube = int(s.meshes.size() - 1);
-    auto board = [&](const char* name, glm::dvec3 centre, double halfX, double halfZ, double angle, double halfY = 0.03) {
-        glm::dmat4 m = glm::translate(glm::dmat4(1.0), centre);
-        m = glm::rotate(m, glm::radians(angle), glm::dvec3(0.0, 1.0, 0.0));
-        m = glm::scale(m, glm::dvec3(halfX, halfY, halfZ));
-        s.objects.push_back({QString::fromLatin1(name), cube, m, TextureKind::Wood, true});
-    };
-    // Light bleeds most where the lower occluder is close to the receiver and the upper one
-    // far above it: the low board straddles the high board's edge a hand's width over the ground.
-    board("high board", {0.0, 3.0, 0.0}, 1.6, 1.6, 15.0);
-    board("middle board", {-0.3, 1.6, -0.6}, 1.0, 0.5, -20.0);
-    board("low board", {1.45, 0.25, 0.55}, 0.45, 1.5, 15.0);
-    board("low bar", {-0.9, 0.35, 0.7}, 0.2, 1.3, 40.0);
-    // A block resting on the ground, under the high board: its contact shadow is where
-    // exponential warps leak.
-    board("resting block", {0.2, 0.2, 1.1}, 0.2, 0.2, 10.0, 0.2);
-    return s;
-}
-
 Scene foliageScene()
 {
     // Cut-out casters (alpha-masked cards, as glTF's alphaMode MASK): a trellis fence and three
@@ -236,6 +142,23 @@ Scene foliageScene()
     return s;
 }
 
+// A preset's file (SceneNames.h): its shapes or generator, and its settings.
+QJsonObject presetFile(const QString& name)
+{
+    const QString path = QStringLiteral("%1/%2.json").arg(QLatin1String(kScenePresetFolder), name);
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw SceneFileError(path, QStringLiteral("the built-in scene's file is missing from this build"));
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    if (error.error != QJsonParseError::NoError || !doc.isObject())
+        throw SceneFileError(path, QStringLiteral("is not a JSON object: %1").arg(error.errorString()));
+    return doc.object();
+}
+
+// What a preset file holds besides settings keys.
+const QStringList kPresetFields{QStringLiteral("order"), QStringLiteral("about"), QStringLiteral("shapes"), QStringLiteral("generator")};
+
 } // namespace
 
 std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, double step)
@@ -260,83 +183,30 @@ Scene buildScene(const QString& name)
         return cityScene(name, buildings);
     if (!sceneNames().contains(name))
         return *loadSceneFile(name);
-    if (name == u"seed")
-        return seedScene();
-    if (name == u"torus")
-        return torusScene();
-    if (name == u"cubes")
-        return cubesScene();
-    if (name == u"occluder")
-        return occluderScene();
-    if (name == u"bleeding")
-        return bleedingScene();
-    if (name == u"foliage")
+    const QJsonObject preset = presetFile(name);
+    const QString generator = preset.value(QStringLiteral("generator")).toString();
+    if (generator == u"foliage")
         return foliageScene();
-    throw SettingsError(QStringLiteral("scene"),
-                        QStringLiteral("'%1' is not a scene; choose one of %2").arg(name, sceneNames().join(QStringLiteral(" | "))));
+    if (!generator.isEmpty())
+        throw SceneFileError(name, QStringLiteral("names the generator '%1', which this build does not have").arg(generator));
+    Scene s;
+    s.name = name;
+    appendShapes(s, preset.value(QStringLiteral("shapes")).toArray(), QStringLiteral("%1/%2.json").arg(QLatin1String(kScenePresetFolder), name));
+    return s;
 }
 
 Settings presetSettings(const QString& name)
 {
     if (!isPresetName(name))
         return sceneFileSettings(name);
+    // The global defaults under the preset file's keys; every city:N shares the city's.
+    QJsonObject keys = presetFile(cityBuildingCount(name) > 0 ? QStringLiteral("city") : name);
+    for (const QString& field : kPresetFields)
+        keys.remove(field);
     Settings s;
     s.scene = name;
-    if (cityBuildingCount(name) > 0) {
-        // An afternoon sun; a pedestrian on a street, looking down it toward the towers.
-        s.light.position = {-400.0, 500.0, -250.0};
-        s.light.target = {0.0, 0.0, 0.0};
-        s.light.extent = 700.0;
-        s.light.nearPlane = 1.0;
-        s.light.farPlane = 1600.0;
-        const double street = -kCitySide * 0.5 + 5.0 * kCityPitch + kCityStreet * 0.25;
-        s.camera.position = {street, 1.7, 380.0};
-        s.camera.target = {street + 25.0, 8.0, 280.0};
-        s.camera.fov = 60.0;
-        return s;
-    }
-    // The small scenes' lights and cameras; the seed's light is the global defaults.
-    struct View {
-        const char* name;
-        std::optional<LightSettings> light;     // the defaults but position, target, extent, near, far
-        glm::dvec3 cameraPosition, cameraTarget;
-        double normalOffset = 0.0;              // bias.normal, texels
-    };
-    const auto light = [](glm::dvec3 position, double extent, double nearPlane, double farPlane) {
-        LightSettings l;
-        l.position = position;
-        l.target = {0.0, 0.0, 0.0};
-        l.extent = extent;
-        l.nearPlane = nearPlane;
-        l.farPlane = farPlane;
-        return l;
-    };
-    const View views[] = {
-        // The camera frames the three cubes and their shadows from above and to the side.
-        {.name = "seed", .light = std::nullopt, .cameraPosition = {5.2, 4.6, 8.4}, .cameraTarget = {-0.2, 0.6, 0.2}},
-        {.name = "torus", .light = light({-6.0, 1.6, 2.0}, 5.0, 1.0, 14.0), .cameraPosition = {0.5, 2.5, 6.5}, .cameraTarget = {0.0, 0.3, 0.0}},
-        {.name = "cubes", .light = light({4.0, 9.0, 3.0}, 8.0, 2.0, 18.0), .cameraPosition = {0.0, 6.0, 11.0}, .cameraTarget = {0.0, 0.5, 0.0}},
-        {.name = "occluder", .light = light({0.0, 6.0, 0.0}, 4.0, 1.0, 10.0), .cameraPosition = {0.0, 5.0, 4.5}, .cameraTarget = {0.0, 0.0, 0.0}},
-        // Nearly overhead, so each board's shadow falls inside the one above's; the camera looks
-        // down past the boards' edges at the ground they shadow.
-        {.name = "bleeding", .light = light({-1.0, 8.0, -0.6}, 4.0, 1.0, 10.0), .cameraPosition = {4.6, 2.4, 5.4}, .cameraTarget = {0.2, 0.5, 0.2}},
-        // A low sun behind the fence throws the lattice and the leaves toward the camera. The
-        // cards have no thickness: their lit face meets its own depth in the map, which a texel
-        // of normal offset clears at grazing light, where a depth bias would have to be huge.
-        // (A thickness cures that, but with the slab's sides missing it lets light through a
-        // sliver t * tan(angle) wide along every shadow edge.)
-        {.name = "foliage", .light = light({-3.0, 6.0, -5.0}, 5.0, 1.0, 16.0), .cameraPosition = {1.2, 4.2, 6.8}, .cameraTarget = {0.0, 0.4, 0.2},
-         .normalOffset = 1.0},
-    };
-    for (const View& view : views) {
-        if (name != QLatin1String(view.name))
-            continue;
-        if (view.light)
-            s.light = *view.light;
-        s.camera.position = view.cameraPosition;
-        s.camera.target = view.cameraTarget;
-        s.bias.normal = view.normalOffset;
-    }
+    s = settingsFromJson(keys, s);
+    s.scene = name;
     return s;
 }
 

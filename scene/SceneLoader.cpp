@@ -2,6 +2,7 @@
 
 #include "IsolatedImport.h"
 #include "SceneFileError.h"
+#include "SceneShapes.h"
 #include "SettingsKeys.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,6 +31,7 @@ constexpr double kSeedObjectRadius = 2.5;           // the seed preset's objects
 struct Loaded {
     std::shared_ptr<const Scene> scene;     // what is drawn, with its ground (a model's is its last mesh and object)
     QJsonObject settings;                   // a scene file's keys of `shadowlab settings`
+    bool closedCasters = false;             // every caster is a closed shape: front faces may be culled
 };
 
 // A model file's meshes alone, to place in a scene file: its scene without the ground that
@@ -138,9 +140,13 @@ Loaded loadScene(const QString& path, const ImportControl& control)
         throw SceneFileError(path, QStringLiteral("is not valid JSON at offset %1: %2").arg(error.offset).arg(error.errorString()));
     QJsonObject object = doc.object();
     const QJsonArray models = object.take(QStringLiteral("models")).toArray();
+    const QJsonValue shapes = object.take(QStringLiteral("shapes"));
     const QJsonValue ground = object.take(QStringLiteral("ground"));
-    if (models.isEmpty())
-        throw SceneFileError(path, QStringLiteral("lists no models; add \"models\": [{\"file\": \"model.glb\"}]"));
+    if (!shapes.isUndefined() && !shapes.isArray())
+        throw SceneFileError(path, QStringLiteral("\"shapes\" must be a list, e.g. [{\"shape\": \"cube\"}]"));
+    if (models.isEmpty() && shapes.toArray().isEmpty())
+        throw SceneFileError(path, QStringLiteral("lists no models and no shapes; add \"models\": [{\"file\": \"model.glb\"}] "
+                                                  "or \"shapes\": [{\"shape\": \"cube\"}]"));
 
     Loaded loaded;
     auto scene = std::make_shared<Scene>();
@@ -170,9 +176,11 @@ Loaded loadScene(const QString& path, const ImportControl& control)
         append(*scene, part, placement, m.value(QStringLiteral("casts")).toBool(true), m.value(QStringLiteral("receives")).toBool(true));
         identity.addData(part.identity);
     }
-    if (ground.isDouble())
+    loaded.closedCasters = appendShapes(*scene, shapes.toArray(), path) && models.isEmpty();
+    // A "ground" shape is the ground; otherwise one is laid under what the file places.
+    if (!scene->groundHeight && ground.isDouble())
         addGround(*scene, ground.toDouble());
-    else if (ground.isUndefined() || ground.toBool(false))
+    else if (!scene->groundHeight && (ground.isUndefined() || ground.toBool(false)))
         addGround(*scene, scene->bounds().min.y);
     scene->identity = identity.result().toHex();
     loaded.scene = std::move(scene);
@@ -230,8 +238,9 @@ Settings sceneFileSettings(const QString& path)
     // Cascades cover what is in view: the model and the ground round it, not the seed's 100 wu.
     s.shadow.distance = std::min(distance + radius * 2.0, 1e7);
     // Front-face culling in the shadow pass needs closed meshes; models are often open
-    // (single-sided shells, thin legs) and would lose their shadows, so draw both sides.
-    s.bias.cullFront = false;
+    // (single-sided shells, thin legs) and would lose their shadows, so draw both sides. A file
+    // of closed shapes only keeps it, and with it the defaults' freedom from acne.
+    s.bias.cullFront = loaded.closedCasters;
     if (!loaded.settings.isEmpty()) {
         try {
             s = settingsFromJson(loaded.settings, s);

@@ -21,7 +21,7 @@ echo "## The $top longest product functions (lines)"
 # Universal Ctags gives each function's first and last line.
 ctags -x --_xformat='%{line} %{end} %{input} %{scope}::%{name}' --kinds-c++=f --fields=+e --language-force=C++ $product 2>/dev/null \
     | grep -v "::__anon[0-9a-f]*$" | awk '$2 > 0 { name = $4; gsub(/(shadowlab|__anon[0-9a-f]+|cli)::/, "", name); sub(/^::/, "", name)
-                   printf "%5d  %s:%d  %s\n", $2 - $1 + 1, $3, $1, name }' | sort -rn | head -n "$top"
+                   printf "%5d  %s:%d  %s\n", $2 - $1 + 1, $3, $1, name }' | sort -rn | head -n "$top" || true
 
 echo
 echo "## Product files over 600 lines"

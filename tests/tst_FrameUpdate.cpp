@@ -128,16 +128,16 @@ private slots:
             QCOMPARE(g.indices.size(), indices);
             const glm::dvec3 origin(item.model[3]);
             for (const BatchVertex& v : g.vertices) {
-                const glm::dvec3 world = glm::dvec3(v.position) + origin;
+                const glm::dvec3 world = glm::dvec3(v.vertex.position) + origin;
                 QVERIFY(glm::all(glm::lessThanEqual(item.bounds.min - 1e-4, world)) && glm::all(glm::lessThanEqual(world, item.bounds.max + 1e-4)));
-                QVERIFY(std::abs(glm::length(v.normal) - 1.0f) < 1e-4f);
+                QVERIFY(std::abs(glm::length(v.vertex.normal) - 1.0f) < 1e-4f);
             }
             for (std::size_t k = 0; k + 2 < g.indices.size(); k += 3) {
                 const BatchVertex& a = g.vertices[g.indices[k]];
                 const BatchVertex& b = g.vertices[g.indices[k + 1]];
                 const BatchVertex& c = g.vertices[g.indices[k + 2]];
-                const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
-                QVERIFY2(glm::dot(face, a.normal + b.normal + c.normal) > 0.0f, "a batched triangle faces away from its normal");
+                const glm::vec3 face = glm::cross(b.vertex.position - a.vertex.position, c.vertex.position - a.vertex.position);
+                QVERIFY2(glm::dot(face, a.vertex.normal + b.vertex.normal + c.vertex.normal) > 0.0f, "a batched triangle faces away from its normal");
             }
             batched += int(item.objects.size());
         }

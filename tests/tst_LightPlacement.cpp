@@ -15,6 +15,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace shadowlab;
@@ -36,7 +37,22 @@ public:
     static void initMain() { configureApplication(); }
 
 private Q_SLOTS:
-    void initTestCase() { m_headless = std::make_unique<HeadlessRenderer>(); }
+    void initTestCase()
+    {
+        m_headless = std::make_unique<HeadlessRenderer>();
+        // A scene of primitive shapes no preset has (a sphere, a torus standing up, a tilted
+        // pyramid on a smaller ground), through a scene file: its light, camera and bias come
+        // from its bounds as any user's file gets them.
+        m_shapes = m_files.filePath(QStringLiteral("shapes.json"));
+        QFile file(m_shapes);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({ "shapes": [
+            { "shape": "ground", "height": 0, "size": 8 },
+            { "shape": "sphere", "position": [-1.6, 0.6, 0.8], "scale": 0.6 },
+            { "shape": "torus", "major": 0.8, "minor": 0.2, "position": [1.8, 0.9, 0.4], "rotation": [70, 0, 10] },
+            { "shape": "pyramid", "position": [-0.4, 0.5, -1.8], "rotation": { "angle": 25, "axis": [1, 0.5, 0] }, "scale": 0.45 },
+            { "shape": "cube", "position": [0.3, 1.4, 0.2], "scale": [0.9, 0.05, 0.4] } ] })");
+    }
     void cleanupTestCase() { m_headless.reset(); }
 
     void shadowsAgreeWithTheReference_data()
@@ -50,7 +66,7 @@ private Q_SLOTS:
             double azimuth, elevation;
         } directions[] = {{0, 90}, {30, 89.9}, {200, 75}, {135, 50}, {300, 35}, {20, 20}, {250, 8}, {100, 3}, {160, 1}};
         const double distances[] = {1.0, 10.0, 1e3, 1e6};
-        for (const QString& scene : sceneNames()) {
+        for (const QString& scene : sceneNames() + QStringList{m_shapes}) {
             // One map over a kilometre of city seen from the street has half-metre texels and
             // misclassifies up to 1 % of pixels: the city is measured with cascades
             // (tst_LightTypes), as it is meant to be rendered.
@@ -67,7 +83,8 @@ private Q_SLOTS:
                     // Every direction at two distances, so all four distances meet every scene.
                     for (int j = 0; j < 2; ++j) {
                         const double distance = distances[(k + 2 * j + (projection == "perspective")) % 4];
-                        QTest::newRow(qPrintable(QString("%1 %2 az %3 el %4 at %5").arg(scene, projection).arg(d.azimuth).arg(d.elevation).arg(distance)))
+                        const QString label = scene == m_shapes ? QStringLiteral("shapes file") : scene;
+                        QTest::newRow(qPrintable(QString("%1 %2 az %3 el %4 at %5").arg(label, projection).arg(d.azimuth).arg(d.elevation).arg(distance)))
                             << scene << projection << fromAngles(d.azimuth, d.elevation) << distance;
                     }
                     ++k;
@@ -105,6 +122,8 @@ private Q_SLOTS:
 
 private:
     std::unique_ptr<HeadlessRenderer> m_headless;
+    QTemporaryDir m_files;
+    QString m_shapes;       // the shapes scene's file
 };
 
 SHADOWLAB_TEST_MAIN(TestLightPlacement)

@@ -1,0 +1,215 @@
+#include "SceneShapes.h"
+
+#include "MessageText.h"
+#include "SceneFileError.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <QJsonObject>
+#include <QStringList>
+
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr double kMaxShapeCoordinate = 1e7;
+
+const QStringList kShapeNames{QStringLiteral("cube"), QStringLiteral("pyramid"), QStringLiteral("sphere"), QStringLiteral("torus"),
+                              QStringLiteral("plane"), QStringLiteral("card"), QStringLiteral("ground")};
+const QStringList kShapeKeys{QStringLiteral("shape"),  QStringLiteral("name"),     QStringLiteral("position"), QStringLiteral("rotation"),
+                             QStringLiteral("scale"),  QStringLiteral("texture"),  QStringLiteral("colour"),   QStringLiteral("casts"),
+                             QStringLiteral("receives"), QStringLiteral("major"),  QStringLiteral("minor"),    QStringLiteral("segments"),
+                             QStringLiteral("sides"),  QStringLiteral("rings"),    QStringLiteral("size"),     QStringLiteral("tiles"),
+                             QStringLiteral("height")};
+const QStringList kTextureNames{QStringLiteral("wood"), QStringLiteral("checker"), QStringLiteral("flat")};
+
+// One shape's fields, read with its place in the file for every message.
+class ShapeReader {
+public:
+    ShapeReader(const QJsonObject& object, const QString& path, const QString& where) : m_object(object), m_path(path), m_where(where) {}
+
+    [[noreturn]] void fail(const QString& problem) const { throw SceneFileError(m_path, QStringLiteral("%1: %2").arg(m_where, problem)); }
+
+    double number(const char* key, double fallback, double lo, double hi) const
+    {
+        const QJsonValue v = m_object.value(QLatin1String(key));
+        if (v.isUndefined())
+            return fallback;
+        if (!v.isDouble() || !(v.toDouble() >= lo && v.toDouble() <= hi))
+            fail(QStringLiteral("\"%1\" must be a number in [%2, %3]").arg(QLatin1String(key)).arg(lo).arg(hi));
+        return v.toDouble();
+    }
+    int whole(const char* key, int fallback, int lo, int hi) const
+    {
+        const double v = number(key, fallback, lo, hi);
+        if (v != std::floor(v))
+            fail(QStringLiteral("\"%1\" must be a whole number in [%2, %3]").arg(QLatin1String(key)).arg(lo).arg(hi));
+        return int(v);
+    }
+    // Three numbers, or one for all three.
+    glm::dvec3 vector(const char* key, glm::dvec3 fallback, double lo, double hi) const
+    {
+        const QJsonValue v = m_object.value(QLatin1String(key));
+        if (v.isUndefined())
+            return fallback;
+        glm::dvec3 result(v.toDouble());
+        if (v.isArray() && v.toArray().size() == 3) {
+            for (int i = 0; i < 3; ++i)
+                result[i] = v.toArray()[i].isDouble() ? v.toArray()[i].toDouble() : NAN;
+        } else if (!v.isDouble()) {
+            result = glm::dvec3(NAN);
+        }
+        for (int i = 0; i < 3; ++i) {
+            if (!(result[i] >= lo && result[i] <= hi))
+                fail(QStringLiteral("\"%1\" must be three numbers in [%2, %3], e.g. [0, 1, 0]").arg(QLatin1String(key)).arg(lo).arg(hi));
+        }
+        return result;
+    }
+    bool flag(const char* key) const
+    {
+        const QJsonValue v = m_object.value(QLatin1String(key));
+        if (!v.isUndefined() && !v.isBool())
+            fail(QStringLiteral("\"%1\" must be true or false").arg(QLatin1String(key)));
+        return v.toBool(true);
+    }
+    // One of `names`, by its index.
+    int choice(const char* key, const QStringList& names, int fallback) const
+    {
+        const QJsonValue v = m_object.value(QLatin1String(key));
+        if (v.isUndefined() && fallback >= 0)
+            return fallback;
+        const int index = names.indexOf(v.toString());
+        if (index < 0)
+            fail(QStringLiteral("\"%1\": '%2' is not one of %3%4")
+                     .arg(QLatin1String(key), displayText(v.toString()), names.join(QStringLiteral(", ")), didYouMean(v.toString(), names)));
+        return index;
+    }
+    void refuseUnknownKeys() const
+    {
+        for (auto it = m_object.begin(); it != m_object.end(); ++it) {
+            if (!kShapeKeys.contains(it.key()))
+                fail(QStringLiteral("unknown key \"%1\"%2; a shape takes %3").arg(displayText(it.key()), didYouMean(it.key(), kShapeKeys),
+                                                                             kShapeKeys.join(QStringLiteral(", "))));
+        }
+    }
+    // Translation, then rotation (about an axis, or about z, y and x in turn), then scale.
+    glm::dmat4 placement() const
+    {
+        glm::dmat4 m = glm::translate(glm::dmat4(1.0), vector("position", glm::dvec3(0.0), -kMaxShapeCoordinate, kMaxShapeCoordinate));
+        const QJsonValue rotation = m_object.value(QStringLiteral("rotation"));
+        if (rotation.isObject()) {
+            const ShapeReader about(rotation.toObject(), m_path, m_where + QStringLiteral(".rotation"));
+            const double angle = about.number("angle", 0.0, -36000.0, 36000.0);
+            const glm::dvec3 axis = about.vector("axis", glm::dvec3(0.0, 1.0, 0.0), -1e6, 1e6);
+            if (!(glm::length(axis) > 1e-12))
+                about.fail(QStringLiteral("\"axis\" must not be zero"));
+            if (angle != 0.0)
+                m = glm::rotate(m, glm::radians(angle), glm::normalize(axis));
+        } else {
+            const glm::dvec3 degrees = vector("rotation", glm::dvec3(0.0), -36000.0, 36000.0);
+            m = glm::rotate(m, glm::radians(degrees.z), glm::dvec3(0, 0, 1));
+            m = glm::rotate(m, glm::radians(degrees.y), glm::dvec3(0, 1, 0));
+            m = glm::rotate(m, glm::radians(degrees.x), glm::dvec3(1, 0, 0));
+        }
+        const glm::dvec3 scale = vector("scale", glm::dvec3(1.0), 0.0, kMaxShapeCoordinate);
+        if (!(scale.x > 0.0 && scale.y > 0.0 && scale.z > 0.0))
+            fail(QStringLiteral("\"scale\" must be positive"));
+        return glm::scale(m, scale);
+    }
+
+private:
+    const QJsonObject& m_object;
+    const QString& m_path;
+    QString m_where;
+};
+
+// The mesh of a shape and the parameters that make it, for sharing one mesh between equal shapes.
+struct ShapeMesh {
+    int kind = 0;
+    double a = 0.0, b = 0.0;
+    int c = 0, d = 0;
+    auto operator<=>(const ShapeMesh&) const = default;
+};
+
+ShapeMesh shapeMesh(const ShapeReader& r, int kind)
+{
+    const QString& name = kShapeNames[kind];
+    if (name == u"torus") {
+        const double major = r.number("major", 1.0, 1e-6, 1e6), minor = r.number("minor", 0.35, 1e-6, 1e6);
+        if (!(minor < major))
+            r.fail(QStringLiteral("a torus's \"minor\" radius must be smaller than its \"major\" one"));
+        return {kind, major, minor, r.whole("segments", 64, 3, 1024), r.whole("sides", 24, 3, 1024)};
+    }
+    if (name == u"sphere")
+        return {kind, 0.0, 0.0, r.whole("segments", 32, 3, 1024), r.whole("rings", 16, 3, 1024)};
+    if (name == u"plane" || name == u"ground") {
+        const double size = r.number("size", 25.0, 1e-6, 1e6);
+        return {kind, size, r.number("tiles", size, 1e-6, 1e6), 0, 0};
+    }
+    return {kind};
+}
+
+Mesh makeMesh(const ShapeMesh& m)
+{
+    const QString& name = kShapeNames[m.kind];
+    if (name == u"cube")
+        return meshes::cube();
+    if (name == u"pyramid")
+        return meshes::pyramid();
+    if (name == u"sphere")
+        return meshes::sphere(m.c, m.d);
+    if (name == u"torus")
+        return meshes::torus(float(m.a), float(m.b), m.c, m.d);
+    if (name == u"card")
+        return meshes::card();
+    return meshes::plane(float(m.a), float(m.b));
+}
+
+} // namespace
+
+bool appendShapes(Scene& scene, const QJsonArray& shapes, const QString& path)
+{
+    std::map<ShapeMesh, int> meshOf;
+    bool closed = true;
+    for (qsizetype i = 0; i < shapes.size(); ++i) {
+        const QString where = QStringLiteral("shapes[%1]").arg(i);
+        if (!shapes[i].isObject())
+            throw SceneFileError(path, QStringLiteral("%1 must be an object, e.g. {\"shape\": \"cube\"}").arg(where));
+        const QJsonObject object = shapes[i].toObject();
+        const ShapeReader r(object, path, where);
+        r.refuseUnknownKeys();
+        const int kind = r.choice("shape", kShapeNames, -1);
+        const bool ground = kShapeNames[kind] == u"ground";
+        const ShapeMesh key = shapeMesh(r, kind);
+        auto [it, added] = meshOf.emplace(key, int(scene.meshes.size()));
+        if (added)
+            scene.meshes.push_back(makeMesh(key));
+
+        SceneObject o;
+        o.name = object.value(QStringLiteral("name")).toString(ground ? QStringLiteral("ground") : QStringLiteral("%1 %2").arg(kShapeNames[kind]).arg(i + 1));
+        o.mesh = it->second;
+        if (ground) {
+            const double height = r.number("height", 0.0, -kMaxShapeCoordinate, kMaxShapeCoordinate);
+            o.model = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, height, 0.0));
+            o.texture = TextureKind::Checker;
+            scene.groundHeight = height;
+        } else {
+            o.model = r.placement();
+            o.texture = std::array{TextureKind::Wood, TextureKind::Checker, TextureKind::Flat}[std::size_t(r.choice("texture", kTextureNames, 0))];
+        }
+        o.baseColour = glm::vec3(r.vector("colour", glm::dvec3(1.0), 0.0, 1.0));
+        o.castsShadow = r.flag("casts");
+        o.receivesShadow = r.flag("receives");
+        const QString& name = kShapeNames[kind];
+        closed = closed && (!o.castsShadow || ground || (name != u"plane" && name != u"card"));
+        scene.objects.push_back(std::move(o));
+    }
+    return closed;
+}
+
+} // namespace shadowlab
