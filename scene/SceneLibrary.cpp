@@ -188,7 +188,8 @@ Scene buildScene(const QString& name)
     if (generator == u"foliage")
         return foliageScene();
     if (!generator.isEmpty())
-        throw SceneFileError(name, QStringLiteral("names the generator '%1', which this build does not have").arg(generator));
+        throw SceneFileError(QStringLiteral("%1/%2.json").arg(QLatin1String(kScenePresetFolder), name),
+                             QStringLiteral("names the generator '%1', which this build does not have").arg(generator));
     Scene s;
     s.name = name;
     appendShapes(s, preset.value(QStringLiteral("shapes")).toArray(), QStringLiteral("%1/%2.json").arg(QLatin1String(kScenePresetFolder), name));

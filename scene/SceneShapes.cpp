@@ -1,9 +1,12 @@
 #include "SceneShapes.h"
 
 #include "MessageText.h"
+#include "ModelImporter.h"
 #include "SceneFileError.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <QJsonObject>
@@ -12,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <utility>
 
 namespace shadowlab {
 
@@ -21,17 +25,31 @@ constexpr double kMaxShapeCoordinate = 1e7;
 
 const QStringList kShapeNames{QStringLiteral("cube"), QStringLiteral("pyramid"), QStringLiteral("sphere"), QStringLiteral("torus"),
                               QStringLiteral("plane"), QStringLiteral("card"), QStringLiteral("ground")};
-const QStringList kShapeKeys{QStringLiteral("shape"),  QStringLiteral("name"),     QStringLiteral("position"), QStringLiteral("rotation"),
-                             QStringLiteral("scale"),  QStringLiteral("texture"),  QStringLiteral("colour"),   QStringLiteral("casts"),
-                             QStringLiteral("receives"), QStringLiteral("major"),  QStringLiteral("minor"),    QStringLiteral("segments"),
-                             QStringLiteral("sides"),  QStringLiteral("rings"),    QStringLiteral("size"),     QStringLiteral("tiles"),
-                             QStringLiteral("height")};
+// The keys every shape takes, and those of each kind.
+const QStringList kCommonKeys{QStringLiteral("shape"), QStringLiteral("name"), QStringLiteral("colour"), QStringLiteral("casts"),
+                              QStringLiteral("receives")};
+const QStringList kPlacedKeys{QStringLiteral("position"), QStringLiteral("rotation"), QStringLiteral("scale"), QStringLiteral("texture")};
+QStringList keysOf(const QString& shape)
+{
+    if (shape == u"ground")
+        return kCommonKeys + QStringList{QStringLiteral("height"), QStringLiteral("size"), QStringLiteral("tiles")};
+    QStringList keys = kCommonKeys + kPlacedKeys;
+    if (shape == u"torus")
+        keys << QStringLiteral("major") << QStringLiteral("minor") << QStringLiteral("segments") << QStringLiteral("sides");
+    else if (shape == u"sphere")
+        keys << QStringLiteral("segments") << QStringLiteral("rings");
+    else if (shape == u"plane")
+        keys << QStringLiteral("size") << QStringLiteral("tiles");
+    return keys;
+}
+// The smallest scale: below it a shape's normals would not survive the inverse transpose.
+constexpr double kMinShapeScale = 1e-6;
 const QStringList kTextureNames{QStringLiteral("wood"), QStringLiteral("checker"), QStringLiteral("flat")};
 
 // One shape's fields, read with its place in the file for every message.
 class ShapeReader {
 public:
-    ShapeReader(const QJsonObject& object, const QString& path, const QString& where) : m_object(object), m_path(path), m_where(where) {}
+    ShapeReader(QJsonObject object, const QString& path, QString where) : m_object(std::move(object)), m_path(path), m_where(std::move(where)) {}
 
     [[noreturn]] void fail(const QString& problem) const { throw SceneFileError(m_path, QStringLiteral("%1: %2").arg(m_where, problem)); }
 
@@ -46,10 +64,12 @@ public:
     }
     int whole(const char* key, int fallback, int lo, int hi) const
     {
-        const double v = number(key, fallback, lo, hi);
-        if (v != std::floor(v))
+        const QJsonValue v = m_object.value(QLatin1String(key));
+        if (v.isUndefined())
+            return fallback;
+        if (!v.isDouble() || v.toDouble() != std::floor(v.toDouble()) || !(v.toDouble() >= lo && v.toDouble() <= hi))
             fail(QStringLiteral("\"%1\" must be a whole number in [%2, %3]").arg(QLatin1String(key)).arg(lo).arg(hi));
-        return int(v);
+        return int(v.toDouble());
     }
     // Three numbers, or one for all three.
     glm::dvec3 vector(const char* key, glm::dvec3 fallback, double lo, double hi) const
@@ -83,18 +103,21 @@ public:
         const QJsonValue v = m_object.value(QLatin1String(key));
         if (v.isUndefined() && fallback >= 0)
             return fallback;
+        if (!v.isString())
+            fail(QStringLiteral("needs a \"%1\", one of %2").arg(QLatin1String(key), names.join(QStringLiteral(", "))));
         const int index = names.indexOf(v.toString());
         if (index < 0)
             fail(QStringLiteral("\"%1\": '%2' is not one of %3%4")
                      .arg(QLatin1String(key), displayText(v.toString()), names.join(QStringLiteral(", ")), didYouMean(v.toString(), names)));
         return index;
     }
-    void refuseUnknownKeys() const
+    // Every key one of `keys`; `what` names the object in the message ("a torus").
+    void refuseUnknownKeys(const QStringList& keys, const QString& what) const
     {
         for (auto it = m_object.begin(); it != m_object.end(); ++it) {
-            if (!kShapeKeys.contains(it.key()))
-                fail(QStringLiteral("unknown key \"%1\"%2; a shape takes %3").arg(displayText(it.key()), didYouMean(it.key(), kShapeKeys),
-                                                                             kShapeKeys.join(QStringLiteral(", "))));
+            if (!keys.contains(it.key()))
+                fail(QStringLiteral("unknown key \"%1\"%2; %3 takes %4")
+                         .arg(displayText(it.key()), didYouMean(it.key(), keys), what, keys.join(QStringLiteral(", "))));
         }
     }
     // Translation, then rotation (about an axis, or about z, y and x in turn), then scale.
@@ -104,6 +127,7 @@ public:
         const QJsonValue rotation = m_object.value(QStringLiteral("rotation"));
         if (rotation.isObject()) {
             const ShapeReader about(rotation.toObject(), m_path, m_where + QStringLiteral(".rotation"));
+            about.refuseUnknownKeys({QStringLiteral("angle"), QStringLiteral("axis")}, QStringLiteral("a rotation"));
             const double angle = about.number("angle", 0.0, -36000.0, 36000.0);
             const glm::dvec3 axis = about.vector("axis", glm::dvec3(0.0, 1.0, 0.0), -1e6, 1e6);
             if (!(glm::length(axis) > 1e-12))
@@ -117,13 +141,13 @@ public:
             m = glm::rotate(m, glm::radians(degrees.x), glm::dvec3(1, 0, 0));
         }
         const glm::dvec3 scale = vector("scale", glm::dvec3(1.0), 0.0, kMaxShapeCoordinate);
-        if (!(scale.x > 0.0 && scale.y > 0.0 && scale.z > 0.0))
-            fail(QStringLiteral("\"scale\" must be positive"));
+        if (!(scale.x >= kMinShapeScale && scale.y >= kMinShapeScale && scale.z >= kMinShapeScale))
+            fail(QStringLiteral("\"scale\" must be positive, at least %1").arg(kMinShapeScale));
         return glm::scale(m, scale);
     }
 
 private:
-    const QJsonObject& m_object;
+    QJsonObject m_object;
     const QString& m_path;
     QString m_where;
 };
@@ -176,15 +200,16 @@ bool appendShapes(Scene& scene, const QJsonArray& shapes, const QString& path)
 {
     std::map<ShapeMesh, int> meshOf;
     bool closed = true;
+    std::size_t triangles = 0;
     for (qsizetype i = 0; i < shapes.size(); ++i) {
         const QString where = QStringLiteral("shapes[%1]").arg(i);
         if (!shapes[i].isObject())
             throw SceneFileError(path, QStringLiteral("%1 must be an object, e.g. {\"shape\": \"cube\"}").arg(where));
         const QJsonObject object = shapes[i].toObject();
         const ShapeReader r(object, path, where);
-        r.refuseUnknownKeys();
         const int kind = r.choice("shape", kShapeNames, -1);
         const bool ground = kShapeNames[kind] == u"ground";
+        r.refuseUnknownKeys(keysOf(kShapeNames[kind]), QStringLiteral("a %1").arg(kShapeNames[kind]));
         const ShapeMesh key = shapeMesh(r, kind);
         auto [it, added] = meshOf.emplace(key, int(scene.meshes.size()));
         if (added)
@@ -207,6 +232,13 @@ bool appendShapes(Scene& scene, const QJsonArray& shapes, const QString& path)
         o.receivesShadow = r.flag("receives");
         const QString& name = kShapeNames[kind];
         closed = closed && (!o.castsShadow || ground || (name != u"plane" && name != u"card"));
+        // What a model may be, a file of shapes may be: as many triangles, and within reach of float.
+        triangles += scene.meshes[std::size_t(o.mesh)].indices.size() / 3;
+        if (triangles > kMaxModelTriangles)
+            r.fail(QStringLiteral("the shapes so far have %1 triangles, more than the %2 a scene may have; use fewer divisions").arg(triangles).arg(kMaxModelTriangles));
+        const Bounds placed = scene.worldBounds(o);
+        if (glm::any(glm::greaterThan(glm::max(glm::abs(placed.min), glm::abs(placed.max)), glm::dvec3(kMaxShapeCoordinate))))
+            r.fail(QStringLiteral("reaches beyond %1 units from the origin; move it closer or make it smaller").arg(kMaxShapeCoordinate));
         scene.objects.push_back(std::move(o));
     }
     return closed;

@@ -174,7 +174,7 @@ private Q_SLOTS:
         QTest::newRow("not a list") << QByteArray(R"({"shape": "cube"})") << QStringLiteral("\"shapes\" must be a list");
         QTest::newRow("not an object") << QByteArray(R"(["cube"])") << QStringLiteral("shapes[0] must be an object");
         QTest::newRow("misspelt shape") << QByteArray(R"([{"shape": "cubee"}])") << QStringLiteral("did you mean 'cube'");
-        QTest::newRow("no shape") << QByteArray(R"([{"position": [0, 0, 0]}])") << QStringLiteral("is not one of cube, pyramid");
+        QTest::newRow("no shape") << QByteArray(R"([{"position": [0, 0, 0]}])") << QStringLiteral("needs a \"shape\", one of cube, pyramid");
         QTest::newRow("misspelt key") << QByteArray(R"([{"shape": "cube", "positon": [0, 0, 0]}])") << QStringLiteral("did you mean 'position'");
         QTest::newRow("two coordinates") << QByteArray(R"([{"shape": "cube", "position": [1, 2]}])") << QStringLiteral("\"position\" must be three numbers");
         QTest::newRow("text coordinate") << QByteArray(R"([{"shape": "cube", "position": [1, "2", 3]}])") << QStringLiteral("must be three numbers");
@@ -183,11 +183,19 @@ private Q_SLOTS:
         QTest::newRow("mirroring scale") << QByteArray(R"([{"shape": "cube", "scale": [-1, 1, 1]}])") << QStringLiteral("\"scale\" must be");
         QTest::newRow("zero axis") << QByteArray(R"([{"shape": "cube", "rotation": {"angle": 10, "axis": [0, 0, 0]}}])") << QStringLiteral("\"axis\" must not be zero");
         QTest::newRow("torus inside out") << QByteArray(R"([{"shape": "torus", "major": 0.2, "minor": 0.5}])") << QStringLiteral("\"minor\" radius must be smaller");
-        QTest::newRow("torus of two segments") << QByteArray(R"([{"shape": "torus", "segments": 2}])") << QStringLiteral("\"segments\" must be a number in [3, 1024]");
+        QTest::newRow("torus of two segments") << QByteArray(R"([{"shape": "torus", "segments": 2}])") << QStringLiteral("\"segments\" must be a whole number in [3, 1024]");
         QTest::newRow("fractional sides") << QByteArray(R"([{"shape": "torus", "sides": 7.5}])") << QStringLiteral("\"sides\" must be a whole number");
         QTest::newRow("plane of no size") << QByteArray(R"([{"shape": "plane", "size": 0}])") << QStringLiteral("\"size\" must be a number");
         QTest::newRow("unknown texture") << QByteArray(R"([{"shape": "cube", "texture": "marble"}])") << QStringLiteral("'marble' is not one of wood, checker, flat");
         QTest::newRow("bright colour") << QByteArray(R"([{"shape": "cube", "colour": [2, 0, 0]}])") << QStringLiteral("\"colour\" must be three numbers in [0, 1]");
+        QTest::newRow("misspelt rotation") << QByteArray(R"([{"shape": "cube", "rotation": {"angel": 10}}])") << QStringLiteral("did you mean 'angle'");
+        QTest::newRow("a placed ground") << QByteArray(R"([{"shape": "ground", "position": [0, 1, 0]}])") << QStringLiteral("unknown key \"position\"; a ground takes");
+        QTest::newRow("a cube's divisions") << QByteArray(R"([{"shape": "cube", "segments": 8}])") << QStringLiteral("unknown key \"segments\"; a cube takes");
+        QTest::newRow("vanishing scale") << QByteArray(R"([{"shape": "cube", "scale": 1e-300}])") << QStringLiteral("\"scale\" must be positive, at least");
+        QTest::newRow("beyond float's reach") << QByteArray(R"([{"shape": "cube", "position": [1e7, 0, 0], "scale": 10}])") << QStringLiteral("reaches beyond");
+        QTest::newRow("too many triangles") << QByteArray(R"([{"shape": "sphere", "segments": 1024, "rings": 1024}, {"shape": "sphere", "segments": 1024, "rings": 1024},
+            {"shape": "sphere", "segments": 1024, "rings": 1024}, {"shape": "sphere", "segments": 1024, "rings": 1024}, {"shape": "sphere", "segments": 1024, "rings": 1024}])")
+                                            << QStringLiteral("shapes[4]: the shapes so far have");
         QTest::newRow("casts as text") << QByteArray(R"([{"shape": "cube", "casts": "yes"}])") << QStringLiteral("\"casts\" must be true or false");
     }
     void badShapesAreRefused()
