@@ -50,11 +50,11 @@ TextureFootprint footprint(const Bounds& bounds, const glm::dmat4& shadowMatrix)
 // shadow pass draws none of it.
 bool culledFrom(const ReachObject& object, const LightFrame& view)
 {
-    if (!object.culledPlanePoint || !object.culledPlaneNormal)
+    if (!object.frontFacesCulled || !object.plane)
         return false;
-    const glm::dvec3& n = *object.culledPlaneNormal;
-    const double scale = glm::length(object.bounds.max - object.bounds.min) + glm::length(view.position - *object.culledPlanePoint);
-    return view.perspective ? glm::dot(n, view.position - *object.culledPlanePoint) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
+    const glm::dvec3& n = object.plane->normal;
+    const double scale = glm::length(object.bounds.max - object.bounds.min) + glm::length(view.position - object.plane->point);
+    return view.perspective ? glm::dot(n, view.position - object.plane->point) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
 }
 
 // The map depth (conventional, [0, 1] from near to far) of a point `distance` along a
@@ -258,15 +258,100 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
     return r;
 }
 
-// What share of the frame the boxes may cover: their corners' bounding rectangle on screen.
-void measureScreenShare(ShadowReach& reach, const CameraFrame& camera)
+// The half-spaces of a box, each grown outward by `margin` world units.
+std::vector<convex::Plane> boxPlanes(const ReachBox& box, double margin)
 {
+    // The box as the [-1, 1] cube of a projection from world: its six planes as a frustum's.
+    glm::dmat4 toCube(1.0);
+    const glm::dvec3 lo(box.uvMin, box.depthMin), hi(box.uvMax, box.depthMax);
+    for (int axis = 0; axis < 3; ++axis) {
+        toCube[axis][axis] = 2.0 / (hi[axis] - lo[axis]);
+        toCube[3][axis] = -1.0 - lo[axis] * toCube[axis][axis];
+    }
+    std::vector<convex::Plane> planes;
+    for (convex::Plane plane : convex::frustumPlanes(toCube * glm::inverse(box.textureToWorld))) {
+        plane.d += margin;
+        planes.push_back(plane);
+    }
+    return planes;
+}
+
+// Where a flat receiver's mask must reach past the boxes: its triangles lie on its plane only
+// to a millionth of its size (flatPlane) and float rounding moves them as much again, an
+// offset the camera sees stretched along the plane by the slant of its view; nothing where it
+// sees the plane nearly edge-on, which the boxes' faces then mask instead.
+std::optional<double> planeMargin(const ReachObject& receiver, const CameraFrame& camera)
+{
+    const double size = glm::length(receiver.bounds.max - receiver.bounds.min);
+    const double height = std::abs(glm::dot(receiver.plane->normal, camera.position - receiver.plane->point));
+    double farthest = 0.0;
+    for (const glm::dvec3& c : receiver.bounds.corners())
+        farthest = std::max(farthest, glm::length(c - camera.position));
+    if (!(height > 1e-3 * farthest))
+        return std::nullopt;
+    const double offset = 2e-6 * (size + glm::length(receiver.bounds.center()) + glm::length(camera.position));
+    return offset * farthest / height;
+}
+
+// The part of a flat receiver's plane inside `box`, within its bounds, all grown by `margin`.
+convex::Polygon planePiece(const ReachObject& receiver, const ReachBox& box, double margin)
+{
+    const WorldPlane& plane = *receiver.plane;
+    const glm::dvec3 centre = receiver.bounds.center() - plane.normal * glm::dot(plane.normal, receiver.bounds.center() - plane.point);
+    const double half = glm::length(receiver.bounds.max - receiver.bounds.min) + margin;
+    const glm::dvec3 u = glm::normalize(glm::cross(plane.normal, std::abs(plane.normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+    const glm::dvec3 v = glm::cross(plane.normal, u);
+    convex::Polygon piece{centre - half * u - half * v, centre + half * u - half * v, centre + half * u + half * v, centre - half * u + half * v};
+    std::vector<convex::Plane> planes = convex::boxHull(receiver.bounds).planes;
+    for (convex::Plane& p : planes)
+        p.d += margin;
+    const std::vector<convex::Plane> inBox = boxPlanes(box, margin);
+    planes.insert(planes.end(), inBox.begin(), inBox.end());
+    for (const convex::Plane& p : planes) {
+        piece = convex::clip(piece, p);
+        if (piece.size() < 3)
+            return {};
+    }
+    return piece;
+}
+
+// The mask of the receivers that straddle the boxes: flat ones' pieces, the boxes for the rest.
+// Each part's projected bounding rectangle makes the share and the rectangle.
+void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, const CameraFrame& camera)
+{
+    std::vector<std::vector<glm::dvec3>> parts;    // the corners of each piece or box
+    bool boxes = false;
+    for (std::size_t i = 0; i < receivers.size(); ++i) {
+        if (reach.objects[i] != Reach::Partly)
+            continue;
+        const std::optional<double> margin = receivers[i].plane ? planeMargin(receivers[i], camera) : std::nullopt;
+        if (!margin) {
+            boxes = true;
+            continue;
+        }
+        for (const ReachBox& box : reach.boxes) {
+            convex::Polygon piece = planePiece(receivers[i], box, *margin);
+            if (!piece.empty()) {
+                parts.push_back(piece);
+                reach.mask.push_back(std::move(piece));
+            }
+        }
+    }
+    if (boxes) {
+        for (const ReachBox& box : reach.boxes) {
+            const std::array<glm::dvec3, 8> corners = box.worldCorners();
+            parts.emplace_back(corners.begin(), corners.end());
+            for (convex::Polygon& face : convex::hexahedronFaces(corners))
+                reach.mask.push_back(std::move(face));
+        }
+    }
     double share = 0.0;
     glm::dvec2 all0(1.0), all1(-1.0);
-    for (const ReachBox& box : reach.boxes) {
+    std::vector<UvRect> rects;
+    for (const std::vector<glm::dvec3>& corners : parts) {
         glm::dvec2 lo(1.0), hi(-1.0);
         bool behind = false;
-        for (const glm::dvec3& c : box.worldCorners()) {
+        for (const glm::dvec3& c : corners) {
             const glm::dvec4 clip = camera.viewProjection * glm::dvec4(c, 1.0);
             if (clip.w <= 1e-9) {
                 behind = true;
@@ -284,9 +369,12 @@ void measureScreenShare(ShadowReach& reach, const CameraFrame& camera)
         share += std::max(hi.x - lo.x, 0.0) * std::max(hi.y - lo.y, 0.0) / 4.0;
         all0 = glm::min(all0, lo);
         all1 = glm::max(all1, hi);
+        rects.push_back({lo, hi});
     }
     reach.screenShare = std::min(share, 1.0);
-    reach.screenRect = reach.boxes.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
+    reach.screenRect = parts.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
+    for (const UvRect& r : mergedRects(std::move(rects)))
+        reach.screenRects.emplace_back(r.min, r.max);
 }
 
 } // namespace
@@ -312,7 +400,7 @@ ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>&
         if (objects[i].receives)
             reach.objects[i] = receiverReach(objects[i], views, perView);
     }
-    measureScreenShare(reach, camera);
+    buildMask(reach, objects, camera);
     return reach;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Bounds.h"
+#include "ConvexClipping.h"
 #include "LightMath.h"
 #include "Settings.h"
 
@@ -44,26 +45,41 @@ enum class Reach { Outside, Partly, Inside };
 struct ShadowReach {
     std::vector<ReachBox> boxes;        // empty: nothing can shadow anything
     std::vector<Reach> objects;         // per receiver given (those that receive no shadow: Outside)
-    // Share of the viewport the boxes may cover (their projected corners' bounding rectangle,
-    // 1 where a corner is behind the camera): a mask that covers most of the frame saves less
-    // than drawing the straddling objects twice costs.
+    // What the lit pass's stencil mask draws, in world space, for the receivers that straddle
+    // the boxes: a flat one's plane inside each box (the pixels of it that need a lookup, and
+    // no more), the boxes' faces for any other (every pixel whose ray crosses a box).
+    std::vector<convex::Polygon> mask;
+    // Share of the viewport the mask may cover (each piece's or box's projected corners'
+    // bounding rectangle, 1 where a corner is behind the camera): a mask that covers most of the
+    // frame saves less than drawing the straddling objects twice costs.
     double screenShare = 1.0;
-    // The boxes' corners' bounding rectangle in normalised device coordinates (min x, min y,
-    // max x, max y): the frame outside it needs no lookup. The whole [-1, 1] square where a
-    // corner is behind the camera.
+    // The mask's bounding rectangle in normalised device coordinates (min x, min y, max x,
+    // max y): the straddling receivers need no lookup outside it. The whole [-1, 1] square
+    // where a corner is behind the camera.
     glm::dvec4 screenRect{-1.0, -1.0, 1.0, 1.0};
+    // The same per part, where parts' rectangles overlap their union: the lookups' draws, one
+    // per rectangle, leave out the frame between them.
+    std::vector<glm::dvec4> screenRects;
     int generation = 0;                 // set by whoever keeps it: a new value whenever the boxes may have changed
     int outsideCount() const;
     int partlyCount() const;
+};
+
+struct WorldPlane {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0, 1.0, 0.0};   // unit, the side the triangles face
 };
 
 struct ReachObject {
     Bounds bounds;                      // world
     bool casts = false;
     bool receives = false;
-    // A flat one-sided caster whose front faces the shadow pass culls (bias.cull_front): the
-    // world plane its triangles face out of. From a light on that side nothing of it is drawn.
-    std::optional<glm::dvec3> culledPlanePoint, culledPlaneNormal;
+    // A flat mesh: the world plane its triangles lie in and face out of. A flat receiver's
+    // part of the mask is its plane's pieces inside the boxes.
+    std::optional<WorldPlane> plane;
+    // A flat one-sided caster whose front faces the shadow pass culls (bias.cull_front): from a
+    // light on the side its plane faces nothing of it is drawn.
+    bool frontFacesCulled = false;
 };
 
 // The reach of a light with the views `views` (one frame per view; their shadowMatrix), over

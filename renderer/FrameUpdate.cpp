@@ -20,23 +20,20 @@ std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
     return objects;
 }
 
-// A caster of the reach; a flat one-sided mesh whose front faces the pass culls keeps its plane.
-ReachObject reachCaster(const SceneObject& object, const Bounds& bounds, const std::optional<MeshPlane>& plane, bool cullsFrontFaces)
+// A mesh's plane, if it is flat, through `model` to world: by two edges, so a mirroring model
+// turns the side it faces too.
+std::optional<WorldPlane> worldPlane(const std::optional<MeshPlane>& plane, const glm::dmat4& model)
 {
-    ReachObject r{.bounds = bounds, .casts = object.castsShadow, .receives = object.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}};
-    if (!cullsFrontFaces || !plane)
-        return r;
-    // Through the model matrix by two edges, so a mirroring one turns the winding too.
+    if (!plane)
+        return std::nullopt;
     const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
-    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(object.model * glm::dvec4(p, 1.0)); };
+    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(model * glm::dvec4(p, 1.0)); };
     const glm::dvec3 origin = world(plane->point);
     const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
-    if (glm::length(normal) > 0.0) {
-        r.culledPlanePoint = origin;
-        r.culledPlaneNormal = glm::normalize(normal);
-    }
-    return r;
+    if (!(glm::length(normal) > 0.0))
+        return std::nullopt;
+    return WorldPlane{origin, glm::normalize(normal)};
 }
 
 } // namespace
@@ -48,11 +45,15 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
     casters.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        casters.push_back(reachCaster(object, layout.objectBounds(i), layout.meshPlane(object.mesh), cullsFrontFaces));
+        const std::optional<WorldPlane> plane = worldPlane(layout.meshPlane(object.mesh), object.model);
+        casters.push_back({.bounds = layout.objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
+                           .frontFacesCulled = cullsFrontFaces && plane});
     }
     std::vector<ReachObject> receivers;
-    for (const DrawItem& item : layout.drawItems())
-        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .culledPlanePoint = {}, .culledPlaneNormal = {}});
+    for (const DrawItem& item : layout.drawItems()) {
+        const std::optional<WorldPlane> plane = item.batch ? std::nullopt : worldPlane(layout.meshPlane(item.mesh), item.model);
+        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .plane = plane, .frontFacesCulled = false});
+    }
     return shadowReach(settings, views, settings.map.size, casters, receivers, camera);
 }
 

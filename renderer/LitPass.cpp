@@ -80,7 +80,7 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     if (lookups)
         defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
     else
-        defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"");
+        defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"") << QStringLiteral("OUT_OF_REACH");
     if (settings.shadow.enabled)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
@@ -303,16 +303,14 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
     }
     m_gl->glBindVertexArray(m_maskVertexArray.id());
     if (m_maskGeneration != m_reach->generation) {
-        // Twelve triangles a box, relative to the first box's first corner so that float keeps
-        // the precision of a scene far from the origin.
-        static constexpr int kFaces[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+        // Each polygon as a fan, relative to the first vertex so that float keeps the precision
+        // of a scene far from the origin.
         std::vector<glm::vec3> triangles;
-        m_maskOrigin = m_reach->boxes.front().worldCorners()[0];
-        for (const ReachBox& box : m_reach->boxes) {
-            const std::array<glm::dvec3, 8> corners = box.worldCorners();
-            for (const auto& face : kFaces) {
-                for (int k : {0, 1, 2, 0, 2, 3})
-                    triangles.emplace_back(corners[std::size_t(face[k])] - m_maskOrigin);
+        m_maskOrigin = m_reach->mask.empty() || m_reach->mask.front().empty() ? glm::dvec3(0.0) : m_reach->mask.front().front();
+        for (const convex::Polygon& polygon : m_reach->mask) {
+            for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+                for (const glm::dvec3& corner : {polygon[0], polygon[k], polygon[k + 1]})
+                    triangles.emplace_back(corner - m_maskOrigin);
             }
         }
         m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_maskVertices.id());
@@ -320,8 +318,9 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
         m_maskVertexCount = GLsizei(triangles.size());
         m_maskGeneration = m_reach->generation;
     }
-    // Every face, front and back, with no depth test: a pixel is marked when its ray passes
-    // through a box in front of the near plane, which holds for every surface point inside one.
+    // Both faces, with no depth test: a pixel is marked when its ray passes through a piece of a
+    // flat receiver's plane inside a box, or through a box in front of the near plane, which
+    // holds for every surface point inside one.
     // Depth clamp: a box is not clipped at the camera's near or far plane either.
     PassState state;
     state.depthTest = false;
@@ -337,7 +336,8 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
     m_gl->glScissor(pixels.x(), pixels.y(), pixels.width(), pixels.height());
     m_maskProgram->bind();
     m_maskProgram->set(m_maskMatrix, glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), m_maskOrigin)));
-    m_gl->glDrawArrays(GL_TRIANGLES, 0, m_maskVertexCount);
+    if (m_maskVertexCount > 0)
+        m_gl->glDrawArrays(GL_TRIANGLES, 0, m_maskVertexCount);
     m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 }
 
@@ -421,10 +421,9 @@ void LitPass::clearTarget(bool measure)
     }
 }
 
-QRect LitPass::reachPixels(QSize size) const
+QRect LitPass::reachPixels(const glm::dvec4& r, QSize size)
 {
     // A pixel of margin for rounding.
-    const glm::dvec4 r = m_reach->screenRect;
     const int x0 = std::max(int(std::floor((r.x + 1.0) * 0.5 * size.width())) - 1, 0);
     const int y0 = std::max(int(std::floor((r.y + 1.0) * 0.5 * size.height())) - 1, 0);
     const int x1 = std::min(int(std::ceil((r.z + 1.0) * 0.5 * size.width())) + 1, size.width());
@@ -464,18 +463,25 @@ void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
 
 void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                               const std::vector<std::pair<double, std::size_t>>& everywhere,
-                              const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor)
+                              const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors)
 {
     drawObjects(p, scene, camera, light, everywhere);
     if (masked.empty())
         return;
     m_gl->glEnable(GL_STENCIL_TEST);
     m_gl->glStencilFunc(stencilFunc, 1, 0xff);
-    if (scissor) {
+    if (!scissors) {
+        drawObjects(p, scene, camera, light, masked);
+    } else {
+        // Once per rectangle: the rasteriser bins only what lies inside it. The rectangles do
+        // not overlap but for their pixel of margin (ShadowReach::screenRects), where the depth
+        // test keeps what the first one drew.
         m_gl->glEnable(GL_SCISSOR_TEST);
-        m_gl->glScissor(scissor->x(), scissor->y(), scissor->width(), scissor->height());
+        for (const QRect& scissor : *scissors) {
+            m_gl->glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
+            drawObjects(p, scene, camera, light, masked);
+        }
     }
-    drawObjects(p, scene, camera, light, masked);
     m_gl->glDisable(GL_SCISSOR_TEST);
     m_gl->glDisable(GL_STENCIL_TEST);
 }
@@ -527,10 +533,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     clearTarget(measure);
     // The lookups' draws stay inside the reach's rectangle on screen, so the rasteriser skips
     // the rest of the frame for them.
-    QRect pixels;
+    std::vector<QRect> lookupRects;
     if (m_reachUse.masked) {
-        pixels = reachPixels(target.size);
-        drawReachMask(camera, pixels);
+        drawReachMask(camera, reachPixels(m_reach->screenRect, target.size));
+        for (const glm::dvec4& rect : m_reach->screenRects)
+            lookupRects.push_back(reachPixels(rect, target.size));
         applyPassState(m_gl, state);
     }
     if (shadows)
@@ -552,7 +559,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
         }
-        drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &pixels);
+        drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &lookupRects);
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
         variant.outOfReach = true;

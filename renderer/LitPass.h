@@ -109,8 +109,8 @@ private:
                           bool readsRange, const DepthRangePass* depthRange);
     // Whether the framebuffer bound now has stencil bits.
     bool boundTargetHasStencil() const;
-    // Marks the reach's boxes in the stencil buffer (1 inside) within `pixels`, colour and
-    // depth untouched.
+    // Marks the reach's mask (ShadowReach::mask) in the stencil buffer (1 inside) within
+    // `pixels`, colour and depth untouched.
     void drawReachMask(const CameraFrame& camera, const QRect& pixels);
     void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                      const std::vector<std::pair<double, std::size_t>>& order);
@@ -119,15 +119,16 @@ private:
     void sortByReach(const GpuScene& scene, const CameraFrame& camera, bool shadows);
     // Colour, depth and stencil, and the measurement's targets.
     void clearTarget(bool measure);
-    // The reach's rectangle on screen in pixels of a target of `size`.
-    QRect reachPixels(QSize size) const;
+    // A rectangle of the reach on screen (ShadowReach::screenRect or one of screenRects) in
+    // pixels of a target of `size`.
+    static QRect reachPixels(const glm::dvec4& rect, QSize size);
     void bindShadowTextures(const Settings& settings, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange);
     void unbindShadowTextures(const Settings& settings, bool readsRange);
-    // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1 (inside
-    // `scissor` when given).
+    // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1: once inside
+    // each of `scissors` when given (none: not at all), else over the whole target.
     void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
                          const std::vector<std::pair<double, std::size_t>>& everywhere,
-                         const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const QRect* scissor);
+                         const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors);
 
     GlFunctions* m_gl;
     std::map<QString, std::unique_ptr<Program>> m_programs;

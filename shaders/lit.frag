@@ -97,7 +97,12 @@ void main()
     if (diffuse <= 0.0)
         specular = 0.0;
 
-#ifdef SHADOWS
+#if defined(SHADOWS) && defined(OUT_OF_REACH) && !defined(MEASURE) && !defined(SHOW_CASCADES) && !defined(TEXEL_DENSITY)
+    // Out of every caster's reach a lookup reads lit, or unlit where the receiver faces away
+    // from the light, and there the direct term is 0 already: the frame is the same without it,
+    // and this variant then reads no shadow coordinate (what is measured still takes the lookup).
+    float visibility = 1.0;
+#elif defined(SHADOWS)
     float visibility = uReceives ? shadowVisibility(normal, toLight) : 1.0;
 #else
     float visibility = 1.0;

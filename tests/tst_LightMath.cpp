@@ -625,9 +625,9 @@ private Q_SLOTS:
         const CameraFrame camera = computeCameraFrame(cameraSettings, 16.0 / 9.0, scene);
         const Bounds groundBounds{{-5.0, 0.0, -5.0}, {5.0, 0.0, 5.0}};
         std::vector<ReachObject> objects{
-            {groundBounds, true, true, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)},
-            {Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, true, true, std::nullopt, std::nullopt},
-            {Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, false, true, std::nullopt, std::nullopt},
+            {.bounds = groundBounds, .casts = true, .receives = true, .plane = WorldPlane{glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)}, .frontFacesCulled = true},
+            {.bounds = Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, .casts = true, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
+            {.bounds = Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, .casts = false, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
         };
         const ShadowReach reach = shadowReach(s, {light}, 1024, objects, objects, camera);
         QCOMPARE(int(reach.boxes.size()), 1);
@@ -641,6 +641,29 @@ private Q_SLOTS:
         QCOMPARE(reach.objects[1], Reach::Inside);
         QCOMPARE(reach.objects[2], Reach::Outside);
         QVERIFY(reach.screenShare > 0.0 && reach.screenShare < 0.2);
+        // The ground straddles the column and is flat: its mask is the piece of its plane in
+        // the column, the cube's footprint grown by the taps, and not the column seen whole.
+        QCOMPARE(int(reach.mask.size()), 1);
+        Bounds piece;
+        for (const glm::dvec3& p : reach.mask.front())
+            piece.extend(p);
+        QVERIFY(std::abs(piece.max.y) < 1e-6 && std::abs(piece.min.y) < 1e-6);
+        QVERIFY(std::abs((piece.max.x - piece.min.x) - 10.0 * (box.uvMax.x - box.uvMin.x)) < 1e-3);
+        QVERIFY(std::abs((piece.max.z - piece.min.z) - 10.0 * (box.uvMax.y - box.uvMin.y)) < 1e-3);
+        QVERIFY(std::abs(piece.center().x) < 1e-6 && std::abs(piece.center().z) < 1e-6);
+        // A receiver that is not flat and straddles too: the column's faces join the mask.
+        std::vector<ReachObject> withRock = objects;
+        withRock.push_back({.bounds = Bounds{{0.3, 0.0, 0.3}, {1.5, 0.2, 1.5}}, .casts = false, .receives = true, .plane = std::nullopt,
+                            .frontFacesCulled = false});
+        const ShadowReach rock = shadowReach(s, {light}, 1024, objects, withRock, camera);
+        QCOMPARE(rock.objects[3], Reach::Partly);
+        QCOMPARE(int(rock.mask.size()), 1 + 6);
+        QVERIFY(rock.screenShare > reach.screenShare);
+        // Seen edge-on from the camera, the plane's piece would be a line: the column stands in.
+        CameraSettings level = cameraSettings;
+        level.position = {0.0, 1e-4, 8.0};
+        const ShadowReach edgeOn = shadowReach(s, {light}, 1024, objects, objects, computeCameraFrame(level, 16.0 / 9.0, scene));
+        QCOMPARE(int(edgeOn.mask.size()), 6);
 
         // A light below sees the ground's back: it is drawn and reaches everything on it.
         s.light.position = {0.0, -10.0, 0.1};
@@ -672,7 +695,7 @@ private Q_SLOTS:
         Settings s = presetSettings("seed");
         const LightFrame light = computeLightFrame(s.light);
         const CameraFrame camera = computeCameraFrame(s.camera, 1.5, Bounds{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}});
-        const std::vector<ReachObject> objects{{Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, false, true, {}, {}}};
+        const std::vector<ReachObject> objects{{.bounds = Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, .casts = false, .receives = true, .plane = {}, .frontFacesCulled = false}};
         const ShadowReach reach = shadowReach(s, {light}, 2048, objects, objects, camera);
         QVERIFY(reach.boxes.empty());
         QCOMPARE(reach.objects.front(), Reach::Outside);

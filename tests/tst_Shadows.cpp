@@ -510,6 +510,38 @@ private Q_SLOTS:
     // Receivers no caster reaches are shaded without a lookup, and those that straddle the
     // reach are drawn twice under its stencil mask: the frame and the measured shadow term must
     // be exactly what a lookup everywhere gives, for every technique, light, bias and scene.
+    // The frame and the measured visibility with lookups everywhere and with the reach's
+    // variants and mask: the same, pixel for pixel and float for float.
+    FrameStats compareSkippingOutOfReach(const Settings& settings, const std::optional<Scene>& custom)
+    {
+        Renderer& renderer = m_headless->renderer();
+        if (custom)
+            renderer.setScene(*custom);
+        const auto restore = qScopeGuard([&] { renderer.setScene(std::nullopt); });
+        renderer.setSkipsOutOfReach(false);
+        const QImage everywhere = m_headless->renderScene(settings, kSize);
+        const VisibilityBuffer measuredEverywhere = renderer.renderVisibility(settings, kSize);
+        renderer.setSkipsOutOfReach(true);
+        const QImage skipping = m_headless->renderScene(settings, kSize);
+        const FrameStats stats = renderer.lastFrame();
+        const VisibilityBuffer measuredSkipping = renderer.renderVisibility(settings, kSize);
+        int differing = 0;
+        for (int y = 0; y < kSize.height(); ++y)
+            for (int x = 0; x < kSize.width(); ++x)
+                differing += everywhere.pixel(x, y) != skipping.pixel(x, y);
+        if (differing != 0)
+            QTest::qFail(qPrintable(QStringLiteral("%1 pixels differ (%2 of %3 draws without a lookup%4)")
+                                        .arg(differing).arg(stats.litPlainDraws).arg(stats.litDraws)
+                                        .arg(stats.litReachMasked ? QStringLiteral(", masked") : QString())),
+                         __FILE__, __LINE__);
+        int visibilityDiffers = 0;
+        for (std::size_t i = 0; i < measuredEverywhere.positionVisibility.size(); ++i)
+            visibilityDiffers += measuredEverywhere.positionVisibility[i].w != measuredSkipping.positionVisibility[i].w;
+        if (visibilityDiffers != 0)
+            QTest::qFail(qPrintable(QStringLiteral("%1 measured visibilities differ").arg(visibilityDiffers)), __FILE__, __LINE__);
+        return stats;
+    }
+
     void outOfReachShadingChangesNothing_data()
     {
         QTest::addColumn<QString>("scene");
@@ -586,31 +618,50 @@ private Q_SLOTS:
         Settings settings = presetSettings(scene);
         for (const QString& a : assignments)
             applyAssignment(settings, a);
-        Renderer& renderer = m_headless->renderer();
+        std::optional<Scene> custom;
         if (!groundCasts) {
-            Scene custom = buildScene(scene);
-            custom.objects.front().castsShadow = false;
-            renderer.setScene(custom);
+            custom = buildScene(scene);
+            custom->objects.front().castsShadow = false;
         }
-        const auto restore = qScopeGuard([&] { renderer.setScene(std::nullopt); });
-        renderer.setSkipsOutOfReach(false);
-        const QImage everywhere = m_headless->renderScene(settings, kSize);
-        const VisibilityBuffer measuredEverywhere = renderer.renderVisibility(settings, kSize);
-        renderer.setSkipsOutOfReach(true);
-        const QImage skipping = m_headless->renderScene(settings, kSize);
-        const FrameStats stats = renderer.lastFrame();
-        const VisibilityBuffer measuredSkipping = renderer.renderVisibility(settings, kSize);
-        int differing = 0;
-        for (int y = 0; y < kSize.height(); ++y)
-            for (int x = 0; x < kSize.width(); ++x)
-                differing += everywhere.pixel(x, y) != skipping.pixel(x, y);
-        QVERIFY2(differing == 0, qPrintable(QStringLiteral("%1 pixels differ (%2 of %3 draws without a lookup%4)")
-                                               .arg(differing).arg(stats.litPlainDraws).arg(stats.litDraws)
-                                               .arg(stats.litReachMasked ? QStringLiteral(", masked") : QString())));
-        int visibilityDiffers = 0;
-        for (std::size_t i = 0; i < measuredEverywhere.positionVisibility.size(); ++i)
-            visibilityDiffers += measuredEverywhere.positionVisibility[i].w != measuredSkipping.positionVisibility[i].w;
-        QCOMPARE(visibilityDiffers, 0);
+        compareSkippingOutOfReach(settings, custom);
+    }
+
+    // A flat receiver's mask is its plane's pieces in the columns: exact on planes turned any
+    // way, mirrored, seen from low and far, and on maps whose texels are far finer than a pixel.
+    void flatReceiversAreMaskedExactly_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::addColumn<double>("tilt");       // degrees the ground turns about x
+        QTest::addColumn<bool>("mirrored");     // the ground's model flips x
+        QTest::newRow("tilted 25 degrees") << QStringList{} << 25.0 << false;
+        QTest::newRow("tilted -40 degrees, pcf 5") << QStringList{"filter.mode=pcf", "filter.kernel=5"} << -40.0 << false;
+        QTest::newRow("mirrored") << QStringList{} << 0.0 << true;
+        QTest::newRow("tilted and mirrored, normal offset") << QStringList{"bias.normal=3"} << 15.0 << true;
+        QTest::newRow("camera grazing the ground") << QStringList{"camera.position=6,0.03,7", "camera.target=0,0.3,0"} << 0.0 << false;
+        QTest::newRow("camera an inch above") << QStringList{"camera.position=1.5,0.002,3", "camera.target=-2,0.01,-3"} << 0.0 << false;
+        QTest::newRow("camera far above") << QStringList{"camera.position=0.5,90,1", "camera.target=0,0,0", "camera.fov=10"} << 0.0 << false;
+        QTest::newRow("camera far away, low") << QStringList{"camera.position=60,1.5,70"} << 0.0 << false;
+        QTest::newRow("fine map, far camera") << QStringList{"map.size=8192", "camera.position=40,25,50"} << 0.0 << false;
+        QTest::newRow("spot light on a tilted ground") << QStringList{"light.type=spot", "filter.mode=pcf"} << 20.0 << false;
+        QTest::newRow("point light, cube faces") << QStringList{"light.type=point"} << 10.0 << false;
+        QTest::newRow("cascades on a tilted ground") << QStringList{"shadow.cascades=3"} << 12.0 << false;
+    }
+
+    void flatReceiversAreMaskedExactly()
+    {
+        QFETCH(QStringList, assignments);
+        QFETCH(double, tilt);
+        QFETCH(bool, mirrored);
+        Settings settings = presetSettings("seed");
+        for (const QString& a : assignments)
+            applyAssignment(settings, a);
+        Scene scene = buildScene("seed");
+        SceneObject& ground = scene.objects.front();
+        ground.model = glm::rotate(glm::dmat4(1.0), glm::radians(tilt), glm::dvec3(1.0, 0.0, 0.0)) * ground.model;
+        if (mirrored)
+            ground.model = glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) * ground.model;
+        const FrameStats stats = compareSkippingOutOfReach(settings, scene);
+        qInfo("masked %d, %d of %d draws without a lookup", int(stats.litReachMasked), stats.litPlainDraws, stats.litDraws);
     }
 
     // Seed's ground is out of reach except around the cubes' columns: it is drawn with and
@@ -622,6 +673,13 @@ private Q_SLOTS:
         QVERIFY(!reach.boxes.empty());
         QCOMPARE(reach.partlyCount(), 1);                   // the ground
         QVERIFY(reach.screenShare < 0.5);
+        // The ground is flat: its mask is the pieces of its plane in the columns, no box face.
+        QVERIFY(!reach.mask.empty());
+        const double groundHeight = reach.mask.front().front().y;
+        for (const convex::Polygon& piece : reach.mask) {
+            for (const glm::dvec3& p : piece)
+                QVERIFY2(std::abs(p.y - groundHeight) < 1e-6, qPrintable(QStringLiteral("a mask corner at height %1").arg(p.y)));
+        }
         const FrameStats& stats = m_headless->renderer().lastFrame();
         QVERIFY(stats.litReachMasked);
         QCOMPARE(stats.litPlainDraws, 1);
