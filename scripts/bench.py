@@ -64,6 +64,31 @@ def run_whole(binary, arguments):
         return {"whole process ms": (time.monotonic() - start) * 1000.0}
 
 
+def anchor_ratios(binary, quick):
+    """HEAD's ratios of the issue's table, each within one process or one round: the lit pass
+    with shadows against without, the still city's frame against its lit pass, and the moving-
+    light frame against the tutorial's own program (bench --anchor), at the default map and at
+    the tutorial's 1024."""
+    frames = ["--frames", "20" if quick else "60", "--warmup", "5", "--size", "1280x720"]
+
+    def phases(arguments):
+        return {p["phase"]: p for p in run_bench(binary, ["bench"] + arguments + frames)["phases"]}
+
+    def median(phase, figure):
+        return phase[figure]["median_ms"]
+
+    seed = phases(["--scene", "seed", "--phase", "both", "--anchor"])
+    plain = phases(["--scene", "seed", "--phase", "steady", "--set", "shadow.enabled=false"])
+    small = phases(["--scene", "seed", "--phase", "moving-light", "--anchor", "--set", "map.size=1024"])
+    city = phases(["--scene", "city", "--phase", "steady"])
+    return {
+        "seed, still: lit pass with shadows / without": median(seed["steady"], "lit_pass_wall") / median(plain["steady"], "lit_pass_wall"),
+        "seed, moving light: frame / the tutorial's program": median(seed["moving-light"], "frame_wall") / median(seed["tutorial-program"], "frame_wall"),
+        "the same at the tutorial's 1024 map": median(small["moving-light"], "frame_wall") / median(small["tutorial-program"], "frame_wall"),
+        "city, still: frame / lit pass": median(city["steady"], "frame_wall") / median(city["steady"], "lit_pass_wall"),
+    }
+
+
 def percentile(values, q):
     ordered = sorted(values)
     index = (len(ordered) - 1) * q
@@ -87,6 +112,10 @@ def main():
     # samples[case][figure][side] -> list over rounds
     samples = {}
     binaries = {"base": options.base, "head": options.head}
+    # HEAD's own ratios against the tutorial's program, where HEAD has bench --anchor.
+    help_text = subprocess.run([options.head, "bench", "--help"], capture_output=True, text=True).stdout
+    anchored = "--anchor" in help_text
+    anchor = {}
     for round_index in range(options.rounds):
         order = ["base", "head"] if round_index % 2 == 0 else ["head", "base"]
         for name, arguments, phases in suite:
@@ -98,6 +127,9 @@ def main():
             for side in order:
                 for figure, value in run_whole(binaries[side], arguments).items():
                     samples.setdefault(name, {}).setdefault(figure, {"base": [], "head": []})[side].append(value)
+        if anchored:
+            for figure, value in anchor_ratios(options.head, options.quick).items():
+                anchor.setdefault(figure, []).append(value)
         print(f"round {round_index + 1}/{options.rounds} done", file=sys.stderr, flush=True)
 
     rows = []
@@ -127,6 +159,11 @@ def main():
     lines.append("")
     lines.append(f"{flagged} figure(s) more than {round((SLOWER - 1) * 100)} % slower." if flagged else
                  f"No figure more than {round((SLOWER - 1) * 100)} % slower.")
+    if anchor:
+        lines += ["", f"HEAD's own ratios, each within one round (median and p10–p90 over {options.rounds}):", "",
+                  "| ratio | median | p10–p90 |", "| --- | ---: | ---: |"]
+        for figure, values in anchor.items():
+            lines.append(f"| {figure} | {statistics.median(values):.3f} | {percentile(values, 0.1):.3f}–{percentile(values, 0.9):.3f} |")
     print("\n".join(lines))
     if options.out:
         with open(options.out, "w", encoding="utf-8") as out:

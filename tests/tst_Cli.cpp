@@ -503,6 +503,25 @@ private Q_SLOTS:
             QVERIFY(phase.value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
     }
 
+    // The tutorial's own program is timed in the same loop, one frame a round, and the ratios
+    // are then to it; it draws seed's scene only.
+    void benchTimesTheTutorialsOwnProgram()
+    {
+        const Run r = shadowlab({"bench", "--size", "160x90", "--frames", "4", "--warmup", "1", "--phase", "moving-light", "--anchor", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonArray phases = QJsonDocument::fromJson(r.out.toUtf8()).object().value("phases").toArray();
+        QCOMPARE(phases.size(), 2);
+        const QJsonObject anchor = phases.at(1).toObject();
+        QCOMPARE(anchor.value("phase").toString(), QStringLiteral("tutorial-program"));
+        QCOMPARE(anchor.value("frame_wall").toObject().value("count").toInt(), 4);
+        QVERIFY(anchor.value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
+        const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "2", "--warmup", "0", "--phase", "moving-light", "--anchor"});
+        QVERIFY2(text.out.contains("relative to tutorial-program"), qPrintable(text.out));
+        const Run refused = shadowlab({"bench", "--scene", "torus", "--anchor", "--frames", "1"});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("--anchor") && refused.err.contains("seed"), qPrintable(refused.err));
+    }
+
     void benchRefusesAnUnknownPhase()
     {
         const Run r = shadowlab({"bench", "--phase", "sideways", "--frames", "1"});

@@ -7,6 +7,7 @@
 #include "SceneLibrary.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
+#include "TutorialAnchor.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>
@@ -38,6 +39,7 @@ struct Phase {
     std::vector<std::vector<double>> viewWall;  // cascades or cube faces: wall ms of the frames that drew each
     std::vector<int> viewPassesRun;
     std::vector<int> viewDraws;
+    bool anchor = false;    // the tutorial's own program (TutorialAnchor), not ShadowLab: frame times only
 };
 
 // The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
@@ -61,17 +63,43 @@ Settings tutorialSettings(Settings s)
 
 // Each phase on its own context, timed by the one interleaved loop so a slow spell of a
 // shared machine hits every phase alike and their ratio stays fair.
+// The tutorial's program, when asked for, draws one frame after each round of the others, on
+// its own context, seen by the first phase's camera.
 void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int frames)
 {
     std::vector<TimedRun> runs;
-    for (Phase& p : phases)
+    std::vector<Phase*> timed;
+    Phase* anchorPhase = nullptr;
+    for (Phase& p : phases) {
+        if (p.anchor) {
+            anchorPhase = &p;
+            continue;
+        }
         runs.push_back({p.headless.get(), p.settings, p.moving, false, {}, p.cameraPath});
+        timed.push_back(&p);
+    }
+    std::unique_ptr<TutorialAnchor> anchor;
+    if (anchorPhase) {
+        anchorPhase->headless->makeCurrent();
+        anchor = std::make_unique<TutorialAnchor>(anchorPhase->headless->functions(), size);
+    }
     // A bar with the time left on a terminal (stderr), nothing in a pipe.
     ProgressBar progress;
-    timeInterleaved(runs, size, warmup, frames, [&](double f) { progress.show(f, QStringLiteral("timing")); });
+    int round = 0;
+    timeInterleaved(runs, size, warmup, frames, [&](double f) {
+        if (anchor) {
+            const CameraFrame camera = timed.front()->headless->renderer().cameraFrame();
+            anchorPhase->headless->makeCurrent();
+            const double ms = anchor->timedFrame(camera);
+            if (round >= warmup)
+                anchorPhase->wall.push_back(ms);
+        }
+        ++round;
+        progress.show(f, QStringLiteral("timing"));
+    });
     progress.done();
-    for (std::size_t i = 0; i < phases.size(); ++i) {
-        Phase& p = phases[i];
+    for (std::size_t i = 0; i < timed.size(); ++i) {
+        Phase& p = *timed[i];
         FrameSamples& s = runs[i].samples;
         p.shadow = std::move(s.shadow);
         p.lit = std::move(s.lit);
@@ -146,6 +174,10 @@ void addBenchOptions(QCommandLineParser& parser)
                       QStringLiteral("name"), QStringLiteral("all")});
     parser.addOption({QStringLiteral("baseline"),
                       QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
+    parser.addOption({QStringLiteral("anchor"),
+                      QStringLiteral("Also time the LearnOpenGL 3.1.3 tutorial's own frame: a plain OpenGL program of its scene, shaders and "
+                                     "state (pcf 3x3 of nine reads, a 1024 map drawn every frame, glFinish as its swap), none of "
+                                     "ShadowLab's code, seen by the same camera at the same size; ratios are then to it.")});
     parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
 }
 
@@ -160,6 +192,7 @@ struct BenchRequest {
     int warmup = 0;
     QString phase;
     bool baseline = false;          // also the tutorial's configuration
+    bool anchor = false;            // also the tutorial's own program
 };
 
 BenchRequest readBenchRequest(const QCommandLineParser& parser)
@@ -181,6 +214,9 @@ BenchRequest readBenchRequest(const QCommandLineParser& parser)
     if (r.phase != u"both" && r.phase != u"all" && r.phase != u"steady" && r.phase != u"moving-light" && r.phase != u"moving-camera")
         throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(r.phase));
     r.baseline = parser.isSet(QStringLiteral("baseline"));
+    r.anchor = parser.isSet(QStringLiteral("anchor"));
+    if (r.anchor && r.settings.scene != u"seed")
+        throw UsageError(QStringLiteral("--anchor: the tutorial's program draws its own scene, which is seed's; use --scene seed or leave --anchor out"));
     return r;
 }
 
@@ -220,6 +256,11 @@ std::vector<Phase> makePhases(const BenchRequest& r)
     if (r.baseline)
         addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
                  tutorialSettings(r.settings), true);
+    if (r.anchor) {
+        addPhase("tutorial-program", "the LearnOpenGL 3.1.3 program's own frame: plain OpenGL, pcf 3x3, 1024 map every frame, glFinish as its swap",
+                 r.settings, true);
+        phases.back().anchor = true;
+    }
     return phases;
 }
 
