@@ -56,7 +56,7 @@ QPointF exitPoint(QPointF inside, QPointF outside, const QRectF& frame)
 
 } // namespace
 
-DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span)
+DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span, const std::optional<QPointF>& pointer)
 {
     DepthMapFacts facts;
     facts.light = renderer.lightFrame();
@@ -72,6 +72,12 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     // projection; one outline over all of them would be wrong.)
     if (const Scene* scene = renderer.scene(); scene && facts.views == 1)
         facts.footprint = cameraFootprint(scene->bounds(), renderer.cameraFrame().viewProjection, facts.light.shadowMatrix);
+    // A virtual map's texture is its pool: square, its slots in no light volume's place.
+    facts.pool = virtualPoolFacts(renderer, pointer);
+    if (facts.pool) {
+        facts.footprint.clear();
+        facts.aspect = 1.0;
+    }
     return facts;
 }
 
@@ -384,8 +390,12 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
 
     // Over the map: the light volume (the map's border) and the camera's visible region.
     painter.setClipRect(canvas.area);
-    drawVolume(canvas, QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible)), facts);
-    drawFootprint(canvas, *this, facts, visible);
+    if (facts.pool) {
+        paintVirtualPool(painter, canvas.area, [&](QPointF p) { return toPixel(p, visible); }, *facts.pool);
+    } else {
+        drawVolume(canvas, QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible)), facts);
+        drawFootprint(canvas, *this, facts, visible);
+    }
     drawOutsideNote(canvas, *this, visible);
     painter.setClipping(false);
 

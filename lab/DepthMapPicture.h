@@ -2,6 +2,7 @@
 
 #include "DepthViewPass.h"
 #include "LightMath.h"
+#include "VirtualPoolPicture.h"
 
 #include <glm/vec2.hpp>
 
@@ -30,10 +31,14 @@ struct DepthMapFacts {
     int moment = 0;                         // 1-4: the pane shows that moment of a moments map, in grey
     int views = 1;                          // cascades or cube faces side by side in the map
     double aspect = 1.0;                    // width over height of the picture of the whole map
+    // shadow.virtual: the map is the pool of pages, drawn with their levels and counts instead
+    // of a light volume and the camera's region.
+    std::optional<VirtualPoolFacts> pool;
 };
 
-// The facts of `renderer`'s last frame, with `span` measured by whoever draws.
-DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span);
+// The facts of `renderer`'s last frame, with `span` measured by whoever draws, and the map
+// point under the pointer where there is one (a virtual pool's slot is picked by it).
+DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span, const std::optional<QPointF>& pointer = std::nullopt);
 
 // Distance from the light along its axis of a conventional [0, 1] depth: linear for an ortho
 // light, the perspective depth curve inverted for a perspective one. A warped map's

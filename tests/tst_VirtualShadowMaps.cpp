@@ -14,6 +14,7 @@
 #include "SettingsKeys.h"
 #include "TexelDensity.h"
 #include "VirtualPages.h"
+#include "VirtualPoolPicture.h"
 
 #include <glm/trigonometric.hpp>
 
@@ -414,6 +415,51 @@ private Q_SLOTS:
         const TexelDensity density = measureVirtualTexelDensity(buffer, *renderer.virtualMap());
         QVERIFY2(density.fineShare() < 0.95, qPrintable(QString::number(density.fineShare())));
         qInfo().noquote() << describe(pages) << "|" << describe(a);
+    }
+
+    // The depth pane's pool: every resident page in its own slot of the pool with its level,
+    // the counts of the frame, the slot under the pointer and its level's page table.
+    void thePoolShowsItsPagesAndLevels()
+    {
+        Settings s = virtualSettings("city");
+        Renderer& renderer = m_headless->renderer();
+        renderer.setScene(std::nullopt);
+        m_headless->renderFrame(s, QSize(320, 180));
+        const std::optional<VirtualPoolFacts> pool = virtualPoolFacts(renderer);
+        QVERIFY(pool);
+        const VirtualMapStats& pages = renderer.lastFrame().virtualPages;
+        QCOMPARE(int(pool->resident.size()), pages.resident);
+        QCOMPARE(pool->poolSide, s.shadow.virtualPool);
+        QCOMPARE(pool->counts.requested, pages.requested);
+        std::set<int> used;
+        int finest = kMaxVirtualLevels;
+        for (const VirtualPoolFacts::Slot& slot : pool->resident) {
+            QVERIFY(slot.slot >= 0 && slot.slot < pool->poolSide * pool->poolSide);
+            QVERIFY(slot.page.level >= 0 && slot.page.level < pool->levels);
+            used.insert(slot.slot);
+            finest = std::min(finest, slot.page.level);
+            // The page lies in its level's window, where the page table holds it.
+            const glm::ivec2 at = glm::ivec2(slot.page.x, slot.page.y) - pool->windows.at(std::size_t(slot.page.level));
+            QVERIFY(at.x >= 0 && at.y >= 0 && at.x < kVirtualLevelPages && at.y < kVirtualLevelPages);
+        }
+        QCOMPARE(int(used.size()), int(pool->resident.size()));      // one page a slot
+        QCOMPARE(pool->tableLevel, finest);                          // no pointer: the finest level's table
+        QVERIFY(!pool->pointerSlot);
+        const QString summary = virtualPoolSummary(*pool);
+        QVERIFY2(summary.contains(QString::number(pages.resident)) && summary.contains(QString::number(pages.requested)), qPrintable(summary));
+        // The pointer over a slot's centre picks it, and the table follows its level.
+        const VirtualPoolFacts::Slot& last = pool->resident.back();
+        const QPointF centre((last.slot % pool->poolSide + 0.5) / pool->poolSide, (last.slot / pool->poolSide + 0.5) / pool->poolSide);
+        QCOMPARE(poolSlotAt(pool->poolSide, centre), std::optional<int>(last.slot));
+        const std::optional<VirtualPoolFacts> pointed = virtualPoolFacts(renderer, centre);
+        QCOMPARE(pointed->pointerSlot, std::optional<int>(last.slot));
+        QCOMPARE(pointed->tableLevel, last.page.level);
+        QVERIFY(virtualSlotText(*pointed, last.slot).contains(QStringLiteral("level %1").arg(last.page.level)));
+        QVERIFY(!poolSlotAt(pool->poolSide, QPointF(1.2, 0.5)));
+        // Not a virtual map: no pool.
+        s.shadow.virtualMap = false;
+        m_headless->renderFrame(s, QSize(320, 180));
+        QVERIFY(!virtualPoolFacts(renderer));
     }
 
 private:

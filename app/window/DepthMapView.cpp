@@ -16,6 +16,7 @@
 #include <QPolygonF>
 
 #include <tuple>
+#include <utility>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QWheelEvent>
 
@@ -146,7 +147,7 @@ void DepthMapView::paintGL()
         overlay.setDevicePixelRatio(devicePixelRatio());
         {
             QPainter painter(&overlay);
-            picture.paint(painter, depthMapFacts(renderer, m_span), visible);
+            picture.paint(painter, depthMapFacts(renderer, m_span, m_pointer), visible);
         }
         m_pass->renderOverlay(target, overlay);
     }
@@ -291,7 +292,12 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
     const double distance = depthToDistance(light, d, glm::dvec2((x + 0.5) / width, (y + 0.5) / height));
     const QString where = d >= 1.0 ? QStringLiteral("empty (far plane)")
                                    : QStringLiteral("%1 from the light").arg(distance, 0, 'f', 3);
-    emit texelHovered(QStringLiteral("texel %1, %2 · depth %3 · %4").arg(x).arg(y).arg(d, 0, 'f', 5).arg(where));
+    QString text = QStringLiteral("texel %1, %2 · depth %3 · %4").arg(x).arg(y).arg(d, 0, 'f', 5).arg(where);
+    if (const std::optional<VirtualPoolFacts> pool = virtualPoolFacts(renderer)) {
+        if (const std::optional<int> slot = poolSlotAt(pool->poolSide, uv))
+            text += QStringLiteral(" · ") + virtualSlotText(*pool, *slot);
+    }
+    emit texelHovered(text);
 }
 
 void DepthMapView::mousePressEvent(QMouseEvent* event)
@@ -311,6 +317,10 @@ void DepthMapView::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     m_lastMouse = position;
+    m_pointer = mapPoint(position);
+    // A virtual pool marks the slot under the pointer and shows its level's page table.
+    if (hasMap() && m_source->renderer()->lastFrame().virtualMap)
+        update();
     reportTexel(position);
 }
 
@@ -346,6 +356,8 @@ void DepthMapView::keyPressEvent(QKeyEvent* event)
 
 void DepthMapView::leaveEvent(QEvent* event)
 {
+    if (std::exchange(m_pointer, std::nullopt) && hasMap() && m_source->renderer()->lastFrame().virtualMap)
+        update();
     emit texelHovered(QString());
     QOpenGLWidget::leaveEvent(event);
 }

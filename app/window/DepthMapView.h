@@ -103,6 +103,7 @@ private:
     // Leaves the home framing for a fixed one at the same place, before a zoom or pan.
     void leaveHome();
     QPointF m_lastMouse;
+    std::optional<QPointF> m_pointer;    // the map point under the pointer, while it is over the pane
     int m_frameCount = 0;
 };
 
