@@ -185,22 +185,25 @@ void paintVirtualPool(QPainter& painter, const QRect& area, const std::function<
         painter.drawRect(slotRect(*facts.pointerSlot));
     }
     const QFontMetrics metrics(painter.font());
-    const QPointF corner = toPixel({0.0, 1.0});
-    const QPointF counts(std::max(corner.x(), double(area.left())) + 6, std::max(corner.y(), double(area.top())) + 6 + metrics.ascent());
+    // Text and the table inside the pool where it is on screen, or the pane where it reaches past.
+    const QRect pool = QRectF(toPixel({0.0, 1.0}), toPixel({1.0, 0.0})).normalized().toAlignedRect().intersected(area);
+    const QRect frame = pool.width() > 120 && pool.height() > 120 ? pool : area;
+    const QPointF counts(frame.left() + 6, frame.top() + 6 + metrics.ascent());
     plateText(painter, area, counts, QStringLiteral("virtual pool · ") + virtualPoolSummary(facts));
     drawLevelSwatches(painter, area, counts + QPointF(0.0, metrics.height() + 6), facts);
-    // The page table of one level in the upper right corner (slots fill the pool from the
-    // bottom), a texel per page of its window.
-    const int inset = std::min(area.width(), area.height()) / 3;
+    // The page table of one level in the upper right corner under the counts (slots fill the
+    // pool from the bottom), a texel per page of its window.
+    const int top = frame.top() + 6 + 3 * (metrics.height() + 6);
+    const int inset = std::min(frame.width() / 3, frame.bottom() - 8 - top);
     if (inset >= 48 && facts.tableLevel >= 0) {
-        const QRect table(area.right() - 8 - inset, area.top() + 16 + 3 * metrics.height(), inset, inset);
+        const QRect table(frame.right() - 8 - inset, top, inset, inset);
         painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
         painter.drawImage(table, pageTableImage(facts, facts.tableLevel));
         painter.setPen(QPen(kTextColour, 1.0));
         painter.setBrush(Qt::NoBrush);
         painter.drawRect(table);
         const int pages = int(std::count_if(facts.resident.begin(), facts.resident.end(), [&](const auto& s) { return s.page.level == facts.tableLevel; }));
-        plateText(painter, area, QPointF(table.left(), table.top() - 6),
+        plateText(painter, area, QPointF(std::max(table.left() - 60, frame.left() + 6), table.top() - 6),
                   QStringLiteral("level %1's page table: %2 resident%3").arg(facts.tableLevel).arg(pages).arg(facts.pointerSlot ? QString() : QStringLiteral(" (the finest)")));
     }
     painter.restore();
