@@ -70,11 +70,4 @@ QString FrameTimeHistory::explanation(const Summary& s, bool shadowsOn)
         .arg(s.frameWithoutShadow.median, 0, 'f', 1);
 }
 
-bool isSoftwareRenderer(const QString& rendererString)
-{
-    const QString r = rendererString.toLower();
-    return r.contains(QLatin1String("llvmpipe")) || r.contains(QLatin1String("softpipe")) || r.contains(QLatin1String("swrast"))
-        || r.contains(QLatin1String("software"));
-}
-
 } // namespace shadowlab

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "FrameStats.h"
+#include "GlDebug.h"
 #include "SampleStats.h"
 
 #include <QString>
@@ -49,9 +50,5 @@ private:
     int m_capacity;
     std::deque<Sample> m_frames;
 };
-
-// Whether `rendererString` (GL_RENDERER and friends) names a software rasteriser, whose "GPU"
-// times are CPU times and whose timer queries miss its deferred work.
-bool isSoftwareRenderer(const QString& rendererString);
 
 } // namespace shadowlab

@@ -28,4 +28,11 @@ void installGlDebugLogger()
 #endif
 }
 
+bool isSoftwareRenderer(const QString& rendererString)
+{
+    const QString r = rendererString.toLower();
+    return r.contains(QLatin1String("llvmpipe")) || r.contains(QLatin1String("softpipe")) || r.contains(QLatin1String("swrast"))
+        || r.contains(QLatin1String("software"));
+}
+
 } // namespace shadowlab

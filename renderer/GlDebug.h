@@ -1,6 +1,12 @@
 #pragma once
 
+#include <QString>
+
 namespace shadowlab {
+
+// Whether `rendererString` (GL_RENDERER and friends) names a software rasteriser, whose "GPU"
+// times are CPU times and whose timer queries miss its deferred work.
+bool isSoftwareRenderer(const QString& rendererString);
 
 // With SHADOWLAB_GL_DEBUG (on in the debug and sanitize presets): attaches a
 // QOpenGLDebugLogger to the current context, once, that makes every GL error fatal where it

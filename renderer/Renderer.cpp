@@ -1,5 +1,6 @@
 #include "Renderer.h"
 
+#include "GlDebug.h"
 #include "LightFitting.h"
 #include "MomentMath.h"
 #include "ShadowTechnique.h"
@@ -115,8 +116,11 @@ void Renderer::refit(const FrameUpdate::Frame& frame, const ShadowStorage& stora
     }
     sources.visibleRange = m_visibleRange;
     if (settings.shadow.enabled && settings.shadow.virtualMap) {
-        if (!m_virtual)
+        if (!m_virtual) {
             m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
+            const bool software = isSoftwareRenderer(rendererString());
+            m_virtual->setReduction(m_virtualReduction.value_or(software ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu));
+        }
         sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
     sources.cullsFrontFaces = storage.cullsFrontFaces(settings);
@@ -226,6 +230,13 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         m_gl->glFinish();
         stats.shadowPassWallMs = double(total.nsecsElapsed()) * 1e-6;
     }
+}
+
+void Renderer::setVirtualReduction(VirtualShadowMap::Reduction reduction)
+{
+    m_virtualReduction = reduction;
+    if (m_virtual)
+        m_virtual->setReduction(reduction);
 }
 
 void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats)

@@ -141,8 +141,70 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     return draws;
 }
 
+std::vector<VirtualPage> VirtualShadowMap::reduceRequests(QSize size)
+{
+    const int levels = int(m_windows.size());
+    if (!m_reduceProgram) {
+        m_reduceProgram = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("vsm_reduce.vert"), QStringLiteral("vsm_reduce.frag"), QStringList());
+        m_reduceWidth = m_reduceProgram->uniform("uRequestWidth");
+        m_reduceLevels = m_reduceProgram->uniform("uLevels");
+        m_reduceRequests = m_reduceProgram->uniform("uRequests");
+        m_pointArray = makeVertexArray(m_gl);
+    }
+    if (!m_flagTexture || m_flagLevels != levels) {
+        m_gl->glActiveTexture(GL_TEXTURE0);
+        m_flagTexture = makeTexture(m_gl);
+        m_gl->glBindTexture(GL_TEXTURE_2D, m_flagTexture.id());
+        m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, kVirtualLevelPages, kVirtualLevelPages * levels, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+        labelGlObject(GlLabelKind::Texture, m_flagTexture.id(), QStringLiteral("virtual shadow map requested pages"));
+        m_flagFramebuffer = makeFramebuffer(m_gl);
+        m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_flagFramebuffer.id());
+        m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_flagTexture.id(), 0);
+        m_gl->glDrawBuffer(GL_COLOR_ATTACHMENT0);
+        m_gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+        if (m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            m_flagTexture.reset();
+            throw RenderError(QStringLiteral("the virtual shadow map's page flags (R8UI, %1 levels) cannot be drawn into on this driver").arg(levels));
+        }
+        m_flagLevels = levels;
+    }
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_flagFramebuffer.id());
+    PassState state;
+    state.viewport = QRect(0, 0, kVirtualLevelPages, kVirtualLevelPages * levels);
+    applyPassState(m_gl, state);
+    const GLuint none[4] = {0, 0, 0, 0};
+    m_gl->glClearBufferuiv(GL_COLOR, 0, none);
+    m_reduceProgram->bind();
+    m_reduceProgram->set(m_reduceWidth, size.width());
+    m_reduceProgram->set(m_reduceLevels, levels);
+    m_reduceProgram->set(m_reduceRequests, 0);
+    m_gl->glActiveTexture(GL_TEXTURE0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, m_requestTexture.id());
+    m_gl->glBindVertexArray(m_pointArray.id());
+    m_gl->glDrawArrays(GL_POINTS, 0, GLsizei(size.width()) * GLsizei(size.height()));
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    m_flags.resize(std::size_t(kVirtualLevelPages) * std::size_t(kVirtualLevelPages) * std::size_t(levels));
+    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    m_gl->glReadPixels(0, 0, kVirtualLevelPages, kVirtualLevelPages * levels, GL_RED_INTEGER, GL_UNSIGNED_BYTE, m_flags.data());
+    std::vector<VirtualPage> pages;
+    for (std::size_t i = 0; i < m_flags.size(); ++i) {
+        // Texel (x, level * 128 + y) is the request 1 + level * 128² + y * 128 + x.
+        if (m_flags[i] == 0)
+            continue;
+        if (const std::optional<VirtualPage> page = decodePageRequest(std::uint32_t(i) + 1u, m_windows))
+            pages.push_back(*page);
+    }
+    return pages;
+}
+
 std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size)
 {
+    if (m_reduction == Reduction::Gpu)
+        return reduceRequests(size);
     m_readback.resize(std::size_t(size.width()) * std::size_t(size.height()));
     m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
     m_gl->glReadPixels(0, 0, size.width(), size.height(), GL_RED_INTEGER, GL_UNSIGNED_INT, m_readback.data());

@@ -42,6 +42,20 @@ public:
     explicit VirtualShadowMap(GlFunctions* gl);
     ~VirtualShadowMap();
 
+    // Where the request pass's pixels become a set of pages: reduced on the GPU to a flag per
+    // page and read back as such (vsm_reduce.vert), or read back whole and deduplicated here.
+    // The same pages either way.
+    enum class Reduction { Gpu, Cpu };
+    // Takes the requests again on the next frame.
+    void setReduction(Reduction reduction)
+    {
+        m_reduction = reduction;
+        m_requestKey.reset();
+    }
+    Reduction reduction() const { return m_reduction; }
+    // The distinct pages the last request pass asked for.
+    const std::vector<VirtualPage>& requests() const { return m_requests; }
+
     // The layout for the light of `settings` over the scene (kept while both stay the same).
     const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
 
@@ -64,6 +78,7 @@ public:
 private:
     int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
     std::vector<VirtualPage> readRequests(QSize size);
+    std::vector<VirtualPage> reduceRequests(QSize size);
     void allocateTargets(QSize size);
     void uploadPageTable();
 
@@ -75,6 +90,14 @@ private:
     GlFramebuffer m_requestFramebuffer;
     QSize m_requestSize;
     std::vector<std::uint32_t> m_readback;
+    Reduction m_reduction = Reduction::Gpu;
+    std::unique_ptr<ShaderProgram> m_reduceProgram;
+    GLint m_reduceWidth = -1, m_reduceLevels = -1, m_reduceRequests = -1;
+    GlVertexArray m_pointArray;         // core profile draws need one; the points have no attributes
+    GlTexture m_flagTexture;            // R8UI, 128 x 128 * levels: a flag per page of every window
+    GlFramebuffer m_flagFramebuffer;
+    int m_flagLevels = 0;
+    std::vector<std::uint8_t> m_flags;
     GlTexture m_pageTable;
     int m_pageTableLevels = 0;
 

@@ -5,6 +5,7 @@
 // still frame that draws no page, a camera move that draws only the pages it newly sees, a
 // light move that draws them all, and a pool too small that coarsens with a count, not holes.
 #include "Application.h"
+#include "GlDebug.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "Measurement.h"
@@ -415,6 +416,48 @@ private Q_SLOTS:
         const TexelDensity density = measureVirtualTexelDensity(buffer, *renderer.virtualMap());
         QVERIFY2(density.fineShare() < 0.95, qPrintable(QString::number(density.fineShare())));
         qInfo().noquote() << describe(pages) << "|" << describe(a);
+    }
+
+    // The requests reduced on the GPU to a flag per page are the pages the CPU finds in the
+    // whole read-back, on every scene and from cameras high, low and aside.
+    void gpuReductionFindsThePagesTheCpuFinds_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        for (const QString scene : {"seed", "cubes", "city", "foliage", "torus"})
+            QTest::newRow(qPrintable(scene)) << QString(scene) << QStringList{};
+        QTest::newRow("city from high above") << "city" << QStringList{"camera.position=0,800,1", "camera.target=0,0,0"};
+        QTest::newRow("seed, camera low") << "seed" << QStringList{"camera.position=4,0.2,5", "camera.target=0,0.3,0"};
+        QTest::newRow("cubes, camera aside, 12 levels") << "cubes" << QStringList{"camera.position=9,2,-6", "shadow.virtual_levels=12"};
+        QTest::newRow("city, lod bias 2") << "city" << QStringList{"shadow.virtual_lod_bias=2", "shadow.virtual_pool=64"};
+    }
+
+    void gpuReductionFindsThePagesTheCpuFinds()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        Settings s = virtualSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(s, a);
+        Renderer& renderer = m_headless->renderer();
+        renderer.setScene(std::nullopt);
+        const auto restore = qScopeGuard([&] {
+            renderer.setVirtualReduction(isSoftwareRenderer(renderer.rendererString()) ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu);
+        });
+        const auto pagesOf = [&](VirtualShadowMap::Reduction reduction) -> std::set<std::uint64_t> {
+            renderer.setVirtualReduction(reduction);
+            m_headless->renderFrame(s, QSize(320, 180));
+            std::set<std::uint64_t> keys;
+            for (const VirtualPage& page : renderer.virtualMap()->requests())
+                keys.insert(page.key());
+            if (keys.size() != renderer.virtualMap()->requests().size())
+                return {};      // a page twice: the comparison below fails
+            return keys;
+        };
+        const std::set<std::uint64_t> cpu = pagesOf(VirtualShadowMap::Reduction::Cpu);
+        const std::set<std::uint64_t> gpu = pagesOf(VirtualShadowMap::Reduction::Gpu);
+        QVERIFY(!cpu.empty());
+        QVERIFY2(cpu == gpu, qPrintable(QStringLiteral("%1 pages from the CPU, %2 from the GPU").arg(cpu.size()).arg(gpu.size())));
     }
 
     // The depth pane's pool: every resident page in its own slot of the pool with its level,

@@ -1,0 +1,7 @@
+// A page some pixel asked for (vsm_reduce.vert).
+layout(location = 0) out uint flag;
+
+void main()
+{
+    flag = 1u;
+}
