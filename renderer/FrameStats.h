@@ -14,6 +14,7 @@ struct VirtualMapStats {
     int overflow = 0;           // coarsest-level pages that did not fit at all
     int poolPages = 0;
     int requestDraws = 0;       // draw calls of the request pass (0 when the requests were kept)
+    bool requestsPending = false;   // asynchronous requests (the window) still on their way back
 };
 
 // What one frame cost and did. GPU times come from GL_TIME_ELAPSED (on a software renderer

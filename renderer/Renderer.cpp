@@ -120,6 +120,7 @@ void Renderer::refit(const FrameUpdate::Frame& frame, const ShadowStorage& stora
             m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
             const bool software = isSoftwareRenderer(rendererString());
             m_virtual->setReduction(m_virtualReduction.value_or(software ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu));
+            m_virtual->setAsyncRequests(m_virtualAsync);
         }
         sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
@@ -237,6 +238,13 @@ void Renderer::setVirtualReduction(VirtualShadowMap::Reduction reduction)
     m_virtualReduction = reduction;
     if (m_virtual)
         m_virtual->setReduction(reduction);
+}
+
+void Renderer::setVirtualAsyncRequests(bool async)
+{
+    m_virtualAsync = async;
+    if (m_virtual)
+        m_virtual->setAsyncRequests(async);
 }
 
 void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats)

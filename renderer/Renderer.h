@@ -106,6 +106,8 @@ public:
     // How the virtual map's requests are reduced (VirtualShadowMap::Reduction). By default on the
     // GPU, but on a software rasteriser, where a point per pixel costs six times the read-back.
     void setVirtualReduction(VirtualShadowMap::Reduction reduction);
+    // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
+    void setVirtualAsyncRequests(bool async);
     // Forces the next render() to redraw the shadow map.
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
@@ -151,6 +153,7 @@ private:
     std::unique_ptr<VisibleDepthPass> m_visibleDepth;  // built when sdsm cascades are first used
     std::unique_ptr<VirtualShadowMap> m_virtual;        // built when shadow.virtual is first used
     std::optional<VirtualShadowMap::Reduction> m_virtualReduction;  // none: by the driver
+    bool m_virtualAsync = false;
     VirtualMapUniforms m_virtualUniforms;               // the last frame's, for the lit pass
     std::optional<VisibleDepthRange> m_visibleRange;   // what the last fit split (sdsm)
     Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments

@@ -13,7 +13,11 @@ namespace shadowlab {
 
 VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl) {}
 
-VirtualShadowMap::~VirtualShadowMap() = default;
+VirtualShadowMap::~VirtualShadowMap()
+{
+    if (m_fence)
+        m_gl->glDeleteSync(m_fence);
+}
 
 const VirtualLayout& VirtualShadowMap::layout(const Settings& settings, const Bounds& sceneBounds)
 {
@@ -141,7 +145,7 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     return draws;
 }
 
-std::vector<VirtualPage> VirtualShadowMap::reduceRequests(QSize size)
+void VirtualShadowMap::reducePass(QSize size)
 {
     const int levels = int(m_windows.size());
     if (!m_reduceProgram) {
@@ -187,15 +191,58 @@ std::vector<VirtualPage> VirtualShadowMap::reduceRequests(QSize size)
     m_gl->glDrawArrays(GL_POINTS, 0, GLsizei(size.width()) * GLsizei(size.height()));
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    m_flags.resize(std::size_t(kVirtualLevelPages) * std::size_t(kVirtualLevelPages) * std::size_t(levels));
-    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    m_gl->glReadPixels(0, 0, kVirtualLevelPages, kVirtualLevelPages * levels, GL_RED_INTEGER, GL_UNSIGNED_BYTE, m_flags.data());
+}
+
+VirtualShadowMap::RequestBytes VirtualShadowMap::readRequestBytes(QSize size, void* into)
+{
+    if (m_reduction == Reduction::Gpu) {
+        reducePass(size);
+        const int rows = kVirtualLevelPages * int(m_windows.size());
+        m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        m_gl->glReadPixels(0, 0, kVirtualLevelPages, rows, GL_RED_INTEGER, GL_UNSIGNED_BYTE, into);
+        m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        return {true, requestBytes(size)};
+    }
+    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    m_gl->glReadPixels(0, 0, size.width(), size.height(), GL_RED_INTEGER, GL_UNSIGNED_INT, into);
+    return {false, requestBytes(size)};
+}
+
+std::size_t VirtualShadowMap::requestBytes(QSize size) const
+{
+    return m_reduction == Reduction::Gpu ? std::size_t(kVirtualLevelPages) * kVirtualLevelPages * m_windows.size()
+                                         : std::size_t(size.width()) * std::size_t(size.height()) * sizeof(std::uint32_t);
+}
+
+std::vector<VirtualPage> VirtualShadowMap::decodeRequests(const RequestBytes& bytes, const void* data, const std::vector<glm::ivec2>& windows)
+{
     std::vector<VirtualPage> pages;
-    for (std::size_t i = 0; i < m_flags.size(); ++i) {
+    if (bytes.flags) {
         // Texel (x, level * 128 + y) is the request 1 + level * 128² + y * 128 + x.
-        if (m_flags[i] == 0)
+        const auto* flags = static_cast<const std::uint8_t*>(data);
+        for (std::size_t i = 0; i < bytes.bytes; ++i) {
+            if (flags[i] == 0)
+                continue;
+            if (const std::optional<VirtualPage> page = decodePageRequest(std::uint32_t(i) + 1u, windows))
+                pages.push_back(*page);
+        }
+        return pages;
+    }
+    // Deduplicated over a flag per page of every window; neighbouring pixels mostly ask for the
+    // same page, so the last one is remembered too.
+    const auto* words = static_cast<const std::uint32_t*>(data);
+    const std::size_t pagesPerLevel = std::size_t(kVirtualLevelPages) * kVirtualLevelPages;
+    std::vector<std::uint8_t> seen(pagesPerLevel * windows.size(), 0);
+    std::uint32_t last = 0;
+    for (std::size_t i = 0; i < bytes.bytes / sizeof(std::uint32_t); ++i) {
+        const std::uint32_t value = words[i];
+        if (value == 0 || value == last)
             continue;
-        if (const std::optional<VirtualPage> page = decodePageRequest(std::uint32_t(i) + 1u, m_windows))
+        last = value;
+        if (value - 1 >= seen.size() || seen[value - 1])
+            continue;
+        seen[value - 1] = 1;
+        if (const std::optional<VirtualPage> page = decodePageRequest(value, windows))
             pages.push_back(*page);
     }
     return pages;
@@ -203,28 +250,43 @@ std::vector<VirtualPage> VirtualShadowMap::reduceRequests(QSize size)
 
 std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size)
 {
-    if (m_reduction == Reduction::Gpu)
-        return reduceRequests(size);
-    m_readback.resize(std::size_t(size.width()) * std::size_t(size.height()));
-    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    m_gl->glReadPixels(0, 0, size.width(), size.height(), GL_RED_INTEGER, GL_UNSIGNED_INT, m_readback.data());
-    // Deduplicated over a flag per page of every window; neighbouring pixels mostly ask for the
-    // same page, so the last one is remembered too.
-    const std::size_t pagesPerLevel = std::size_t(kVirtualLevelPages) * kVirtualLevelPages;
-    std::vector<std::uint8_t> seen(pagesPerLevel * m_windows.size(), 0);
-    std::vector<VirtualPage> pages;
-    std::uint32_t last = 0;
-    for (const std::uint32_t value : m_readback) {
-        if (value == 0 || value == last)
-            continue;
-        last = value;
-        if (value - 1 >= seen.size() || seen[value - 1])
-            continue;
-        seen[value - 1] = 1;
-        if (const std::optional<VirtualPage> page = decodePageRequest(value, m_windows))
-            pages.push_back(*page);
+    m_readback.resize(requestBytes(size));
+    const RequestBytes bytes = readRequestBytes(size, m_readback.data());
+    return decodeRequests(bytes, m_readback.data(), m_windows);
+}
+
+void VirtualShadowMap::startReadback(QSize size, const RequestKey& key)
+{
+    if (!m_pixelPack)
+        m_pixelPack = makeBuffer(m_gl);
+    m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, m_pixelPack.id());
+    m_gl->glBufferData(GL_PIXEL_PACK_BUFFER, GLsizeiptr(requestBytes(size)), nullptr, GL_STREAM_READ);
+    m_pendingBytes = readRequestBytes(size, nullptr);
+    m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    m_fence = m_gl->glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    m_gl->glFlush();
+    m_pendingKey = key;
+    m_pendingWindows = m_windows;
+}
+
+bool VirtualShadowMap::collectReadback(bool wait)
+{
+    if (!m_fence)
+        return false;
+    const GLenum state = m_gl->glClientWaitSync(m_fence, wait ? GL_SYNC_FLUSH_COMMANDS_BIT : 0, wait ? GLuint64(10'000'000'000) : 0);
+    if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED)
+        return false;
+    m_gl->glDeleteSync(m_fence);
+    m_fence = nullptr;
+    m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, m_pixelPack.id());
+    const void* data = m_gl->glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(m_pendingBytes.bytes), GL_MAP_READ_BIT);
+    if (data) {
+        m_requests = decodeRequests(m_pendingBytes, data, m_pendingWindows);
+        m_gl->glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
     }
-    return pages;
+    m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    m_requestKey = m_pendingKey;
+    return true;
 }
 
 void VirtualShadowMap::uploadPageTable()
@@ -262,6 +324,10 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         m_poolSide = settings.shadow.virtualPool;
         m_cacheLayoutGeneration = m_layoutGeneration;
         m_tableDirty = true;
+        if (m_fence) {          // pages of what is gone
+            m_gl->glDeleteSync(m_fence);
+            m_fence = nullptr;
+        }
     }
     const QSize requestSize(std::max(size.width(), 1), std::max(size.height(), 1));
     m_lodBias = settings.shadow.virtualLodBias;
@@ -271,15 +337,28 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         m_windows = std::move(windows);
         m_tableDirty = true;
     }
-    if (!m_requestKey || !(*m_requestKey == key)) {
+    // Requests read back asynchronously arrive a frame or more after their pass.
+    bool arrived = m_fence && collectReadback(false);
+    const bool asked = !m_requestKey || !(*m_requestKey == key);
+    if (asked && !(m_fence && m_pendingKey == key)) {
         stats.requestDraws = drawRequests(scene, camera, requestSize);
-        m_requests = readRequests(requestSize);
-        m_requestKey = key;
-    } else if (!m_tableDirty) {
+        if (m_async && m_cache.resident() > 0) {
+            if (m_fence)
+                arrived = collectReadback(true) || arrived;     // one read-back in flight at a time
+            startReadback(requestSize, key);
+        } else {
+            m_requests = readRequests(requestSize);
+            m_requestKey = key;
+            arrived = true;
+        }
+    }
+    if (!arrived && !m_tableDirty) {
         // The same requests over the same pages and windows: nothing to place, draw or upload.
+        const int requestDraws = stats.requestDraws;
         stats = m_lastStats;
         stats.drawn = 0;
-        stats.requestDraws = 0;
+        stats.requestDraws = requestDraws;
+        stats.requestsPending = m_fence != nullptr;
         if (casterDraws)
             *casterDraws = 0;
         return stats;
@@ -303,6 +382,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         uploadPageTable();
         m_tableDirty = false;
     }
+    stats.requestsPending = m_fence != nullptr;
     m_lastStats = stats;
     return stats;
 }

@@ -55,6 +55,11 @@ public:
     Reduction reduction() const { return m_reduction; }
     // The distinct pages the last request pass asked for.
     const std::vector<VirtualPage>& requests() const { return m_requests; }
+    // Asynchronous requests (the window): a request pass's pages are read back a frame later,
+    // through a pixel-pack buffer and a fence, so the frame does not wait for the GPU; until
+    // they arrive the lookup reads the nearest coarser resident level. The first requests of
+    // an empty pool are read at once. Off (the command line, the tests): in the same frame.
+    void setAsyncRequests(bool async) { m_async = async; }
 
     // The layout for the light of `settings` over the scene (kept while both stay the same).
     const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
@@ -77,8 +82,21 @@ public:
 
 private:
     int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
+    // The request pass's result as bytes: a flag a page (reduced on the GPU) or a word a pixel.
+    struct RequestBytes {
+        bool flags = false;
+        std::size_t bytes = 0;
+    };
+    struct RequestKey;
+    void reducePass(QSize size);
+    std::size_t requestBytes(QSize size) const;
+    // Into client memory `into`, or the bound pixel-pack buffer with nullptr.
+    RequestBytes readRequestBytes(QSize size, void* into);
+    static std::vector<VirtualPage> decodeRequests(const RequestBytes& bytes, const void* data, const std::vector<glm::ivec2>& windows);
     std::vector<VirtualPage> readRequests(QSize size);
-    std::vector<VirtualPage> reduceRequests(QSize size);
+    void startReadback(QSize size, const RequestKey& key);
+    // Takes the pending read-back's pages if it has arrived (or, with `wait`, once it has).
+    bool collectReadback(bool wait);
     void allocateTargets(QSize size);
     void uploadPageTable();
 
@@ -131,6 +149,12 @@ private:
     };
     std::optional<RequestKey> m_requestKey;
     std::vector<VirtualPage> m_requests;
+    bool m_async = false;
+    GlBuffer m_pixelPack;
+    GLsync m_fence = nullptr;           // the pending read-back's, null when none is pending
+    RequestBytes m_pendingBytes;
+    RequestKey m_pendingKey;
+    std::vector<glm::ivec2> m_pendingWindows;
     VirtualMapStats m_lastStats;        // what the last frame that placed pages found
 };
 

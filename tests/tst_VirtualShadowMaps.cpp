@@ -460,6 +460,47 @@ private Q_SLOTS:
         QVERIFY2(cpu == gpu, qPrintable(QStringLiteral("%1 pages from the CPU, %2 from the GPU").arg(cpu.size()).arg(gpu.size())));
     }
 
+    // The window's requests come back a frame later: the frame that moves the camera asks and
+    // does not wait, a later one places the very pages a synchronous frame would have; the
+    // first requests of an empty pool and a turned light's are taken at once.
+    void asyncRequestsArriveAFrameLater()
+    {
+        Settings s = virtualSettings("city");
+        Renderer& renderer = m_headless->renderer();
+        renderer.setScene(std::nullopt);
+        renderer.setVirtualAsyncRequests(true);
+        const auto restore = qScopeGuard([&] { renderer.setVirtualAsyncRequests(false); });
+        const QSize size(320, 180);
+        s.light.position += glm::dvec3(0.3, 0.0, 0.0);      // a layout of its own: an empty pool
+        m_headless->renderFrame(s, size);
+        const VirtualMapStats first = renderer.lastFrame().virtualPages;
+        QVERIFY2(first.drawn > 0 && !first.requestsPending, qPrintable(describe(first)));
+        const glm::dvec3 step = (s.camera.target - s.camera.position) * 0.05;
+        s.camera.position += step;
+        s.camera.target += step;
+        m_headless->renderFrame(s, size);
+        const VirtualMapStats asked = renderer.lastFrame().virtualPages;
+        QVERIFY2(asked.requestDraws > 0 && asked.requestsPending && asked.drawn == 0, qPrintable(describe(asked)));
+        m_headless->renderFrame(s, size);
+        const VirtualMapStats arrived = renderer.lastFrame().virtualPages;
+        QVERIFY2(!arrived.requestsPending && arrived.requestDraws == 0 && arrived.drawn > 0, qPrintable(describe(arrived)));
+        std::set<std::uint64_t> async;
+        for (const VirtualPage& page : renderer.virtualMap()->requests())
+            async.insert(page.key());
+        m_headless->renderFrame(s, size);
+        QCOMPARE(renderer.lastFrame().virtualPages.drawn, 0);
+        // The same camera's requests taken in the same frame.
+        renderer.setVirtualAsyncRequests(false);
+        renderer.setVirtualReduction(renderer.virtualMap()->reduction());  // asks again
+        m_headless->renderFrame(s, size);
+        std::set<std::uint64_t> sync;
+        for (const VirtualPage& page : renderer.virtualMap()->requests())
+            sync.insert(page.key());
+        QVERIFY(!sync.empty());
+        QVERIFY2(async == sync, qPrintable(QStringLiteral("%1 pages asynchronously, %2 at once").arg(async.size()).arg(sync.size())));
+        QCOMPARE(renderer.lastFrame().virtualPages.drawn, 0);       // they were all resident already
+    }
+
     // The depth pane's pool: every resident page in its own slot of the pool with its level,
     // the counts of the frame, the slot under the pointer and its level's page table.
     void thePoolShowsItsPagesAndLevels()

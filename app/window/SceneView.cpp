@@ -15,6 +15,7 @@
 #include <QOpenGLVersionFunctionsFactory>
 #include <QOpenGLPaintDevice>
 #include <QPainter>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -121,6 +122,7 @@ void SceneView::initializeGL()
     installGlDebugLogger();
     try {
         m_renderer = std::make_unique<Renderer>(gl);
+        m_renderer->setVirtualAsyncRequests(true);     // a frame never waits for the GPU's requests
         m_gizmo = std::make_unique<LightGizmoPass>(gl);
     } catch (const RenderError& e) {
         m_renderer.reset();
@@ -148,6 +150,9 @@ void SceneView::renderFrame(const Settings& settings)
     // Finish: per-pass wall times for the status bar; this is a measuring tool, and on a
     // software renderer the frame is CPU work either way.
     m_renderer->render(settings, target, TimingMode::Finish);
+    // A virtual map's pages asked for this frame arrive with a later one: draw it, unasked.
+    if (m_renderer->lastFrame().virtualPages.requestsPending)
+        QTimer::singleShot(0, this, qOverload<>(&SceneView::update));
     m_gizmo->render(m_renderer->lightFrame(), m_renderer->cameraFrame(), m_showLightVolume, target);
 }
 
