@@ -250,7 +250,7 @@ std::vector<VirtualPage> VirtualShadowMap::decodeRequests(const RequestBytes& by
 
 std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size)
 {
-    m_readback.resize(requestBytes(size));
+    m_readback.resize((requestBytes(size) + sizeof(std::uint32_t) - 1) / sizeof(std::uint32_t));
     const RequestBytes bytes = readRequestBytes(size, m_readback.data());
     return decodeRequests(bytes, m_readback.data(), m_windows);
 }

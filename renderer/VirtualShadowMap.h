@@ -107,7 +107,7 @@ private:
     GlTexture m_requestDepth;
     GlFramebuffer m_requestFramebuffer;
     QSize m_requestSize;
-    std::vector<std::uint32_t> m_readback;
+    std::vector<std::uint32_t> m_readback;  // a synchronous read-back: request words, or page flags four to a word
     Reduction m_reduction = Reduction::Gpu;
     std::unique_ptr<ShaderProgram> m_reduceProgram;
     GLint m_reduceWidth = -1, m_reduceLevels = -1, m_reduceRequests = -1;
@@ -115,7 +115,6 @@ private:
     GlTexture m_flagTexture;            // R8UI, 128 x 128 * levels: a flag per page of every window
     GlFramebuffer m_flagFramebuffer;
     int m_flagLevels = 0;
-    std::vector<std::uint8_t> m_flags;
     GlTexture m_pageTable;
     int m_pageTableLevels = 0;
 
