@@ -1,5 +1,9 @@
 #include "GlDebug.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #ifdef SHADOWLAB_GL_DEBUG
 #include <QOpenGLContext>
 #include <QOpenGLDebugLogger>
@@ -33,6 +37,16 @@ bool isSoftwareRenderer(const QString& rendererString)
     const QString r = rendererString.toLower();
     return r.contains(QLatin1String("llvmpipe")) || r.contains(QLatin1String("softpipe")) || r.contains(QLatin1String("swrast"))
         || r.contains(QLatin1String("software"));
+}
+
+void keepFreedMemoryForSoftwareRasteriser(const QString& rendererString)
+{
+#ifdef __GLIBC__
+    if (isSoftwareRenderer(rendererString))
+        mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#else
+    Q_UNUSED(rendererString);
+#endif
 }
 
 } // namespace shadowlab

@@ -162,7 +162,7 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
     std::vector<glm::mat4> matrices;
     std::vector<glm::vec4> tiles;
     std::vector<glm::vec2> uvWorld, depthRange;
-    std::vector<float> texels;
+    std::vector<float> texels, rayDepths;
     const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), camera.position);
     const glm::dvec2 tileUv(1.0 / map.columns(), 1.0 / map.rows());
     for (int i = 0; i < count; ++i) {
@@ -181,6 +181,8 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
         uvWorld.emplace_back(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()));
         depthRange.emplace_back(float(frame.volume.nearPlane), float(frame.volume.farPlane));
         texels.push_back(float(texelWorldSize(frame.volume, map.size())));
+        // An ortho view's depth change per world unit toward the light (AFFINE_VIEW), in double.
+        rayDepths.push_back(float((frame.depthShadowMatrix * glm::dvec4(-frame.direction, 0.0)).z));
     }
     p.program.set(p.techniqueUniform("uShadowViewCount"), count);
     m_gl->glUniformMatrix4fv(p.techniqueUniform("uShadowViews"), count, GL_FALSE, &matrices[0][0][0]);
@@ -188,6 +190,7 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
     m_gl->glUniform2fv(p.techniqueUniform("uShadowViewUvWorld"), count, &uvWorld[0][0]);
     m_gl->glUniform2fv(p.techniqueUniform("uShadowViewDepth"), count, &depthRange[0][0]);
     m_gl->glUniform1fv(p.techniqueUniform("uShadowViewTexel"), count, texels.data());
+    m_gl->glUniform1fv(p.techniqueUniform("uShadowViewRayDepth"), count, rayDepths.data());
     p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));   // several views
     if (views.set.cascaded) {
         glm::vec4 far(0.0f), blendStart(0.0f);

@@ -9,6 +9,7 @@
 #include "ShadowViews.h"
 
 #include <algorithm>
+#include <mutex>
 
 #include <QElapsedTimer>
 
@@ -40,6 +41,8 @@ void Renderer::setScene(std::optional<Scene> scene)
 
 void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats)
 {
+    static std::once_flag allocatorTuned;
+    std::call_once(allocatorTuned, [this] { keepFreedMemoryForSoftwareRasteriser(rendererString()); });
     ensureValid(settings);
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     computeLightFrame(settings.light);

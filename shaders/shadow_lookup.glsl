@@ -11,6 +11,13 @@ uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max x
 uniform vec2 uShadowViewUvWorld[6]; // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
 uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
 uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
+// An ortho view is affine (w = 1) and sees one direction to the light, so the bias's step along
+// the ray to the light is a constant change of depth per world unit: no division by w and no
+// matrix product per pixel.
+#if !defined(LIGHT_PERSPECTIVE) && !defined(LIGHT_WARP)
+#define AFFINE_VIEW
+uniform float uShadowViewRayDepth[6];   // each view's depth change per world unit toward the light
+#endif
 // Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
 // here, per pixel; one plain view takes it from the vertex stage.
 #if defined(SHADOW_VIEWS) || defined(LIGHT_WARP) || defined(VIRTUAL_MAP)
@@ -43,11 +50,17 @@ struct ShadowViewLookup {
     vec2 uvWorld;
     vec2 depth;
     float texel;
+    float rayDepth;             // AFFINE_VIEW: depth change per world unit toward the light
 };
 
 ShadowViewLookup shadowView(int i)
 {
-    return ShadowViewLookup(uShadowViews[i], uShadowTiles[i], uShadowViewUvWorld[i], uShadowViewDepth[i], uShadowViewTexel[i]);
+#ifdef AFFINE_VIEW
+    float rayDepth = uShadowViewRayDepth[i];
+#else
+    float rayDepth = 0.0;
+#endif
+    return ShadowViewLookup(uShadowViews[i], uShadowTiles[i], uShadowViewUvWorld[i], uShadowViewDepth[i], uShadowViewTexel[i], rayDepth);
 }
 
 #ifdef LIGHT_WARP
@@ -100,9 +113,13 @@ vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
 float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
     vec4 shadowCoord = viewPosition(view, normal, toLight);
+#ifdef AFFINE_VIEW
+    vec3 coord = shadowCoord.xyz;
+#else
     if (shadowCoord.w <= 0.0)
         return 1.0;             // behind a perspective light: outside its volume
     vec3 coord = shadowCoord.xyz / shadowCoord.w;
+#endif
 #ifdef REVERSED_Z
     if (coord.z < 0.0)
         return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
@@ -145,8 +162,12 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
     // where N.L and so the light term is nearly 0 anyway).
     float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
+#ifdef AFFINE_VIEW
+    float depthPerWorld = view.rayDepth;
+#else
     vec4 alongRay = view.matrix * vec4(toLight, 0.0);
     float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
+#endif
     gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
     gShadowW = shadowCoord.w;
 #ifdef LIGHT_WARP
@@ -173,8 +194,12 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 #endif
     // Compare from a point moved toward the light by `bias` world units: on the ray to the
     // light, so it stays on the same texel, and the same offset whatever the depth range.
+#ifdef AFFINE_VIEW
+    return filterShadow(coord.xy, coord.z + bias * depthPerWorld);
+#else
     vec4 moved = shadowCoord + view.matrix * vec4(toLight * bias, 0.0);
     return filterShadow(coord.xy, moved.z / moved.w);
+#endif
 #endif
 }
 
@@ -220,8 +245,9 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     toSlot[1][1] = kVsmPageTexels * scale / atlas.y;
     toSlot[3].xy = (slotOrigin + float(kVirtualBorder) + kVsmPageTexels * (uVsmLevelOffset[level] - page)) / atlas;
     float texel = uVsmTexel0 * exp2(float(level));
+    // The slot's matrix leaves depth as the light's: its step toward the light is the light's.
     ShadowViewLookup view = ShadowViewLookup(toSlot * uVsmLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlot)) / atlas),
-                                             atlas * texel, uShadowViewDepth[0], texel);
+                                             atlas * texel, uShadowViewDepth[0], texel, (uVsmLight * vec4(toLight, 0.0)).z);
     return viewVisibility(view, normal, toLight, dx, dy);
 }
 #endif
