@@ -142,6 +142,8 @@ private slots:
     void orbitNeverGoesBelowTheGround_data();
     void orbitNeverGoesBelowTheGround();
     void screenshotNameSaysWhatIsOnScreen();
+    void captionsSayWhatTheMapIs_data();
+    void captionsSayWhatTheMapIs();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
@@ -649,6 +651,48 @@ void tst_MainWindow::screenshotNameSaysWhatIsOnScreen()
     QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-pcf5-1024.png"));
     settings.filter.mode = FilterMode::HwBilinear;
     QCOMPARE(screenshotFileName(settings, when), QStringLiteral("shadowlab-2026-11-22-1530-cubes-hw-bilinear-1024.png"));
+}
+
+void tst_MainWindow::captionsSayWhatTheMapIs_data()
+{
+    QTest::addColumn<QStringList>("assignments");
+    QTest::addColumn<QString>("depthPane");     // what the depth pane's caption must say
+    QTest::addColumn<QString>("scenePane");     // ... and the scene pane's
+    QTest::newRow("ortho map") << QStringList{} << QStringLiteral("ortho light, depth24") << QStringLiteral("2048² ortho");
+    QTest::newRow("spot") << QStringList{QStringLiteral("light.type=spot"), QStringLiteral("light.projection=perspective"),
+                                         QStringLiteral("map.size=1024")}
+                          << QStringLiteral("perspective light, depth24") << QStringLiteral("1024² perspective");
+    QTest::newRow("point") << QStringList{QStringLiteral("light.type=point"), QStringLiteral("light.projection=perspective"),
+                                          QStringLiteral("map.size=512")}
+                           << QStringLiteral("point light, six cube faces of 512², depth24") << QStringLiteral("six 512² cube faces");
+    QTest::newRow("cascades") << QStringList{QStringLiteral("shadow.cascades=4"), QStringLiteral("map.format=depth32f")}
+                              << QStringLiteral("4 cascades of 2048², depth32f") << QStringLiteral("4 cascades of 2048²");
+    QTest::newRow("virtual") << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=16")}
+                             << QStringLiteral("virtual map, a pool of 256 pages of 128² (2176² depth24)")
+                             << QStringLiteral("virtual map of 256 pages of 128²");
+    QTest::newRow("moments") << QStringList{QStringLiteral("filter.mode=msm")} << QStringLiteral("ortho light, moments RGBA32F")
+                             << QStringLiteral("2048² ortho");
+}
+
+// A new user read "ortho light" over a virtual map's pool: each caption names the map it shows,
+// and the window's depth pane carries the same words.
+void tst_MainWindow::captionsSayWhatTheMapIs()
+{
+    QFETCH(QStringList, assignments);
+    QFETCH(QString, depthPane);
+    QFETCH(QString, scenePane);
+    Settings settings = m_window->settings(Side::A);
+    for (const QString& a : assignments)
+        applyAssignment(settings, a);
+    ensureValid(settings);
+    QCOMPARE(shadowMapSummary(settings), depthPane);
+    QVERIFY2(settingsSummary(settings).contains(QStringLiteral(" · ") + scenePane), qPrintable(settingsSummary(settings)));
+    m_window->setSettings(Side::A, settings);
+    QVERIFY(settle(*m_window));
+    bool shown = false;
+    for (const QLabel* label : m_window->findChildren<QLabel*>())
+        shown = shown || label->toolTip() == depthPane;
+    QVERIFY2(shown, qPrintable(depthPane));
 }
 
 void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()

@@ -3,6 +3,8 @@
 #include "MomentMath.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
+#include "ShadowViews.h"
+#include "VirtualPages.h"
 
 #include <QFileInfo>
 
@@ -14,15 +16,29 @@ QString squareSize(int side)
     return QString::number(side) + QChar(0x00B2);
 }
 
+QString mapLayoutSummary(const Settings& settings)
+{
+    const QString side = squareSize(settings.map.size);
+    if (settings.shadow.virtualMap) {
+        const int pool = settings.shadow.virtualPool;
+        return QStringLiteral("virtual map of %1 pages of %2").arg(pool * pool).arg(squareSize(kVirtualPageTexels));
+    }
+    if (settings.light.type == LightType::Point)
+        return QStringLiteral("six %1 cube faces").arg(side);
+    if (usesShadowViews(settings))
+        return QStringLiteral("%1 cascades of %2").arg(settings.shadow.cascades).arg(side);
+    return QStringLiteral("%1 %2").arg(side, toString(settings.light.projection));
+}
+
 QString settingsSummary(const Settings& settings)
 {
     if (!settings.shadow.enabled)
         return QStringLiteral("%1 · shadows off").arg(toString(settings.shading.model));
-    QString text = QStringLiteral("%1 · slope %2 · min %3 · %4 %5")
+    QString text = QStringLiteral("%1 · slope %2 · min %3 · %4")
                        .arg(filterLabel(settings.filter))
                        .arg(settings.bias.slope, 0, 'g', 3)     // a caption, not the value: the dock has it whole
                        .arg(settings.bias.min, 0, 'g', 3)
-                       .arg(squareSize(settings.map.size), toString(settings.light.projection));
+                       .arg(mapLayoutSummary(settings));
     if (settings.bias.cullFront)
         text += QStringLiteral(" · front faces culled");
     if (settings.bias.polygonFactor != 0.0 || settings.bias.polygonUnits != 0.0)
@@ -45,8 +61,20 @@ QString shadowMapSummary(const Settings& shown)
     // What the map holds: depth in its format, or a moment technique's moments.
     const bool moments = isMomentTechnique(shown.filter.mode);
     const QString holds = moments ? QStringLiteral("moments RGBA%1F").arg(toString(shown.moments.format)) : toString(shown.map.format);
-    const QString light = QStringLiteral("%1 light, %2").arg(toString(shown.light.projection), holds);
-    return shown.shadow.enabled ? light : QStringLiteral("shadows are off");
+    if (!shown.shadow.enabled)
+        return QStringLiteral("shadows are off");
+    if (shown.shadow.virtualMap) {
+        const int pool = shown.shadow.virtualPool;
+        return QStringLiteral("virtual map, a pool of %1 pages of %2 (%3 %4)")
+            .arg(pool * pool)
+            .arg(squareSize(kVirtualPageTexels))
+            .arg(squareSize(pool * kVirtualSlotTexels), holds);
+    }
+    if (shown.light.type == LightType::Point)
+        return QStringLiteral("point light, six cube faces of %1, %2").arg(squareSize(shown.map.size), holds);
+    if (usesShadowViews(shown))
+        return QStringLiteral("%1 cascades of %2, %3").arg(shown.shadow.cascades).arg(squareSize(shown.map.size), holds);
+    return QStringLiteral("%1 light, %2").arg(toString(shown.light.projection), holds);
 }
 
 } // namespace shadowlab
