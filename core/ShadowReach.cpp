@@ -247,8 +247,15 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
         for (const ReachBox& box : perView[v]) {
             const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
                 || f.max.z < box.depthMin || f.min.z > box.depthMax;
-            const bool within = f.min.x >= box.uvMin.x && f.max.x <= box.uvMax.x && f.min.y >= box.uvMin.y && f.max.y <= box.uvMax.y
-                && f.min.z >= box.depthMin && f.max.z <= box.depthMax;
+            // What lies outside the map's square or its depth range reads lit whatever the
+            // casters, so a receiver is within a box when the rest of it is: its few lookups
+            // there cost less than the box's faces in the mask (a caster before the near plane,
+            // past the far one or over the map's edge is its own receiver).
+            const glm::dvec3 lo = glm::min(glm::dvec3(box.uvMin, box.depthMin), glm::dvec3(0.0));
+            const glm::dvec3 hi = glm::max(glm::dvec3(box.uvMax, box.depthMax), glm::dvec3(1.0));
+            const glm::dvec3 fMin = glm::clamp(f.min, lo, hi), fMax = glm::clamp(f.max, lo, hi);
+            const bool within = fMin.x >= box.uvMin.x && fMax.x <= box.uvMax.x && fMin.y >= box.uvMin.y && fMax.y <= box.uvMax.y
+                && fMin.z >= box.depthMin && fMax.z <= box.depthMax;
             if (within)
                 return Reach::Inside;
             if (!apart)
@@ -315,11 +322,36 @@ convex::Polygon planePiece(const ReachObject& receiver, const ReachBox& box, dou
     return piece;
 }
 
+// Where a part of the mask lands on screen: the bounding rectangle, in normalised device
+// coordinates, of its faces clipped to the camera's frustum; nullopt where none of it is in
+// view. A part that reaches behind the camera is cut at the near plane rather than taken as
+// the whole screen, so a camera standing on a receiver's piece still gets a mask.
+std::optional<std::pair<glm::dvec2, glm::dvec2>> screenBounds(const std::vector<convex::Polygon>& faces, const CameraFrame& camera)
+{
+    const std::array<convex::Plane, 6> frustum = convex::frustumPlanes(camera.viewProjection);
+    const std::vector<convex::Polygon> visible = convex::clipFaces(faces, std::vector<convex::Plane>(frustum.begin(), frustum.end()));
+    glm::dvec2 lo(1.0), hi(-1.0);
+    bool any = false;
+    for (const convex::Polygon& face : visible) {
+        for (const glm::dvec3& c : face) {
+            const glm::dvec4 clip = camera.viewProjection * glm::dvec4(c, 1.0);
+            if (!(clip.w > 0.0))
+                continue;       // on the near plane of a degenerate projection: nothing to bound
+            lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+            hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+            any = true;
+        }
+    }
+    if (!any)
+        return std::nullopt;
+    return std::pair{glm::clamp(lo, -1.0, 1.0), glm::clamp(hi, -1.0, 1.0)};
+}
+
 // The mask of the receivers that straddle the boxes: flat ones' pieces, the boxes for the rest.
-// Each part's projected bounding rectangle makes the share and the rectangle.
+// Each part's bounding rectangle on screen makes the share and the rectangle.
 void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, const CameraFrame& camera)
 {
-    std::vector<std::vector<glm::dvec3>> parts;    // the corners of each piece or box
+    std::vector<std::vector<convex::Polygon>> parts;    // the faces of each piece or box
     bool boxes = false;
     for (std::size_t i = 0; i < receivers.size(); ++i) {
         if (reach.objects[i] != Reach::Partly)
@@ -332,47 +364,33 @@ void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, co
         for (const ReachBox& box : reach.boxes) {
             convex::Polygon piece = planePiece(receivers[i], box, *margin);
             if (!piece.empty()) {
-                parts.push_back(piece);
+                parts.push_back({piece});
                 reach.mask.push_back(std::move(piece));
             }
         }
     }
     if (boxes) {
         for (const ReachBox& box : reach.boxes) {
-            const std::array<glm::dvec3, 8> corners = box.worldCorners();
-            parts.emplace_back(corners.begin(), corners.end());
-            for (convex::Polygon& face : convex::hexahedronFaces(corners))
-                reach.mask.push_back(std::move(face));
+            std::vector<convex::Polygon> faces = convex::hexahedronFaces(box.worldCorners());
+            reach.mask.insert(reach.mask.end(), faces.begin(), faces.end());
+            parts.push_back(std::move(faces));
         }
     }
     double share = 0.0;
     glm::dvec2 all0(1.0), all1(-1.0);
     std::vector<UvRect> rects;
-    for (const std::vector<glm::dvec3>& corners : parts) {
-        glm::dvec2 lo(1.0), hi(-1.0);
-        bool behind = false;
-        for (const glm::dvec3& c : corners) {
-            const glm::dvec4 clip = camera.viewProjection * glm::dvec4(c, 1.0);
-            if (clip.w <= 1e-9) {
-                behind = true;
-                break;
-            }
-            lo = glm::min(lo, glm::dvec2(clip) / clip.w);
-            hi = glm::max(hi, glm::dvec2(clip) / clip.w);
-        }
-        if (behind) {
-            lo = glm::dvec2(-1.0);
-            hi = glm::dvec2(1.0);
-        }
-        lo = glm::clamp(lo, -1.0, 1.0);
-        hi = glm::clamp(hi, -1.0, 1.0);
+    for (const std::vector<convex::Polygon>& faces : parts) {
+        const std::optional<std::pair<glm::dvec2, glm::dvec2>> bounds = screenBounds(faces, camera);
+        if (!bounds)
+            continue;
+        const auto [lo, hi] = *bounds;
         share += std::max(hi.x - lo.x, 0.0) * std::max(hi.y - lo.y, 0.0) / 4.0;
         all0 = glm::min(all0, lo);
         all1 = glm::max(all1, hi);
         rects.push_back({lo, hi});
     }
     reach.screenShare = std::min(share, 1.0);
-    reach.screenRect = parts.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
+    reach.screenRect = rects.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);
     for (const UvRect& r : mergedRects(std::move(rects)))
         reach.screenRects.emplace_back(r.min, r.max);
 }

@@ -49,13 +49,13 @@ struct ShadowReach {
     // the boxes: a flat one's plane inside each box (the pixels of it that need a lookup, and
     // no more), the boxes' faces for any other (every pixel whose ray crosses a box).
     std::vector<convex::Polygon> mask;
-    // Share of the viewport the mask may cover (each piece's or box's projected corners'
-    // bounding rectangle, 1 where a corner is behind the camera): a mask that covers most of the
-    // frame saves less than drawing the straddling objects twice costs.
+    // Share of the viewport the mask may cover (the sum of each piece's or box's bounding
+    // rectangle on screen, of what of it lies inside the camera's frustum): a mask that covers
+    // most of the frame saves less than drawing the straddling objects twice costs.
     double screenShare = 1.0;
     // The mask's bounding rectangle in normalised device coordinates (min x, min y, max x,
-    // max y): the straddling receivers need no lookup outside it. The whole [-1, 1] square
-    // where a corner is behind the camera.
+    // max y): the straddling receivers need no lookup outside it. Empty (all 0) where no
+    // part is in view.
     glm::dvec4 screenRect{-1.0, -1.0, 1.0, 1.0};
     // The same per part, where parts' rectangles overlap their union: the lookups' draws, one
     // per rectangle, leave out the frame between them.

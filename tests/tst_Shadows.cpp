@@ -693,6 +693,35 @@ private Q_SLOTS:
         m_headless->renderer().setScene(std::nullopt);
     }
 
+    // A camera among the casters (the tutorial's, in the cubes' row; one behind a cube; one on
+    // the ground's piece in a column) still masks: only the ground straddles, a cube that pokes
+    // past the map's near plane, far plane or square is its own receiver, and the mask's parts
+    // count only what of them is in view. The frame is the one that looks up everywhere.
+    void camerasAmongTheCastersStillMask_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("the tutorial's camera") << QStringList{"camera.position=0,0,3", "camera.target=0,0,-1"};
+        QTest::newRow("behind a cube, looking past it") << QStringList{"camera.position=2.6,0.6,3.2", "camera.target=-1,0,-2"};
+        QTest::newRow("on the ground in a column") << QStringList{"camera.position=0.4,-0.45,0.9", "camera.target=-2,-0.3,-2"};
+        QTest::newRow("tutorial camera, pcf 5 and normal offset")
+            << QStringList{"camera.position=0,0,3", "camera.target=0,0,-1", "filter.mode=pcf", "filter.kernel=5", "bias.normal=2"};
+        QTest::newRow("tutorial camera, a tight light volume")
+            << QStringList{"camera.position=0,0,3", "camera.target=0,0,-1", "light.fit=manual", "light.near=4", "light.far=9"};
+    }
+
+    void camerasAmongTheCastersStillMask()
+    {
+        QFETCH(QStringList, assignments);
+        Settings settings = presetSettings("seed");
+        for (const QString& a : assignments)
+            applyAssignment(settings, a);
+        const FrameStats stats = compareSkippingOutOfReach(settings, std::nullopt);
+        const ShadowReach& reach = m_headless->renderer().shadowReach();
+        QCOMPARE(reach.partlyCount(), 1);   // the ground
+        QVERIFY2(stats.litReachMasked, qPrintable(QStringLiteral("the mask covers %1 of the frame").arg(reach.screenShare)));
+        QCOMPARE(stats.litPlainDraws, 1);   // the ground outside its pieces
+    }
+
     // The city's thousands of buildings are drawn in batches: draws stay far below the objects
     // and do not grow with them, in the lit pass and the shadow pass.
     void manyObjectsAreDrawnInBatches()
