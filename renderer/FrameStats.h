@@ -17,8 +17,8 @@ struct VirtualMapStats {
     bool requestsPending = false;   // asynchronous requests (the window) still on their way back
 };
 
-// What one frame cost and did. GPU times come from GL_TIME_ELAPSED (on a software renderer
-// they are CPU time too). With TimingMode::Finish they are this frame's; with Async, the newest
+// What one frame cost and did. GPU times come from GL_TIME_ELAPSED (0 on a software renderer,
+// which runs no timer query: its wall times are the measure there). With TimingMode::Finish they are this frame's; with Async, the newest
 // finished measurement of each pass, which may be a frame or two old.
 struct FrameStats {
     double shadowPassMs = 0.0;          // with Finish: 0 when the pass was reused or shadows are off

@@ -6,6 +6,8 @@ GpuTimer::GpuTimer(GlFunctions* gl) : m_gl(gl), m_queries{makeQuery(gl), makeQue
 
 void GpuTimer::begin()
 {
+    if (!m_enabled)
+        return;
     const int next = m_last < 0 ? 0 : 1 - m_last;
     if (m_pending[std::size_t(next)]) {
         // Never reuse a query whose result was not read: drop it so GL does not complain.
@@ -23,13 +25,15 @@ void GpuTimer::begin()
 
 void GpuTimer::end()
 {
+    if (!m_enabled)
+        return;
     m_gl->glEndQuery(GL_TIME_ELAPSED);
     m_pending[std::size_t(m_last)] = true;
 }
 
 std::optional<double> GpuTimer::result(bool wait)
 {
-    if (m_last < 0)
+    if (!m_enabled || m_last < 0)
         return std::nullopt;
     for (int i : {m_last, 1 - m_last}) {
         if (!m_pending[std::size_t(i)])

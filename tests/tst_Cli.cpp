@@ -499,8 +499,13 @@ private Q_SLOTS:
         QCOMPARE(byName["moving-camera-no-shadows"].value("shadow_passes_run").toInt(), 0);
         // A quarter degree a frame keeps the stabilised fit: the map is not redrawn every frame.
         QVERIFY(byName["moving-camera"].value("shadow_passes_run").toInt() < 5);
-        for (const QJsonObject& phase : byName)
+        // GPU rows only where the timer measures something; a software renderer runs no query.
+        const bool gpuTimed = o.value("gpu_timer_meaningful").toBool();
+        for (const QJsonObject& phase : byName) {
             QVERIFY(phase.value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
+            QCOMPARE(phase.value("lit_pass_gpu").isObject(), gpuTimed);
+            QCOMPARE(phase.value("lit_pass_gpu").isNull(), !gpuTimed);
+        }
     }
 
     // The tutorial's own program is timed in the same loop, one frame a round, and the ratios

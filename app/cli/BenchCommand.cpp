@@ -277,8 +277,10 @@ QString configurationSummary(const BenchRequest& r)
         .arg(settings.bias.min);
 }
 
-QJsonObject phaseJson(const Phase& r, int frames)
+// `gpuTimed`: the renderer ran its timer queries (not on a software one): else the GPU rows are null.
+QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
 {
+    const auto gpu = [gpuTimed](const std::vector<double>& ms) { return gpuTimed ? QJsonValue(statsJson(summarize(ms))) : QJsonValue(); };
     return {{QStringLiteral("phase"), r.name},
             {QStringLiteral("description"), r.description},
             {QStringLiteral("frames"), frames},
@@ -289,8 +291,8 @@ QJsonObject phaseJson(const Phase& r, int frames)
             {QStringLiteral("virtual_pages_resident"), statsJson(summarize(r.pagesResident))},
             {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
             {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
-            {QStringLiteral("shadow_pass_gpu"), statsJson(summarize(r.shadow))},
-            {QStringLiteral("lit_pass_gpu"), statsJson(summarize(r.lit))},
+            {QStringLiteral("shadow_pass_gpu"), gpu(r.shadow)},
+            {QStringLiteral("lit_pass_gpu"), gpu(r.lit)},
             {QStringLiteral("shadow_pass_wall"), statsJson(summarize(r.shadowWall))},
             {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
             {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
@@ -302,7 +304,7 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
 {
     QJsonArray phaseArray;
     for (const Phase& r : phases)
-        phaseArray.append(phaseJson(r, request.frames));
+        phaseArray.append(phaseJson(r, request.frames, !isSoftwareRenderer(rendererString)));
     out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                        {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
                                        {QStringLiteral("configuration"), configurationSummary(request)},
