@@ -162,13 +162,21 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
     // where N.L and so the light term is nearly 0 anyway).
     float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
+    float tanTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
+#if defined(VIRTUAL_MAP) && !defined(BIAS_TEXEL) && !defined(BIAS_DEPTH)
+    // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
+    // levels and no one world-unit bias fits them all: at least the depth this receiver's own
+    // plane spans between a point and its texel's centre (up to half the texel's diagonal), or it
+    // shadows itself (acne).
+    bias = max(bias, 0.71 * view.texel * tanTheta);
+#endif
 #ifdef AFFINE_VIEW
     float depthPerWorld = view.rayDepth;
 #else
     vec4 alongRay = view.matrix * vec4(toLight, 0.0);
     float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
 #endif
-    gGrowth = depthPerWorld * sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
+    gGrowth = depthPerWorld * tanTheta;
     gShadowW = shadowCoord.w;
 #ifdef LIGHT_WARP
     // Along a ray a warped depth is linear in distance, at a scale of this texel's own: the

@@ -1,7 +1,7 @@
 // Virtual shadow maps (shadow.virtual): the clipmap's layout and page cache as pure data (pages
 // on a grid the camera cannot move, least-recently-used slots, coarsening when the pool is too
 // small), and on GL against the Embree reference: the shadows where the ray tracer puts them on
-// every preset from overhead to grazing light, a texel of at most a pixel nearly everywhere, a
+// every preset from overhead to grazing light and on two models, a texel of at most a pixel nearly everywhere, a
 // still frame that draws no page, a camera move that draws only the pages it newly sees, a
 // light move that draws them all, and a pool too small that coarsens with a count, not holes.
 #include "Application.h"
@@ -13,6 +13,7 @@
 #include "SceneLibrary.h"
 #include "SceneNames.h"
 #include "SettingsKeys.h"
+#include "TestFiles.h"
 #include "TexelDensity.h"
 #include "VirtualPages.h"
 #include "VirtualPoolPicture.h"
@@ -54,6 +55,29 @@ LightSettings lightFrom(glm::dvec3 direction)
     light.target = glm::dvec3(0.0);
     light.position = -direction * 50.0;
     return light;
+}
+
+// Misclassified pixels more than two pixels from every edge of the reference's shadow: what no
+// texel of about a pixel explains (acne, leaks), where an edge a texel off, or a 3 x 3 filter's
+// spread of it, is not.
+int misclassifiedOffEdges(const VisibilityBuffer& buffer, const std::vector<float>& hard)
+{
+    const int w = buffer.size.width(), h = buffer.size.height();
+    const auto shadowed = [&](int x, int y) { return hard[std::size_t(y * w + x)] < 0.5f; };
+    int count = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const int i = y * w + x;
+            if (buffer.mask(i) != VisibilityBuffer::FacingLight || std::abs(buffer.visibility(i) - hard[std::size_t(i)]) <= 0.5f)
+                continue;
+            bool nearEdge = false;
+            for (int ny = std::max(y - 2, 0); ny <= std::min(y + 2, h - 1) && !nearEdge; ++ny)
+                for (int nx = std::max(x - 2, 0); nx <= std::min(x + 2, w - 1) && !nearEdge; ++nx)
+                    nearEdge = shadowed(nx, ny) != shadowed(x, y);
+            count += !nearEdge;
+        }
+    }
+    return count;
 }
 
 Settings virtualSettings(const QString& scene)
@@ -291,6 +315,18 @@ private Q_SLOTS:
         QTest::newRow("cubes camera along the light") << "cubes" << 200.0 << 50.0
                                                      << QStringList{"camera.position=-4.53,5.75,-1.65", "camera.target=0,0,0", "filter.mode=pcf"};
         QTest::newRow("torus camera grazing") << "torus" << 300.0 << 30.0 << QStringList{"camera.position=0.3,0.08,4", "camera.target=0,0.05,0"};
+        // Models: the engine of assimp-testmodels through a scene file, curved and finned, on a
+        // ground much wider than it (a level's texel there spans far more than the default world
+        // bias), and a PLY model alone.
+        const QString engine = writeFile(m_dir, QStringLiteral("engine.json"), QByteArrayLiteral(R"({
+  "models": [ { "file": ")") + kTestModels.toUtf8() + QByteArrayLiteral(R"(glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "scale": 0.01 } ],
+  "ground": true, "camera.position": [4, 3, 6] })"));
+        QTest::newRow("engine scene file az 200 el 65") << engine << 200.0 << 65.0 << QStringList{};
+        QTest::newRow("engine scene file az 30 el 40 pcf") << engine << 30.0 << 40.0 << QStringList{"filter.mode=pcf"};
+        QTest::newRow("engine scene file az 300 el 20, camera low") << engine << 300.0 << 20.0 << QStringList{"camera.position=-3,0.6,4"};
+        const QString wuson = kTestModels + QStringLiteral("PLY/Wuson.ply");
+        QTest::newRow("Wuson az 120 el 55") << wuson << 120.0 << 55.0 << QStringList{};
+        QTest::newRow("Wuson az 250 el 25 hw-bilinear") << wuson << 250.0 << 25.0 << QStringList{"filter.mode=hw-bilinear"};
     }
     void virtualAgreesWithTheReference()
     {
@@ -311,14 +347,23 @@ private Q_SLOTS:
             QVERIFY2(std::isfinite(v) && v >= 0.0f && v <= 1.0f, qPrintable(QString("pixel %1: visibility %2").arg(i).arg(v)));
         }
         const VirtualMapStats& pages = renderer.lastFrame().virtualPages;
-        const Agreement a = probe::agreement(buffer, probe::hardReference(renderer, buffer), renderer.lightFrame());
-        const QString numbers = describe(a) + "; pages: " + describe(pages);
+        const std::vector<float> hard = probe::hardReference(renderer, buffer);
+        const Agreement a = probe::agreement(buffer, hard, renderer.lightFrame());
+        const int offEdges = misclassifiedOffEdges(buffer, hard);
+        const QString numbers = describe(a) + QString(" (%1 away from the reference's edges)").arg(offEdges) + "; pages: " + describe(pages);
         QVERIFY2(renderer.lastFrame().virtualMap && pages.requested > 0 && pages.resident >= 1, qPrintable(numbers));
         QCOMPARE(pages.overflow, 0);
         QVERIFY2(a.counted > 300, qPrintable(numbers));
         QVERIFY2(a.referenceShadowed > 0.001 * a.counted, qPrintable(numbers));
-        QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
-        QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        if (isPresetName(scene)) {
+            QVERIFY2(a.falseLight <= 0.02 * a.referenceShadowed + 0.002 * a.counted, qPrintable(numbers));
+            QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
+        } else {
+            // A model's curved and finned caster has far more edge than a preset's boxes, and at
+            // about a texel a pixel each edge may be a pixel off. No acne and no leak, then:
+            // every misclassified pixel but a few lies at an edge of the shadow.
+            QVERIFY2(offEdges <= 0.002 * a.counted, qPrintable(numbers));
+        }
         qInfo().noquote() << numbers;
     }
 
@@ -548,6 +593,7 @@ private Q_SLOTS:
 
 private:
     std::unique_ptr<HeadlessRenderer> m_headless;
+    QTemporaryDir m_dir;
 };
 
 SHADOWLAB_TEST_MAIN(TestVirtualShadowMaps)
