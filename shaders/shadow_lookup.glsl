@@ -166,9 +166,10 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 #if defined(VIRTUAL_MAP) && !defined(BIAS_TEXEL) && !defined(BIAS_DEPTH)
     // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
     // levels and no one world-unit bias fits them all: at least the depth this receiver's own
-    // plane spans between a point and its texel's centre (up to half the texel's diagonal), or it
-    // shadows itself (acne).
-    bias = max(bias, 0.71 * view.texel * tanTheta);
+    // plane spans over one texel of its level, the reach of a lookup's 2 x 2 comparison
+    // footprint along the slope, or it shadows itself (acne; half a texel's diagonal, a hard
+    // lookup's reach, still left the default hw-bilinear's partial acne on a model's ground).
+    bias = max(bias, view.texel * tanTheta);
 #endif
 #ifdef AFFINE_VIEW
     float depthPerWorld = view.rayDepth;
