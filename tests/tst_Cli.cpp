@@ -520,8 +520,18 @@ private Q_SLOTS:
         QCOMPARE(anchor.value("phase").toString(), QStringLiteral("tutorial-program"));
         QCOMPARE(anchor.value("frame_wall").toObject().value("count").toInt(), 4);
         QVERIFY(anchor.value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
+        // The ratio comes with its own noise: each round's ShadowLab frame over the same
+        // round's tutorial frame, whose spread holds the ratio of medians' neighbourhood.
+        const QJsonObject relative = phases.at(0).toObject().value("frame_wall_relative").toObject();
+        QCOMPARE(relative.value("to").toString(), QStringLiteral("tutorial-program"));
+        QCOMPARE(relative.value("rounds").toInt(), 4);
+        const double p10 = relative.value("round_p10").toDouble(), p90 = relative.value("round_p90").toDouble();
+        QVERIFY2(p10 > 0.0 && p10 <= relative.value("round_median").toDouble() && relative.value("round_median").toDouble() <= p90,
+                 qPrintable(QJsonDocument(relative).toJson()));
+        QVERIFY(relative.value("ratio_of_medians").toDouble() > 0.0);
         const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "2", "--warmup", "0", "--phase", "moving-light", "--anchor"});
         QVERIFY2(text.out.contains("relative to tutorial-program"), qPrintable(text.out));
+        QVERIFY2(text.out.contains("round by round"), qPrintable(text.out));
         const Run refused = shadowlab({"bench", "--scene", "torus", "--anchor", "--frames", "1"});
         QCOMPARE(refused.exitCode, 2);
         QVERIFY2(refused.err.contains("--anchor") && refused.err.contains("seed"), qPrintable(refused.err));

@@ -11,9 +11,11 @@
 
 #include <QElapsedTimer>
 #include <QJsonArray>
-#include <memory>
 #include <QJsonDocument>
 #include <QJsonObject>
+
+#include <algorithm>
+#include <memory>
 
 namespace shadowlab::cli {
 
@@ -300,11 +302,37 @@ QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
             {QStringLiteral("views"), viewsJson(r)}};
 }
 
+// Each round's frame of `r` over the same round's frame of `reference`. The loop times one
+// frame of every phase a round, so a slow spell of a shared machine moves both sides of a
+// round's ratio alike: their spread is the noise of the ratio itself, which the two phases'
+// own spreads overstate.
+SampleStats roundRatios(const Phase& r, const Phase& reference)
+{
+    std::vector<double> ratios;
+    for (std::size_t k = 0; k < std::min(r.wall.size(), reference.wall.size()); ++k) {
+        if (reference.wall[k] > 0.0)
+            ratios.push_back(r.wall[k] / reference.wall[k]);
+    }
+    return summarize(std::move(ratios));
+}
+
 void printJson(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
 {
     QJsonArray phaseArray;
-    for (const Phase& r : phases)
-        phaseArray.append(phaseJson(r, request.frames, !isSoftwareRenderer(rendererString)));
+    for (const Phase& r : phases) {
+        QJsonObject phase = phaseJson(r, request.frames, !isSoftwareRenderer(rendererString));
+        if (phases.size() > 1) {
+            const SampleStats rounds = roundRatios(r, phases.back());
+            phase.insert(QStringLiteral("frame_wall_relative"),
+                         QJsonObject{{QStringLiteral("to"), phases.back().name},
+                                     {QStringLiteral("ratio_of_medians"), summarize(r.wall).median / summarize(phases.back().wall).median},
+                                     {QStringLiteral("rounds"), rounds.count},
+                                     {QStringLiteral("round_median"), rounds.median},
+                                     {QStringLiteral("round_p10"), rounds.p10},
+                                     {QStringLiteral("round_p90"), rounds.p90}});
+        }
+        phaseArray.append(phase);
+    }
     out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
                                        {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
                                        {QStringLiteral("configuration"), configurationSummary(request)},
@@ -352,10 +380,15 @@ void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
 {
     if (phases.size() > 1) {
         const double reference = summarize(phases.back().wall).median;
-        out() << "\nmedian frame wall time relative to " << phases.back().name << ":\n";
-        for (const Phase& r : phases)
-            out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth)
-                  << '\n';
+        out() << "\nmedian frame wall time relative to " << phases.back().name << " (and the p10 and p90 of the ratios round by round,\n"
+              << "one frame of each a round: the noise of the ratio itself):\n";
+        for (const Phase& r : phases) {
+            const SampleStats rounds = roundRatios(r, phases.back());
+            out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth);
+            if (&r != &phases.back())
+                out() << QString::number(rounds.p10, 'f', 2).rightJustified(kNumberWidth) << QString::number(rounds.p90, 'f', 2).rightJustified(kNumberWidth);
+            out() << '\n';
+        }
     }
     if (wantsMovingCamera(request)) {
         auto median = [&](const char* name) {
