@@ -52,8 +52,14 @@ Entry whole(const KeySpec& spec, Field field)
     const bool oddOnly = spec.oddOnly;
     const QString rangeText = QStringLiteral("[%1, %2]%3").arg(lo).arg(hi).arg(oddOnly ? QStringLiteral(", odd") : QString());
     auto check = [lo, hi, oddOnly, rangeText](int v) -> std::optional<QString> {
-        if (v < lo || v > hi || (oddOnly && v % 2 == 0))
+        if (v < lo || v > hi)
             return QStringLiteral("%1 is out of range; allowed: %2").arg(v).arg(rangeText);
+        if (oddOnly && v % 2 == 0)
+            return QStringLiteral("%1 is even; it must be odd (a kernel has a centre texel), e.g. %2 or %3; allowed: %4")
+                .arg(v)
+                .arg(std::max(v - 1, lo))
+                .arg(std::min(v + 1, hi))
+                .arg(rangeText);
         return std::nullopt;
     };
     return {describe(spec, "integer", rangeText, lo, hi),

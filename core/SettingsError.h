@@ -19,7 +19,17 @@ public:
 
     const QString& key() const { return m_key; }
 
+    // The same error found within `context` (a file, a sweep entry): the context, then the key
+    // and the message, the key said once.
+    SettingsError within(const QString& context) const
+    {
+        return SettingsError(Whole{}, m_key, escapeControlCharacters(context).toStdString() + ": " + what());
+    }
+
 private:
+    struct Whole {};    // the text as it stands: the key already in it
+    SettingsError(Whole, QString key, const std::string& text) : std::runtime_error(text), m_key(std::move(key)) {}
+
     QString m_key;
 };
 

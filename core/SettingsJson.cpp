@@ -117,7 +117,7 @@ Settings settingsFromFileObject(const QString& path, const QJsonObject& object, 
     try {
         return settingsFromJson(object, base);
     } catch (const SettingsError& e) {
-        throw SettingsError(e.key(), QStringLiteral("in '%1': %2").arg(displayText(path), QString::fromStdString(e.what())));
+        throw e.within(QStringLiteral("in '%1'").arg(displayText(path)));
     }
 }
 

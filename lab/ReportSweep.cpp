@@ -304,7 +304,7 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
         try {
             entry.assignments = assignmentsFromJson(o.value(QStringLiteral("set")).toObject());
         } catch (const SettingsError& e) {
-            throw SettingsError(e.key(), QStringLiteral("in '%1', %2: %3").arg(name, where, QString::fromStdString(e.what())));
+            throw e.within(QStringLiteral("--sweep: in '%1', %2").arg(name, where));
         }
         if (entry.label.isEmpty())
             entry.label = entry.assignments.isEmpty() ? QStringLiteral("base") : entry.assignments.join(QStringLiteral(", "));
@@ -315,7 +315,8 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 
 // Virtual shadow maps against one map and against stabilised cascades of about the same
 // memory (a pool of 30² pages of 136² is 4080², 16.6 M texels; 4 x 2048² is 16.8 M), with a
-// filter, and with a pool too small for the view.
+// filter, one level finer than a texel per pixel in the same pool (two texels a pixel a side:
+// an edge placed to a quarter of a pixel, not a half), and with a pool too small for the view.
 std::vector<SweepEntry> virtualSweep()
 {
     const QString cascades = QStringLiteral("shadow.cascades=4");
@@ -326,6 +327,8 @@ std::vector<SweepEntry> virtualSweep()
          {cascades, QStringLiteral("map.size=2048"), QStringLiteral("light.stabilize=true"), QStringLiteral("filter.mode=pcf")}},
         {QStringLiteral("virtual, pool of 30 x 30 pages"), {QStringLiteral("shadow.virtual=true")}},
         {QStringLiteral("virtual, pool of 30 x 30 pages, pcf 3x3"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("filter.mode=pcf")}},
+        {QStringLiteral("virtual, pool of 30 x 30 pages, lod bias 1"),
+         {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_lod_bias=1")}},
         {QStringLiteral("virtual, pool of 6 x 6 pages"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=6")}},
     };
 }
@@ -364,7 +367,9 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& bas
     try {
         bytes = readInputFile(nameOrFile, QStringLiteral("sweep file"));
     } catch (const SettingsError& e) {
-        throw SettingsError(QString(), QStringLiteral("--sweep: %1; give a file or one of %2").arg(QString::fromStdString(e.what()), builtInSweeps().join(QStringLiteral(", "))));
+        throw SettingsError(QString(), QStringLiteral("--sweep: %1%2; give a file or one of %3")
+                                           .arg(QString::fromStdString(e.what()), didYouMean(nameOrFile, builtInSweeps()),
+                                                builtInSweeps().join(QStringLiteral(", "))));
     }
     return parseSweepFile(bytes, nameOrFile);
 }
@@ -377,7 +382,7 @@ Settings applySweepEntry(const Settings& base, const SweepEntry& entry)
             applyAssignment(s, a);
         ensureValid(s);
     } catch (const SettingsError& e) {
-        throw SettingsError(e.key(), QStringLiteral("in sweep entry '%1': %2").arg(displayText(entry.label), QString::fromUtf8(e.what())));
+        throw e.within(QStringLiteral("in sweep entry '%1'").arg(displayText(entry.label)));
     }
     return s;
 }

@@ -333,6 +333,20 @@ private Q_SLOTS:
         const Run table = shadowlab({"settings"});
         QCOMPARE(table.exitCode, 0);
         QVERIFY(table.out.contains("filter.mode") && table.out.contains("hard | pcf | pcf-optimized | pcf-dither4 | pcf64 | hw-bilinear"));
+        // Readable as a table: every key's default starts in one column, whatever the key's
+        // length, and the help is wrapped (a range may run long: it is one list).
+        const QStringList lines = table.out.split('\n', Qt::SkipEmptyParts);
+        const qsizetype column = lines.first().indexOf("default");
+        int rows = 0;
+        for (const QString& line : lines.mid(1)) {
+            if (line.startsWith(' ')) {
+                QVERIFY2(line.size() <= 100, qPrintable("a help line of " + QString::number(line.size()) + " characters: " + line));
+                continue;
+            }
+            ++rows;
+            QVERIFY2(line.at(column - 1) == ' ' && line.at(column) != ' ', qPrintable("the default is not in its column: " + line));
+        }
+        QCOMPARE(rows, int(keys.size()));
     }
 
     void reportWritesEveryConfiguredRow()
@@ -428,6 +442,11 @@ private Q_SLOTS:
         const Run r = shadowlab({"report", "--sweep", sweep, "--out", m_dir.filePath("never")});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("broken") && r.err.contains("filter.kernel"), qPrintable(r.err));
+        QVERIFY2(r.err.count("filter.kernel") == 1, qPrintable("the key is named once:\n" + r.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never")));
+        const Run misspelt = shadowlab({"report", "--sweep", "virtaul", "--out", m_dir.filePath("never")});
+        QCOMPARE(misspelt.exitCode, 2);
+        QVERIFY2(misspelt.err.contains("did you mean 'virtual'"), qPrintable(misspelt.err));
         QVERIFY(!QFile::exists(m_dir.filePath("never")));
     }
 

@@ -10,6 +10,9 @@
 #include "ShadowTechnique.h"
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QImage>
 #include <QRandomGenerator>
 #include <QRegularExpression>
@@ -280,6 +283,44 @@ private slots:
         const QString areaChart = page.mid(second, page.indexOf("</svg>", second) - second);
         QVERIFY(areaChart.contains("class=\"label\">pcss<"));
         QVERIFY(areaChart.contains("spread noise"));
+    }
+
+    // A walk not taken (--flicker-frames 0 or 1) is not "no flicker": every writer says it was
+    // not measured, where a measured row gives its figure.
+    void unmeasuredFlickerIsNotZero()
+    {
+        std::vector<ReportRow> rows{counted("hard", 40.0, 5.0, 0.3), counted("pcf", 30.0, 7.0, 0.3)};
+        markParetoFronts(rows);
+        QTemporaryDir dir;
+        ReportFacts facts;
+        facts.scene = "seed";
+        facts.size = QSize(640, 360);
+        writeReport(dir.path(), rows, facts);
+        QFile csv(dir.filePath("report.csv")), json(dir.filePath("report.json")), html(dir.filePath("report.html"));
+        QVERIFY(csv.open(QIODevice::ReadOnly) && json.open(QIODevice::ReadOnly) && html.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).split('\n', Qt::SkipEmptyParts);
+        const QStringList header = lines.at(0).split(',');
+        const qsizetype flips = header.indexOf("flicker_pct"), change = header.indexOf("flicker_change_pct");
+        QVERIFY(flips >= 0 && change >= 0);
+        for (qsizetype i = 1; i < lines.size(); ++i) {
+            const QStringList cells = lines[i].split(',');
+            QVERIFY2(cells.value(flips).isEmpty() && cells.value(change).isEmpty(), qPrintable(lines[i]));
+        }
+        const QJsonArray jsonRows = QJsonDocument::fromJson(json.readAll()).object().value("rows").toArray();
+        QCOMPARE(jsonRows.size(), 2);
+        for (const QJsonValue& r : jsonRows)
+            QVERIFY(r.toObject().value("flicker").toObject().value("flips_pct").isNull());
+        QVERIFY(QString::fromUtf8(html.readAll()).contains("Not measured (--flicker-frames 0"));
+
+        for (ReportRow& r : rows) {
+            r.flicker.frames = 8;
+            r.flicker.flicker = 0.0002;
+        }
+        writeReport(dir.path(), rows, facts);
+        QFile again(dir.filePath("report.csv"));
+        QVERIFY(again.open(QIODevice::ReadOnly));
+        const QStringList measured = QString::fromUtf8(again.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(measured.at(1).split(',').value(flips), QStringLiteral("0.0200"));
     }
 
     void zoomFindsTheErrors()

@@ -109,7 +109,7 @@ private Q_SLOTS:
         QTest::newRow("negative bias") << "bias.min" << "-0.1" << "[0, 100]";
         QTest::newRow("fov 180") << "light.fov" << "180" << "(0, 180)";
         QTest::newRow("fov 0") << "light.fov" << "0" << "(0, 180)";
-        QTest::newRow("even kernel") << "filter.kernel" << "4" << "odd";
+        QTest::newRow("even kernel") << "filter.kernel" << "4" << "is even; it must be odd";
         QTest::newRow("kernel 11") << "filter.kernel" << "11" << "[1, 9]";
         QTest::newRow("map too small") << "map.size" << "8" << "[16, 16384]";
         QTest::newRow("map huge") << "map.size" << "100000" << "[16, 16384]";
@@ -279,6 +279,7 @@ private Q_SLOTS:
         } catch (const SettingsError& e) {
             QCOMPARE(e.key(), QString("filter.kernel"));
             QVERIFY(QString(e.what()).contains("bad.json"));
+            QVERIFY2(QString(e.what()).count("filter.kernel") == 1, e.what());     // the file, then the key once
         }
     }
 

@@ -6,6 +6,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace shadowlab::cli {
 
 int runAudit(const QStringList& arguments)
@@ -22,9 +24,13 @@ int runAudit(const QStringList& arguments)
         const bool json = parser.isSet(QStringLiteral("json"));
         QJsonArray rows;
         int failed = 0;
+        // The case column as wide as the longest name, so every row's result lines up.
+        int nameWidth = 4;
+        for (const AuditCase& c : auditCatalogue())
+            nameWidth = std::max(nameWidth, int(c.name.size()));
         if (!json)
             out() << "renderer: " << headless.renderer().rendererString() << "\n\n"
-                  << QStringLiteral("%1 %2 %3 %4\n").arg(QStringLiteral("case"), -44).arg(QStringLiteral("result"), -6)
+                  << QStringLiteral("%1 %2 %3 %4\n").arg(QStringLiteral("case"), -nameWidth).arg(QStringLiteral("result"), -6)
                          .arg(QStringLiteral("error"), -8).arg(QStringLiteral("expected / what happened"));
         for (const AuditCase& c : auditCatalogue()) {
             const AuditOutcome o = runAuditCase(c, headless);
@@ -41,9 +47,9 @@ int runAudit(const QStringList& arguments)
                 rows.append(row);
                 continue;
             }
-            out() << QStringLiteral("%1 %2 %3 %4\n").arg(c.name, -44).arg(o.pass ? QStringLiteral("pass") : QStringLiteral("FAIL"), -6)
+            out() << QStringLiteral("%1 %2 %3 %4\n").arg(c.name, -nameWidth).arg(o.pass ? QStringLiteral("pass") : QStringLiteral("FAIL"), -6)
                          .arg(error, -8).arg(c.expected)
-                  << QString(61, QLatin1Char(' ')) << "-> " << o.happened << '\n';
+                  << QString(nameWidth + 17, QLatin1Char(' ')) << "-> " << o.happened << '\n';
             out().flush();
         }
         if (json)

@@ -6,6 +6,7 @@
 #include "SampleStats.h"
 #include "SceneLibrary.h"
 #include "SettingsKeys.h"
+#include "SettingsSummary.h"
 #include "ShadowTechnique.h"
 #include "TutorialAnchor.h"
 
@@ -149,6 +150,13 @@ QJsonObject statsJson(const SampleStats& s)
             {QStringLiteral("p90_ms"), s.p90},   {QStringLiteral("min_ms"), s.min},       {QStringLiteral("max_ms"), s.max}};
 }
 
+// The same for counts (pages a frame): no unit in the names.
+QJsonObject countsJson(const SampleStats& s)
+{
+    return {{QStringLiteral("count"), s.count}, {QStringLiteral("median"), s.median}, {QStringLiteral("p10"), s.p10},
+            {QStringLiteral("p90"), s.p90},     {QStringLiteral("min"), s.min},       {QStringLiteral("max"), s.max}};
+}
+
 // Per cascade or cube face: how often it was drawn and its wall time when it was.
 QJsonArray viewsJson(const Phase& p)
 {
@@ -269,12 +277,12 @@ std::vector<Phase> makePhases(const BenchRequest& r)
 QString configurationSummary(const BenchRequest& r)
 {
     const Settings& settings = r.settings;
-    return QStringLiteral("scene %1, %2x%3, map %4x%4 %5, filter %6, bias slope %7 min %8")
+    // The map as laid out ("2048² ortho", "4 cascades of 2048²", "virtual map of 900 pages of 128²").
+    return QStringLiteral("scene %1, %2x%3, map: %4 %5, filter %6, bias slope %7 min %8")
         .arg(settings.scene)
         .arg(r.size.width())
         .arg(r.size.height())
-        .arg(settings.map.size)
-        .arg(toString(settings.map.format), filterLabel(settings.filter))
+        .arg(mapLayoutSummary(settings), toString(settings.map.format), filterLabel(settings.filter))
         .arg(settings.bias.slope)
         .arg(settings.bias.min);
 }
@@ -289,8 +297,8 @@ QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
             {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
             {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
             {QStringLiteral("shadow_draws"), r.shadowDraws},
-            {QStringLiteral("virtual_pages_drawn"), statsJson(summarize(r.pagesDrawn))},
-            {QStringLiteral("virtual_pages_resident"), statsJson(summarize(r.pagesResident))},
+            {QStringLiteral("virtual_pages_drawn"), countsJson(summarize(r.pagesDrawn))},
+            {QStringLiteral("virtual_pages_resident"), countsJson(summarize(r.pagesResident))},
             {QStringLiteral("texel_world_size_as_set"), r.last.texelWorldSizeBeforeFit},
             {QStringLiteral("texel_world_size"), r.last.texelWorldSize},
             {QStringLiteral("shadow_pass_gpu"), gpu(r.shadow)},
@@ -344,28 +352,46 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
                  .toJson(QJsonDocument::Indented);
 }
 
-// One phase's table; a software renderer's "GPU" rows are left out (see printText).
+// One phase's table; a software renderer's "GPU" rows are left out (see printText). The
+// tutorial's program is timed as a whole frame only, and a phase without shadows has no
+// shadow pass to time or texel to size: their rows would only say something untrue.
 void printPhase(const Phase& r, const BenchRequest& request, bool software)
 {
     const int frames = request.frames;
     out() << '\n' << r.name << " (" << r.description << "), " << frames << " frames after " << request.warmup << " warm-up\n";
     out() << statsHeader() << '\n';
+    if (r.anchor) {
+        out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << "   (its passes are not timed apart)\n";
+        return;
+    }
+    const bool shadows = r.settings.shadow.enabled;
     const QString runs = QStringLiteral("   run in %1/%2 frames").arg(r.shadowPassesRun).arg(frames)
                          + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws));
-    if (!software)
+    if (!shadows)
+        out() << "  " << QStringLiteral("shadow pass").leftJustified(kLabelWidth) << "   none: shadow.enabled=false\n";
+    if (shadows && !software)
         out() << statsRow(QStringLiteral("shadow pass (GPU)"), summarize(r.shadow)) << '\n';
-    out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << runs << '\n';
+    if (shadows)
+        out() << statsRow(QStringLiteral("shadow pass (wall)"), summarize(r.shadowWall)) << runs << '\n';
     if (!r.blurWall.empty())
         out() << statsRow(QStringLiteral("  of which blur (wall)"), summarize(r.blurWall)) << "   (moments blur and mips)\n";
-    if (!r.pagesDrawn.empty()) {
-        out() << statsRow(QStringLiteral("virtual pages drawn"), summarize(r.pagesDrawn)) << "   a frame\n";
-        out() << statsRow(QStringLiteral("virtual pages resident"), summarize(r.pagesResident)) << '\n';
-    }
     if (!software)
         out() << statsRow(QStringLiteral("lit pass (GPU)"), summarize(r.lit)) << '\n';
     out() << statsRow(QStringLiteral("lit pass (wall)"), summarize(r.litWall)) << '\n';
     out() << statsRow(QStringLiteral("frame (wall)"), summarize(r.wall)) << '\n';
-    out() << "  " << formatTexelLine(r.last) << '\n';
+    if (!r.pagesDrawn.empty()) {
+        // Counts, not times: apart from the table of milliseconds.
+        const SampleStats drawn = summarize(r.pagesDrawn), resident = summarize(r.pagesResident);
+        out() << QStringLiteral("  virtual pages a frame: %1 drawn (p10 %2, p90 %3), %4 resident (p10 %5, p90 %6)\n")
+                     .arg(drawn.median)
+                     .arg(drawn.p10)
+                     .arg(drawn.p90)
+                     .arg(resident.median)
+                     .arg(resident.p10)
+                     .arg(resident.p90);
+    }
+    if (shadows)
+        out() << "  " << formatTexelLine(r.last) << '\n';
     for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
         const bool cube = r.settings.light.type == LightType::Point;
         out() << statsRow(QStringLiteral("  %1 %2 (wall)").arg(cube ? QStringLiteral("face") : QStringLiteral("cascade")).arg(v),

@@ -90,7 +90,8 @@ void addReportOptions(QCommandLineParser& parser)
     addSettingsOptions(parser);
     parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
     parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, filterable (moment techniques, blur "
-                                     "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not, and sdsm), around (the settings given, "
+                                     "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not, and sdsm), warp (lispsm against "
+                                     "no warp at three light placements, its strength, with cascades), virtual (virtual maps against one map and stabilised cascades of the same memory), around (the settings given, "
                                      "one change at a time, as the accuracy dock sweeps), or a JSON file (default: default)."),
                       QStringLiteral("name|file.json"), QStringLiteral("default")});
     parser.addOption({QStringLiteral("out"), QStringLiteral("Folder for report.csv, report.json and report.html."), QStringLiteral("dir")});

@@ -7,7 +7,30 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace shadowlab::cli {
+
+namespace {
+
+// `text` in lines of at most `width` characters, broken between words (a longer word alone).
+QStringList wrapWords(const QString& text, qsizetype width)
+{
+    QStringList lines;
+    QString line;
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        if (!line.isEmpty() && line.size() + 1 + word.size() > width) {
+            lines << line;
+            line.clear();
+        }
+        line += (line.isEmpty() ? QString() : QStringLiteral(" ")) + word;
+    }
+    if (!line.isEmpty())
+        lines << line;
+    return lines;
+}
+
+} // namespace
 
 int runSettings(const QStringList& arguments)
 {
@@ -41,10 +64,19 @@ int runSettings(const QStringList& arguments)
             out() << QJsonDocument(keys).toJson(QJsonDocument::Indented);
             return kExitOk;
         }
-        out() << QStringLiteral("%1 %2 %3\n").arg(QStringLiteral("key"), -21).arg(QStringLiteral("default"), -16).arg(QStringLiteral("range"));
+        // Columns as wide as their widest entry; the help wrapped under the key's column.
+        qsizetype keyWidth = 3, defaultWidth = 7;
         for (const SettingKey& k : settingKeys()) {
-            out() << QStringLiteral("%1 %2 %3\n").arg(k.key, -21).arg(settingValue(defaults, k.key), -16).arg(k.range);
-            out() << QStringLiteral("%1 %2\n").arg(QString(), -21).arg(k.help);
+            keyWidth = std::max(keyWidth, k.key.size());
+            defaultWidth = std::max(defaultWidth, settingValue(defaults, k.key).size());
+        }
+        const int keyColumn = -int(keyWidth), defaultColumn = -int(defaultWidth);
+        out() << QStringLiteral("%1  %2  %3\n").arg(QStringLiteral("key"), keyColumn).arg(QStringLiteral("default"), defaultColumn).arg(QStringLiteral("range"));
+        const QString indent(keyWidth + 2, QLatin1Char(' '));
+        for (const SettingKey& k : settingKeys()) {
+            out() << QStringLiteral("%1  %2  %3\n").arg(k.key, keyColumn).arg(settingValue(defaults, k.key), defaultColumn).arg(k.range);
+            for (const QString& line : wrapWords(k.help, std::max<qsizetype>(100 - indent.size(), 40)))
+                out() << indent << line << '\n';
         }
         out().flush();
         return kExitOk;

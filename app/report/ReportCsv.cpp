@@ -22,11 +22,13 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
 {
     // Times in ms, errors in percent of the measured pixels (MAE and RMSE in percent of full
     // visibility), as the page shows them; every column says its unit, but dssim (1 - mean
-    // SSIM), a plain number.
+    // SSIM), a plain number. Flicker not measured (--flicker-frames 0) is empty, not 0: no
+    // flicker is a finding.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
                                  "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct\n");
     for (const ReportRow& r : rows) {
+        const bool flickerMeasured = r.flicker.frames > 1;
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
         csv += QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median),
@@ -34,7 +36,8 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                            number(r.frame.median), number(r.frame.p10), number(r.frame.p90), number(100 * h.misclassified, 4),
                            number(100 * h.falseShadow, 4), number(100 * h.falseLight, 4), number(100 * h.mae, 4), number(100 * h.rmse, 4),
                            number(100 * a.mae, 4), number(100 * a.rmse, 4), r.paretoFront ? QStringLiteral("1") : QStringLiteral("0"), csvField(r.light),
-                           number(100 * r.flicker.flicker, 4), number(100 * r.flicker.meanChange, 4),
+                           flickerMeasured ? number(100 * r.flicker.flicker, 4) : QString(),
+                           flickerMeasured ? number(100 * r.flicker.meanChange, 4) : QString(),
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
                            r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6),
                            number(100 * r.density.fineShare(), 3)}

@@ -401,8 +401,8 @@ QString flickerSection(const std::vector<ReportRow>& rows)
 {
     const int frames = std::accumulate(rows.begin(), rows.end(), 0, [](int m, const ReportRow& r) { return std::max(m, r.flicker.frames); });
     QString section = QStringLiteral("<h2>Flicker</h2>");
-    if (frames == 0)
-        return section + QStringLiteral("<p>Not measured (--flicker-frames 0).</p>");
+    if (frames < 2)
+        return section + QStringLiteral("<p>Not measured (--flicker-frames %1: flicker is a change between two frames).</p>").arg(frames);
     const auto flickers = [](const ReportRow& r) { return 100 * std::max(r.flicker.flicker, r.flicker.meanChange) >= 0.0005; };
     const auto flickering = std::count_if(rows.begin(), rows.end(), flickers);
     section += QStringLiteral("<p>The camera the light is fitted to walks %1 frames in sub-texel steps while the measured pixels stay put: "

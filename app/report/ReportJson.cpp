@@ -25,6 +25,13 @@ QJsonObject metricsJson(const ErrorMetrics& m)
             {QStringLiteral("rmse_pct"), 100 * m.rmse}};
 }
 
+// A flicker figure, or null where the walk was not measured (--flicker-frames 0): no flicker
+// is a finding, not a default.
+QJsonValue flickerValue(const ReportRow& r, double fraction)
+{
+    return r.flicker.frames > 1 ? QJsonValue(100 * fraction) : QJsonValue();
+}
+
 } // namespace
 
 QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
@@ -51,9 +58,9 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("texel_density"), QJsonObject{{QStringLiteral("fine_texels_pct"), 100 * r.density.fineShare()},
                                                                                   {QStringLiteral("median_pixels_per_texel"), r.density.medianPixelsPerTexel},
                                                                                   {QStringLiteral("pixels"), r.density.counted}}},
-                                    {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), 100 * r.flicker.flicker},
-                                                                            {QStringLiteral("worst_pair_pct"), 100 * r.flicker.worstPair},
-                                                                            {QStringLiteral("mean_change_pct"), 100 * r.flicker.meanChange},
+                                    {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), flickerValue(r, r.flicker.flicker)},
+                                                                            {QStringLiteral("worst_pair_pct"), flickerValue(r, r.flicker.worstPair)},
+                                                                            {QStringLiteral("mean_change_pct"), flickerValue(r, r.flicker.meanChange)},
                                                                             {QStringLiteral("frames"), r.flicker.frames},
                                                                             {QStringLiteral("map_moves"), r.flicker.mapMoves}}}});
     }
