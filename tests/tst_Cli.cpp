@@ -110,6 +110,11 @@ private Q_SLOTS:
         const Run depth = shadowlab({"render", "--size", "32x32", "--depth-out", here.filePath("d.png")}, here.path());
         QVERIFY2(depth.exitCode == 0, qPrintable(depth.err));
         QVERIFY(!QFile::exists(here.filePath("shadowlab-seed.png")));
+
+        // A name safe in any shell or file system: no colon from city:N.
+        const Run city = shadowlab({"render", "--scene", "city:20", "--size", "32x18"}, here.path());
+        QVERIFY2(city.exitCode == 0, qPrintable(city.err));
+        QVERIFY2(QFile::exists(here.filePath("shadowlab-city-20.png")), qPrintable(city.out));
     }
 
     void helpAndVersionGoToStdoutAndSucceed_data()
@@ -187,9 +192,11 @@ private Q_SLOTS:
         QTest::newRow("empty model") << QStringList{models + "invalid/empty.obj"} << "empty.obj";
         QTest::newRow("file and --scene") << QStringList{models + "OBJ/box.obj", "--scene", "seed"} << "give one of them";
         QTest::newRow("two files") << QStringList{models + "OBJ/box.obj", models + "OBJ/box.obj"} << "unexpected argument";
-        QTest::newRow("preset, no display") << QStringList{"--preset", "acne"} << "no display";
+        // With no display, the offscreen command that shows the same settings.
+        QTest::newRow("preset, no display") << QStringList{"--preset", "acne"} << "shadowlab screenshot --preset acne --out window.png";
         QTest::newRow("scene, no display") << QStringList{"--scene", "seed"} << "no display";
-        QTest::newRow("model alone, no display") << QStringList{models + "OBJ/box.obj"} << "no display";
+        QTest::newRow("model alone, no display") << QStringList{models + "OBJ/box.obj"}
+                                                 << "shadowlab screenshot --scene " + models + "OBJ/box.obj --out window.png";
         QTest::newRow("model, no display") << QStringList{models + "OBJ/box.obj", "--set", "map.size=1024"} << "no display";
     }
 

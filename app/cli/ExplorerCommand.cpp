@@ -9,6 +9,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QRegularExpression>
 
 #include <optional>
 
@@ -38,6 +39,7 @@ int runExplorer(const QStringList& arguments)
     std::optional<Settings> settings;
     QString preset;
     QString backgroundScene;
+    QStringList given;      // the options as parsed (a file named alone as --scene file)
     try {
         if (!arguments.isEmpty()) {
             QCommandLineParser parser;
@@ -65,6 +67,7 @@ int runExplorer(const QStringList& arguments)
                 throw UsageError(QStringLiteral("a file and --scene both name the scene; give one of them"));
             if (!parseArguments(parser, QString(), rewritten))
                 return kExitOk;
+            given = rewritten;
             applyImportOptions(parser);
             // A file alone (as a file manager starts a program) opens in the window, in the
             // background; with other settings on top, or with no display to open on, it is read
@@ -92,8 +95,13 @@ int runExplorer(const QStringList& arguments)
 
     if (headlessPlatformNames().contains(QGuiApplication::platformName())) {
         // A window nobody can see would run forever: say what to do instead.
+        // The same settings, offscreen: the options the window was given, quoted for a shell.
+        QStringList same;
+        for (const QString& a : given)
+            same << (a.isEmpty() || a.contains(QRegularExpression(QStringLiteral("[^A-Za-z0-9_./:=,+-]"))) ? QStringLiteral("'%1'").arg(QString(a).replace(QLatin1Char('\''), QStringLiteral("'\\''"))) : a);
         err() << "shadowlab: there is no display, so the explorer cannot open.\n"
-              << "Render it offscreen instead: shadowlab screenshot --out window.png" << Qt::endl;
+              << "Render it offscreen instead: shadowlab screenshot " << (same.isEmpty() ? QString() : same.join(QLatin1Char(' ')) + QLatin1Char(' '))
+              << "--out window.png" << Qt::endl;
         return kExitBadInput;
     }
     MainWindow window;

@@ -8,6 +8,7 @@
 #include "RenderError.h"
 
 #include <QFileInfo>
+#include <QRegularExpression>
 
 #include <algorithm>
 
@@ -20,9 +21,11 @@ const SizeLimits kRenderSize{{1, 1}, {8192, 8192}, QStringLiteral("render keeps 
 
 // Without --out the scene goes to shadowlab-<scene>.png in the current folder; a file of that
 // name is never overwritten: the next free shadowlab-<scene>-2.png, -3, ... is taken instead.
+// Only [A-Za-z0-9._-] in the name ("city:50" is shadowlab-city-50.png), so it travels well.
 QString defaultScenePath(const QString& scene)
 {
-    const QString base = QStringLiteral("shadowlab-") + QFileInfo(scene).completeBaseName();
+    const QString base = QStringLiteral("shadowlab-")
+                         + QFileInfo(scene).completeBaseName().replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("-"));
     QString name = base + QStringLiteral(".png");
     for (int n = 2; QFileInfo::exists(name); ++n)
         name = QStringLiteral("%1-%2.png").arg(base).arg(n);

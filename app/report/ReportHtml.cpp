@@ -450,7 +450,7 @@ td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
 <p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
 Renderer: %6<br>Machine: %7<br>
 Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10 %);
-%11 Mrays/s; traced %12 time(s) for %13 configurations. Whole run: %14 s.</p>
+%11 Mrays/s; traced %12 for %13 configurations. Whole run: %14 s.</p>
 )")
         .arg(html(facts.scene))
         .arg(facts.size.width())
@@ -463,7 +463,7 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
         .arg(facts.lightRadius)
         .arg(percentText(100 * facts.areaNoiseFloor))
         .arg(number(facts.raysPerSecond * 1e-6, 2))
-        .arg(facts.referenceComputations)
+        .arg(facts.referenceComputations == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(facts.referenceComputations))
         .arg(rows.size())
         .arg(number(facts.seconds, 1));
 }
