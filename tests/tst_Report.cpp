@@ -323,6 +323,34 @@ private slots:
         QCOMPARE(measured.at(1).split(',').value(flips), QStringLiteral("0.0200"));
     }
 
+    // One ray a pixel reads every pixel as 0 or 1, so its spread says nothing: the noise floor
+    // is unknown there, not 0; from more rays it is given.
+    void oneRayAPixelHasNoKnownNoiseFloor()
+    {
+        std::vector<ReportRow> rows{counted("hard", 40.0, 5.0, 0.3)};
+        markParetoFronts(rows);
+        for (const int rays : {1, 256}) {
+            QTemporaryDir dir;
+            ReportFacts facts;
+            facts.scene = "seed";
+            facts.size = QSize(640, 360);
+            facts.areaSamplesPerPixel = rays;
+            facts.areaNoiseFloor = 0.0;
+            writeReport(dir.path(), rows, facts);
+            QFile json(dir.filePath("report.json")), html(dir.filePath("report.html"));
+            QVERIFY(json.open(QIODevice::ReadOnly) && html.open(QIODevice::ReadOnly));
+            const QJsonValue floor = QJsonDocument::fromJson(json.readAll()).object().value("area_noise_floor_pct");
+            const QString page = QString::fromUtf8(html.readAll());
+            if (rays == 1) {
+                QVERIFY(floor.isNull());
+                QVERIFY(page.contains("noise floor unknown from one ray a pixel") && page.contains("1 ray per pixel"));
+            } else {
+                QCOMPARE(floor.toDouble(-1.0), 0.0);
+                QVERIFY(page.contains("256 stratified rays per pixel") && page.contains("noise floor 0"));
+            }
+        }
+    }
+
     void zoomFindsTheErrors()
     {
         QImage errors(400, 200, QImage::Format_RGB32);

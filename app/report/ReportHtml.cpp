@@ -449,7 +449,7 @@ td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
 <h1>Shadow error against run time: %1</h1>
 <p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
 Renderer: %6<br>Machine: %7<br>
-Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a disk light of radius %9 (area; noise floor %10 %);
+Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of radius %9 (area; %10);
 %11 Mrays/s; traced %12 for %13 configurations. Whole run: %14 s.</p>
 )")
         .arg(html(facts.scene))
@@ -459,9 +459,11 @@ Reference: one shadow ray per pixel (hard) and %8 stratified rays per pixel of a
                                         : QString::number(facts.frames))
         .arg(facts.warmup)
         .arg(html(facts.renderer), html(facts.machine))
-        .arg(facts.areaSamplesPerPixel)
+        .arg(facts.areaSamplesPerPixel == 1 ? QStringLiteral("1 ray") : QStringLiteral("%1 stratified rays").arg(facts.areaSamplesPerPixel))
         .arg(facts.lightRadius)
-        .arg(percentText(100 * facts.areaNoiseFloor))
+        // One ray a pixel reads 0 or 1 everywhere and shows no spread: its noise is unknown, not 0.
+        .arg(facts.areaSamplesPerPixel > 1 ? QStringLiteral("noise floor %1 %").arg(percentText(100 * facts.areaNoiseFloor))
+                                           : QStringLiteral("noise floor unknown from one ray a pixel: use --area-samples 2 or more"))
         .arg(number(facts.raysPerSecond * 1e-6, 2))
         .arg(facts.referenceComputations == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(facts.referenceComputations))
         .arg(rows.size())

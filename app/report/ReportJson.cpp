@@ -73,7 +73,8 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                            {QStringLiteral("machine"), facts.machine},
                            {QStringLiteral("area_samples_per_pixel"), facts.areaSamplesPerPixel},
                            {QStringLiteral("light_radius"), facts.lightRadius},
-                           {QStringLiteral("area_noise_floor_pct"), 100 * facts.areaNoiseFloor},
+                           // One ray a pixel reads 0 or 1 everywhere, which shows no spread: not 0, unknown.
+                           {QStringLiteral("area_noise_floor_pct"), facts.areaSamplesPerPixel > 1 ? QJsonValue(100 * facts.areaNoiseFloor) : QJsonValue()},
                            {QStringLiteral("rays_per_second"), facts.raysPerSecond},
                            {QStringLiteral("reference_computations"), facts.referenceComputations},
                            {QStringLiteral("seconds"), facts.seconds},
