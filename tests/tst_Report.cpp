@@ -406,14 +406,19 @@ private slots:
         QVERIFY(cy["zero"] > cy["defaults"] + 10);   // 0 % has its own line below the lowest decade
         QVERIFY(svg.contains(">0 %<"));
 
-        // Labels: the defaults and the tutorial are named; no two labels overlap.
+        // Labels: the defaults and the tutorial are named; no two labels overlap, nor touch: two
+        // labels closer than a few pixels read as one word.
         static const QRegularExpression label(R"re(<text x="([\d.-]+)" y="([\d.-]+)" class="label">([^<]+)</text>)re");
         std::vector<QRectF> boxes;
         QStringList named;
         for (auto it = label.globalMatch(svg); it.hasNext();) {
             const auto m = it.next();
-            // A generous width for an 11 px sans-serif font: 6.4 px a character.
-            boxes.emplace_back(m.captured(1).toDouble(), m.captured(2).toDouble() - 10, 6.4 * m.captured(3).size(), 13);
+            // A generous width for an 11 px sans-serif font: 6.4 px a character, 10 for a wide
+            // one; and a pixel of clearance on each side.
+            double width = 0.0;
+            for (const QChar c : m.captured(3))
+                width += QStringLiteral("mwMW").contains(c) ? 10.0 : 6.4;
+            boxes.emplace_back(m.captured(1).toDouble() - 1, m.captured(2).toDouble() - 10, width + 2, 13);
             named << m.captured(3);
         }
         QVERIFY(named.contains("defaults") && named.contains("tutorial"));

@@ -32,7 +32,29 @@ QString pngDataUri(const QImage& image)
     return QStringLiteral("data:image/png;base64,") + QString::fromLatin1(bytes.toBase64());
 }
 
-constexpr double kCharWidth = 6.4;     // of the 11 px label font, generous, for placing labels
+constexpr double kLabelGap = 5.0;      // clear space around a label: labels that touch read as one word
+
+// A label's width in the 11 px sans-serif label font (DejaVu Sans's advances, rounded up): wide
+// letters count wide, so "msm" beside "vsm" is not taken for room.
+double labelWidth(const QString& text)
+{
+    double width = 0.0;
+    for (const QChar c : text) {
+        if (QStringLiteral("mW").contains(c))
+            width += 11.0;
+        else if (QStringLiteral("wM").contains(c))
+            width += 9.6;
+        else if (QStringLiteral("ijlI.,:;'|! ").contains(c))
+            width += 3.6;
+        else if (QStringLiteral("frt()[]").contains(c))
+            width += 4.8;
+        else if (c.isUpper())
+            width += 8.7;
+        else
+            width += 7.0;
+    }
+    return width;
+}
 constexpr double kLabelHeight = 13.0;
 
 // Colours of the lights' fronts and points, in the order the lights first appear.
@@ -283,9 +305,10 @@ QString pointLabels(const std::vector<ReportRow>& rows, ErrorAxis axis, const Ch
     for (const ReportRow* r : labelledRows(rows, axis)) {
         const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
         const double x = c.px(r->frame.median), y = c.py(errorPercent(*r, axis));
-        for (const Box& b : labelPlaces(x, y, kCharWidth * text.size())) {
+        for (const Box& b : labelPlaces(x, y, labelWidth(text))) {
             const bool inside = b.x0 >= c.left + 2 && b.x1 <= c.w - c.right && b.y0 >= c.top && b.y1 <= c.h - c.bottom;
-            if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); }))
+            const Box clear{b.x0 - kLabelGap, b.y0 - 1.0, b.x1 + kLabelGap, b.y1 + 1.0};
+            if (!inside || std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(clear); }))
                 continue;
             if (b.y1 < y - 4 - kLabelHeight || b.y0 > y + 4 + kLabelHeight) {
                 const double ly = b.y1 < y ? b.y1 : b.y0;
