@@ -53,6 +53,16 @@ ReportRow counted(const QString& label, double pixels, double medianMs, double s
     return row(label, 100.0 * pixels / kPixels, medianMs, spreadMs);
 }
 
+// What a report of seed at 640x360 states about its run.
+ReportFacts seedFacts()
+{
+    ReportFacts facts;
+    facts.scene = "seed";
+    facts.size = QSize(640, 360);
+    facts.areaSamplesPerPixel = 256;
+    return facts;
+}
+
 QStringList front(const std::vector<ReportRow>& rows)
 {
     QStringList names;
@@ -263,9 +273,7 @@ private slots:
         rows[2].flicker.mapMoves = 0;                                      // ... one because its maps never moved
         markParetoFronts(rows);
         QTemporaryDir dir;
-        ReportFacts facts;
-        facts.scene = "seed";
-        facts.size = QSize(640, 360);
+        const ReportFacts facts = seedFacts();
         writeReport(dir.path(), rows, facts);
         QFile file(dir.filePath("report.html"));
         QVERIFY(file.open(QIODevice::ReadOnly));
@@ -292,9 +300,7 @@ private slots:
         std::vector<ReportRow> rows{counted("hard", 40.0, 5.0, 0.3), counted("pcf", 30.0, 7.0, 0.3)};
         markParetoFronts(rows);
         QTemporaryDir dir;
-        ReportFacts facts;
-        facts.scene = "seed";
-        facts.size = QSize(640, 360);
+        const ReportFacts facts = seedFacts();
         writeReport(dir.path(), rows, facts);
         QFile csv(dir.filePath("report.csv")), json(dir.filePath("report.json")), html(dir.filePath("report.html"));
         QVERIFY(csv.open(QIODevice::ReadOnly) && json.open(QIODevice::ReadOnly) && html.open(QIODevice::ReadOnly));
@@ -331,9 +337,7 @@ private slots:
         markParetoFronts(rows);
         for (const int rays : {1, 256}) {
             QTemporaryDir dir;
-            ReportFacts facts;
-            facts.scene = "seed";
-            facts.size = QSize(640, 360);
+            ReportFacts facts = seedFacts();
             facts.areaSamplesPerPixel = rays;
             facts.areaNoiseFloor = 0.0;
             writeReport(dir.path(), rows, facts);
