@@ -18,6 +18,9 @@ struct FlickerResult {
     // Steps of the walk in which the light's maps moved. 0 with frames > 1: the casters, not the
     // camera, bound the fitted volume here, so this camera cannot show shimmer at all.
     int mapMoves = 0;
+    // Flicker is a change between two frames: with fewer (--flicker-frames 0 or 1) it was not
+    // measured, which is not "none".
+    bool measured() const { return frames > 1; }
 };
 
 // Flips between consecutive buffers of the same pixels (same size, same measuring camera);

@@ -75,6 +75,14 @@ struct ReportFacts {
     double raysPerSecond = 0.0;
     int referenceComputations = 0;
     double seconds = 0.0;       // the whole run
+
+    // One ray a pixel reads 0 or 1 everywhere and shows no spread: the noise floor is unknown.
+    bool areaNoiseKnown() const { return areaSamplesPerPixel > 1; }
+    // How often the reference was traced: "once", "3 times".
+    QString tracedText() const
+    {
+        return referenceComputations == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(referenceComputations);
+    }
 };
 
 // "ortho light at (-2, 4, -1) towards (0, 0, 0)": what makes two rows' errors comparable.

@@ -13,6 +13,7 @@ struct VirtualMapStats {
     int levelsCoarsened = 0;    // ... by at most this many levels
     int overflow = 0;           // coarsest-level pages that did not fit at all
     int poolPages = 0;
+    int finestLevel = -1;       // the finest level that serves one of the requests; -1 none
     int requestDraws = 0;       // draw calls of the request pass (0 when the requests were kept)
     bool requestsPending = false;   // asynchronous requests (the window) still on their way back
 };

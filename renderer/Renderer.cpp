@@ -279,17 +279,9 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
     m_virtualUniforms = m_virtual->uniforms(m_camera);
     stats.shadowDraws = draws;
-    // As rendered: the finest level that serves one of the frame's requests, not the layout's
-    // level 0, which the pixels of a view may never ask for.
-    if (const std::optional<VirtualLayout>& layout = m_virtual->currentLayout()) {
-        int finest = -1;
-        for (const VirtualPage& page : m_virtual->requests()) {
-            if ((finest < 0 || page.level < finest) && m_virtual->cache().slotOf(page))
-                finest = page.level;
-        }
-        if (finest >= 0)
-            stats.texelWorldSize = layout->texel(finest);
-    }
+    // As rendered: the finest level the frame's pixels read, not the layout's level 0.
+    if (stats.virtualPages.finestLevel >= 0)
+        stats.texelWorldSize = m_virtual->currentLayout()->texel(stats.virtualPages.finestLevel);
     if (stats.virtualPages.drawn == 0 && !invalidate)
         return;
     ++m_mapGeneration;

@@ -376,6 +376,10 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
     }
     stats.drawn = int(placed.draw.size());
     stats.resident = m_cache.resident();
+    for (const VirtualPage& page : m_requests) {
+        if ((stats.finestLevel < 0 || page.level < stats.finestLevel) && m_cache.slotOf(page))
+            stats.finestLevel = page.level;
+    }
     if (casterDraws)
         *casterDraws = draws;
     if (m_tableDirty || !placed.draw.empty()) {

@@ -27,6 +27,16 @@ bool takesValue(const QString& argument)
     return false;
 }
 
+// `word` as a POSIX shell reads it back: as it is where it holds nothing the shell treats
+// specially, else in single quotes.
+QString shellWord(const QString& word)
+{
+    static const QRegularExpression plain(QStringLiteral("^[A-Za-z0-9_./:=,+-]+$"));
+    if (plain.match(word).hasMatch())
+        return word;
+    return QStringLiteral("'%1'").arg(QString(word).replace(QLatin1Char('\''), QStringLiteral("'\\''")));
+}
+
 } // namespace
 
 int runExplorer(const QStringList& arguments)
@@ -98,7 +108,7 @@ int runExplorer(const QStringList& arguments)
         // The same settings, offscreen: the options the window was given, quoted for a shell.
         QStringList same;
         for (const QString& a : given)
-            same << (a.isEmpty() || a.contains(QRegularExpression(QStringLiteral("[^A-Za-z0-9_./:=,+-]"))) ? QStringLiteral("'%1'").arg(QString(a).replace(QLatin1Char('\''), QStringLiteral("'\\''"))) : a);
+            same << shellWord(a);
         err() << "shadowlab: there is no display, so the explorer cannot open.\n"
               << "Render it offscreen instead: shadowlab screenshot " << (same.isEmpty() ? QString() : same.join(QLatin1Char(' ')) + QLatin1Char(' '))
               << "--out window.png" << Qt::endl;

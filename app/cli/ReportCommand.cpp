@@ -236,8 +236,7 @@ ReportFacts reportFacts(const ReportRequest& request, const Renderer& renderer, 
 
 void printSummary(const ReportRequest& request, const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
-    out() << "configurations: " << rows.size() << ", reference traced "
-          << (facts.referenceComputations == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(facts.referenceComputations)) << " at "
+    out() << "configurations: " << rows.size() << ", reference traced " << facts.tracedText() << " at "
           << QString::number(facts.raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
     if (request.flickerFrames > 1)
         printFlicker(rows);

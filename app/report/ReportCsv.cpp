@@ -28,7 +28,7 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
                                  "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct\n");
     for (const ReportRow& r : rows) {
-        const bool flickerMeasured = r.flicker.frames > 1;
+        const bool flickerMeasured = r.flicker.measured();
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
         csv += QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median),

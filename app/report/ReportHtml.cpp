@@ -424,7 +424,7 @@ QString flickerSection(const std::vector<ReportRow>& rows)
 {
     const int frames = std::accumulate(rows.begin(), rows.end(), 0, [](int m, const ReportRow& r) { return std::max(m, r.flicker.frames); });
     QString section = QStringLiteral("<h2>Flicker</h2>");
-    if (frames < 2)
+    if (std::none_of(rows.begin(), rows.end(), [](const ReportRow& r) { return r.flicker.measured(); }))
         return section + QStringLiteral("<p>Not measured (--flicker-frames %1: flicker is a change between two frames).</p>").arg(frames);
     const auto flickers = [](const ReportRow& r) { return 100 * std::max(r.flicker.flicker, r.flicker.meanChange) >= 0.0005; };
     const auto flickering = std::count_if(rows.begin(), rows.end(), flickers);
@@ -432,7 +432,7 @@ QString flickerSection(const std::vector<ReportRow>& rows)
                               "the share of receiver pixels whose shadow flips between consecutive frames, and the mean change of visibility.")
                    .arg(frames);
     // Flicker of 0 means nothing where the maps never moved: say which it is.
-    const auto still = std::count_if(rows.begin(), rows.end(), [](const ReportRow& r) { return r.flicker.frames > 1 && r.flicker.mapMoves == 0; });
+    const auto still = std::count_if(rows.begin(), rows.end(), [](const ReportRow& r) { return r.flicker.measured() && r.flicker.mapMoves == 0; });
     if (still > 0)
         section += QStringLiteral(" In %1 of %2 configurations the light's maps did not move at all during the walk: the casters, not the "
                                   "camera's view, bound the fitted volume, so this camera cannot show shimmer there (a camera whose view cuts "
@@ -484,11 +484,10 @@ Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of r
         .arg(html(facts.renderer), html(facts.machine))
         .arg(facts.areaSamplesPerPixel == 1 ? QStringLiteral("1 ray") : QStringLiteral("%1 stratified rays").arg(facts.areaSamplesPerPixel))
         .arg(facts.lightRadius)
-        // One ray a pixel reads 0 or 1 everywhere and shows no spread: its noise is unknown, not 0.
-        .arg(facts.areaSamplesPerPixel > 1 ? QStringLiteral("noise floor %1 %").arg(percentText(100 * facts.areaNoiseFloor))
+        .arg(facts.areaNoiseKnown() ? QStringLiteral("noise floor %1 %").arg(percentText(100 * facts.areaNoiseFloor))
                                            : QStringLiteral("noise floor unknown from one ray a pixel: use --area-samples 2 or more"))
         .arg(number(facts.raysPerSecond * 1e-6, 2))
-        .arg(facts.referenceComputations == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(facts.referenceComputations))
+        .arg(facts.tracedText())
         .arg(rows.size())
         .arg(number(facts.seconds, 1));
 }

@@ -29,7 +29,7 @@ QJsonObject metricsJson(const ErrorMetrics& m)
 // is a finding, not a default.
 QJsonValue flickerValue(const ReportRow& r, double fraction)
 {
-    return r.flicker.frames > 1 ? QJsonValue(100 * fraction) : QJsonValue();
+    return r.flicker.measured() ? QJsonValue(100 * fraction) : QJsonValue();
 }
 
 } // namespace
@@ -73,8 +73,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                            {QStringLiteral("machine"), facts.machine},
                            {QStringLiteral("area_samples_per_pixel"), facts.areaSamplesPerPixel},
                            {QStringLiteral("light_radius"), facts.lightRadius},
-                           // One ray a pixel reads 0 or 1 everywhere, which shows no spread: not 0, unknown.
-                           {QStringLiteral("area_noise_floor_pct"), facts.areaSamplesPerPixel > 1 ? QJsonValue(100 * facts.areaNoiseFloor) : QJsonValue()},
+                           {QStringLiteral("area_noise_floor_pct"), facts.areaNoiseKnown() ? QJsonValue(100 * facts.areaNoiseFloor) : QJsonValue()},
                            {QStringLiteral("rays_per_second"), facts.raysPerSecond},
                            {QStringLiteral("reference_computations"), facts.referenceComputations},
                            {QStringLiteral("seconds"), facts.seconds},
