@@ -30,6 +30,10 @@ SampleStats summarize(std::vector<double> samples)
     s.p90 = percentile(samples, 0.9);
     s.min = samples.front();
     s.max = samples.back();
+    double sum = 0.0;
+    for (double v : samples)
+        sum += v;
+    s.mean = sum / double(samples.size());
     return s;
 }
 

@@ -12,6 +12,7 @@ struct SampleStats {
     double p90 = 0.0;   // 90th percentile
     double min = 0.0;
     double max = 0.0;
+    double mean = 0.0;  // what a run of such frames costs on average, where a few slow ones count
 };
 
 // Percentiles by linear interpolation between order statistics; all zero for no samples.

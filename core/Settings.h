@@ -57,6 +57,7 @@ struct LightSettings {
 struct MapSettings {
     int size = 2048;                        // texels per side, [16, kMaxImageSide] and <= GL_MAX_TEXTURE_SIZE
     DepthFormat format = DepthFormat::Depth24;
+    int slices = 4;                         // redraws between clears of a depth24 map, [1, 8] (ShadowMap::beginDraw)
 
     bool operator==(const MapSettings&) const = default;
 };

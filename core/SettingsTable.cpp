@@ -245,6 +245,12 @@ void mapKeys(std::vector<Entry>& e)
                                      .look = {.label = QStringLiteral("Depth format"), .group = kShadowMap}},
                                     kFormatNames,
                                     [](auto& s) -> auto& { return s.map.format; }));
+    e.push_back(whole({.key = "map.slices",
+                       .range = {.lo = 1, .hi = 8},
+                       .help = "Redraws of a depth24 map between clears: each writes a nearer 1/n of the depth range, so what earlier ones left reads lit, as cleared texels do (the same shadows, one clear in n); "
+                               "costs log2(n) of the 24 bits; 1 clears every redraw. Ortho maps only: perspective maps, cascades, virtual pages and depth32f clear every time",
+                       .look = {.label = QStringLiteral("Slices"), .sliderLow = 1.0, .sliderHigh = 8.0, .group = kShadowMap}},
+                      [](auto& s) -> auto& { return s.map.slices; }));
     e.push_back(choice<BiasSpace>({.key = "bias.space",
                                    .help = "Unit of bias.slope and bias.min: world units along the ray to the light (same offset for any near/far, map size or fit), texels of the map (follows the resolution), or depth-buffer units (the classic form, whose world offset grows with far - near)",
                                    .look = {.label = QStringLiteral("Unit"), .group = kBias}},

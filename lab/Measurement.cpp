@@ -46,6 +46,7 @@ void recordFrame(FrameSamples& s, const FrameStats& f)
         if (f.blurPassWallMs > 0.0)
             s.blurWall.push_back(f.blurPassWallMs);
         ++s.shadowPassesRun;
+        s.shadowMapClears += f.shadowMapCleared;
         s.shadowDraws = f.shadowDraws;
     }
     if (s.viewWall.size() < f.viewRendered.size()) {

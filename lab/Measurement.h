@@ -25,6 +25,7 @@ struct FrameSamples {
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     std::vector<double> blurWall;   // of shadowWall, the moments blur and mips (moment techniques only)
     int shadowPassesRun = 0;
+    int shadowMapClears = 0;    // of those, the passes that cleared the map (map.slices)
     int shadowDraws = 0;
     // shadow.virtual: pages drawn and resident, every frame.
     std::vector<double> pagesDrawn, pagesResident;

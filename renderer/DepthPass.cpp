@@ -6,8 +6,9 @@ namespace shadowlab {
 
 DepthPass::DepthPass(GlFunctions* gl) : m_gl(gl), m_draw(gl, true), m_reversedDepth(hasClipControl()) {}
 
-void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
+void DepthPass::clear(ShadowMap& map, bool reversedDepth)
 {
+    map.cleared(QRect(0, 0, map.width(), map.height()));
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
     state.viewport = QRect(0, 0, map.width(), map.height());
@@ -17,7 +18,13 @@ void DepthPass::clear(const ShadowMap& map, bool reversedDepth)
     m_gl->glClearDepth(1.0);
 }
 
-void DepthPass::clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile)
+void DepthPass::clearTile(ShadowMap& map, bool reversedDepth, const QRect& tile)
+{
+    map.cleared(tile);
+    clearTileOnly(map, reversedDepth, tile);
+}
+
+void DepthPass::clearTileOnly(const ShadowMap& map, bool reversedDepth, const QRect& tile)
 {
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
@@ -31,17 +38,22 @@ void DepthPass::clearTile(const ShadowMap& map, bool reversedDepth, const QRect&
     m_gl->glDisable(GL_SCISSOR_TEST);
 }
 
-int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, bool cutouts)
+int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, bool cutouts, int slices)
 {
-    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()), cutouts);
+    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()), cutouts, slices);
 }
 
-int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile,
-                          bool cutouts)
+int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
+                          bool cutouts, int slices)
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
-    clearTile(map, reversed, tile);
+    const ShadowMap::Draw slice = map.beginDraw(tile, slices);
+    if (slice.clear)
+        clearTileOnly(map, reversed, tile);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
+    state.depthRangeNear = slice.slice.offset;
+    state.depthRangeFar = slice.slice.offset + slice.slice.scale;
     state.viewport = tile;
     state.depthTest = true;
     state.depthFunc = reversed ? GL_GREATER : GL_LESS;
@@ -55,7 +67,10 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     // Offsets push depth away from the light, which is downward with reversed depth.
     const float sign = reversed ? -1.0f : 1.0f;
     state.polygonOffsetFactor = sign * float(bias.polygonFactor);
-    state.polygonOffsetUnits = sign * float(bias.polygonUnits);
+    // Units are steps of the depth buffer, the same wherever they land; in a slice 1/n of the
+    // range a step is n steps of conventional depth, so the units shrink by the slice's scale
+    // to push by the same depth (the factor's slope term follows the range on its own).
+    state.polygonOffsetUnits = sign * float(bias.polygonUnits * slice.slice.scale);
     applyPassState(m_gl, state);
     // Nothing outside the tile, whatever the rasteriser's guard band does.
     m_gl->glEnable(GL_SCISSOR_TEST);

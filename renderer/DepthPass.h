@@ -23,18 +23,22 @@ public:
     bool supportsReversedDepth() const { return m_reversedDepth; }
 
     // Clears the map to the far depth: every lookup compares lit.
-    void clear(const ShadowMap& map, bool reversedDepth);
-    // Clears, then draws the casters. Returns the number of draw calls issued.
-    int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, bool cutouts = true);
+    void clear(ShadowMap& map, bool reversedDepth);
+    // Clears, then draws the casters; with `slices` > 1 (map.slices) a whole 24-bit map is
+    // cleared once in that many draws and drawn into its next depth slice between
+    // (ShadowMap::beginDraw). Returns the number of draw calls issued.
+    int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, bool cutouts = true, int slices = 1);
     // The same for one tile of a map of several views (`tile` in texels): clears the tile only.
-    int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, const ShadowMap& map, const QRect& tile,
-                   bool cutouts = true);
-    void clearTile(const ShadowMap& map, bool reversedDepth, const QRect& tile);
+    int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
+                   bool cutouts = true, int slices = 1);
+    void clearTile(ShadowMap& map, bool reversedDepth, const QRect& tile);
 
     // Whether the cut-out variant has been compiled (a scene with cut-outs was drawn).
     bool hasCutoutVariant() const { return m_draw.hasCutoutVariant(); }
 
 private:
+    void clearTileOnly(const ShadowMap& map, bool reversedDepth, const QRect& tile);
+
     GlFunctions* m_gl;
     DepthOnlyDraw m_draw;
     bool m_reversedDepth = false;

@@ -106,6 +106,8 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
         program.set(program.uniform("uSource"), int(kSourceUnit));
         const QSize source = level == 0 ? mapSize : levelSize(level - 1);
         m_gl->glUniform2i(program.uniform("uSourceSize"), source.width(), source.height());
+        if (level == 0)
+            program.set(program.uniform("uShadowSlice"), map.slice().uniform());
         if (level == 0 && m_contents == Contents::Written)
             program.set(program.uniform("uEmpty"), reversedDepth ? 0.0f : 1.0f);
         if (level == 0) {

@@ -21,6 +21,7 @@ public:
         key.cullFront = settings.bias.cullFront;
         key.polygonFactor = settings.bias.polygonFactor;
         key.polygonUnits = settings.bias.polygonUnits;
+        key.slices = ShadowMap::slicesFor(settings);
         return key;
     }
 
@@ -36,7 +37,7 @@ public:
 
     int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double*) override
     {
-        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, settings.shadow.cutouts);
+        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, settings.shadow.cutouts, ShadowMap::slicesFor(settings));
     }
 
 private:

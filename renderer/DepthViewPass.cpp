@@ -15,7 +15,8 @@ DepthViewPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       farPlane(program.uniform("uFar")),
       uvOffset(program.uniform("uUvOffset")),
       uvScale(program.uniform("uUvScale")),
-      span(program.uniform("uSpan"))
+      span(program.uniform("uSpan")),
+      slice(program.uniform("uShadowSlice"))
 {
 }
 
@@ -72,7 +73,7 @@ std::optional<DepthSpan> DepthViewPass::measure(const ShadowMap& map, const Ligh
     return DepthSpan{raw->first, raw->second};
 }
 
-void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target, const QRectF& visible,
+void DepthViewPass::render(const ShadowMap& map, const LightFrame& light, const RenderTarget& target, const QRectF& visible,
                            const QRect& viewport, const std::optional<DepthSpan>& span)
 {
     QStringList defines;
@@ -95,7 +96,8 @@ void DepthViewPass::render(GLuint depthTexture, const LightFrame& light, const R
     p.program.set(p.uvScale, glm::vec2(float(visible.width()), float(visible.height())));
     const DepthSpan shown = span.value_or(DepthSpan{});
     p.program.set(p.span, glm::vec2(float(shown.nearest), float(shown.farthest)));
-    draw(depthTexture);
+    p.program.set(p.slice, map.slice().uniform());
+    draw(map.texture());
 }
 
 void DepthViewPass::renderMoments(GLuint momentsTexture, const Settings& settings, const RenderTarget& target, const QRectF& visible,

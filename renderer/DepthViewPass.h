@@ -42,7 +42,7 @@ public:
     // `visible` is the part of the map shown, in map coordinates ([0, 1]^2 is the whole map,
     // y up); it is stretched over `viewport` (GL pixels, y up; empty: the whole target).
     // `span` stretches the ramp (nullopt: the whole [0, 1]).
-    void render(GLuint depthTexture, const LightFrame& light, const RenderTarget& target,
+    void render(const ShadowMap& map, const LightFrame& light, const RenderTarget& target,
                 const QRectF& visible = QRectF(0.0, 0.0, 1.0, 1.0), const QRect& viewport = QRect(),
                 const std::optional<DepthSpan>& span = std::nullopt);
     // The ramp itself from near (left) to far (right) over `viewport`: the legend's colour bar.
@@ -67,7 +67,7 @@ private:
     struct Program {
         Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
-        GLint depth, nearPlane, farPlane, uvOffset, uvScale, span;
+        GLint depth, nearPlane, farPlane, uvOffset, uvScale, span, slice;
     };
     Program& program(const QStringList& defines);
 

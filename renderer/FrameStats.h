@@ -31,6 +31,7 @@ struct FrameStats {
     double blurPassWallMs = 0.0;        // of shadowPassWallMs, the moments blur and mip build (moment techniques)
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
+    bool shadowMapCleared = false;      // the pass cleared the map (map.slices: once in that many passes)
     int litDraws = 0;                   // draw calls (a receiver straddling the shadow reach counts twice)
     // Of the lit pass's draws, those of receivers that no caster reaches, shaded without a
     // shadow lookup (core/ShadowReach.h), and whether it masked straddling receivers by stencil.

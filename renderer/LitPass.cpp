@@ -102,6 +102,12 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     }
     if (settings.shadow.enabled && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
+    // A depth map drawn into slices (map.slices) is read through the slice its last draw wrote.
+    // ShadowMap::slicesFor keeps the maps that are never sliced (cascades, perspective, virtual)
+    // on the variant without.
+    const bool readsDepth = std::any_of(technique.samplers.begin(), technique.samplers.end(), [](ShadowSampler s) { return s != ShadowSampler::Moments; });
+    if (lookups && readsDepth && ShadowMap::slices(ShadowMap::slicesFor(settings), settings.map.format, reversedDepth))
+        defines << QStringLiteral("DEPTH_SLICES");
     if (lookups && settings.bias.space == BiasSpace::Depth)
         defines << QStringLiteral("BIAS_DEPTH");
     else if (lookups && settings.bias.space == BiasSpace::Texel)
@@ -230,6 +236,7 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
         p.program.set(p.techniqueUniform(u.name), u.value);
     p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
+    p.program.set(p.techniqueUniform("uShadowSlice"), map->slice().uniform());
     // One view's position is taken in the vertex stage, with the normal offset in world units
     // from its texel (at unit distance for a perspective light), the wider axis.
     p.program.set(p.normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));

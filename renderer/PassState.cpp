@@ -50,6 +50,7 @@ void applyPassState(GlFunctions* gl, const PassState& state)
     gl->glDepthFunc(state.depthFunc);
     gl->glDepthMask(state.depthWrite ? GL_TRUE : GL_FALSE);
     enable(gl, GL_DEPTH_CLAMP, state.depthClamp);
+    gl->glDepthRange(state.depthRangeNear, state.depthRangeFar);
     enable(gl, GL_CULL_FACE, state.cullFace != GL_NONE);
     if (state.cullFace != GL_NONE)
         gl->glCullFace(state.cullFace);

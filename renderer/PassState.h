@@ -15,6 +15,8 @@ struct PassState {
     GLenum depthFunc = GL_LESS;
     bool depthWrite = true;
     bool depthClamp = false;            // clamp instead of clipping at near/far
+    double depthRangeNear = 0.0;        // glDepthRange: where near and far land in the depth buffer
+    double depthRangeFar = 1.0;
     GLenum cullFace = GL_NONE;          // GL_NONE (no culling), GL_BACK or GL_FRONT
     float polygonOffsetFactor = 0.0f;   // both 0: no polygon offset
     float polygonOffsetUnits = 0.0f;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <utility>
 
 #include <QElapsedTimer>
 
@@ -44,7 +45,7 @@ void Renderer::setScene(std::optional<Scene> scene)
     m_sceneChanged = true;
 }
 
-void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats)
+void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats, bool measure)
 {
     static std::once_flag allocatorTuned;
     std::call_once(allocatorTuned, [this] { keepFreedMemoryForSoftwareRasteriser(rendererString()); });
@@ -71,6 +72,13 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_update.describe(settings, stats);
     stats.reversedDepth = reversed;
 
+    // A map in a later slice than its first differs from a cleared one by a 24-bit step at
+    // exact ties (a bias of 0): a measurement draws it again after a clear, so the same settings
+    // measure the same whatever was drawn before.
+    if (measure && m_shadowMap.sliceIndex() > 0) {
+        m_shadowMap.restartSlices();
+        invalidateShadowMap();
+    }
     // Render: the shadow pass where its inputs changed, then what it feeds.
     if (virtualMap)
         renderPages(settings, storage, grid, size, timing, stats);
@@ -174,7 +182,12 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         m_viewVolumes.assign(count, std::nullopt);
         m_shadowKey = shared;
         fresh = true;
+        // New settings start a new cycle of slices (map.slices): what a setting draws does not
+        // depend on the draws before it. A moving light or camera keeps the key, and the cycle.
+        m_shadowMap.restartSlices();
     }
+    if (std::exchange(m_redrawShadowMap, false))
+        fresh = true;
     // Per view only for a light of several; one view's figures are the shadow pass's.
     const bool perView = count > 1;
     if (perView) {
@@ -183,6 +196,7 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         stats.viewWallMs.assign(count, 0.0);
     }
     const int size = m_shadowMap.size();
+    const int clearsBefore = m_shadowMap.clearCount();
     // Nothing to shadow: the tile reads lit, and stays so until the view has something.
     const auto wantedVolume = [this](std::size_t i) {
         const FittedLight& fit = m_update.views().set.views[i].fit;
@@ -234,6 +248,8 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         return;
     m_shadowTimer.end();
     stats.shadowPassRendered = true;
+    // A moments map is cleared with each view drawn; the depth map as ShadowMap::beginDraw says.
+    stats.shadowMapCleared = storage.momentsMap() != nullptr || m_shadowMap.clearCount() != clearsBefore;
     ++m_shadowPassCount;
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
@@ -259,7 +275,7 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
 {
     ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
     shared.mapSize = kVirtualSlotTexels;
-    const bool invalidate = m_shadowKey != shared;
+    const bool invalidate = m_shadowKey != shared || std::exchange(m_redrawShadowMap, false);
     m_shadowKey = shared;
     m_viewVolumes.clear();
     GLint previousDraw = 0, previousRead = 0;
@@ -286,6 +302,7 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
         return;
     ++m_mapGeneration;
     stats.shadowPassRendered = stats.virtualPages.drawn > 0;
+    stats.shadowMapCleared = stats.shadowPassRendered;     // each page is cleared where it is drawn
     m_shadowPassCount += stats.shadowPassRendered;
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
@@ -361,7 +378,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     if (size.width() <= 0 || size.height() <= 0)
         throw SettingsError(QStringLiteral("size"), QStringLiteral("a measurement needs at least 1x1 pixels"));
     FrameStats stats;
-    prepareFrame(settings, size, TimingMode::Finish, stats);
+    prepareFrame(settings, size, TimingMode::Finish, stats, true);
     if (!m_measureTarget)
         m_measureTarget = std::make_unique<MeasureTarget>(m_gl);
     const RenderTarget target = m_measureTarget->ensure(size);
@@ -396,7 +413,7 @@ void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible,
         return;
     }
     const std::optional<DepthSpan> span = depthMapSpan();
-    m_depthView->render(m_shadowMap.texture(), m_light, target, visible, viewport, span);
+    m_depthView->render(m_shadowMap, m_light, target, visible, viewport, span);
 }
 
 void Renderer::renderDepthLegend(const RenderTarget& target, const QRect& viewport)

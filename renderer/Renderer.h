@@ -108,8 +108,9 @@ public:
     void setVirtualReduction(VirtualShadowMap::Reduction reduction);
     // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
     void setVirtualAsyncRequests(bool async);
-    // Forces the next render() to redraw the shadow map.
-    void invalidateShadowMap() { m_shadowKey.reset(); }
+    // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
+    // into slices, map.slices, goes on to its next one).
+    void invalidateShadowMap() { m_redrawShadowMap = true; }
 
     QString rendererString() const;
     int maxTextureSize() const;
@@ -117,7 +118,9 @@ public:
 private:
     // Validation, scene, light and camera, and the shadow pass when its inputs changed; fills
     // the shadow-pass half of `stats`. Throws before touching any state when settings are bad.
-    void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats);
+    // `measure`: a measurement's frame, whose map is drawn into its first slice after a clear
+    // (map.slices), so what is measured does not depend on the draws before it.
+    void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats, bool measure = false);
     // Whether the frame's depth32f map gets reversed depth (warns once when it cannot).
     bool reversedDepth(const Settings& settings, const ShadowStorage& storage);
     // The map's tiles (a virtual map's pool: a slot per page) and the storage for them.
@@ -166,6 +169,7 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowStorageKey> m_shadowKey;
+    bool m_redrawShadowMap = false;     // invalidateShadowMap(): every view drawn again
     // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
     // m_shadowKey holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;

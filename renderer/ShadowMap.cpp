@@ -3,6 +3,7 @@
 #include "RenderError.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "ShadowViews.h"
 
 #include <algorithm>
 
@@ -50,7 +51,45 @@ void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format,
         configureSampler(m_gl, m_compareLinear.id(), GL_LINEAR, true, reversedDepth);
         configureSampler(m_gl, m_raw.id(), GL_NEAREST, false, reversedDepth);
         m_reversedDepth = reversedDepth;
+        m_drawsSinceClear = kUnknown;
+        m_slice = {};
     }
+}
+
+int ShadowMap::slicesFor(const Settings& settings)
+{
+    const bool plainOrtho = settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings);
+    return plainOrtho && !usesShadowViews(settings) && !settings.shadow.virtualMap ? settings.map.slices : 1;
+}
+
+ShadowMap::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
+{
+    if (tile != QRect(0, 0, width(), height()) || !ShadowMap::slices(slices, m_format, m_reversedDepth)) {
+        m_drawsSinceClear = kUnknown;
+        m_slice = {};
+        ++m_clearCount;
+        return {};
+    }
+    Draw draw;
+    // Slices of another count since the clear lie anywhere in [0, 1]: clear them first.
+    draw.clear = m_drawsSinceClear >= slices || slices != m_slicesSinceClear;
+    if (draw.clear) {
+        m_drawsSinceClear = 0;
+        m_slicesSinceClear = slices;
+        ++m_clearCount;
+    }
+    const int k = m_drawsSinceClear++;
+    const double top = 1.0 - double(k) / slices;
+    draw.slice = {top - 1.0 / slices, 1.0 / slices - DepthSlice::kGap, top - 0.5 * DepthSlice::kGap};
+    m_slice = draw.slice;
+    return draw;
+}
+
+void ShadowMap::cleared(const QRect& tile)
+{
+    m_drawsSinceClear = tile == QRect(0, 0, width(), height()) ? 0 : kUnknown;
+    m_slice = {};
+    ++m_clearCount;
 }
 
 GLuint ShadowMap::sampler(ShadowSampler kind) const
@@ -124,6 +163,8 @@ void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
     m_columns = columns;
     m_rows = rows;
     m_format = format;
+    m_drawsSinceClear = kUnknown;
+    m_slice = {};
 }
 
 } // namespace shadowlab

@@ -4,7 +4,33 @@
 #include "Settings.h"
 #include "ShadowTechnique.h"
 
+#include <glm/vec3.hpp>
+
+#include <QRect>
+
+#include <algorithm>
+
 namespace shadowlab {
+
+// Where in the depth buffer's [0, 1] a draw of the map wrote its conventional depth d (0 at the
+// light's near plane, 1 at its far plane): stored = offset + d * scale. Above offset + scale
+// lies a gap, then what earlier draws left (ShadowMap::beginDraw): from `emptyFrom` up a
+// stored value reads as the far plane, as a cleared texel does.
+struct DepthSlice {
+    // Between slices: 16 steps of a 24-bit depth, so no value rounds into its neighbour's.
+    static constexpr double kGap = 1.0 / (1 << 20);
+
+    double offset = 0.0;
+    double scale = 1.0;
+    double emptyFrom = 1.0;
+
+    double stored(double depth) const { return offset + depth * scale; }
+    // A stored value as conventional depth, at most 1 (shaders/depth_slice.glsl).
+    double depth(double storedValue) const { return storedValue >= emptyFrom ? 1.0 : std::min((storedValue - offset) / scale, 1.0); }
+    // For the shaders' uShadowSlice.
+    glm::vec3 uniform() const { return {float(offset), float(scale), float(emptyFrom)}; }
+    bool operator==(const DepthSlice&) const = default;
+};
 
 // The light's depth texture and the framebuffer that renders into it. Border-clamped with a
 // border depth at the far end (1.0, or 0.0 with reversed depth, which also compares GEQUAL),
@@ -34,6 +60,38 @@ public:
     // The sampler object a technique's row asks for (ShadowTechnique::samplers).
     GLuint sampler(ShadowSampler kind) const;
 
+    // Depth slices (map.slices = n): a clear writes every texel, which costs a software
+    // rasteriser as much as the casters do. A map of one 24-bit view is instead cleared once in
+    // n draws: draw k after a clear writes its depth into the k-th slice of [0, 1] from the top,
+    // 1/n wide less a gap at its top, nearer than every slice before it, so what the earlier
+    // draws left compares as beyond the far plane, lit, exactly as a cleared texel does. It
+    // costs log2(n) bits of the 24. Maps of several tiles (cascades, cube faces, virtual pages)
+    // and reversed (float) depth, whose precision lies near 0, clear every draw, and so do
+    // perspective maps (slicesFor).
+    struct Draw {
+        bool clear = true;          // clear the tile before drawing
+        DepthSlice slice;           // where the draw writes
+    };
+    // Before a draw into `tile` (texels): whether to clear it first, and the slice to write.
+    Draw beginDraw(const QRect& tile, int slices);
+    // After a clear of `tile`.
+    void cleared(const QRect& tile);
+    // Where the last draw wrote: how lookups read the map now, and which slice since the last
+    // clear that is (0: the first, or not sliced).
+    DepthSlice slice() const { return m_slice; }
+    int sliceIndex() const { return m_slice.scale < 1.0 ? m_drawsSinceClear - 1 : 0; }
+    // The next draw clears and starts again at the first slice.
+    void restartSlices() { m_drawsSinceClear = kUnknown; }
+    // Clears of the map or of a tile so far, whether asked for or before a draw.
+    int clearCount() const { return m_clearCount; }
+    // The slices a draw asks for, and whether a map of these settings draws into slices (the lit
+    // pass's DEPTH_SLICES variant): a plain ortho map's, whose depth is linear in distance. A
+    // perspective or warped map's depth is not: its steps are spent near the light (or the
+    // warp's centre), with none to spare where the scene lies. Cascades and cube faces are
+    // tiles drawn apart, and a virtual map's pool clears each page it draws.
+    static int slicesFor(const Settings& settings);
+    static bool slices(int slices, DepthFormat format, bool reversedDepth) { return slices > 1 && format == DepthFormat::Depth24 && !reversedDepth; }
+
 private:
     void allocate(int size, int columns, int rows, DepthFormat format);
 
@@ -48,6 +106,11 @@ private:
     int m_rows = 1;
     DepthFormat m_format = DepthFormat::Depth24;
     bool m_reversedDepth = false;
+    static constexpr int kUnknown = 1 << 30;    // draws since the last whole clear: not known
+    int m_drawsSinceClear = kUnknown;
+    int m_slicesSinceClear = 0;     // the slice count of the draws since then
+    int m_clearCount = 0;
+    DepthSlice m_slice;
 };
 
 } // namespace shadowlab

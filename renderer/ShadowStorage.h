@@ -29,6 +29,7 @@ struct ShadowStorageKey {
     bool cullFront = false;
     double polygonFactor = 0.0;
     double polygonUnits = 0.0;
+    int slices = 1;                 // map.slices: the lit pass reads the map through its slice
     // What the moments pass stores and how it is prefiltered (moments storage only).
     bool moments = false;
     FilterMode momentTechnique = FilterMode::Hard;

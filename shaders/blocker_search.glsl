@@ -19,7 +19,11 @@ float blockerDepth(vec2 at)
 #ifdef SHADOW_VIEWS
     at = clamp(at, gShadowTile.xy, gShadowTile.zw);
 #endif
+#ifdef DEPTH_SLICES
+    return sliceDepth(texture(uShadowDepth, at).r);    // what earlier draws left: no blocker
+#else
     return texture(uShadowDepth, at).r;
+#endif
 }
 
 // The uv radius covered by the light's disk, seen from a receiver at `receiver`, at distance

@@ -15,12 +15,17 @@ uniform ivec2 uSourceSize;  // of the level read (the atlas is wider than its le
 uniform float uEmpty;
 #endif
 
+#ifdef FROM_DEPTH
+// The map's depth as drawn (map.slices): what earlier draws left reads as the far plane.
+#include "depth_slice.glsl"
+#endif
+
 out vec2 range;
 
 vec2 fetchRange(ivec2 p)
 {
 #ifdef FROM_DEPTH
-    float depth = texelFetch(uSource, p, 0).r;
+    float depth = sliceDepth(texelFetch(uSource, p, 0).r);
 #ifdef WRITTEN_ONLY
     if (depth == uEmpty)
         return vec2(1.0e30, -1.0e30);
@@ -42,10 +47,10 @@ void main()
 #ifdef GL_ARB_texture_gather
     // Four gathers of 2 x 2, each at the corner its four texels share.
     vec2 texel = 1.0 / vec2(uSourceSize);
-    vec4 a = textureGather(uSource, (vec2(p) + vec2(1.0, 1.0)) * texel);
-    vec4 b = textureGather(uSource, (vec2(p) + vec2(3.0, 1.0)) * texel);
-    vec4 c = textureGather(uSource, (vec2(p) + vec2(1.0, 3.0)) * texel);
-    vec4 d = textureGather(uSource, (vec2(p) + vec2(3.0, 3.0)) * texel);
+    vec4 a = sliceDepth(textureGather(uSource, (vec2(p) + vec2(1.0, 1.0)) * texel));
+    vec4 b = sliceDepth(textureGather(uSource, (vec2(p) + vec2(3.0, 1.0)) * texel));
+    vec4 c = sliceDepth(textureGather(uSource, (vec2(p) + vec2(1.0, 3.0)) * texel));
+    vec4 d = sliceDepth(textureGather(uSource, (vec2(p) + vec2(3.0, 3.0)) * texel));
     vec4 lowest = min(min(a, b), min(c, d));
     vec4 highest = max(max(a, b), max(c, d));
 #ifdef WRITTEN_ONLY

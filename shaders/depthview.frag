@@ -5,6 +5,7 @@
 // With LEGEND the pass draws the ramp itself across the viewport, for the colour bar; with
 // OVERLAY it draws an image (uDepth holds it, premultiplied, top row first) for blending.
 #include "ramp.glsl"
+#include "depth_slice.glsl"
 
 in vec2 vUv;
 
@@ -38,7 +39,8 @@ void main()
         fragColor = vec4(0.15, 0.16, 0.20, 1.0);   // outside the map: lit (clamp to border), a shade off the pane
         return;
     }
-    float depth = texture(uDepth, vUv).r;
+    // What earlier draws of a sliced map (map.slices) left reads as the far plane.
+    float depth = sliceDepth(texture(uDepth, vUv).r);
 #ifdef REVERSED_Z
     depth = 1.0 - depth;        // reversed maps store 1 - the conventional depth
 #endif

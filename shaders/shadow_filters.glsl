@@ -7,6 +7,9 @@
 
 uniform sampler2DShadow uShadowMap;
 uniform vec2 uShadowTexel;      // 1 / map size
+#ifdef DEPTH_SLICES
+#include "depth_slice.glsl"
+#endif
 // The view a pixel reads (shadow_lookup.glsl), set before it calls filterShadow.
 vec2 gShadowUvWorld = vec2(1.0);    // world size of the map's [0, 1] square (perspective: at unit distance)
 vec2 gShadowDepthRange = vec2(0.0, 1.0);    // near and far of the view's volume, world units along its axis
@@ -21,6 +24,9 @@ float shadowTap(vec2 uv, float reference)
 {
 #ifdef SHADOW_VIEWS
     uv = clamp(uv, gShadowTile.xy, gShadowTile.zw);
+#endif
+#ifdef DEPTH_SLICES
+    reference = sliceReference(reference);
 #endif
     return texture(uShadowMap, vec3(uv, reference));
 }

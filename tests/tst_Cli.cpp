@@ -490,10 +490,11 @@ private Q_SLOTS:
         const Run r = shadowlab({"bench", "--size", "96x64", "--frames", "3", "--warmup", "0", "--phase", "moving-light"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QStringList lines = r.out.split('\n');
-        const qsizetype header = lines.indexOf(QRegularExpression(R"(^\s+ms per frame\s+median\s+p10\s+p90$)"));
+        const qsizetype header = lines.indexOf(QRegularExpression(R"(^\s+ms per frame\s+median\s+p10\s+p90\s+mean$)"));
         QVERIFY2(header >= 0, qPrintable(r.out));
         const qsizetype medianEnd = lines[header].indexOf("median") + 6;
-        const qsizetype p90End = lines[header].size();
+        const qsizetype p90End = lines[header].indexOf("p90") + 3;
+        const qsizetype meanEnd = lines[header].size();
         // Shadow and lit pass (wall, and the GPU timer where it means something) and the frame:
         // each figure ends in its heading's column.
         const bool software = r.out.contains("software renderer");
@@ -503,7 +504,9 @@ private Q_SLOTS:
         for (qsizetype i = header + 1; i <= header + rows; ++i) {
             const QString& line = lines[i];
             QVERIFY2(line.contains("pass (") || line.contains("frame (wall)"), qPrintable(line));
-            QVERIFY2(line.at(medianEnd - 1).isDigit() && line.at(medianEnd) == ' ' && line.at(p90End - 1).isDigit(), qPrintable(line));
+            QVERIFY2(line.at(medianEnd - 1).isDigit() && line.at(medianEnd) == ' ' && line.at(p90End - 1).isDigit() && line.at(p90End) == ' '
+                         && line.at(meanEnd - 1).isDigit(),
+                     qPrintable(line));
         }
         QVERIFY2(lines[header + rows + 1].contains("shadow texel"), qPrintable(lines[header + rows + 1]));
     }
@@ -555,12 +558,33 @@ private Q_SLOTS:
         QVERIFY2(p10 > 0.0 && p10 <= relative.value("round_median").toDouble() && relative.value("round_median").toDouble() <= p90,
                  qPrintable(QJsonDocument(relative).toJson()));
         QVERIFY(relative.value("ratio_of_medians").toDouble() > 0.0);
+        QVERIFY(relative.value("ratio_of_means").toDouble() > 0.0);
         const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "2", "--warmup", "0", "--phase", "moving-light", "--anchor"});
         QVERIFY2(text.out.contains("relative to tutorial-program"), qPrintable(text.out));
         QVERIFY2(text.out.contains("round by round"), qPrintable(text.out));
         const Run refused = shadowlab({"bench", "--scene", "torus", "--anchor", "--frames", "1"});
         QCOMPARE(refused.exitCode, 2);
         QVERIFY2(refused.err.contains("--anchor") && refused.err.contains("seed"), qPrintable(refused.err));
+    }
+
+    // A moving light redraws the map every frame and clears it once in map.slices draws; bench
+    // says so, and its mean counts the frames that clear.
+    void benchCountsTheMapsClears()
+    {
+        for (int slices : {1, 4, 8}) {
+            const Run r = shadowlab({"bench", "--size", "96x64", "--frames", "8", "--warmup", "1", "--phase", "moving-light", "--json", "--set",
+                                     QStringLiteral("map.slices=%1").arg(slices)});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QJsonObject phase = QJsonDocument::fromJson(r.out.toUtf8()).object().value("phases").toArray().at(0).toObject();
+            QCOMPARE(phase.value("shadow_passes_run").toInt(), 8);
+            // Draws 0 (the warm-up) to 8, a clear in draws 0, n, 2n...: of the 8 timed, 8 / n.
+            QCOMPARE(phase.value("shadow_map_clears").toInt(), 8 / slices);
+            const QJsonObject frame = phase.value("frame_wall").toObject();
+            QVERIFY(frame.value("mean_ms").toDouble() >= frame.value("min_ms").toDouble());
+            QVERIFY(frame.value("mean_ms").toDouble() <= frame.value("max_ms").toDouble());
+        }
+        const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "8", "--warmup", "0", "--phase", "moving-light"});
+        QVERIFY2(text.out.contains("map cleared in 2 (map.slices=4)"), qPrintable(text.out));
     }
 
     void benchRefusesAnUnknownPhase()

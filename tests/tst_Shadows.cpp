@@ -773,6 +773,119 @@ private Q_SLOTS:
         QVERIFY2(differing < 20, qPrintable(QStringLiteral("%1 pixels differ").arg(differing)));
     }
 
+    // map.slices: a map drawn into the next slice of its depth range instead of cleared shades
+    // as one cleared before every draw, while the light walks around the scene, so each draw
+    // lands where the last ones drew nothing and stands over what they left; the depth pane
+    // shows the same map. Every technique that reads the depth map, every bias and scene; spot
+    // and perspective lights keep their map's every bit and clear every draw.
+    void slicedMapsShadeAsClearedOnes_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        for (const ShadowTechnique& t : shadowTechniques()) {
+            if (t.samplers.front() != ShadowSampler::Moments)
+                QTest::newRow(qPrintable(QStringLiteral("seed, ") + t.key)) << "seed" << QStringList{"filter.mode=" + t.key};
+        }
+        QTest::newRow("pcf early out") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=5", "filter.early_out=true"};
+        QTest::newRow("pcss early out") << "seed" << QStringList{"filter.mode=pcss", "filter.early_out=true"};
+        QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true", "bias.cull_front=false"};
+        QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"};
+        QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"};
+        QTest::newRow("polygon offset") << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
+        QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"};
+        QTest::newRow("manual volume") << "seed" << QStringList{"light.fit=manual"};
+        QTest::newRow("perspective") << "seed" << QStringList{"light.projection=perspective", "light.fov=70"};
+        QTest::newRow("spot") << "seed" << QStringList{"light.type=spot", "filter.mode=pcf"};
+        QTest::newRow("small map, wide pcf") << "seed" << QStringList{"map.size=64", "filter.mode=pcf", "filter.kernel=9"};
+        QTest::newRow("8 slices") << "seed" << QStringList{"map.slices=8", "filter.mode=pcf"};
+        QTest::newRow("3 slices") << "seed" << QStringList{"map.slices=3"};
+        QTest::newRow("slices changed mid-way") << "seed" << QStringList{"map.slices=3", "raise slices"};
+        QTest::newRow("lispsm") << "city" << QStringList{"light.warp=lispsm"};
+        for (const QString& name : sceneNames()) {
+            if (name != QLatin1String("seed"))
+                QTest::newRow(qPrintable(name)) << name << QStringList{};
+        }
+    }
+
+    void slicedMapsShadeAsClearedOnes()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        // Raised from 3 to 8 slices after the fourth draw, one into a cycle: the earlier slices
+        // lie anywhere under the new ones' and are cleared first.
+        const bool raise = assignments.removeAll(QStringLiteral("raise slices")) > 0;
+        Settings sliced = presetSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(sliced, a);
+        if (sliced.map.slices == 1)
+            sliced.map.slices = 4;
+        Settings cleared = sliced;
+        cleared.map.slices = 1;
+        // Around the target and up and down, a step the slices do not divide: the map wraps.
+        const LightAngles start = lightAngles(sliced.light.position, sliced.light.target);
+        const int steps = 2 * sliced.map.slices + 3;
+        const auto at = [&](Settings s, int step) {
+            LightAngles a = start;
+            a.azimuth += 47.0 * step;
+            a.elevation = std::clamp(start.elevation + (step % 3 - 1) * 12.0, 8.0, 85.0);
+            s.light.position = lightPosition(s.light.target, a);
+            return s;
+        };
+        Renderer& r = m_headless->renderer();
+        std::vector<QImage> expected, expectedMaps;
+        for (int step = 0; step < steps; ++step) {
+            expected.push_back(m_headless->renderScene(at(cleared, step), kSize));
+            expectedMaps.push_back(m_headless->renderDepthMap(QSize(128, 128)));
+            QVERIFY(r.lastFrame().shadowMapCleared);
+        }
+        int clears = 0;
+        for (int step = 0; step < steps; ++step) {
+            Settings s = at(sliced, step);
+            if (raise && step >= 4)
+                s.map.slices = 8;
+            const QImage actual = m_headless->renderScene(s, kSize);
+            const QImage actualMap = m_headless->renderDepthMap(QSize(128, 128));
+            QVERIFY(r.lastFrame().shadowPassRendered);
+            clears += r.lastFrame().shadowMapCleared;
+            // The map keeps log2(map.slices) fewer bits of depth: a comparison within one
+            // 24-bit step of its edge may go the other way, a pixel or two on a contact line.
+            int differ = 0;
+            for (int y = 0; y < kSize.height(); ++y)
+                for (int x = 0; x < kSize.width(); ++x)
+                    differ += expected[std::size_t(step)].pixel(x, y) != actual.pixel(x, y);
+            QVERIFY2(differ <= 5, qPrintable(QString("step %1: %2 of %3 pixels differ from the cleared map's").arg(step).arg(differ).arg(kSize.width() * kSize.height())));
+            // The depth pane shows the same depths, to a level of its colour ramp.
+            const QImage& map = expectedMaps[std::size_t(step)];
+            int paneDiffer = 0, worst = 0;
+            for (int y = 0; y < map.height(); ++y) {
+                for (int x = 0; x < map.width(); ++x) {
+                    const QRgb e = map.pixel(x, y), a = actualMap.pixel(x, y);
+                    const int d = std::max({std::abs(qRed(e) - qRed(a)), std::abs(qGreen(e) - qGreen(a)), std::abs(qBlue(e) - qBlue(a))});
+                    paneDiffer += d > 0;
+                    worst = std::max(worst, d);
+                }
+            }
+            QVERIFY2(worst <= 1 && paneDiffer <= map.width() * map.height() / 100,
+                     qPrintable(QString("step %1: %2 depth-pane pixels differ, by up to %3 of 255").arg(step).arg(paneDiffer).arg(worst)));
+        }
+        // One clear in map.slices draws, the first included; a perspective or warped map clears
+        // every draw.
+        const int n = ShadowMap::slicesFor(sliced);
+        QCOMPARE(clears, raise ? 3 : (steps + n - 1) / n);     // raised: draws 0 and 3 of 3, then 4 of 8
+        // A measurement draws into the first slice after a clear, whatever came before: the
+        // same settings measure the same. The walk ended in a later slice (its last draw is the
+        // third of a cycle, or the fifth after the raise).
+        Settings last = at(sliced, steps - 1);
+        if (raise)
+            last.map.slices = 8;
+        const bool laterSlice = r.shadowMap().sliceIndex() > 0;
+        QCOMPARE(laterSlice, n > 1);
+        m_headless->makeCurrent();
+        r.renderVisibility(last, kSize);
+        QCOMPARE(r.lastFrame().shadowMapCleared, laterSlice);
+        QCOMPARE(r.shadowMap().sliceIndex(), 0);
+    }
+
     void everyPresetRenders()
     {
         for (const QString& name : sceneNames()) {

@@ -370,7 +370,7 @@ private Q_SLOTS:
                 for (int x = 0; x < width; ++x) {
                     const int tx = std::min(x / cover, size.width() - 1), ty = std::min(y / cover, size.height() - 1);
                     const glm::vec2 r2 = atlas[std::size_t(origin.y() + ty) * std::size_t(atlasWidth) + std::size_t(origin.x() + tx)];
-                    const float d = depth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+                    const float d = float(r.shadowMap().slice().depth(depth[std::size_t(y) * std::size_t(width) + std::size_t(x)]));
                     // The read-back converts 24-bit depth to float on its own path: one ulp apart.
                     if ((d < r2.x - 1e-6f || d > r2.y + 1e-6f) && bad++ < 5)
                         qWarning("level %d texel %d,%d (%f, %f) misses map texel %d,%d depth %f", level, tx, ty, r2.x, r2.y, x, y, d);

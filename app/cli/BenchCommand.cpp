@@ -35,6 +35,7 @@ struct Phase {
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     std::vector<double> blurWall;
     int shadowPassesRun = 0;
+    int shadowMapClears = 0;
     int shadowDraws = 0;
     std::vector<double> pagesDrawn, pagesResident;  // shadow.virtual, every frame
     FrameStats last;
@@ -111,6 +112,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.blurWall = std::move(s.blurWall);
         p.wall = std::move(s.wall);
         p.shadowPassesRun = s.shadowPassesRun;
+        p.shadowMapClears = s.shadowMapClears;
         p.shadowDraws = s.shadowDraws;
         p.pagesDrawn = std::move(s.pagesDrawn);
         p.pagesResident = std::move(s.pagesResident);
@@ -122,7 +124,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
     }
 }
 
-// One row of the timing table: a label, then median, p10 and p90 in aligned columns.
+// One row of the timing table: a label, then median, p10, p90 and mean in aligned columns.
 constexpr int kLabelWidth = 26;
 constexpr int kNumberWidth = 10;
 
@@ -131,7 +133,7 @@ QString statsRow(const QString& label, const SampleStats& s)
     QString row = QStringLiteral("  ") + label.leftJustified(kLabelWidth);
     if (s.count == 0)
         return row + QStringLiteral("—").rightJustified(kNumberWidth);
-    for (double v : {s.median, s.p10, s.p90})
+    for (double v : {s.median, s.p10, s.p90, s.mean})
         row += QString::number(v, 'f', 2).rightJustified(kNumberWidth);
     return row;
 }
@@ -139,7 +141,7 @@ QString statsRow(const QString& label, const SampleStats& s)
 QString statsHeader()
 {
     QString header = QStringLiteral("  ") + QStringLiteral("ms per frame").leftJustified(kLabelWidth);
-    for (const char* column : {"median", "p10", "p90"})
+    for (const char* column : {"median", "p10", "p90", "mean"})
         header += QString::fromLatin1(column).rightJustified(kNumberWidth);
     return header;
 }
@@ -147,7 +149,8 @@ QString statsHeader()
 QJsonObject statsJson(const SampleStats& s)
 {
     return {{QStringLiteral("count"), s.count}, {QStringLiteral("median_ms"), s.median}, {QStringLiteral("p10_ms"), s.p10},
-            {QStringLiteral("p90_ms"), s.p90},   {QStringLiteral("min_ms"), s.min},       {QStringLiteral("max_ms"), s.max}};
+            {QStringLiteral("p90_ms"), s.p90},   {QStringLiteral("min_ms"), s.min},       {QStringLiteral("max_ms"), s.max},
+            {QStringLiteral("mean_ms"), s.mean}};
 }
 
 // The same for counts (pages a frame): no unit in the names.
@@ -296,6 +299,7 @@ QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
             {QStringLiteral("frames"), frames},
             {QStringLiteral("shadow_passes_run"), r.shadowPassesRun},
             {QStringLiteral("shadow_pass_cached"), r.shadowPassesRun == 0},
+            {QStringLiteral("shadow_map_clears"), r.shadowMapClears},
             {QStringLiteral("shadow_draws"), r.shadowDraws},
             {QStringLiteral("virtual_pages_drawn"), countsJson(summarize(r.pagesDrawn))},
             {QStringLiteral("virtual_pages_resident"), countsJson(summarize(r.pagesResident))},
@@ -334,6 +338,7 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
             phase.insert(QStringLiteral("frame_wall_relative"),
                          QJsonObject{{QStringLiteral("to"), phases.back().name},
                                      {QStringLiteral("ratio_of_medians"), summarize(r.wall).median / summarize(phases.back().wall).median},
+                                     {QStringLiteral("ratio_of_means"), summarize(r.wall).mean / summarize(phases.back().wall).mean},
                                      {QStringLiteral("rounds"), rounds.count},
                                      {QStringLiteral("round_median"), rounds.median},
                                      {QStringLiteral("round_p10"), rounds.p10},
@@ -366,7 +371,10 @@ void printPhase(const Phase& r, const BenchRequest& request, bool software)
     }
     const bool shadows = r.settings.shadow.enabled;
     const QString runs = QStringLiteral("   run in %1/%2 frames").arg(r.shadowPassesRun).arg(frames)
-                         + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws));
+                         + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws))
+                         + (r.shadowPassesRun > 0 && r.shadowMapClears < r.shadowPassesRun
+                                ? QStringLiteral(", map cleared in %1 (map.slices=%2)").arg(r.shadowMapClears).arg(r.settings.map.slices)
+                                : QString());
     if (!shadows)
         out() << "  " << QStringLiteral("shadow pass").leftJustified(kLabelWidth) << "   none: shadow.enabled=false\n";
     if (shadows && !software)
@@ -405,14 +413,16 @@ void printPhase(const Phase& r, const BenchRequest& request, bool software)
 void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
 {
     if (phases.size() > 1) {
-        const double reference = summarize(phases.back().wall).median;
+        const SampleStats reference = summarize(phases.back().wall);
         out() << "\nmedian frame wall time relative to " << phases.back().name << " (and the p10 and p90 of the ratios round by round,\n"
-              << "one frame of each a round: the noise of the ratio itself):\n";
+              << "one frame of each a round: the noise of the ratio itself; and the ratio of the means, where a few slow frames count):\n";
         for (const Phase& r : phases) {
             const SampleStats rounds = roundRatios(r, phases.back());
-            out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(summarize(r.wall).median / reference, 'f', 2).rightJustified(kNumberWidth);
+            const SampleStats own = summarize(r.wall);
+            out() << "  " << r.name.leftJustified(kLabelWidth) << QString::number(own.median / reference.median, 'f', 2).rightJustified(kNumberWidth);
             if (&r != &phases.back())
-                out() << QString::number(rounds.p10, 'f', 2).rightJustified(kNumberWidth) << QString::number(rounds.p90, 'f', 2).rightJustified(kNumberWidth);
+                out() << QString::number(rounds.p10, 'f', 2).rightJustified(kNumberWidth) << QString::number(rounds.p90, 'f', 2).rightJustified(kNumberWidth)
+                      << QString::number(own.mean / reference.mean, 'f', 2).rightJustified(kNumberWidth);
             out() << '\n';
         }
     }

@@ -138,7 +138,7 @@ void DepthMapView::paintGL()
             m_pass->renderMoments(renderer.momentsMap()->texture(), *m_source->renderedSettings(), target, visible,
                                   picture.glViewport(picture.mapArea(), devicePixelRatio()));
         else
-            m_pass->render(renderer.shadowMap().texture(), renderer.lightFrame(), target, visible,
+            m_pass->render(renderer.shadowMap(), renderer.lightFrame(), target, visible,
                            picture.glViewport(picture.mapArea(), devicePixelRatio()), m_span);
         m_pass->renderLegend(target, picture.glViewport(picture.legendBar(), devicePixelRatio()));
         // Text and outlines through QPainter's raster engine, blended over the map as one image.
@@ -221,7 +221,7 @@ std::optional<float> DepthMapView::readDepth(int x, int y)
     if (m_gl->glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
         float value = 0.0f;
         m_gl->glReadPixels(x, y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &value);
-        depth = value;
+        depth = float(m_source->renderer()->shadowMap().slice().depth(value));
     }
     m_gl->glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, defaultFramebufferObject());
