@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <mutex>
-#include <utility>
 
 #include <QElapsedTimer>
 
@@ -75,9 +74,10 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // A map in a later slice than its first differs from a cleared one by a 24-bit step at
     // exact ties (a bias of 0): a measurement draws it again after a clear, so the same settings
     // measure the same whatever was drawn before.
-    if (measure && m_shadowMap.sliceIndex() > 0) {
-        m_shadowMap.restartSlices();
-        invalidateShadowMap();
+    if (measure) {
+        if (m_shadowMap.sliceIndex() > 0)
+            invalidateShadowMap();
+        m_shadowMap.restartSlices();    // a draw this frame, for whatever reason, clears first
     }
     // Render: the shadow pass where its inputs changed, then what it feeds.
     if (virtualMap)
@@ -179,15 +179,15 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     const std::size_t count = m_update.views().set.views.size();
     bool fresh = false;
     if (m_shadowKey != shared || m_viewVolumes.size() != count) {
+        // New settings start a new cycle of slices (map.slices): what a setting draws does not
+        // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
+        // and so does invalidateShadowMap(), which stands for one.
+        if (m_shadowKey && *m_shadowKey != shared)
+            m_shadowMap.restartSlices();
         m_viewVolumes.assign(count, std::nullopt);
         m_shadowKey = shared;
         fresh = true;
-        // New settings start a new cycle of slices (map.slices): what a setting draws does not
-        // depend on the draws before it. A moving light or camera keeps the key, and the cycle.
-        m_shadowMap.restartSlices();
     }
-    if (std::exchange(m_redrawShadowMap, false))
-        fresh = true;
     // Per view only for a light of several; one view's figures are the shadow pass's.
     const bool perView = count > 1;
     if (perView) {
@@ -197,6 +197,13 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
     const int size = m_shadowMap.size();
     const int clearsBefore = m_shadowMap.clearCount();
+    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage).
+    double coverage = count == 1 ? 0.0 : 1.0;
+    for (const ReachBox& box : m_update.reach().boxes) {
+        const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
+        coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
+    }
+    m_shadowMap.setCasterCoverage(std::min(coverage, 1.0));
     // Nothing to shadow: the tile reads lit, and stays so until the view has something.
     const auto wantedVolume = [this](std::size_t i) {
         const FittedLight& fit = m_update.views().set.views[i].fit;
@@ -275,7 +282,7 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
 {
     ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
     shared.mapSize = kVirtualSlotTexels;
-    const bool invalidate = m_shadowKey != shared || std::exchange(m_redrawShadowMap, false);
+    const bool invalidate = m_shadowKey != shared;
     m_shadowKey = shared;
     m_viewVolumes.clear();
     GLint previousDraw = 0, previousRead = 0;

@@ -108,9 +108,12 @@ public:
     void setVirtualReduction(VirtualShadowMap::Reduction reduction);
     // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
     void setVirtualAsyncRequests(bool async);
+    // Tests: draw a one-view map into slices whatever share of it the casters cover
+    // (ShadowMap::setSlicedCoverageLimit), so every technique's lookups are checked on slices.
+    void setSlicedCoverageLimit(double limit) { m_shadowMap.setSlicedCoverageLimit(limit); }
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
-    void invalidateShadowMap() { m_redrawShadowMap = true; }
+    void invalidateShadowMap() { m_shadowKey.reset(); }
 
     QString rendererString() const;
     int maxTextureSize() const;
@@ -169,7 +172,6 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     std::optional<ShadowStorageKey> m_shadowKey;
-    bool m_redrawShadowMap = false;     // invalidateShadowMap(): every view drawn again
     // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
     // m_shadowKey holds what all views share.
     std::vector<std::optional<LightVolume>> m_viewVolumes;

@@ -6,6 +6,7 @@
 #include "ShadowViews.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace shadowlab {
 
@@ -64,15 +65,18 @@ int ShadowMap::slicesFor(const Settings& settings)
 
 ShadowMap::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
 {
-    if (tile != QRect(0, 0, width(), height()) || !ShadowMap::slices(slices, m_format, m_reversedDepth)) {
+    if (tile != QRect(0, 0, width(), height()) || !ShadowMap::slices(slices, m_format, m_reversedDepth) || m_casterCoverage > m_slicedCoverageLimit) {
         m_drawsSinceClear = kUnknown;
         m_slice = {};
+        m_restart = false;
         ++m_clearCount;
         return {};
     }
     Draw draw;
-    // Slices of another count since the clear lie anywhere in [0, 1]: clear them first.
-    draw.clear = m_drawsSinceClear >= slices || slices != m_slicesSinceClear;
+    // Slices of another count since the clear lie anywhere in [0, 1]: clear them first; so
+    // does a draw after restartSlices().
+    const bool restart = std::exchange(m_restart, false);
+    draw.clear = restart || m_drawsSinceClear >= slices || slices != m_slicesSinceClear;
     if (draw.clear) {
         m_drawsSinceClear = 0;
         m_slicesSinceClear = slices;
@@ -89,6 +93,7 @@ void ShadowMap::cleared(const QRect& tile)
 {
     m_drawsSinceClear = tile == QRect(0, 0, width(), height()) ? 0 : kUnknown;
     m_slice = {};
+    m_restart = false;
     ++m_clearCount;
 }
 

@@ -74,6 +74,17 @@ public:
     };
     // Before a draw into `tile` (texels): whether to clear it first, and the slice to write.
     Draw beginDraw(const QRect& tile, int slices);
+    // The share of the map the next draw's casters may cover (the area of their reach boxes,
+    // ShadowReach, which bound their footprints). A draw into a slice reads each texel its
+    // casters cover from memory, where after a clear it finds it in the cache: a ground drawn
+    // into the map (bias.cull_front=false) took 7.2 ms sliced against 5.0 cleared at 2048², while
+    // seed, cubes and torus, whose boxes cover 34 %, 60 % and 79 % of their maps, gained 10 to
+    // 30 % of the shadow pass. A draw whose boxes cover more than kSlicedCoverage clears.
+    void setCasterCoverage(double share) { m_casterCoverage = share; }
+    double casterCoverage() const { return m_casterCoverage; }
+    static constexpr double kSlicedCoverage = 0.85;
+    // Tests: slice whatever the coverage (1), or at the default.
+    void setSlicedCoverageLimit(double limit) { m_slicedCoverageLimit = limit; }
     // After a clear of `tile`.
     void cleared(const QRect& tile);
     // Where the last draw wrote: how lookups read the map now, and which slice since the last
@@ -81,7 +92,7 @@ public:
     DepthSlice slice() const { return m_slice; }
     int sliceIndex() const { return m_slice.scale < 1.0 ? m_drawsSinceClear - 1 : 0; }
     // The next draw clears and starts again at the first slice.
-    void restartSlices() { m_drawsSinceClear = kUnknown; }
+    void restartSlices() { m_restart = true; }
     // Clears of the map or of a tile so far, whether asked for or before a draw.
     int clearCount() const { return m_clearCount; }
     // The slices a draw asks for, and whether a map of these settings draws into slices (the lit
@@ -109,6 +120,9 @@ private:
     static constexpr int kUnknown = 1 << 30;    // draws since the last whole clear: not known
     int m_drawsSinceClear = kUnknown;
     int m_slicesSinceClear = 0;     // the slice count of the draws since then
+    bool m_restart = false;         // restartSlices(): the next draw clears
+    double m_casterCoverage = 1.0;
+    double m_slicedCoverageLimit = kSlicedCoverage;
     int m_clearCount = 0;
     DepthSlice m_slice;
 };

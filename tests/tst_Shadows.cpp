@@ -788,10 +788,12 @@ private Q_SLOTS:
         }
         QTest::newRow("pcf early out") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=5", "filter.early_out=true"};
         QTest::newRow("pcss early out") << "seed" << QStringList{"filter.mode=pcss", "filter.early_out=true"};
-        QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true", "bias.cull_front=false"};
+        QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true"};
+        QTest::newRow("ground in the map") << "seed" << QStringList{"bias.cull_front=false"};
+        QTest::newRow("ground in the map, polygon offset") << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
         QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"};
         QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"};
-        QTest::newRow("polygon offset") << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
+        QTest::newRow("polygon offset") << "seed" << QStringList{"bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
         QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"};
         QTest::newRow("manual volume") << "seed" << QStringList{"light.fit=manual"};
         QTest::newRow("perspective") << "seed" << QStringList{"light.projection=perspective", "light.fov=70"};
@@ -832,6 +834,10 @@ private Q_SLOTS:
             return s;
         };
         Renderer& r = m_headless->renderer();
+        // Sliced whatever share of the map the casters cover (a wide filter's or a blocker
+        // search's reach covers all of it): the next test checks where slices are left out.
+        r.setSlicedCoverageLimit(1.0);
+        const auto restore = qScopeGuard([&] { r.setSlicedCoverageLimit(ShadowMap::kSlicedCoverage); });
         std::vector<QImage> expected, expectedMaps;
         for (int step = 0; step < steps; ++step) {
             expected.push_back(m_headless->renderScene(at(cleared, step), kSize));
@@ -871,6 +877,7 @@ private Q_SLOTS:
         // One clear in map.slices draws, the first included; a perspective or warped map clears
         // every draw.
         const int n = ShadowMap::slicesFor(sliced);
+        QCOMPARE(n > 1, sliced.light.projection == LightProjection::Ortho && sliced.light.warp == LightWarp::None);
         QCOMPARE(clears, raise ? 3 : (steps + n - 1) / n);     // raised: draws 0 and 3 of 3, then 4 of 8
         // A measurement draws into the first slice after a clear, whatever came before: the
         // same settings measure the same. The walk ended in a later slice (its last draw is the
@@ -884,6 +891,29 @@ private Q_SLOTS:
         r.renderVisibility(last, kSize);
         QCOMPARE(r.lastFrame().shadowMapCleared, laterSlice);
         QCOMPARE(r.shadowMap().sliceIndex(), 0);
+    }
+
+    // A draw into a slice reads what its casters cover from memory, where after a clear it
+    // finds it in the cache: where they may cover most of the map (the ground drawn into it)
+    // each draw clears; where they cover a third (seed's cubes), one in map.slices does.
+    void slicesOnlyWhereCastersCoverLittleOfTheMap()
+    {
+        Renderer& r = m_headless->renderer();
+        for (const bool groundInMap : {false, true}) {
+            Settings s = seedWith({groundInMap ? "bias.cull_front=false" : "bias.cull_front=true"});
+            const LightAngles start = lightAngles(s.light.position, s.light.target);
+            int clears = 0;
+            for (int step = 0; step < 8; ++step) {
+                LightAngles a = start;
+                a.azimuth += 5.0 * step;
+                s.light.position = lightPosition(s.light.target, a);
+                m_headless->renderFrame(s, kSize);
+                QVERIFY(r.lastFrame().shadowPassRendered);
+                clears += r.lastFrame().shadowMapCleared;
+                QCOMPARE(r.shadowMap().casterCoverage() > ShadowMap::kSlicedCoverage, groundInMap);
+            }
+            QCOMPARE(clears, groundInMap ? 8 : 2);
+        }
     }
 
     void everyPresetRenders()
