@@ -197,13 +197,6 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
     const int size = m_shadowMap.size();
     const int clearsBefore = m_shadowMap.clearCount();
-    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage).
-    double coverage = count == 1 ? 0.0 : 1.0;
-    for (const ReachBox& box : m_update.reach().boxes) {
-        const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
-        coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
-    }
-    m_shadowMap.setCasterCoverage(std::min(coverage, 1.0));
     // Nothing to shadow: the tile reads lit, and stays so until the view has something.
     const auto wantedVolume = [this](std::size_t i) {
         const FittedLight& fit = m_update.views().set.views[i].fit;
@@ -218,6 +211,14 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
     if (!any)
         return;
+    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage), for the
+    // frames that draw.
+    double coverage = count == 1 ? 0.0 : 1.0;
+    for (const ReachBox& box : m_update.reach().boxes) {
+        const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
+        coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
+    }
+    m_shadowMap.setCasterCoverage(std::min(coverage, 1.0));
     // Only a frame that draws a view is a shadow pass, timed; clearing a tile is not.
     if (draws)
         m_shadowTimer.begin();
