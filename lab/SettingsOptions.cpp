@@ -50,7 +50,7 @@ void applyImportOptions(const QCommandLineParser& parser)
         const QString text = parser.value(option);
         const double value = whole ? double(text.toInt(&ok)) : text.toDouble(&ok);
         if (!ok)
-            throw SettingsError(option, QStringLiteral("'%1' is not %2, e.g. --%3 %4")
+            throw SettingsError(QStringLiteral("--") + option, QStringLiteral("'%1' is not %2, e.g. --%3 %4")
                                             .arg(text, whole ? QStringLiteral("a whole number of MiB") : QStringLiteral("a number of seconds"), option,
                                                  QLatin1String(example)));
         return value;

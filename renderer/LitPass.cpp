@@ -105,8 +105,7 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     // A depth map drawn into slices (map.slices) is read through the slice its last draw wrote.
     // ShadowMap::slicesFor keeps the maps that are never sliced (cascades, perspective, virtual)
     // on the variant without.
-    const bool readsDepth = std::any_of(technique.samplers.begin(), technique.samplers.end(), [](ShadowSampler s) { return s != ShadowSampler::Moments; });
-    if (lookups && readsDepth && ShadowMap::slices(ShadowMap::slicesFor(settings), settings.map.format, reversedDepth))
+    if (lookups && readsDepthSlices(settings, reversedDepth))
         defines << QStringLiteral("DEPTH_SLICES");
     if (lookups && settings.bias.space == BiasSpace::Depth)
         defines << QStringLiteral("BIAS_DEPTH");
@@ -128,6 +127,13 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     else if (settings.shading.texelDensity && settings.shadow.enabled)
         defines << QStringLiteral("TEXEL_DENSITY");   // a view only: never in what is measured
     return defines;
+}
+
+bool LitPass::readsDepthSlices(const Settings& settings, bool reversedDepth)
+{
+    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    const bool readsDepth = std::any_of(samplers.begin(), samplers.end(), [](ShadowSampler s) { return s != ShadowSampler::Moments; });
+    return settings.shadow.enabled && readsDepth && ShadowMap::slices(ShadowMap::slicesFor(settings), settings.map.format, reversedDepth);
 }
 
 bool LitPass::usesContactShadows(const Settings& settings)
@@ -181,14 +187,15 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
         toTile[1][1] = tileUv.y;
         toTile[3][0] = view.column * tileUv.x;
         toTile[3][1] = view.row * tileUv.y;
-        matrices.emplace_back(toTile * frame.depthShadowMatrix * fromCamera);
+        const glm::dmat4 shadowMatrix = m_sliceMatrix * frame.depthShadowMatrix;
+        matrices.emplace_back(toTile * shadowMatrix * fromCamera);
         tiles.emplace_back(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
                            float((view.row + 1) * tileUv.y));
         uvWorld.emplace_back(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()));
         depthRange.emplace_back(float(frame.volume.nearPlane), float(frame.volume.farPlane));
         texels.push_back(float(texelWorldSize(frame.volume, map.size())));
         // An ortho view's depth change per world unit toward the light (AFFINE_VIEW), in double.
-        rayDepths.push_back(float((frame.depthShadowMatrix * glm::dvec4(-frame.direction, 0.0)).z));
+        rayDepths.push_back(float((shadowMatrix * glm::dvec4(-frame.direction, 0.0)).z));
     }
     p.program.set(p.techniqueUniform("uShadowViewCount"), count);
     m_gl->glUniformMatrix4fv(p.techniqueUniform("uShadowViews"), count, GL_FALSE, &matrices[0][0][0]);
@@ -230,9 +237,11 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     }
     if (map == nullptr)
         return;
-    // The bias as set: a bias in texels is scaled by each view's texel in the shader.
-    p.program.set(p.biasSlope, float(settings.bias.slope));
-    p.program.set(p.biasMin, float(settings.bias.min));
+    // The bias as set: a bias in texels is scaled by each view's texel in the shader, one in
+    // depth units by the slice the lookups compare in.
+    const double depthUnit = settings.bias.space == BiasSpace::Depth ? m_sliceMatrix[2][2] : 1.0;
+    p.program.set(p.biasSlope, float(settings.bias.slope * depthUnit));
+    p.program.set(p.biasMin, float(settings.bias.min * depthUnit));
     for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
         p.program.set(p.techniqueUniform(u.name), u.value);
     p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
@@ -240,7 +249,7 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     // One view's position is taken in the vertex stage, with the normal offset in world units
     // from its texel (at unit distance for a perspective light), the wider axis.
     p.program.set(p.normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));
-    p.program.set(p.shadowWorld, glm::mat4(light.depthShadowMatrix));
+    p.program.set(p.shadowWorld, glm::mat4(m_sliceMatrix * light.depthShadowMatrix));
     if (m_views == nullptr || m_views->frames.empty())
         throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
     setViewUniforms(p, camera, settings, *map);
@@ -356,6 +365,7 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
 {
     const auto& items = scene.drawItems();
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
+    const glm::dmat4 shadowMatrix = m_sliceMatrix * light.depthShadowMatrix;
     Program* bound = nullptr;
     for (const auto& [distance, i] : order) {
         const DrawItem& item = items[i];
@@ -368,7 +378,7 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
         p.program.set(p.model, glm::mat4(toCamera * item.model));
         p.program.set(p.normalMatrix, glm::mat3(item.normalMatrix));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * item.model));
-        p.program.set(p.shadowModel, glm::mat4(light.depthShadowMatrix * item.model));
+        p.program.set(p.shadowModel, glm::mat4(shadowMatrix * item.model));
         p.program.set(p.receives, int(item.receivesShadow));
         if (cutout)
             p.program.set(p.alphaCutoff, item.alphaCutoff);
@@ -558,6 +568,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (pageTable)
         bindUnit(m_gl, kPageTableUnit, m_virtualMap->pageTable);
     const ShadowMap* shadowMap = shadows ? map : nullptr;
+    m_sliceMatrix = shadows && readsDepthSlices(settings, light.reversedDepth) ? map->slice().matrix() : glm::dmat4(1.0);
     Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
     if (m_views) {
         for (const LightFrame& frame : m_views->frames)

@@ -58,6 +58,9 @@ public:
     // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
     // technique that can skip its taps).
     static bool usesDepthRange(const Settings& settings);
+    // Whether the lookups of `settings` read a depth map drawn into slices (map.slices): their
+    // shadow matrix then gives stored depth (DepthSlice::matrix).
+    static bool readsDepthSlices(const Settings& settings, bool reversedDepth);
 
     using Variant = LitVariant;
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
@@ -137,6 +140,9 @@ private:
     // shaded without a lookup outside the mask, shaded without a lookup everywhere.
     std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
+    // This frame's conventional-to-stored depth of the map (identity unless its lookups read
+    // slices), folded into every shadow matrix the lit pass sets.
+    glm::dmat4 m_sliceMatrix{1.0};
     const VirtualMapUniforms* m_virtualMap = nullptr;
     const ShadowReach* m_reach = nullptr;
     GLuint m_contactDepth = 0;

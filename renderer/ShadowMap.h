@@ -4,6 +4,7 @@
 #include "Settings.h"
 #include "ShadowTechnique.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <QRect>
@@ -29,6 +30,15 @@ struct DepthSlice {
     double depth(double storedValue) const { return storedValue >= emptyFrom ? 1.0 : std::min((storedValue - offset) / scale, 1.0); }
     // For the shaders' uShadowSlice.
     glm::vec3 uniform() const { return {float(offset), float(scale), float(emptyFrom)}; }
+    // Conventional depth to stored, on homogeneous coordinates: folded into the lit pass's
+    // shadow matrix, so its lookups compare in stored depth with no work per tap.
+    glm::dmat4 matrix() const
+    {
+        glm::dmat4 m(1.0);
+        m[2][2] = scale;
+        m[3][2] = offset;
+        return m;
+    }
     bool operator==(const DepthSlice&) const = default;
 };
 

@@ -77,15 +77,20 @@ def anchor_ratios(binary, quick):
     def median(phase, figure):
         return phase[figure]["median_ms"]
 
-    # The still frames alone in their processes, so no other phase's frames come between theirs.
-    still = phases(["--scene", "seed", "--phase", "steady"])
-    plain = phases(["--scene", "seed", "--phase", "steady", "--set", "shadow.enabled=false"])
+    def shadow_cost(arguments):
+        """The still lit pass with shadows over without, frame by frame in one process (bench
+        --without-shadows): the median of the round-by-round ratios."""
+        report = run_bench(binary, ["bench", "--phase", "steady", "--without-shadows"] + arguments + frames)
+        return report["still_lit_pass_shadows_over_none"]["round_median"]
+
     seed = phases(["--scene", "seed", "--phase", "moving-light", "--anchor"])
     small = phases(["--scene", "seed", "--phase", "moving-light", "--anchor", "--set", "map.size=1024"])
     close = phases(["--scene", "seed", "--phase", "moving-light", "--anchor", "--set", "camera.position=0,0,3", "--set", "camera.target=0,0,-1"])
     city = phases(["--scene", "city", "--phase", "steady"])
     return {
-        "seed, still: lit pass with shadows / without": median(still["steady"], "lit_pass_wall") / median(plain["steady"], "lit_pass_wall"),
+        "seed, still: lit pass with shadows / without": shadow_cost(["--scene", "seed"]),
+        "the same at a 1024 map (the issue's table)": shadow_cost(["--scene", "seed", "--set", "map.size=1024"]),
+        "torus, still: lit pass with shadows / without (a third of the frame looked up)": shadow_cost(["--scene", "torus"]),
         "seed, moving light: frame / the tutorial's program": median(seed["moving-light"], "frame_wall") / median(seed["tutorial-program"], "frame_wall"),
         "the same at the tutorial's 1024 map": median(small["moving-light"], "frame_wall") / median(small["tutorial-program"], "frame_wall"),
         "the same from the tutorial's camera, (0, 0, 3) towards -z": median(close["moving-light"], "frame_wall") / median(close["tutorial-program"], "frame_wall"),

@@ -20,7 +20,7 @@ float blockerDepth(vec2 at)
     at = clamp(at, gShadowTile.xy, gShadowTile.zw);
 #endif
 #ifdef DEPTH_SLICES
-    return sliceDepth(texture(uShadowDepth, at).r);    // what earlier draws left: no blocker
+    return sliceStored(texture(uShadowDepth, at).r);   // what earlier draws left: no blocker
 #else
     return texture(uShadowDepth, at).r;
 #endif

@@ -15,9 +15,23 @@ vec4 sliceDepth(vec4 stored)
     return vec4(sliceDepth(stored.x), sliceDepth(stored.y), sliceDepth(stored.z), sliceDepth(stored.w));
 }
 
-// A comparison's reference as stored, clamped to [0, 1] as a 24-bit map clamps it: beyond the
-// far plane it stays under the gap, lit against what earlier draws left.
-float sliceReference(float reference)
+// The lit pass's lookups compare in stored depth: their shadow matrix folds the slice in
+// (DepthSlice::matrix), so a tap pays nothing for it. The far plane, stored:
+float sliceTop()
 {
-    return uShadowSlice.x + clamp(reference, 0.0, 1.0) * uShadowSlice.y;
+    return uShadowSlice.x + uShadowSlice.y;
+}
+
+// A stored value as a lookup reads it: what earlier draws left (from uShadowSlice.z up) reads
+// as the far plane, as a cleared texel does.
+float sliceStored(float stored)
+{
+    return stored >= uShadowSlice.z ? sliceTop() : stored;
+}
+
+// A stored reference as conventional depth (for distances and the min/max mip, which are kept
+// in conventional depth).
+float storedToDepth(float stored)
+{
+    return (stored - uShadowSlice.x) / uShadowSlice.y;
 }

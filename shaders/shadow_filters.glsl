@@ -26,7 +26,9 @@ float shadowTap(vec2 uv, float reference)
     uv = clamp(uv, gShadowTile.xy, gShadowTile.zw);
 #endif
 #ifdef DEPTH_SLICES
-    reference = sliceReference(reference);
+    // Stored depth; a reference beyond the far plane (a receiver plane's tap may reach there)
+    // stays under the gap, lit against what earlier draws left, as a cleared map's clamp to 1.
+    reference = min(reference, sliceTop());
 #endif
     return texture(uShadowMap, vec3(uv, reference));
 }
@@ -34,6 +36,9 @@ float shadowTap(vec2 uv, float reference)
 // World distance from the light (along its axis) of a depth of the map.
 float shadowDistance(float depth)
 {
+#ifdef DEPTH_SLICES
+    depth = storedToDepth(depth);
+#endif
 #ifdef REVERSED_Z
     depth = 1.0 - depth;
 #endif
@@ -157,6 +162,9 @@ float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
     float farthest = max(max(a.g, b.g), max(c.g, d.g));
     // Clamped as the hardware comparison clamps them, and widened a little: the hardware may
     // round the reference to the map's precision before comparing.
+#ifdef DEPTH_SLICES
+    references = vec2(storedToDepth(references.x), storedToDepth(references.y));
+#endif
     references = clamp(references, 0.0, 1.0) + vec2(-1.0e-5, 1.0e-5);
 #ifdef REVERSED_Z
     if (references.x > farthest)

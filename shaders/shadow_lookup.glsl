@@ -123,6 +123,9 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 #ifdef REVERSED_Z
     if (coord.z < 0.0)
         return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
+#elif defined(DEPTH_SLICES)
+    if (coord.z > sliceTop())
+        return 1.0;             // beyond the far plane (stored, depth_slice.glsl) is lit
 #else
     if (coord.z > 1.0)
         return 1.0;             // beyond the far plane is lit

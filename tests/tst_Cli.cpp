@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 namespace {
 
 struct Run {
@@ -585,6 +587,49 @@ private Q_SLOTS:
         }
         const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "8", "--warmup", "0", "--phase", "moving-light"});
         QVERIFY2(text.out.contains("map cleared in 2 (map.slices=4)"), qPrintable(text.out));
+    }
+
+    // The shadow term's cost: the still frame with and without shadows, frame by frame in one
+    // process, so the ratio of each round's pair is the noise of the ratio itself.
+    void benchTimesTheStillFrameWithoutShadows()
+    {
+        const Run r = shadowlab({"bench", "--size", "96x64", "--frames", "6", "--warmup", "1", "--phase", "steady", "--without-shadows", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject document = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonArray phases = document.value("phases").toArray();
+        QCOMPARE(phases.size(), 2);
+        const QJsonObject on = phases.at(0).toObject(), off = phases.at(1).toObject();
+        QCOMPARE(on.value("phase").toString(), QStringLiteral("steady"));
+        QCOMPARE(off.value("phase").toString(), QStringLiteral("steady-no-shadows"));
+        QCOMPARE(document.value("settings").toObject().value("shadow.enabled").toBool(), true);
+        const QJsonObject cost = document.value("still_lit_pass_shadows_over_none").toObject();
+        QCOMPARE(cost.value("rounds").toInt(), 6);
+        const double ratio = cost.value("ratio_of_medians").toDouble();
+        const double onMedian = on.value("lit_pass_wall").toObject().value("median_ms").toDouble();
+        const double offMedian = off.value("lit_pass_wall").toObject().value("median_ms").toDouble();
+        QVERIFY(offMedian > 0.0);
+        QVERIFY2(std::abs(ratio - onMedian / offMedian) < 1e-9, qPrintable(QString::number(ratio)));
+        QVERIFY(cost.value("round_p10").toDouble() <= cost.value("round_median").toDouble());
+        QVERIFY(cost.value("round_median").toDouble() <= cost.value("round_p90").toDouble());
+        const Run text = shadowlab({"bench", "--size", "96x64", "--frames", "4", "--warmup", "0", "--phase", "both", "--without-shadows"});
+        QVERIFY2(text.exitCode == 0, qPrintable(text.err));
+        QVERIFY2(text.out.contains("still lit pass, shadows on / off: "), qPrintable(text.out));
+        // Nothing still to compare with: a clear refusal, not a silent run.
+        const Run moving = shadowlab({"bench", "--frames", "1", "--phase", "moving-light", "--without-shadows"});
+        QCOMPARE(moving.exitCode, 2);
+        QVERIFY2(moving.err.contains("--without-shadows") && moving.err.contains("--phase steady"), qPrintable(moving.err));
+    }
+
+    // The importer's limits are options, not settings: their messages name them as typed.
+    void importLimitsOutOfRangeNameTheOption()
+    {
+        for (const QStringList& option : {QStringList{"--import-time-limit", "0"}, QStringList{"--import-time-limit", "nan"},
+                                          QStringList{"--import-time-limit", "soon"}, QStringList{"--import-memory-limit", "16"}}) {
+            const Run r = shadowlab(QStringList{"render", "--size", "32x32", "--out", m_dir.filePath("limit.png")} + option);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(option.front() + ": ") && r.err.contains(", e.g. " + option.front() + " "), qPrintable(r.err));
+            QVERIFY(!QFile::exists(m_dir.filePath("limit.png")));
+        }
     }
 
     void benchRefusesAnUnknownPhase()

@@ -792,6 +792,9 @@ private Q_SLOTS:
         QTest::newRow("ground in the map") << "seed" << QStringList{"bias.cull_front=false"};
         QTest::newRow("ground in the map, polygon offset") << "seed" << QStringList{"bias.cull_front=false", "bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
         QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"};
+        // A bias in depth units is compared in the slice's stored depth: scaled with it, or the
+        // shadows would detach by n times as much as set.
+        QTest::newRow("depth units, peter panning") << "seed" << QStringList{"bias.space=depth", "bias.slope=0", "bias.min=0.02"};
         QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"};
         QTest::newRow("polygon offset") << "seed" << QStringList{"bias.polygon_factor=2", "bias.polygon_units=4", "bias.min=0"};
         QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"};

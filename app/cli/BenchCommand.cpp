@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 namespace shadowlab::cli {
 
@@ -191,6 +192,9 @@ void addBenchOptions(QCommandLineParser& parser)
                       QStringLiteral("Also time the LearnOpenGL 3.1.3 tutorial's own frame: a plain OpenGL program of its scene, shaders and "
                                      "state (pcf 3x3 of nine reads, a 1024 map drawn every frame, glFinish as its swap), none of "
                                      "ShadowLab's code, seen by the same camera at the same size; ratios are then to it.")});
+    parser.addOption({QStringLiteral("without-shadows"),
+                      QStringLiteral("Also time the still frame with shadow.enabled=false, interleaved with it frame by frame, and print "
+                                     "the lit pass with shadows over without: what the shadow term costs, with its noise.")});
     parser.addOption({QStringLiteral("json"), QStringLiteral("Print JSON for machines.")});
 }
 
@@ -206,7 +210,18 @@ struct BenchRequest {
     QString phase;
     bool baseline = false;          // also the tutorial's configuration
     bool anchor = false;            // also the tutorial's own program
+    bool withoutShadows = false;    // also the still frame without shadows
 };
+
+bool wantsSteady(const BenchRequest& r)
+{
+    return r.phase == u"all" || r.phase == u"both" || r.phase == u"steady";
+}
+
+bool wantsMovingCamera(const BenchRequest& r)
+{
+    return r.phase == u"all" || r.phase == u"moving-camera";
+}
 
 BenchRequest readBenchRequest(const QCommandLineParser& parser)
 {
@@ -228,14 +243,13 @@ BenchRequest readBenchRequest(const QCommandLineParser& parser)
         throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(r.phase));
     r.baseline = parser.isSet(QStringLiteral("baseline"));
     r.anchor = parser.isSet(QStringLiteral("anchor"));
+    r.withoutShadows = parser.isSet(QStringLiteral("without-shadows"));
+    if (r.withoutShadows && !wantsSteady(r))
+        throw UsageError(QStringLiteral("--without-shadows: it times the still frame without shadows against the steady phase; use "
+                                        "--phase steady, both or all"));
     if (r.anchor && r.settings.scene != u"seed")
         throw UsageError(QStringLiteral("--anchor: the tutorial's program draws its own scene, which is seed's; use --scene seed or leave --anchor out"));
     return r;
-}
-
-bool wantsMovingCamera(const BenchRequest& r)
-{
-    return r.phase == u"all" || r.phase == u"moving-camera";
 }
 
 // The phases `--phase` names, each with its own renderer, and the tutorial's after them.
@@ -252,8 +266,13 @@ std::vector<Phase> makePhases(const BenchRequest& r)
         phases.push_back(std::move(p));
     };
     const bool all = r.phase == u"all";
-    if (all || r.phase == u"both" || r.phase == u"steady")
+    if (wantsSteady(r))
         addPhase("steady", "light and camera still: cached shadow map, lit pass only", r.settings, false);
+    if (r.withoutShadows) {
+        Settings withoutShadows = r.settings;
+        withoutShadows.shadow.enabled = false;
+        addPhase("steady-no-shadows", "the same still frame with shadow.enabled=false", withoutShadows, false);
+    }
     if (all || r.phase == u"both" || r.phase == u"moving-light")
         addPhase("moving-light", "shadow pass every frame", r.settings, true);
     if (wantsMovingCamera(r)) {
@@ -318,14 +337,38 @@ QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
 // frame of every phase a round, so a slow spell of a shared machine moves both sides of a
 // round's ratio alike: their spread is the noise of the ratio itself, which the two phases'
 // own spreads overstate.
-SampleStats roundRatios(const Phase& r, const Phase& reference)
+SampleStats roundRatios(const Phase& r, const Phase& reference, std::vector<double> Phase::*times = &Phase::wall)
 {
+    const std::vector<double>& a = r.*times;
+    const std::vector<double>& b = reference.*times;
     std::vector<double> ratios;
-    for (std::size_t k = 0; k < std::min(r.wall.size(), reference.wall.size()); ++k) {
-        if (reference.wall[k] > 0.0)
-            ratios.push_back(r.wall[k] / reference.wall[k]);
+    for (std::size_t k = 0; k < std::min(a.size(), b.size()); ++k) {
+        if (b[k] > 0.0)
+            ratios.push_back(a[k] / b[k]);
     }
     return summarize(std::move(ratios));
+}
+
+const Phase* findPhase(const std::vector<Phase>& phases, const char* name)
+{
+    const auto found = std::find_if(phases.begin(), phases.end(), [name](const Phase& p) { return p.name == QLatin1String(name); });
+    return found == phases.end() ? nullptr : &*found;
+}
+
+// The still lit pass with shadows over without (--without-shadows): the ratio of the medians,
+// and the p10, median and p90 of the ratios round by round.
+struct ShadowCost {
+    double ratioOfMedians = 0.0;
+    SampleStats rounds;
+};
+
+std::optional<ShadowCost> shadowCost(const std::vector<Phase>& phases)
+{
+    const Phase* on = findPhase(phases, "steady");
+    const Phase* off = findPhase(phases, "steady-no-shadows");
+    if (!on || !off)
+        return std::nullopt;
+    return ShadowCost{summarize(on->litWall).median / summarize(off->litWall).median, roundRatios(*on, *off, &Phase::litWall)};
 }
 
 void printJson(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
@@ -346,15 +389,22 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
         }
         phaseArray.append(phase);
     }
-    out() << QJsonDocument(QJsonObject{{QStringLiteral("renderer"), rendererString},
-                                       {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
-                                       {QStringLiteral("configuration"), configurationSummary(request)},
-                                       {QStringLiteral("scene_load_ms"), request.loadMs},
-                                       {QStringLiteral("triangles"), qint64(request.triangles)},
-                                       {QStringLiteral("objects"), qint64(request.objects)},
-                                       {QStringLiteral("settings"), settingsToJson(request.settings)},
-                                       {QStringLiteral("phases"), phaseArray}})
-                 .toJson(QJsonDocument::Indented);
+    QJsonObject document{{QStringLiteral("renderer"), rendererString},
+                         {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
+                         {QStringLiteral("configuration"), configurationSummary(request)},
+                         {QStringLiteral("scene_load_ms"), request.loadMs},
+                         {QStringLiteral("triangles"), qint64(request.triangles)},
+                         {QStringLiteral("objects"), qint64(request.objects)},
+                         {QStringLiteral("settings"), settingsToJson(request.settings)},
+                         {QStringLiteral("phases"), phaseArray}};
+    if (const std::optional<ShadowCost> cost = shadowCost(phases))
+        document.insert(QStringLiteral("still_lit_pass_shadows_over_none"),
+                        QJsonObject{{QStringLiteral("ratio_of_medians"), cost->ratioOfMedians},
+                                    {QStringLiteral("rounds"), cost->rounds.count},
+                                    {QStringLiteral("round_median"), cost->rounds.median},
+                                    {QStringLiteral("round_p10"), cost->rounds.p10},
+                                    {QStringLiteral("round_p90"), cost->rounds.p90}});
+    out() << QJsonDocument(document).toJson(QJsonDocument::Indented);
 }
 
 // One phase's table; a software renderer's "GPU" rows are left out (see printText). The
@@ -427,15 +477,14 @@ void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
         }
     }
     if (wantsMovingCamera(request)) {
-        auto median = [&](const char* name) {
-            for (const Phase& r : phases) {
-                if (r.name == QLatin1String(name))
-                    return summarize(r.wall).median;
-            }
-            return 0.0;
-        };
+        const auto median = [&](const char* name) { return summarize(findPhase(phases, name)->wall).median; };
         out() << "median frame wall time, shadows on / off with the camera moving: "
               << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
+    }
+    if (const std::optional<ShadowCost> cost = shadowCost(phases)) {
+        out() << "still lit pass, shadows on / off: " << QString::number(cost->ratioOfMedians, 'f', 3) << " (round by round: median "
+              << QString::number(cost->rounds.median, 'f', 3) << ", p10 " << QString::number(cost->rounds.p10, 'f', 3) << ", p90 "
+              << QString::number(cost->rounds.p90, 'f', 3) << ")\n";
     }
 }
 
