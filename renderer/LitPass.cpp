@@ -568,6 +568,8 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (pageTable)
         bindUnit(m_gl, kPageTableUnit, m_virtualMap->pageTable);
     const ShadowMap* shadowMap = shadows ? map : nullptr;
+    // The lookups' variant reads stored depth (DEPTH_SLICES); the one without lookups, which
+    // still takes one for a measurement or the texel-density view, keeps conventional depth.
     m_sliceMatrix = shadows && readsDepthSlices(settings, light.reversedDepth) ? map->slice().matrix() : glm::dmat4(1.0);
     Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
     if (m_views) {
@@ -584,6 +586,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
         variant.outOfReach = true;
+        m_sliceMatrix = glm::dmat4(1.0);
         const Programs plain = programsFor(scene, settings, variant);
         for (Program* p : {plain.plain, plain.cutout}) {
             if (p)
