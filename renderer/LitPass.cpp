@@ -50,7 +50,8 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       lightDirection(program.uniform("uLightDirection")),
       biasSlope(program.uniform("uBiasSlope")),
       biasMin(program.uniform("uBiasMin")),
-      alphaCutoff(program.uniform("uAlphaCutoff"))
+      alphaCutoff(program.uniform("uAlphaCutoff")),
+      depthSlices(defines.contains(QStringLiteral("DEPTH_SLICES")))
 {
 }
 
@@ -167,7 +168,7 @@ LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& se
     return p;
 }
 
-void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map)
+void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map, const glm::dmat4& slice)
 {
     const ShadowViewFrames& views = *m_views;
     const int count = int(std::min<std::size_t>(views.frames.size(), kMaxShadowViews));
@@ -187,7 +188,7 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
         toTile[1][1] = tileUv.y;
         toTile[3][0] = view.column * tileUv.x;
         toTile[3][1] = view.row * tileUv.y;
-        const glm::dmat4 shadowMatrix = m_sliceMatrix * frame.depthShadowMatrix;
+        const glm::dmat4 shadowMatrix = slice * frame.depthShadowMatrix;
         matrices.emplace_back(toTile * shadowMatrix * fromCamera);
         tiles.emplace_back(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
                            float((view.row + 1) * tileUv.y));
@@ -235,11 +236,15 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
         const double half = glm::radians(settings.light.fov) * 0.5;
         p.program.set(p.techniqueUniform("uSpotCone"), glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff)))));
     }
+    // A variant compiled with DEPTH_SLICES compares in the slice's stored depth; any other in
+    // conventional depth (one without lookups still takes one for a measurement).
+    const glm::dmat4 slice = p.depthSlices ? m_sliceMatrix : glm::dmat4(1.0);
+    p.shadowMatrix = slice * light.depthShadowMatrix;
     if (map == nullptr)
         return;
     // The bias as set: a bias in texels is scaled by each view's texel in the shader, one in
     // depth units by the slice the lookups compare in.
-    const double depthUnit = settings.bias.space == BiasSpace::Depth ? m_sliceMatrix[2][2] : 1.0;
+    const double depthUnit = settings.bias.space == BiasSpace::Depth ? slice[2][2] : 1.0;
     p.program.set(p.biasSlope, float(settings.bias.slope * depthUnit));
     p.program.set(p.biasMin, float(settings.bias.min * depthUnit));
     for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
@@ -249,10 +254,10 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     // One view's position is taken in the vertex stage, with the normal offset in world units
     // from its texel (at unit distance for a perspective light), the wider axis.
     p.program.set(p.normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));
-    p.program.set(p.shadowWorld, glm::mat4(m_sliceMatrix * light.depthShadowMatrix));
+    p.program.set(p.shadowWorld, glm::mat4(p.shadowMatrix));
     if (m_views == nullptr || m_views->frames.empty())
         throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
-    setViewUniforms(p, camera, settings, *map);
+    setViewUniforms(p, camera, settings, *map, slice);
     const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
     for (std::size_t i = 0; i < samplers.size(); ++i) {
         const bool readsMoments = samplers[i] == ShadowSampler::Moments;
@@ -360,12 +365,11 @@ void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
     m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 }
 
-void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const CameraFrame& camera,
                           const std::vector<std::pair<double, std::size_t>>& order)
 {
     const auto& items = scene.drawItems();
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
-    const glm::dmat4 shadowMatrix = m_sliceMatrix * light.depthShadowMatrix;
     Program* bound = nullptr;
     for (const auto& [distance, i] : order) {
         const DrawItem& item = items[i];
@@ -378,7 +382,7 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
         p.program.set(p.model, glm::mat4(toCamera * item.model));
         p.program.set(p.normalMatrix, glm::mat3(item.normalMatrix));
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * item.model));
-        p.program.set(p.shadowModel, glm::mat4(shadowMatrix * item.model));
+        p.program.set(p.shadowModel, glm::mat4(p.shadowMatrix * item.model));
         p.program.set(p.receives, int(item.receivesShadow));
         if (cutout)
             p.program.set(p.alphaCutoff, item.alphaCutoff);
@@ -481,17 +485,17 @@ void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
     m_gl->glActiveTexture(GL_TEXTURE0);
 }
 
-void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
                               const std::vector<std::pair<double, std::size_t>>& everywhere,
                               const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors)
 {
-    drawObjects(p, scene, camera, light, everywhere);
+    drawObjects(p, scene, camera, everywhere);
     if (masked.empty())
         return;
     m_gl->glEnable(GL_STENCIL_TEST);
     m_gl->glStencilFunc(stencilFunc, 1, 0xff);
     if (!scissors) {
-        drawObjects(p, scene, camera, light, masked);
+        drawObjects(p, scene, camera, masked);
     } else {
         // Once per rectangle: the rasteriser bins only what lies inside it. The rectangles do
         // not overlap but for their pixel of margin (ShadowReach::screenRects), where the depth
@@ -499,7 +503,7 @@ void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const Ca
         m_gl->glEnable(GL_SCISSOR_TEST);
         for (const QRect& scissor : *scissors) {
             m_gl->glScissor(scissor.x(), scissor.y(), scissor.width(), scissor.height());
-            drawObjects(p, scene, camera, light, masked);
+            drawObjects(p, scene, camera, masked);
         }
     }
     m_gl->glDisable(GL_SCISSOR_TEST);
@@ -568,9 +572,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (pageTable)
         bindUnit(m_gl, kPageTableUnit, m_virtualMap->pageTable);
     const ShadowMap* shadowMap = shadows ? map : nullptr;
-    // The lookups' variant reads stored depth (DEPTH_SLICES); the one without lookups, which
-    // still takes one for a measurement or the texel-density view, keeps conventional depth.
-    m_sliceMatrix = shadows && readsDepthSlices(settings, light.reversedDepth) ? map->slice().matrix() : glm::dmat4(1.0);
+    m_sliceMatrix = shadows ? map->slice().matrix() : glm::dmat4(1.0);
     Variant variant{.measure = measure, .reversedDepth = light.reversedDepth, .warped = light.volume.warped};
     if (m_views) {
         for (const LightFrame& frame : m_views->frames)
@@ -582,17 +584,16 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
         }
-        drawMaskedOrder(lookup, scene, camera, light, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &lookupRects);
+        drawMaskedOrder(lookup, scene, camera, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &lookupRects);
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
         variant.outOfReach = true;
-        m_sliceMatrix = glm::dmat4(1.0);
         const Programs plain = programsFor(scene, settings, variant);
         for (Program* p : {plain.plain, plain.cutout}) {
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
         }
-        drawMaskedOrder(plain, scene, camera, light, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
+        drawMaskedOrder(plain, scene, camera, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
     }
     const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());
 

@@ -95,6 +95,8 @@ private:
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
         GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin, alphaCutoff;
+        bool depthSlices;               // compiled with DEPTH_SLICES: its lookups compare in stored depth
+        glm::dmat4 shadowMatrix{1.0};   // this frame's world -> map, the slice folded in where it reads one
         std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
         GLint techniqueUniform(const QByteArray& name);
     };
@@ -107,7 +109,7 @@ private:
 
     Program& programFor(const Settings& settings, const Variant& variant);
     Programs programsFor(const GpuScene& scene, const Settings& settings, Variant variant);
-    void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map);
+    void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map, const glm::dmat4& slice);
     void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings, const ShadowMap* map,
                           bool readsRange, const DepthRangePass* depthRange);
     // Whether the framebuffer bound now has stencil bits.
@@ -115,7 +117,7 @@ private:
     // Marks the reach's mask (ShadowReach::mask) in the stencil buffer (1 inside) within
     // `pixels`, colour and depth untouched.
     void drawReachMask(const CameraFrame& camera, const QRect& pixels);
-    void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+    void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
                      const std::vector<std::pair<double, std::size_t>>& order);
     // The draw orders of this frame: the receivers in view nearest first, split by the reach;
     // sets m_reachUse (whether a mask is drawn).
@@ -129,7 +131,7 @@ private:
     void unbindShadowTextures(const Settings& settings, bool readsRange);
     // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1: once inside
     // each of `scissors` when given (none: not at all), else over the whole target.
-    void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const LightFrame& light,
+    void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
                          const std::vector<std::pair<double, std::size_t>>& everywhere,
                          const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors);
 
@@ -140,8 +142,8 @@ private:
     // shaded without a lookup outside the mask, shaded without a lookup everywhere.
     std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
-    // This frame's conventional-to-stored depth of the map (identity unless its lookups read
-    // slices), folded into every shadow matrix the lit pass sets.
+    // This frame's conventional-to-stored depth of the map (DepthSlice::matrix), folded into
+    // the shadow matrices of the variants compiled with DEPTH_SLICES.
     glm::dmat4 m_sliceMatrix{1.0};
     const VirtualMapUniforms* m_virtualMap = nullptr;
     const ShadowReach* m_reach = nullptr;
