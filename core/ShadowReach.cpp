@@ -13,29 +13,29 @@ namespace shadowlab {
 
 namespace {
 
-// A box's image in a view's texture space: xy and depth bounds of its corners, or nothing when
-// it lies wholly behind a perspective light (where every receiver is lit). `straddles` when
-// some corners are behind and some in front: its image is then unbounded.
+// A box's image in a view's texture space: xy and depth bounds of its corners and the uv of
+// each, or nothing when it lies wholly behind a perspective light (where every receiver is
+// lit). `straddles` when some corners are behind and some in front: its image is then unbounded.
 struct TextureFootprint {
     bool empty = true;
     bool straddles = false;
     glm::dvec3 min{0.0}, max{0.0};
+    std::vector<glm::dvec2> points;     // the corners' uv, those in front of the light
 };
 
-TextureFootprint footprint(const Bounds& bounds, const glm::dmat4& shadowMatrix)
+TextureFootprint footprint(const std::array<glm::dvec3, 8>& corners, const glm::dmat4& shadowMatrix)
 {
     TextureFootprint f;
-    if (bounds.isEmpty())
-        return f;
     int behind = 0;
     Bounds image;
-    for (const glm::dvec3& corner : bounds.corners()) {
+    for (const glm::dvec3& corner : corners) {
         const glm::dvec4 p = shadowMatrix * glm::dvec4(corner, 1.0);
         if (p.w <= 1e-12) {
             ++behind;
             continue;
         }
         image.extend(glm::dvec3(p) / p.w);
+        f.points.emplace_back(p.x / p.w, p.y / p.w);
     }
     if (behind == 8)
         return f;
@@ -44,6 +44,44 @@ TextureFootprint footprint(const Bounds& bounds, const glm::dmat4& shadowMatrix)
     f.min = image.min;
     f.max = image.max;
     return f;
+}
+
+TextureFootprint footprint(const Bounds& bounds, const glm::dmat4& shadowMatrix)
+{
+    return bounds.isEmpty() ? TextureFootprint{} : footprint(bounds.corners(), shadowMatrix);
+}
+
+// An object's image: its own box's where known, its bounds' otherwise.
+TextureFootprint imageOf(const ReachObject& object, const glm::dmat4& shadowMatrix)
+{
+    return object.box && !object.bounds.isEmpty() ? footprint(*object.box, shadowMatrix) : footprint(object.bounds, shadowMatrix);
+}
+
+// The convex hull of `points`, counter-clockwise, without collinear points (Andrew's
+// monotone chain); fewer than three points where they do not span an area.
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points)
+{
+    std::sort(points.begin(), points.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (points.size() < 3)
+        return {};
+    const auto turn = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::dvec2> hull(2 * points.size());
+    std::size_t k = 0;
+    for (const glm::dvec2& p : points) {
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], p) <= 0.0)
+            --k;
+        hull[k++] = p;
+    }
+    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0.0)
+            --k;
+        hull[k++] = points[i];
+    }
+    hull.resize(k - 1);
+    return hull.size() >= 3 ? hull : std::vector<glm::dvec2>{};
 }
 
 // Whether the light of `view` sees only front faces of the object's culled plane, so that the
@@ -110,6 +148,31 @@ std::array<glm::dvec3, 8> ReachBox::worldCorners() const
     return corners;
 }
 
+std::vector<convex::Polygon> ReachBox::worldFaces() const
+{
+    convex::Polygon section{{uvMin.x, uvMin.y, 0.0}, {uvMax.x, uvMin.y, 0.0}, {uvMax.x, uvMax.y, 0.0}, {uvMin.x, uvMax.y, 0.0}};
+    for (const glm::dvec3& e : uvEdges) {
+        section = convex::clip(section, convex::Plane{glm::dvec3(e.x, e.y, 0.0), e.z});
+        if (section.size() < 3)
+            return {};
+    }
+    const auto world = [&](const glm::dvec3& uv, double depth) {
+        const glm::dvec4 p = textureToWorld * glm::dvec4(uv.x, uv.y, depth, 1.0);
+        return glm::dvec3(p) / p.w;
+    };
+    convex::Polygon nearCap, farCap;
+    for (const glm::dvec3& c : section) {
+        nearCap.push_back(world(c, depthMin));
+        farCap.push_back(world(c, depthMax));
+    }
+    std::vector<convex::Polygon> faces;
+    for (std::size_t i = 0, n = section.size(); i < n; ++i)
+        faces.push_back({nearCap[i], nearCap[(i + 1) % n], farCap[(i + 1) % n], farCap[i]});
+    faces.push_back(std::move(nearCap));
+    faces.push_back(std::move(farCap));
+    return faces;
+}
+
 int ShadowReach::outsideCount() const
 {
     return int(std::count(objects.begin(), objects.end(), Reach::Outside));
@@ -124,7 +187,8 @@ namespace {
 
 struct UvRect {
     glm::dvec2 min, max;
-    double depth = 0.0;     // the nearest caster's depth
+    double depth = 0.0;                 // the nearest caster's depth
+    std::vector<glm::dvec2> points;     // its casters' corners in uv, ungrown; empty: the rectangle alone
 
     bool overlaps(const UvRect& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
     void extend(const UvRect& o)
@@ -132,6 +196,10 @@ struct UvRect {
         min = glm::min(min, o.min);
         max = glm::max(max, o.max);
         depth = std::min(depth, o.depth);
+        if (points.empty() || o.points.empty())
+            points.clear();
+        else
+            points.insert(points.end(), o.points.begin(), o.points.end());
     }
 };
 
@@ -162,6 +230,35 @@ std::vector<UvRect> mergedRects(std::vector<UvRect> rects)
         rects.assign(1, all);
     }
     return rects;
+}
+
+// The edges of the convex hull of `points` as half-planes a u + b v + c >= 0, each moved out by
+// how far a rectangle of half-size `grow` reaches across it (the hull grown by the taps).
+std::vector<glm::dvec3> hullEdges(const std::vector<glm::dvec2>& points, const glm::dvec2& grow)
+{
+    const std::vector<glm::dvec2> hull = convexHull(points);
+    std::vector<glm::dvec3> edges;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+        const glm::dvec2 a = hull[i], along = hull[(i + 1) % hull.size()] - a;
+        const double length = glm::length(along);
+        if (!(length > 0.0))
+            continue;       // leaving a cut out only widens the column
+        const glm::dvec2 out = glm::dvec2(along.y, -along.x) / length;
+        edges.emplace_back(-out.x, -out.y, glm::dot(out, a) + grow.x * std::abs(out.x) + grow.y * std::abs(out.y));
+    }
+    return edges;
+}
+
+// Whether the rectangle from `lo` to `hi` lies wholly outside one of `edges`.
+bool outsideAnEdge(const std::vector<glm::dvec3>& edges, const glm::dvec2& lo, const glm::dvec2& hi)
+{
+    for (const glm::dvec3& e : edges) {
+        // The rectangle's corner farthest inside the edge.
+        const glm::dvec2 best(e.x >= 0.0 ? hi.x : lo.x, e.y >= 0.0 ? hi.y : lo.y);
+        if (e.x * best.x + e.y * best.y + e.z < 0.0)
+            return true;
+    }
+    return false;
 }
 
 // How far a view's taps reach around a caster: the taps' grow and, with a normal offset, the
@@ -199,19 +296,19 @@ std::optional<std::vector<ReachBox>> viewBoxes(const Settings& settings, const L
     for (const ReachObject& object : casters) {
         if (!object.casts || culledFrom(object, view))
             continue;
-        const TextureFootprint f = footprint(object.bounds, view.shadowMatrix);
+        const TextureFootprint f = imageOf(object, view.shadowMatrix);
         if (f.empty)
             continue;
         anywhere = anywhere || f.straddles || !taps.texels;
         // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
         const double depth = taps.nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : 0.0;
         UvRect r{glm::clamp(glm::dvec2(f.min) - taps.grow, 0.0, 1.0) - offsetUv, glm::clamp(glm::dvec2(f.max) + taps.grow, 0.0, 1.0) + offsetUv,
-                 depth};
+                 depth, f.points};
         if (r.min.x < r.max.x && r.min.y < r.max.y)
             rects.push_back(r);
     }
     if (anywhere)
-        rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0});
+        rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0, {}});
     std::vector<ReachBox> boxes;
     const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
     for (const UvRect& r : mergedRects(std::move(rects))) {
@@ -221,6 +318,7 @@ std::optional<std::vector<ReachBox>> viewBoxes(const Settings& settings, const L
         box.uvMax = r.max;
         box.depthMin = r.depth;
         box.depthMax = farFace;
+        box.uvEdges = hullEdges(r.points, glm::dvec2(taps.grow) + offsetUv);
         for (const glm::dvec3& c : box.worldCorners()) {
             if (!finite(c))
                 return std::nullopt;  // a degenerate light matrix: no box to draw
@@ -237,7 +335,7 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
     for (std::size_t v = 0; v < views.size() && r != Reach::Inside; ++v) {
         if (perView[v].empty())
             continue;
-        const TextureFootprint f = footprint(object.bounds, views[v].shadowMatrix);
+        const TextureFootprint f = imageOf(object, views[v].shadowMatrix);
         if (f.empty)
             continue;
         if (f.straddles) {
@@ -246,7 +344,7 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
         }
         for (const ReachBox& box : perView[v]) {
             const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
-                || f.max.z < box.depthMin || f.min.z > box.depthMax;
+                || f.max.z < box.depthMin || f.min.z > box.depthMax || outsideAnEdge(box.uvEdges, glm::dvec2(f.min), glm::dvec2(f.max));
             // What lies outside the map's square or its depth range reads lit whatever the
             // casters, so a receiver is within a box when the rest of it is: its few lookups
             // there cost less than the box's faces in the mask (a caster before the near plane,
@@ -256,10 +354,11 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
             const glm::dvec3 fMin = glm::clamp(f.min, lo, hi), fMax = glm::clamp(f.max, lo, hi);
             const bool within = fMin.x >= box.uvMin.x && fMax.x <= box.uvMax.x && fMin.y >= box.uvMin.y && fMax.y <= box.uvMax.y
                 && fMin.z >= box.depthMin && fMax.z <= box.depthMax;
+            if (apart)
+                continue;
             if (within)
                 return Reach::Inside;
-            if (!apart)
-                r = Reach::Partly;
+            r = Reach::Partly;
         }
     }
     return r;
@@ -275,10 +374,19 @@ std::vector<convex::Plane> boxPlanes(const ReachBox& box, double margin)
         toCube[axis][axis] = 2.0 / (hi[axis] - lo[axis]);
         toCube[3][axis] = -1.0 - lo[axis] * toCube[axis][axis];
     }
+    const glm::dmat4 worldToTexture = glm::inverse(box.textureToWorld);
     std::vector<convex::Plane> planes;
-    for (convex::Plane plane : convex::frustumPlanes(toCube * glm::inverse(box.textureToWorld))) {
+    for (convex::Plane plane : convex::frustumPlanes(toCube * worldToTexture)) {
         plane.d += margin;
         planes.push_back(plane);
+    }
+    // An edge's a u + b v + c >= 0 is a x + b y + c w >= 0 of the texture's homogeneous
+    // coordinates, in front of the light (w > 0): a plane of world positions through the matrix.
+    for (const glm::dvec3& e : box.uvEdges) {
+        const glm::dvec4 p = glm::transpose(worldToTexture) * glm::dvec4(e.x, e.y, 0.0, e.z);
+        const double length = glm::length(glm::dvec3(p));
+        if (length > 0.0 && std::isfinite(length))
+            planes.push_back({glm::dvec3(p) / length, p.w / length + margin});
     }
     return planes;
 }
@@ -371,7 +479,7 @@ void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, co
     }
     if (boxes) {
         for (const ReachBox& box : reach.boxes) {
-            std::vector<convex::Polygon> faces = convex::hexahedronFaces(box.worldCorners());
+            std::vector<convex::Polygon> faces = box.worldFaces();
             reach.mask.insert(reach.mask.end(), faces.begin(), faces.end());
             parts.push_back(std::move(faces));
         }
@@ -387,7 +495,7 @@ void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, co
         share += std::max(hi.x - lo.x, 0.0) * std::max(hi.y - lo.y, 0.0) / 4.0;
         all0 = glm::min(all0, lo);
         all1 = glm::max(all1, hi);
-        rects.push_back({lo, hi});
+        rects.push_back({lo, hi, 0.0, {}});
     }
     reach.screenShare = std::min(share, 1.0);
     reach.screenRect = rects.empty() ? glm::dvec4(0.0) : glm::dvec4(all0, all1);

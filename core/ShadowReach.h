@@ -37,7 +37,13 @@ struct ReachBox {
     double depthMin = 0.0;
     double depthMax = 1.0;
     glm::dmat4 textureToWorld{1.0};     // inverse of the view's shadowMatrix
+    // Half-planes a u + b v + c >= 0 (x, y, z = a, b, c) that cut the rectangle down to the
+    // convex hull of its casters' images, grown as the rectangle is: a box turned against the
+    // light casts a hexagon, not its bounding rectangle. Empty: the rectangle alone.
+    std::vector<glm::dvec3> uvEdges;
     std::array<glm::dvec3, 8> worldCorners() const;
+    // The column's faces in world space: the rectangle cut by uvEdges, from depthMin to depthMax.
+    std::vector<convex::Polygon> worldFaces() const;
 };
 
 enum class Reach { Outside, Partly, Inside };
@@ -72,6 +78,9 @@ struct WorldPlane {
 
 struct ReachObject {
     Bounds bounds;                      // world
+    // The object's own box through its model (corner i as Bounds::corners()), where known: an
+    // object turned against the world's axes covers only the hull of its image on the map.
+    std::optional<std::array<glm::dvec3, 8>> box;
     bool casts = false;
     bool receives = false;
     // A flat mesh: the world plane its triangles lie in and face out of. A flat receiver's

@@ -46,13 +46,14 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const std::optional<WorldPlane> plane = worldPlane(layout.meshPlane(object.mesh), object.model);
-        casters.push_back({.bounds = layout.objectBounds(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
+        casters.push_back({.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
                            .frontFacesCulled = cullsFrontFaces && plane});
     }
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : layout.drawItems()) {
         const std::optional<WorldPlane> plane = item.batch ? std::nullopt : worldPlane(layout.meshPlane(item.mesh), item.model);
-        receivers.push_back({.bounds = item.bounds, .casts = item.castsShadow, .receives = item.receivesShadow, .plane = plane, .frontFacesCulled = false});
+        const std::optional<std::array<glm::dvec3, 8>> box = item.batch ? std::nullopt : std::optional(layout.objectBox(item.objects.front()));
+        receivers.push_back({.bounds = item.bounds, .box = box, .casts = item.castsShadow, .receives = item.receivesShadow, .plane = plane, .frontFacesCulled = false});
     }
     return shadowReach(settings, views, settings.map.size, casters, receivers, camera);
 }

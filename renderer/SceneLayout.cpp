@@ -41,13 +41,30 @@ DrawItem aloneItem(const Scene& scene, std::size_t i, const Bounds& bounds)
 
 SceneLayout::SceneLayout(const Scene& scene)
 {
+    for (const Mesh& mesh : scene.meshes) {
+        Bounds local;
+        for (const Vertex& v : mesh.vertices)
+            local.extend(glm::dvec3(v.position));
+        m_meshBounds.push_back(local);
+    }
     for (const SceneObject& object : scene.objects) {
-        m_objectBounds.push_back(scene.worldBounds(object));
+        m_objectBounds.push_back(m_meshBounds.at(std::size_t(object.mesh)).transformed(object.model));
+        m_objectModels.push_back(object.model);
+        m_objectMeshes.push_back(object.mesh);
         m_bounds.extend(m_objectBounds.back());
     }
     for (const Mesh& mesh : scene.meshes)
         m_meshPlanes.push_back(flatPlane(mesh));
     layOutItems(scene);
+}
+
+std::array<glm::dvec3, 8> SceneLayout::objectBox(std::size_t i) const
+{
+    const glm::dmat4& model = m_objectModels.at(i);
+    std::array<glm::dvec3, 8> corners = m_meshBounds.at(std::size_t(m_objectMeshes.at(i))).corners();
+    for (glm::dvec3& c : corners)
+        c = glm::dvec3(model * glm::dvec4(c, 1.0));
+    return corners;
 }
 
 void SceneLayout::layOutItems(const Scene& scene)

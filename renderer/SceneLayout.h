@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -53,6 +54,9 @@ public:
 
     // World bounds of scene.objects[i] (culling runs per frame).
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
+    // The corners of scene.objects[i]'s mesh's own box through its model (as Bounds::corners()):
+    // tighter than objectBounds where the object turns.
+    std::array<glm::dvec3, 8> objectBox(std::size_t i) const;
     // The scene's bounds: Scene::bounds() visits every vertex.
     const Bounds& bounds() const { return m_bounds; }
     // flatPlane() of scene.meshes[mesh].
@@ -67,6 +71,9 @@ private:
     void layOutItems(const Scene& scene);
 
     std::vector<Bounds> m_objectBounds;
+    std::vector<Bounds> m_meshBounds;           // each mesh's, in its own space
+    std::vector<glm::dmat4> m_objectModels;
+    std::vector<int> m_objectMeshes;
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
     std::vector<DrawItem> m_items;
     Bounds m_bounds;

@@ -625,9 +625,9 @@ private Q_SLOTS:
         const CameraFrame camera = computeCameraFrame(cameraSettings, 16.0 / 9.0, scene);
         const Bounds groundBounds{{-5.0, 0.0, -5.0}, {5.0, 0.0, 5.0}};
         std::vector<ReachObject> objects{
-            {.bounds = groundBounds, .casts = true, .receives = true, .plane = WorldPlane{glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)}, .frontFacesCulled = true},
-            {.bounds = Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, .casts = true, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
-            {.bounds = Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, .casts = false, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
+            {.bounds = groundBounds, .box = std::nullopt, .casts = true, .receives = true, .plane = WorldPlane{glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)}, .frontFacesCulled = true},
+            {.bounds = Bounds{{-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}}, .box = std::nullopt, .casts = true, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
+            {.bounds = Bounds{{3.0, 0.0, 3.0}, {4.0, 0.5, 4.0}}, .box = std::nullopt, .casts = false, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
         };
         const ShadowReach reach = shadowReach(s, {light}, 1024, objects, objects, camera);
         QCOMPARE(int(reach.boxes.size()), 1);
@@ -653,7 +653,7 @@ private Q_SLOTS:
         QVERIFY(std::abs(piece.center().x) < 1e-6 && std::abs(piece.center().z) < 1e-6);
         // A receiver that is not flat and straddles too: the column's faces join the mask.
         std::vector<ReachObject> withRock = objects;
-        withRock.push_back({.bounds = Bounds{{0.3, 0.0, 0.3}, {1.5, 0.2, 1.5}}, .casts = false, .receives = true, .plane = std::nullopt,
+        withRock.push_back({.bounds = Bounds{{0.3, 0.0, 0.3}, {1.5, 0.2, 1.5}}, .box = std::nullopt, .casts = false, .receives = true, .plane = std::nullopt,
                             .frontFacesCulled = false});
         const ShadowReach rock = shadowReach(s, {light}, 1024, objects, withRock, camera);
         QCOMPARE(rock.objects[3], Reach::Partly);
@@ -689,13 +689,93 @@ private Q_SLOTS:
         QVERIFY(referencesStayNearer(wide));
     }
 
+    // A caster turned against the light's axes reaches only the hull of its box's image: a cube
+    // turned 45 degrees under a light from above shadows a diamond, half its bounding square,
+    // and a receiver in the square's corner beside it is out of reach. Ortho and spot lights.
+    void reachOfATurnedCasterIsItsHull_data()
+    {
+        QTest::addColumn<bool>("spot");
+        QTest::newRow("directional") << false;
+        QTest::newRow("spot") << true;
+    }
+
+    void reachOfATurnedCasterIsItsHull()
+    {
+        QFETCH(bool, spot);
+        Settings s;
+        s.light.position = {0.0, 10.0, 0.0};
+        s.light.target = {0.0, 0.0, 0.0};
+        s.light.extent = 5.0;
+        s.light.nearPlane = 1.0;
+        s.light.farPlane = 20.0;
+        if (spot) {
+            s.light.type = LightType::Spot;
+            s.light.projection = LightProjection::Perspective;
+        }
+        const LightFrame light = computeLightFrame(s.light);
+        CameraSettings cameraSettings;
+        cameraSettings.position = {0.0, 6.0, 8.0};
+        cameraSettings.target = {0.0, 0.0, 0.0};
+        const CameraFrame camera = computeCameraFrame(cameraSettings, 16.0 / 9.0, Bounds{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}});
+        const glm::dmat4 turned = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.5, 0.0)), glm::radians(45.0), glm::dvec3(0.0, 1.0, 0.0));
+        std::array<glm::dvec3, 8> cube = Bounds{glm::dvec3(-0.5), glm::dvec3(0.5)}.corners();
+        for (glm::dvec3& c : cube)
+            c = glm::dvec3(turned * glm::dvec4(c, 1.0));
+        const Bounds cubeBounds = Bounds{glm::dvec3(-0.5), glm::dvec3(0.5)}.transformed(turned);
+        const auto scene = [&](std::optional<std::array<glm::dvec3, 8>> box) {
+            return std::vector<ReachObject>{
+                {.bounds = Bounds{{-5.0, 0.0, -5.0}, {5.0, 0.0, 5.0}}, .box = std::nullopt, .casts = true, .receives = true,
+                 .plane = WorldPlane{glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0)}, .frontFacesCulled = true},
+                {.bounds = cubeBounds, .box = box, .casts = true, .receives = true, .plane = std::nullopt, .frontFacesCulled = false},
+                {.bounds = Bounds{{0.56, 0.0, 0.56}, {0.62, 0.05, 0.62}}, .box = std::nullopt, .casts = false, .receives = true, .plane = std::nullopt,
+                 .frontFacesCulled = false},
+            };
+        };
+        const ShadowReach hull = shadowReach(s, {light}, 1024, scene(cube), scene(cube), camera);
+        const ShadowReach square = shadowReach(s, {light}, 1024, scene(std::nullopt), scene(std::nullopt), camera);
+        QCOMPARE(int(hull.boxes.size()), 1);
+        QVERIFY(!hull.boxes.front().uvEdges.empty());
+        QVERIFY(square.boxes.front().uvEdges.empty() || square.boxes.front().uvEdges.size() == 4);
+        QCOMPARE(hull.objects[0], Reach::Partly);
+        QCOMPARE(hull.objects[1], Reach::Inside);           // the cube is its own receiver, looked up everywhere
+        QCOMPARE(hull.objects[2], Reach::Outside);          // beside the diamond
+        QCOMPARE(square.objects[2], Reach::Inside);         // within the bounding square: looked up
+        QCOMPARE(int(hull.mask.size()), 1);
+        QCOMPARE(int(square.mask.size()), 1);
+        const double hullArea = convex::area(hull.mask), squareArea = convex::area(square.mask);
+        // The cube's shadow on the ground: its top corners seen from the light (the spot's
+        // rays spread them by 10 / 9), which the piece must hold.
+        const double spread = spot ? 10.0 / 9.0 : 1.0;
+        const double radius = std::sqrt(0.5) * spread;
+        // Both grow by the taps' reach, a few texels: the diamond's piece stays near half the square's.
+        QVERIFY2(hullArea > 2.0 * radius * radius, qPrintable(QStringLiteral("hull %1, diamond %2").arg(hullArea).arg(2.0 * radius * radius)));
+        QVERIFY2(hullArea < 0.6 * squareArea, qPrintable(QStringLiteral("hull %1, square %2").arg(hullArea).arg(squareArea)));
+        const convex::Polygon& piece = hull.mask.front();
+        for (const glm::dvec3& corner : {glm::dvec3(radius, 0.0, 0.0), glm::dvec3(-radius, 0.0, 0.0), glm::dvec3(0.0, 0.0, radius), glm::dvec3(0.0, 0.0, -radius)}) {
+            // Inside a convex polygon: on the same side of every edge as its centre.
+            glm::dvec3 centre(0.0);
+            for (const glm::dvec3& p : piece)
+                centre += p / double(piece.size());
+            for (std::size_t i = 0; i < piece.size(); ++i) {
+                const glm::dvec3 a = piece[i], b = piece[(i + 1) % piece.size()];
+                const double side = glm::cross(b - a, corner - a).y * glm::cross(b - a, centre - a).y;
+                QVERIFY2(side >= 0.0, qPrintable(QStringLiteral("the shadow's corner %1, %2 lies outside the mask").arg(corner.x).arg(corner.z)));
+            }
+        }
+        // The column's faces, for receivers that are not flat: a prism over the hull.
+        const std::vector<convex::Polygon> faces = hull.boxes.front().worldFaces();
+        QVERIFY(faces.size() >= 6);
+        const double prism = convex::area(faces), box = convex::area(convex::hexahedronFaces(hull.boxes.front().worldCorners()));
+        QVERIFY2(prism < 0.8 * box, qPrintable(QStringLiteral("prism %1, box %2").arg(prism).arg(box)));
+    }
+
     // Nothing casts: no box, and every receiver is out of reach.
     void reachOfNothingIsEmpty()
     {
         Settings s = presetSettings("seed");
         const LightFrame light = computeLightFrame(s.light);
         const CameraFrame camera = computeCameraFrame(s.camera, 1.5, Bounds{{-5.0, -1.0, -5.0}, {5.0, 2.0, 5.0}});
-        const std::vector<ReachObject> objects{{.bounds = Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, .casts = false, .receives = true, .plane = {}, .frontFacesCulled = false}};
+        const std::vector<ReachObject> objects{{.bounds = Bounds{{-1.0, 0.0, -1.0}, {1.0, 1.0, 1.0}}, .box = std::nullopt, .casts = false, .receives = true, .plane = {}, .frontFacesCulled = false}};
         const ShadowReach reach = shadowReach(s, {light}, 2048, objects, objects, camera);
         QVERIFY(reach.boxes.empty());
         QCOMPARE(reach.objects.front(), Reach::Outside);

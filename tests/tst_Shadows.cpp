@@ -664,6 +664,50 @@ private Q_SLOTS:
         qInfo("masked %d, %d of %d draws without a lookup", int(stats.litReachMasked), stats.litPlainDraws, stats.litDraws);
     }
 
+    // Casters turned against the light reach only the hull of their own box's image: the
+    // columns are prisms, not boxes, and a slab that straddles them (a receiver that is not
+    // flat) is masked by the prisms' faces. Exact under every light, and tighter than boxes.
+    void turnedCastersMaskExactly_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("directional") << QStringList{};
+        QTest::newRow("directional, pcf 7") << QStringList{"filter.mode=pcf", "filter.kernel=7"};
+        QTest::newRow("grazing light") << QStringList{"light.position=-9,0.8,3"};
+        QTest::newRow("light straight above") << QStringList{"light.position=0.01,7,0"};
+        QTest::newRow("spot") << QStringList{"light.type=spot"};
+        QTest::newRow("point") << QStringList{"light.type=point"};
+        QTest::newRow("cascades") << QStringList{"shadow.cascades=3"};
+        QTest::newRow("normal offset") << QStringList{"bias.normal=4"};
+        QTest::newRow("camera low, among the columns") << QStringList{"camera.position=2.6,0.4,-1.8", "camera.target=-0.5,0.2,0.8"};
+    }
+
+    void turnedCastersMaskExactly()
+    {
+        QFETCH(QStringList, assignments);
+        Settings settings = presetSettings("seed");
+        for (const QString& a : assignments)
+            applyAssignment(settings, a);
+        Scene scene = buildScene("seed");
+        // Every cube turned a different way, and a slab under them, 3 x 0.2 x 3, that casts nothing.
+        for (std::size_t i = 1; i < scene.objects.size(); ++i) {
+            const glm::dvec3 axis = glm::normalize(glm::dvec3(double(i), 1.0, 2.0 - double(i)));
+            scene.objects[i].model = scene.objects[i].model * glm::rotate(glm::dmat4(1.0), glm::radians(25.0 + 20.0 * double(i)), axis);
+        }
+        SceneObject slab = scene.objects[1];
+        slab.name = QStringLiteral("slab");
+        slab.castsShadow = false;           // a receiver only, so that it straddles the columns
+        slab.model = glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(0.3, -0.4, 0.6)), glm::dvec3(1.5, 0.1, 1.5));
+        scene.objects.push_back(slab);
+        const FrameStats stats = compareSkippingOutOfReach(settings, scene);
+        m_headless->renderer().setScene(scene);
+        m_headless->renderScene(settings, kSize);
+        const ShadowReach& reach = m_headless->renderer().shadowReach();
+        QCOMPARE(reach.partlyCount(), 2);                   // the ground and the slab
+        qInfo("masked %d, %d of %d draws without a lookup, %d faces in the mask", int(stats.litReachMasked), stats.litPlainDraws, stats.litDraws,
+              int(reach.mask.size()));
+        m_headless->renderer().setScene(std::nullopt);
+    }
+
     // Seed's ground is out of reach except around the cubes' columns: it is drawn with and
     // without a lookup under the mask, and a scene where nothing casts needs no lookup at all.
     void lookupsOnlyWhereACasterReaches()
