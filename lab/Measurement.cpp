@@ -2,9 +2,11 @@
 
 #include "Renderer.h"
 #include "SceneLibrary.h"
+#include "ShadowTechnique.h"
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
 
 namespace shadowlab {
 
@@ -87,13 +89,31 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
     }
 }
 
+namespace {
+
+// What a run allocates for its maps: runs that agree share the renderer's textures, so a switch
+// between them reallocates nothing (a 2048 moments map and its scratch are 128 MB to fault in).
+auto storageOrder(const Settings& s)
+{
+    const ShadowMapKind kind = shadowTechnique(s.filter.mode).map;
+    return std::make_tuple(int(kind), int(s.moments.format), s.moments.mipmaps, s.map.size, int(s.map.format), s.shadow.cascades, s.shadow.virtualMap);
+}
+
+} // namespace
+
 void timeUntilSteady(std::vector<TimedRun>& runs, QSize size, int warmup, const SteadyTiming& rule, const std::function<void(double)>& progress)
 {
     const int batch = std::max(1, rule.batch);
     std::vector<int> rendered(runs.size(), 0);      // frames of each run's camera path so far
     std::vector<bool> steady(runs.size(), false);
+    // Each round visits every run once (so a slow spell still lands on all alike), runs that
+    // share their maps' storage one after another.
+    std::vector<std::size_t> order(runs.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return storageOrder(runs[a].settings) < storageOrder(runs[b].settings); });
     for (bool first = true; std::find(steady.begin(), steady.end(), false) != steady.end(); first = false) {
-        for (std::size_t r = 0; r < runs.size(); ++r) {
+        for (const std::size_t r : order) {
             if (steady[r])
                 continue;
             TimedRun& run = runs[r];

@@ -34,24 +34,34 @@ MeasureTarget::MeasureTarget(GlFunctions* gl) : m_gl(gl) {}
 
 RenderTarget MeasureTarget::ensure(QSize size)
 {
-    if (m_framebuffer && size == m_size)
-        return {m_framebuffer.id(), m_size};
-    GlFramebuffer framebuffer = makeFramebuffer(m_gl);
-    GlTexture color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size, "colour");
-    GlTexture position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "position, visibility");
-    GlTexture normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "normal, mask");
-    GlTexture ambient = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "ambient light");
-    GlTexture direct = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "direct light");
+    if (!(m_current.framebuffer && m_current.size == size)) {
+        Attachments next = m_before.framebuffer && m_before.size == size ? std::move(m_before) : allocate(size);
+        m_before = std::move(m_current);
+        m_current = std::move(next);
+    }
+    return {m_current.framebuffer.id(), m_current.size};
+}
+
+MeasureTarget::Attachments MeasureTarget::allocate(QSize size) const
+{
+    Attachments a;
+    a.size = size;
+    a.framebuffer = makeFramebuffer(m_gl);
+    a.color = makeAttachment(m_gl, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, size, "colour");
+    a.position = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "position, visibility");
+    a.normal = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "normal, mask");
+    a.ambient = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "ambient light");
+    a.direct = makeAttachment(m_gl, GL_RGBA32F, GL_RGBA, GL_FLOAT, size, "direct light");
     // With stencil: the lit pass masks where a shadow lookup can find a caster (core/ShadowReach.h).
-    GlTexture depth = makeAttachment(m_gl, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, size, "depth, stencil");
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    labelGlObject(GlLabelKind::Framebuffer, framebuffer.id(), QStringLiteral("measurement"));
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, position.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, normal.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, ambient.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT4, GL_TEXTURE_2D, direct.id(), 0);
-    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+    a.depth = makeAttachment(m_gl, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, size, "depth, stencil");
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, a.framebuffer.id());
+    labelGlObject(GlLabelKind::Framebuffer, a.framebuffer.id(), QStringLiteral("measurement"));
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, a.color.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, a.position.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, a.normal.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D, a.ambient.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT4, GL_TEXTURE_2D, a.direct.id(), 0);
+    m_gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, a.depth.id(), 0);
     const GLenum buffers[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
     m_gl->glDrawBuffers(5, buffers);
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
@@ -61,30 +71,23 @@ RenderTarget MeasureTarget::ensure(QSize size)
                               .arg(size.width())
                               .arg(size.height())
                               .arg(status, 0, 16));
-    m_framebuffer = std::move(framebuffer);
-    m_color = std::move(color);
-    m_position = std::move(position);
-    m_normal = std::move(normal);
-    m_ambient = std::move(ambient);
-    m_direct = std::move(direct);
-    m_depth = std::move(depth);
-    m_size = size;
-    return {m_framebuffer.id(), m_size};
+    return a;
 }
 
 VisibilityBuffer MeasureTarget::read(const glm::dvec3& cameraPosition) const
 {
+    const QSize size = m_current.size;
     VisibilityBuffer b;
-    b.size = m_size;
+    b.size = size;
     b.cameraPosition = cameraPosition;
-    const int w = m_size.width(), h = m_size.height();
+    const int w = size.width(), h = size.height();
     b.positionVisibility.resize(std::size_t(w) * std::size_t(h));
     b.normalMask.resize(b.positionVisibility.size());
     b.ambientLight.resize(b.positionVisibility.size());
     b.directLight.resize(b.positionVisibility.size());
-    b.image = QImage(m_size, QImage::Format_RGBA8888);
+    b.image = QImage(size, QImage::Format_RGBA8888);
 
-    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer.id());
+    m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, m_current.framebuffer.id());
     m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
     m_gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
     m_gl->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, b.image.bits());

@@ -75,6 +75,33 @@ private Q_SLOTS:
     // The light terms the lit pass writes make the very frame it shows, so the frame shaded
     // with the reference's visibility is that frame with only its shadows changed; and acne
     // spoils that picture far more than the defaults do.
+    // Measurements at two sizes in turn (a flicker walk's small frames between full ones):
+    // each reads its own size's pixels, the same as when measured alone, and a third size
+    // after them still measures right.
+    void measurementsAlternatingSizesReadTheirOwn()
+    {
+        HeadlessRenderer headless;
+        Renderer& r = headless.renderer();
+        const Settings seed = presetSettings("seed");
+        const QSize full(320, 180), small(16, 9), other(200, 120);
+        const VisibilityBuffer first = r.renderVisibility(seed, full);
+        const VisibilityBuffer firstSmall = r.renderVisibility(seed, small);
+        const auto same = [](const VisibilityBuffer& a, const VisibilityBuffer& b) {
+            return a.size == b.size && a.image == b.image && a.positionVisibility.size() == b.positionVisibility.size()
+                && std::equal(a.positionVisibility.begin(), a.positionVisibility.end(), b.positionVisibility.begin());
+        };
+        for (int i = 0; i < 3; ++i) {
+            QVERIFY(same(r.renderVisibility(seed, full), first));
+            QVERIFY(same(r.renderVisibility(seed, small), firstSmall));
+        }
+        const VisibilityBuffer third = r.renderVisibility(seed, other);
+        QCOMPARE(third.size, other);
+        QCOMPARE(third.image.size(), other);
+        HeadlessRenderer alone;
+        QVERIFY(same(third, alone.renderer().renderVisibility(seed, other)));
+        QVERIFY(same(r.renderVisibility(seed, full), first));
+    }
+
     void frameShadedWithTheReferenceRanksAcneWorse()
     {
         HeadlessRenderer headless;
