@@ -20,7 +20,8 @@ struct TextureFootprint {
     bool empty = true;
     bool straddles = false;
     glm::dvec3 min{0.0}, max{0.0};
-    std::vector<glm::dvec2> points;     // the corners' uv, those in front of the light
+    std::array<glm::dvec2, 8> points{};  // the corners' uv, those in front of the light
+    int pointCount = 0;
 };
 
 TextureFootprint footprint(const std::array<glm::dvec3, 8>& corners, const glm::dmat4& shadowMatrix)
@@ -35,7 +36,7 @@ TextureFootprint footprint(const std::array<glm::dvec3, 8>& corners, const glm::
             continue;
         }
         image.extend(glm::dvec3(p) / p.w);
-        f.points.emplace_back(p.x / p.w, p.y / p.w);
+        f.points[std::size_t(f.pointCount++)] = glm::dvec2(p.x / p.w, p.y / p.w);
     }
     if (behind == 8)
         return f;
@@ -261,6 +262,12 @@ bool outsideAnEdge(const std::vector<glm::dvec3>& edges, const glm::dvec2& lo, c
     return false;
 }
 
+// Where a box starts when a tap may compare deeper than its receiver (a receiver plane's): far
+// before the near plane, since the casters clamped onto it are stored at depth 0 and a receiver
+// there, itself clamped too, may still find them (a thousand times the volume's depth before
+// it: a perspective light's depth falls toward minus infinity only at the light itself).
+constexpr double kBeforeNear = -1e3;
+
 // How far a view's taps reach around a caster: the taps' grow and, with a normal offset, the
 // shift of each lookup off its receiver.
 struct TapReach {
@@ -293,6 +300,9 @@ std::optional<std::vector<ReachBox>> viewBoxes(const Settings& settings, const L
     const double farFace = view.perspective ? perspectiveDepthAt(view, view.volume.farPlane * 1.001) : 1.0 + offsetDepth + 1e-4;
     std::vector<UvRect> rects;
     bool anywhere = false;
+    // Hulls where the casters are few enough to keep columns of their own; past that the union
+    // of every rectangle stands, and the hull of thousands of casters is not worth its sort.
+    const bool hulls = casters.size() <= 4 * kMaxReachBoxes;
     for (const ReachObject& object : casters) {
         if (!object.casts || culledFrom(object, view))
             continue;
@@ -301,14 +311,14 @@ std::optional<std::vector<ReachBox>> viewBoxes(const Settings& settings, const L
             continue;
         anywhere = anywhere || f.straddles || !taps.texels;
         // Depth clamp puts casters before the near plane at 0; a margin for the map's rounding.
-        const double depth = taps.nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : 0.0;
+        const double depth = taps.nearerIsLit ? std::clamp(f.min.z - 1e-4 - offsetDepth, 0.0, 1.0) : kBeforeNear;
         UvRect r{glm::clamp(glm::dvec2(f.min) - taps.grow, 0.0, 1.0) - offsetUv, glm::clamp(glm::dvec2(f.max) + taps.grow, 0.0, 1.0) + offsetUv,
-                 depth, f.points};
+                 depth, hulls ? std::vector<glm::dvec2>(f.points.begin(), f.points.begin() + f.pointCount) : std::vector<glm::dvec2>{}};
         if (r.min.x < r.max.x && r.min.y < r.max.y)
             rects.push_back(r);
     }
     if (anywhere)
-        rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, 0.0, {}});
+        rects.assign(1, UvRect{-offsetUv, 1.0 + offsetUv, taps.nearerIsLit ? 0.0 : kBeforeNear, {}});
     std::vector<ReachBox> boxes;
     const glm::dmat4 textureToWorld = glm::inverse(view.shadowMatrix);
     for (const UvRect& r : mergedRects(std::move(rects))) {
@@ -344,7 +354,8 @@ Reach receiverReach(const ReachObject& object, const std::vector<LightFrame>& vi
         }
         for (const ReachBox& box : perView[v]) {
             const bool apart = f.max.x < box.uvMin.x || f.min.x > box.uvMax.x || f.max.y < box.uvMin.y || f.min.y > box.uvMax.y
-                || f.max.z < box.depthMin || f.min.z > box.depthMax || outsideAnEdge(box.uvEdges, glm::dvec2(f.min), glm::dvec2(f.max));
+                || f.max.z < box.depthMin || f.min.z > box.depthMax
+                || outsideAnEdge(box.uvEdges, glm::dvec2(f.min), glm::dvec2(f.max));
             // What lies outside the map's square or its depth range reads lit whatever the
             // casters, so a receiver is within a box when the rest of it is: its few lookups
             // there cost less than the box's faces in the mask (a caster before the near plane,

@@ -30,8 +30,9 @@ std::optional<double> tapReachTexels(const Settings& settings);
 bool referencesStayNearer(const Settings& settings);
 
 // One view's reach: a box in that view's shadow-texture space (xy in map uv, z conventional
-// depth from its casters' nearest, or 0, to the far plane; past the map's square and the far
-// plane by what the normal offset moves a lookup).
+// depth from its casters' nearest, or 0, or far before the near plane where a tap may compare
+// deeper than its receiver, to the far plane; past the map's square and the far plane by what
+// the normal offset moves a lookup).
 struct ReachBox {
     glm::dvec2 uvMin{0.0}, uvMax{1.0};
     double depthMin = 0.0;

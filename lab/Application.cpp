@@ -35,9 +35,11 @@ void dropRuntimeDirNotice(QtMsgType type, const QMessageLogContext& context, con
 void keepLargeBlocksInTheHeap()
 {
 #ifdef __GLIBC__
-    constexpr int kLargest = 256 << 20;
-    mallopt(M_MMAP_THRESHOLD, kLargest);
-    mallopt(M_TRIM_THRESHOLD, kLargest);
+    // Older glibc refuses a threshold above 32 MB; the trim threshold is set only with a
+    // threshold that took, as setting it freezes the threshold glibc would otherwise raise.
+    constexpr int kLargest = 256 << 20, kOlderLargest = 32 << 20;
+    if (mallopt(M_MMAP_THRESHOLD, kLargest) == 1 || mallopt(M_MMAP_THRESHOLD, kOlderLargest) == 1)
+        mallopt(M_TRIM_THRESHOLD, kLargest);
 #endif
 }
 

@@ -96,7 +96,8 @@ namespace {
 auto storageOrder(const Settings& s)
 {
     const ShadowMapKind kind = shadowTechnique(s.filter.mode).map;
-    return std::make_tuple(int(kind), int(s.moments.format), s.moments.mipmaps, s.map.size, int(s.map.format), s.shadow.cascades, s.shadow.virtualMap);
+    return std::make_tuple(int(kind), int(s.moments.format), s.moments.mipmaps, s.map.size, int(s.map.format), int(s.light.type), s.shadow.cascades,
+                           s.shadow.virtualMap, s.shadow.virtualPool);
 }
 
 } // namespace

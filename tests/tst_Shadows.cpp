@@ -557,6 +557,14 @@ private Q_SLOTS:
         QTest::newRow("no bias") << "seed" << QStringList{"bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
         QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"} << true;
         QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true", "bias.cull_front=false"} << true;
+        // The high cube wholly before the near plane of a manual volume, stored at depth 0:
+        // receiver-plane taps on its own faces may still compare deeper than that.
+        QTest::newRow("receiver plane, a caster before the near plane")
+            << "seed" << QStringList{"light.type=spot", "light.fit=manual", "light.near=4.2", "filter.mode=pcf", "filter.kernel=7",
+                                     "bias.receiver_plane=true", "bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
+        QTest::newRow("receiver plane, an ortho near plane through the cubes")
+            << "seed" << QStringList{"light.fit=manual", "light.near=4.3", "filter.mode=pcf", "filter.kernel=5", "bias.receiver_plane=true",
+                                     "bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
         QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"} << true;
         QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"} << true;
         QTest::newRow("reversed depth") << "seed" << QStringList{"map.format=depth32f"} << true;
