@@ -129,13 +129,35 @@ double ladderDown(double x) { return std::exp2(std::floor(std::log2(x) * kStepsP
 
 } // namespace
 
+namespace {
+
+// Whether every corner of `box` lies inside the frustum of `viewProjection` with room to spare:
+// clipping the box to it keeps every face as it is and leaves none of the frustum's.
+bool wellInside(const std::array<glm::dvec3, 8>& corners, const glm::dmat4& viewProjection)
+{
+    for (const glm::dvec3& c : corners) {
+        const glm::dvec4 p = viewProjection * glm::dvec4(c, 1.0);
+        const double inside = p.w * (1.0 - 1e-9);
+        if (!(p.w > 0.0) || !(std::abs(p.x) < inside && std::abs(p.y) < inside && std::abs(p.z) < inside))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm::dmat4>& viewProjections)
 {
     if (box.isEmpty())
         return {};
     Hull hull = boxHull(box);
-    for (const glm::dmat4& m : viewProjections)
-        hull = intersect(hull, frustumHull(m));
+    // Most boxes of a large scene lie wholly inside the camera (or wholly outside, which callers
+    // test first): the clip is then the box itself, without building a hull of each frustum.
+    const std::array<glm::dvec3, 8> corners = box.corners();
+    for (const glm::dmat4& m : viewProjections) {
+        if (!wellInside(corners, m))
+            hull = intersect(hull, frustumHull(m));
+    }
     std::vector<glm::dvec3> points;
     for (const Polygon& face : hull.faces)
         points.insert(points.end(), face.begin(), face.end());

@@ -769,6 +769,39 @@ private Q_SLOTS:
         QVERIFY2(prism < 0.8 * box, qPrintable(QStringLiteral("prism %1, box %2").arg(prism).arg(box)));
     }
 
+    // A box clipped to frusta: whole where it lies inside (the fit's fast path, as a scene of
+    // thousands of boxes mostly does), cut at the side it crosses, and cut by the second frustum
+    // where only that one crosses it.
+    void boxesAreClippedToFrusta()
+    {
+        const glm::dmat4 camera = glm::perspective(glm::radians(60.0), 1.5, 0.5, 100.0)
+            * glm::lookAt(glm::dvec3(0.0, 0.0, 10.0), glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+        const glm::dmat4 slab = glm::ortho(-20.0, 20.0, -20.0, 20.0, -20.0, 20.0) * glm::lookAt(glm::dvec3(0.0), glm::dvec3(0.0, -1.0, 0.0), glm::dvec3(0.0, 0.0, 1.0));
+        const auto boundsOf = [](const std::vector<glm::dvec3>& points) {
+            Bounds b;
+            for (const glm::dvec3& p : points)
+                b.extend(p);
+            return b;
+        };
+        const Bounds inside{{-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}};
+        const Bounds whole = boundsOf(clipBoxToFrusta(inside, {camera, slab}));
+        QVERIFY(glm::all(glm::equal(whole.min, inside.min)) && glm::all(glm::equal(whole.max, inside.max)));
+        QCOMPARE(int(clipBoxToFrusta(inside, {camera}).size()), 24);        // its six faces, uncut
+        // Past the near plane (z = 9.5 along the view, 0.5 from the camera at z = 10).
+        const Bounds across{{-0.2, -0.2, 8.0}, {0.2, 0.2, 12.0}};
+        const Bounds cut = boundsOf(clipBoxToFrusta(across, {camera, slab}));
+        QVERIFY2(std::abs(cut.max.z - 9.5) < 1e-6, qPrintable(QString::number(cut.max.z)));
+        QVERIFY(std::abs(cut.min.z - 8.0) < 1e-9);
+        // Reaching below the slab's bottom at y = -20 and out of the camera's sides: cut at
+        // both, whichever frustum comes first.
+        const Bounds deep{{-0.5, -30.0, -0.5}, {0.5, 0.5, 0.5}};
+        const Bounds bySlab = boundsOf(clipBoxToFrusta(deep, {slab}));
+        QVERIFY(std::abs(bySlab.min.y + 20.0) < 1e-9 && bySlab.max.y == 0.5);
+        const Bounds both = boundsOf(clipBoxToFrusta(deep, {camera, slab})), swapped = boundsOf(clipBoxToFrusta(deep, {slab, camera}));
+        QVERIFY(both.min.y > -20.0 && both.min.y < -5.0);
+        QVERIFY(glm::length(both.min - swapped.min) < 1e-9 && glm::length(both.max - swapped.max) < 1e-9);
+    }
+
     // Nothing casts: no box, and every receiver is out of reach.
     void reachOfNothingIsEmpty()
     {
