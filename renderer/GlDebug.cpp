@@ -42,8 +42,14 @@ bool isSoftwareRenderer(const QString& rendererString)
 void keepFreedMemoryForSoftwareRasteriser(const QString& rendererString)
 {
 #ifdef __GLIBC__
-    if (isSoftwareRenderer(rendererString))
-        mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    if (!isSoftwareRenderer(rendererString))
+        return;
+    // The threshold first: setting the trim threshold alone freezes glibc's mmap threshold at
+    // 128 KiB, so every larger block (a 16 MB read-back, a texture) was mapped fresh and faulted
+    // in page by page. Older glibc refuses a threshold above 32 MB.
+    constexpr int kLargest = 256 << 20, kOlderLargest = 32 << 20;
+    if (mallopt(M_MMAP_THRESHOLD, kLargest) == 1 || mallopt(M_MMAP_THRESHOLD, kOlderLargest) == 1)
+        mallopt(M_TRIM_THRESHOLD, kLargest);
 #else
     Q_UNUSED(rendererString);
 #endif
