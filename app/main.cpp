@@ -60,7 +60,7 @@ QString unknownPlatformProblem(const QString& requested)
 int main(int argc, char* argv[])
 {
     if (argc == 2 && (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-v") == 0)) {
-        std::printf("shadowlab %s\n", SHADOWLAB_VERSION);
+        std::fputs(qPrintable(shadowlab::versionText()), stdout);
         return shadowlab::cli::kExitOk;
     }
     shadowlab::configureApplication();

@@ -25,6 +25,14 @@ void dropRuntimeDirNotice(QtMsgType type, const QMessageLogContext& context, con
 
 } // namespace
 
+QString versionText()
+{
+    return QStringLiteral("shadowlab %1\n%2\nLicence: %3 (see LICENSE, or Help → About ShadowLab).\n"
+                          "This is free software: you are free to change and redistribute it.\n"
+                          "There is NO WARRANTY, to the extent permitted by law.\n")
+        .arg(QStringLiteral(SHADOWLAB_VERSION), QLatin1String(kCopyrightLine), QLatin1String(kLicenceName));
+}
+
 void configureApplication()
 {
     if (!g_previousHandler)

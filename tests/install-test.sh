@@ -51,6 +51,11 @@ check_tree() {
     desktop-file-validate "$prefix/share/applications/$app_id.desktop" || fail "desktop-file-validate"
     echo "== appstreamcli validate --no-net"
     appstreamcli validate --no-net "$prefix/share/metainfo/$app_id.metainfo.xml" || fail "appstreamcli validate"
+    # The licence, said the same everywhere: LICENSE, the Debian copyright file, the metainfo.
+    cmp -s "$prefix/share/doc/shadowlab/LICENSE" "$(dirname "${BASH_SOURCE[0]}")/../LICENSE" || fail "share/doc/shadowlab/LICENSE is not the repository's LICENSE"
+    grep -q '^License: Expat$' "$prefix/share/doc/shadowlab/copyright" || fail "the copyright file names no Expat (MIT) licence"
+    grep -q '^Copyright: .*ShadowLab developers' "$prefix/share/doc/shadowlab/copyright" || fail "the copyright file names no holder"
+    grep -q '<project_license>MIT</project_license>' "$prefix/share/metainfo/$app_id.metainfo.xml" || fail "the metainfo names no MIT licence"
     grep -q '^\.TH SHADOWLAB 1' "$prefix/share/man/man1/shadowlab.1" || fail "shadowlab.1 has no .TH line"
     for command in render bench report settings audit tune screenshot; do
         grep -q "^\.SS \"shadowlab $command" "$prefix/share/man/man1/shadowlab.1" || fail "shadowlab.1 has no section on $command"
@@ -96,6 +101,7 @@ check_program() {
     local prefix=$1 name=$2
     local program=$prefix/bin/shadowlab
     run_clean "$program" --version | grep -q '^shadowlab ' || fail "$program --version"
+    run_clean "$program" --version | grep -q '^Licence: MIT' || fail "$program --version names no licence"
     run_clean "$program" help render | grep -q -- '--size' || fail "$program help render"
     echo "== $name: render --scene seed"
     run_clean "$program" render --scene seed --size 160x90 --out "$work/$name-seed.png" || fail "$program render --scene seed"

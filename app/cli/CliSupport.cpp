@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 
+#include "Application.h"
 #include "IoError.h"
 #include "OutputFile.h"
 #include "RenderError.h"
@@ -75,7 +76,7 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
         return false;
     }
     if (parser.isSet(version)) {
-        out() << "shadowlab " << QCoreApplication::applicationVersion() << Qt::endl;
+        out() << versionText() << Qt::flush;
         return false;
     }
     if (!parser.positionalArguments().isEmpty())

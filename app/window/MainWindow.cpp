@@ -1,6 +1,7 @@
 #include "MainWindow.h"
 
 #include "AccuracyDock.h"
+#include "Application.h"
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "LightAnimation.h"
@@ -579,8 +580,11 @@ void MainWindow::showAbout()
     QMessageBox::about(this, tr("About ShadowLab"),
                        tr("<h3>ShadowLab %1</h3><p>An explorer for shadow mapping: every parameter of the technique "
                           "on a slider, beside the light's depth map, with the cost of each pass.</p>"
-                          "<p>Renderer: %2</p><p>Built with Qt %3.</p>")
-                           .arg(QCoreApplication::applicationVersion(), renderer.toHtmlEscaped(), QString::fromLatin1(qVersion())));
+                          "<p>Renderer: %2</p><p>Built with Qt %3.</p>"
+                          "<p>%4. Free software under the %5 licence, with no warranty: you may use, change and redistribute it "
+                          "as the LICENSE file that comes with it says.</p>")
+                           .arg(QCoreApplication::applicationVersion(), renderer.toHtmlEscaped(), QString::fromLatin1(qVersion()),
+                                QString::fromLatin1(kCopyrightLine).toHtmlEscaped(), QString::fromLatin1(kLicenceName)));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
