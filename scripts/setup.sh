@@ -18,6 +18,7 @@ packages=(
     desktop-file-utils appstream  # install test: the desktop entry's and the metainfo's validators
     dpkg-dev file      # scripts/package.sh: CPack's .deb and its dependencies (dpkg-shlibdeps)
     chromium           # report test: the HTML report opened, printed and pictured headless
+    xvfb xauth         # stop-signal test: the explorer on a virtual display, stopped by SIGTERM, SIGINT, SIGHUP
 )
 
 # OSMesa is optional (Mesa 25.1 removed it): the headless platform uses EGL, and OSMesa as well

@@ -12,6 +12,7 @@
 #include "SceneView.h"
 #include "SessionAutosave.h"
 #include "SettingsKeys.h"
+#include "StopSignals.h"
 #include "TestFiles.h"
 
 #include <QDir>
@@ -19,10 +20,15 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
+
+#include <csignal>
+
+#include <unistd.h>
 
 using namespace shadowlab;
 
@@ -160,6 +166,48 @@ private slots:
         QCOMPARE(store.value(QStringLiteral("view/compare")).toBool(), true);
         QCOMPARE(store.value(QStringLiteral("session/running")).toBool(), true);
         // Never closed: the next window is a start after a crash.
+    }
+
+    // A logout, a shutdown, `kill` or Ctrl+C is a close, not a crash: the last edit (still
+    // inside its second before the autosave) is saved, the session is marked as ended, and the
+    // next start restores it without asking. (The process's exit code 0 is the install test's
+    // and stop-signal-test.sh's to check, on a real display.)
+    void stopSignalClosesAsTheUserWould_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::newRow("SIGTERM") << SIGTERM;
+        QTest::newRow("SIGINT") << SIGINT;
+        QTest::newRow("SIGHUP") << SIGHUP;
+    }
+    void stopSignalClosesAsTheUserWould()
+    {
+        QFETCH(int, signal);
+        {
+            std::signal(signal, SIG_DFL);   // as a desktop or a terminal starts it (nohup would ignore SIGHUP)
+            MainWindow window(MainWindow::Persistence::Restore);
+            StopSignals stop;
+            QSignalSpy stopping(&stop, &StopSignals::stopping);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QTest::qWait(2 * SessionAutosave::kDelayMs);   // what is on disk is the start's
+            Settings edited = window.settings(MainWindow::Side::A);
+            edited.bias.slope = 0.0789;
+            window.setSettings(MainWindow::Side::A, edited);
+            QVERIFY(!storedSettings(QStringLiteral("A")).contains(QStringLiteral("0.0789")));
+            QCOMPARE(::kill(::getpid(), signal), 0);
+            QTRY_VERIFY_WITH_TIMEOUT(!window.isVisible(), 2000);
+            QCOMPARE(stopping.count(), 1);
+            QCOMPARE(stopping.first().first().toInt(), signal);
+            QVERIFY(storedSettings(QStringLiteral("A")).contains(QStringLiteral("0.0789")));
+            QCOMPARE(QSettings().value(QStringLiteral("session/running")).toBool(), false);
+        }
+        MainWindow window(MainWindow::Persistence::Restore);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTest::qWait(300);
+        QVERIFY(!box(window, QStringLiteral("restoreSessionBox")));
+        QCOMPARE(window.settings(MainWindow::Side::A).bias.slope, 0.0789);
+        keepPicture(&window, QStringLiteral("start-after-sigterm"));
     }
 
     void crashOffersToRestore()

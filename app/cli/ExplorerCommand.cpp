@@ -6,6 +6,7 @@
 #include "SceneNames.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
+#include "StopSignals.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -120,6 +121,7 @@ int runExplorer(const QStringList& arguments)
         if (!preset.isEmpty())
             window.propertiesDock()->showPreset(preset);
     }
+    const StopSignals stop;     // a logout or `kill` closes the window as the user would
     window.show();
     if (!backgroundScene.isEmpty())
         window.openSceneInBackground(backgroundScene);
