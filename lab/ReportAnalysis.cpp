@@ -27,7 +27,7 @@ bool clearlyFaster(const SampleStats& a, const SampleStats& b)
 
 bool beats(const ReportRow& b, const ReportRow& a, ErrorAxis axis)
 {
-    return b.light == a.light && clearlyFaster(b.frame, a.frame) && clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
+    return comparable(a, b) && clearlyFaster(b.frame, a.frame) && clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
 }
 
 void markFront(std::vector<ReportRow>& rows, ErrorAxis axis, bool ReportRow::*flag)
@@ -62,12 +62,29 @@ void markParetoFronts(std::vector<ReportRow>& rows)
     markFront(rows, ErrorAxis::AreaMae, &ReportRow::areaFront);
 }
 
+bool comparable(const ReportRow& a, const ReportRow& b)
+{
+    return a.light == b.light && a.renderer == b.renderer && a.machine == b.machine;
+}
+
+bool severalMachines(const std::vector<ReportRow>& rows)
+{
+    return std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) {
+        return r.renderer != rows.front().renderer || r.machine != rows.front().machine;
+    });
+}
+
+QString lightOf(const ReportRow& row, const std::vector<ReportRow>& rows)
+{
+    return severalMachines(rows) ? QStringLiteral("%1, on %2 (%3)").arg(row.light, row.renderer, row.machine) : row.light;
+}
+
 QStringList lightsOf(const std::vector<ReportRow>& rows)
 {
     QStringList lights;
     for (const ReportRow& r : rows) {
-        if (!lights.contains(r.light))
-            lights << r.light;
+        if (const QString light = lightOf(r, rows); !lights.contains(light))
+            lights << light;
     }
     return lights;
 }
@@ -76,7 +93,7 @@ std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const 
 {
     std::vector<const ReportRow*> front;
     for (const ReportRow& r : rows) {
-        if (r.light == light && (axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront))
+        if (lightOf(r, rows) == light && (axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront))
             front.push_back(&r);
     }
     std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });

@@ -30,7 +30,14 @@ struct ReportRow {
     bool areaFront = false;     // ... against the MAE of the area light (never when it was not traced)
     bool defaults = false;      // the base settings; its error image is shown
     bool tutorial = false;      // the classic tutorial configuration; its error image is shown
+    int sweepIndex = 0;         // its place in the whole sweep, whichever share measured it
+    QString renderer;           // GL_RENDERER of the machine that measured it
+    QString machine;            // machineFacts() of that machine
 };
+
+// Rows are compared (on a front, a chart) only with rows of the same light measured on the same
+// renderer and machine: times from two machines say nothing of each other.
+bool comparable(const ReportRow& a, const ReportRow& b);
 
 // The two errors a front is drawn on: misclassified pixels against the hard reference, and
 // the mean absolute error against the area light.
@@ -49,10 +56,15 @@ int measuredPixels(const ReportRow& row, ErrorAxis axis);
 // its one end; and as only clear differences count, a second run gives the same front.
 void markParetoFronts(std::vector<ReportRow>& rows);
 
-// The lights in the order their first rows appear.
+// The groups of comparable rows in the order their first rows appear, each named by its light,
+// and by its renderer and machine too where the rows come from more than one.
 QStringList lightsOf(const std::vector<ReportRow>& rows);
+// The name of `row`'s group among `rows`, as lightsOf() names it.
+QString lightOf(const ReportRow& row, const std::vector<ReportRow>& rows);
+// Whether the rows were measured on more than one renderer or machine (a merged comparison).
+bool severalMachines(const std::vector<ReportRow>& rows);
 
-// The rows of `light` on the front of `axis`, fastest first.
+// The rows of the group `light` (lightsOf()) on the front of `axis`, fastest first.
 std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const QString& light, ErrorAxis axis);
 
 // 1 - mean SSIM of the frame against it shaded with the reference: 0 when alike, an error
@@ -74,7 +86,12 @@ struct ReportFacts {
     double areaNoiseFloor = 0.0;
     double raysPerSecond = 0.0;
     int referenceComputations = 0;
-    double seconds = 0.0;       // the whole run
+    double seconds = 0.0;       // the whole run (merged: the parts' together)
+    QString sweep;              // the sweep's fingerprint: what was measured, whoever measured it
+    int configurations = 0;     // in the whole sweep, whichever share this report measured
+    int shard = 1;              // this report measured share `shard` of `shards` (1 of 1: all)
+    int shards = 1;
+    int parts = 1;              // reports merged into this one (report --merge)
 
     // One ray a pixel reads 0 or 1 everywhere and shows no spread: the noise floor is unknown.
     bool areaNoiseKnown() const { return areaSamplesPerPixel > 1; }

@@ -31,6 +31,31 @@ Run shadowlab(const QStringList& arguments, const QString& workingDirectory = {}
             QString::fromUtf8(process.readAllStandardError())};
 }
 
+// One line of a CSV file as its cells, quoted ones ("a, b" and "say ""x""") read as one.
+QStringList csvCells(const QString& line)
+{
+    QStringList cells{QString()};
+    bool quoted = false;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"')
+            cells.last() += line[++i];
+        else if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            cells << QString();
+        else
+            cells.last() += c;
+    }
+    return cells;
+}
+
+QJsonObject readJson(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(file.readAll()).object() : QJsonObject();
+}
+
 bool writeFile(const QString& path, const QByteArray& bytes)
 {
     QFile f(path);
@@ -128,12 +153,14 @@ private Q_SLOTS:
         QTest::newRow("help") << QStringList{"help"} << "usage: shadowlab";
         QTest::newRow("--version") << QStringList{"--version"} << "shadowlab " SHADOWLAB_VERSION;
         QTest::newRow("-v") << QStringList{"-v"} << "shadowlab " SHADOWLAB_VERSION;
+        QTest::newRow("--version names the licence") << QStringList{"--version"} << "Licence: MIT";
         for (const char* command : {"render", "bench", "report", "settings", "audit", "tune", "screenshot"}) {
             const QString name = QString::fromLatin1(command);
             QTest::addRow("%s --help", command) << QStringList{name, "--help"} << "Usage: shadowlab " + name + " [options]";
             QTest::addRow("help %s", command) << QStringList{"help", name} << "Usage: shadowlab " + name + " [options]";
             QTest::addRow("%s --help-all", command) << QStringList{name, "--help-all"} << "Usage: shadowlab " + name + " [options]";
             QTest::addRow("%s --version", command) << QStringList{name, "--version"} << "shadowlab " SHADOWLAB_VERSION;
+            QTest::addRow("%s --version names the licence", command) << QStringList{name, "--version"} << "Licence: MIT";
         }
     }
 
@@ -417,12 +444,9 @@ private Q_SLOTS:
         QVERIFY(csv.open(QIODevice::ReadOnly));
         const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
         QCOMPARE(lines.size(), 3);
-        QVERIFY2(lines[0].endsWith(",area_mae_noise_pct,dssim,fine_texels_pct"), qPrintable(lines[0]));
-        // DSSIM next to last (counted from the end: the settings column may hold quoted commas).
-        const auto dssim = [](const QString& line) {
-            const QStringList cells = line.split(',');
-            return cells.at(cells.size() - 2).toDouble();
-        };
+        QVERIFY2(lines[0].endsWith(",area_mae_noise_pct,dssim,fine_texels_pct,renderer,machine"), qPrintable(lines[0]));
+        const qsizetype column = csvCells(lines[0]).indexOf("dssim");
+        const auto dssim = [&](const QString& line) { return csvCells(line).at(column).toDouble(); };
         const double defaults = dssim(lines[1]), acne = dssim(lines[2]);
         QVERIFY2(defaults >= 0.0 && acne > 3.0 * defaults && acne > 0.01, qPrintable(QString("DSSIM defaults %1, acne %2").arg(defaults).arg(acne)));
 
@@ -442,6 +466,128 @@ private Q_SLOTS:
         QVERIFY(page.contains(QStringLiteral(">DSSIM</th><th>texels ≤ 1 px %</th></tr>")));
         const QRegularExpressionMatch acneRow = QRegularExpression(">acne</td>.*?<td>([0-9.]+)</td><td>[^<]*</td></tr>").match(page);
         QVERIFY2(acneRow.hasMatch() && qAbs(acneRow.captured(1).toDouble() - acne) < 1e-5, qPrintable(acneRow.captured(0)));
+    }
+
+    // A sweep cut into shares, measured apart and put together, is the report measured whole but
+    // for its times: the same rows in the sweep's order, with the same errors, flicker, density
+    // and error images. Shares that do not make one sweep are refused, saying which is missing,
+    // doubled or foreign; reports of one sweep from two machines stand side by side.
+    void reportSharesMergeIntoTheWholeReport()
+    {
+        const QString sweep = m_dir.filePath("shard-sweep.json");
+        QVERIFY(writeFile(sweep, R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
+                    {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
+                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])"));
+        const auto report = [&](const QString& out, const QStringList& more) {
+            return shadowlab(QStringList{"report", "--scene", "seed", "--size", "96x54", "--sweep", sweep, "--frames", "2", "--warmup", "0",
+                                         "--area-samples", "2", "--flicker-frames", "2", "--out", m_dir.filePath(out)}
+                             + more);
+        };
+        const Run whole = report("whole", {});
+        QVERIFY2(whole.exitCode == 0, qPrintable(whole.err));
+        const Run first = report("share1", {"--shard", "1/2"});
+        QVERIFY2(first.exitCode == 0, qPrintable(first.err));
+        QVERIFY2(first.out.contains("share 1 of 2") && first.out.contains("--merge"), qPrintable(first.out));
+        const Run second = report("share2", {"--shard", "2/2"});
+        QVERIFY2(second.exitCode == 0, qPrintable(second.err));
+        QCOMPARE(readJson(m_dir.filePath("share1/report.json")).value("rows").toArray().size(), 2);   // 1st and 3rd
+        QCOMPARE(readJson(m_dir.filePath("share2/report.json")).value("rows").toArray().size(), 1);
+
+        // Given in any order, the shares come back in the sweep's.
+        const Run merge = shadowlab({"report", "--merge", "--out", m_dir.filePath("merged"), m_dir.filePath("share2"), m_dir.filePath("share1")});
+        QVERIFY2(merge.exitCode == 0, qPrintable(merge.err));
+        QVERIFY2(merge.out.contains("merged 2 reports: 3 rows"), qPrintable(merge.out));
+        const QJsonObject a = readJson(m_dir.filePath("whole/report.json")), b = readJson(m_dir.filePath("merged/report.json"));
+        for (const char* key : {"scene", "size", "sweep", "configurations", "area_samples_per_pixel", "renderer", "machine", "area_noise_floor_pct"})
+            QVERIFY2(a.value(key) == b.value(key), key);
+        QCOMPARE(b.value("parts").toInt(), 2);
+        QCOMPARE(b.value("shard").toString(), QStringLiteral("1/1"));
+        const QJsonArray wholeRows = a.value("rows").toArray(), mergedRows = b.value("rows").toArray();
+        QCOMPARE(mergedRows.size(), wholeRows.size());
+        // Every figure but the times (and the fronts they decide), to the last digit or within
+        // the rounding of a percentage read back.
+        const std::function<void(const QJsonValue&, const QJsonValue&, const QString&)> same = [&](const QJsonValue& x, const QJsonValue& y, const QString& at) {
+            if (x.isObject()) {
+                for (const QString& key : x.toObject().keys()) {
+                    if (!key.endsWith("_wall") && !key.contains("front") && key != "frames")
+                        same(x.toObject().value(key), y.toObject().value(key), at + '.' + key);
+                }
+            } else if (x.isDouble()) {
+                QVERIFY2(y.isDouble() && qAbs(x.toDouble() - y.toDouble()) <= 1e-12 * qMax(1.0, qAbs(x.toDouble())),
+                         qPrintable(QString("%1: %2 whole, %3 merged").arg(at).arg(x.toDouble()).arg(y.toDouble())));
+            } else {
+                QVERIFY2(x == y, qPrintable(at));
+            }
+        };
+        for (qsizetype i = 0; i < wholeRows.size(); ++i)
+            same(wholeRows[i], mergedRows[i], QString("rows[%1]").arg(i));
+        QVERIFY(QImage(m_dir.filePath("merged/" + mergedRows[2].toObject().value("error_image").toString())).size() == QSize(96, 54));
+        QFile html(m_dir.filePath("merged/report.html"));
+        QVERIFY(html.open(QIODevice::ReadOnly));
+        const QString page = QString::fromUtf8(html.readAll());
+        QVERIFY(page.contains("no bias") && page.contains("data:image/png;base64,"));
+        QVERIFY(!page.contains("<th>renderer</th>"));   // one machine: no column for it
+
+        // What does not make one report.
+        const Run alone = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1")});
+        QCOMPARE(alone.exitCode, 2);
+        QVERIFY2(alone.err.contains("1 of the sweep's 3 configurations are in none") && alone.err.contains("--shard 2/2"), qPrintable(alone.err));
+        const Run twice = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("share2"),
+                                     m_dir.filePath("share1")});
+        QCOMPARE(twice.exitCode, 2);
+        QVERIFY2(twice.err.contains("give each share once"), qPrintable(twice.err));
+        const Run smaller = shadowlab({"report", "--scene", "seed", "--size", "64x36", "--sweep", sweep, "--frames", "1", "--warmup", "0",
+                                       "--area-samples", "2", "--flicker-frames", "2", "--shard", "2/2", "--out", m_dir.filePath("share2-small")});
+        QVERIFY2(smaller.exitCode == 0, qPrintable(smaller.err));
+        const Run foreign = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("share2-small")});
+        QCOMPARE(foreign.exitCode, 2);
+        QVERIFY2(foreign.err.contains("different sweeps (size 96x54 against 64x36)"), qPrintable(foreign.err));
+        const Run notAReport = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.path()});
+        QCOMPARE(notAReport.exitCode, 2);
+        QVERIFY2(notAReport.err.contains("report.json") && notAReport.err.contains("cannot be read"), qPrintable(notAReport.err));
+        for (const QString& shard : {QString("0/2"), QString("3/2"), QString("two"), QString("1/4")}) {
+            const Run bad = report("never", {"--shard", shard});
+            QCOMPARE(bad.exitCode, 2);
+            QVERIFY2(bad.err.contains("--shard " + shard), qPrintable(bad.err));
+        }
+        QVERIFY(!QFile::exists(m_dir.filePath("never")));
+
+        // The same sweep from a second machine (its report.json as one would bring it): both
+        // machines' rows side by side, each machine with its own front, the renderer a column.
+        QVERIFY(QDir().mkpath(m_dir.filePath("gpu/errors")));
+        QJsonObject gpu = a;
+        QJsonArray gpuRows;
+        for (const QJsonValue& row : wholeRows) {
+            QJsonObject r = row.toObject();
+            r.insert("renderer", "NVIDIA Test GPU/PCIe/SSE2");
+            QVERIFY(QFile::copy(m_dir.filePath("whole/" + r.value("error_image").toString()), m_dir.filePath("gpu/" + r.value("error_image").toString())));
+            gpuRows.append(r);
+        }
+        gpu.insert("rows", gpuRows);
+        gpu.insert("renderer", "NVIDIA Test GPU/PCIe/SSE2");
+        QVERIFY(writeFile(m_dir.filePath("gpu/report.json"), QJsonDocument(gpu).toJson()));
+        const Run compared = shadowlab({"report", "--merge", "--out", m_dir.filePath("compared"), m_dir.filePath("whole"), m_dir.filePath("gpu")});
+        QVERIFY2(compared.exitCode == 0, qPrintable(compared.err));
+        QVERIFY2(compared.out.contains("note: the rows were measured on 2 renderers"), qPrintable(compared.out));
+        const QJsonArray both = readJson(m_dir.filePath("compared/report.json")).value("rows").toArray();
+        QCOMPARE(both.size(), 6);
+        int gpuFront = 0, cpuFront = 0;
+        for (const QJsonValue& row : both) {
+            const bool front = row.toObject().value("pareto_front").toBool();
+            (row.toObject().value("renderer").toString().startsWith("NVIDIA") ? gpuFront : cpuFront) += front ? 1 : 0;
+        }
+        QVERIFY(gpuFront > 0 && cpuFront > 0);
+        QFile comparedHtml(m_dir.filePath("compared/report.html"));
+        QVERIFY(comparedHtml.open(QIODevice::ReadOnly));
+        const QString comparison = QString::fromUtf8(comparedHtml.readAll());
+        QVERIFY(comparison.contains("<th>renderer</th>") && comparison.contains("NVIDIA Test GPU"));
+        QFile csv(m_dir.filePath("compared/report.csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
+        QCOMPARE(lines.size(), 7);
+        const qsizetype renderer = csvCells(lines[0]).indexOf("renderer");
+        QVERIFY(renderer > 0);
+        QCOMPARE(csvCells(lines[2]).at(renderer), QStringLiteral("NVIDIA Test GPU/PCIe/SSE2"));   // sweep order, the same configuration twice
     }
 
     void reportRejectsABadSweep()

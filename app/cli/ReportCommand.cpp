@@ -5,11 +5,18 @@
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
 #include "OutputFile.h"
+#include "ReportParts.h"
 #include "ReportSweep.h"
 #include "ReportWriter.h"
+#include "SettingsKeys.h"
 
+#include <QCryptographicHash>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 
 #include <algorithm>
 
@@ -58,7 +65,7 @@ void printFronts(const std::vector<ReportRow>& rows)
               << "  front\n";
         std::vector<const ReportRow*> front;
         for (const ReportRow& r : rows) {
-            if (r.light == light && (r.paretoFront || r.areaFront))
+            if (lightOf(r, rows) == light && (r.paretoFront || r.areaFront))
                 front.push_back(&r);
         }
         std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
@@ -107,6 +114,30 @@ void addReportOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("flicker-frames"),
                       QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
                       QStringLiteral("n"), QString::number(kFlickerFrames)});
+    parser.addOption({QStringLiteral("shard"),
+                      QStringLiteral("Measure share K of N of the sweep (every Nth configuration from the Kth), for another process, "
+                                     "machine or scheduler job to measure the rest; put the shares together with --merge."),
+                      QStringLiteral("K/N")});
+    parser.addOption({QStringLiteral("merge"),
+                      QStringLiteral("Measure nothing: put together the reports in the folders given after the options (the shares of "
+                                     "one sweep, or reports of it from several machines, side by side) into one report in --out.")});
+    parser.addPositionalArgument(QStringLiteral("dir"), QStringLiteral("With --merge: the report folders to put together."), QStringLiteral("[dir...]"));
+}
+
+// "K/N" of --shard: 1 <= K <= N <= the configurations there are to share.
+std::pair<int, int> parseShard(const QString& text, std::size_t configurations)
+{
+    const QStringList parts = text.split(QLatin1Char('/'));
+    bool okK = false, okN = false;
+    const int k = parts.value(0).trimmed().toInt(&okK), n = parts.value(1).trimmed().toInt(&okN);
+    if (parts.size() != 2 || !okK || !okN || n < 1 || k < 1 || k > n)
+        throw UsageError(QStringLiteral("--shard %1: give share K of N as K/N, with 1 <= K <= N, e.g. --shard 2/4").arg(displayText(text)));
+    if (std::size_t(n) > configurations)
+        throw UsageError(QStringLiteral("--shard %1: the sweep has %2 configurations, so it cannot be cut into %3 shares; use at most --shard K/%2")
+                             .arg(displayText(text))
+                             .arg(configurations)
+                             .arg(n));
+    return {k, n};
 }
 
 // What the command line asks for, all of it checked before any work starts.
@@ -120,8 +151,30 @@ struct ReportRequest {
     int warmup = 0;
     int samples = 0;            // area reference samples per axis
     int flickerFrames = 0;
-    std::vector<SweepConfiguration> sweep;
+    std::vector<SweepConfiguration> sweep;      // what this run measures: the whole sweep, or its share
+    std::vector<int> sweepIndex;                // each one's place in the whole sweep
+    int configurations = 0;                     // in the whole sweep
+    int shard = 1, shards = 1;
+    QString fingerprint;                        // of the whole sweep and how it is measured
 };
+
+// What a report measures, whoever measures it: the size, the timing and reference options and
+// every configuration's settings. Shares and reports of other machines merge only when theirs
+// is the same.
+QString sweepFingerprint(const ReportRequest& r)
+{
+    QJsonArray configurations;
+    for (const SweepConfiguration& c : r.sweep)
+        configurations.append(QJsonObject{{QStringLiteral("label"), c.label}, {QStringLiteral("settings"), settingsToJson(c.settings)}});
+    const QJsonObject what{{QStringLiteral("size"), QStringLiteral("%1x%2").arg(r.size.width()).arg(r.size.height())},
+                           {QStringLiteral("frames"), r.frames},
+                           {QStringLiteral("min_frames"), r.minFrames},
+                           {QStringLiteral("warmup"), r.warmup},
+                           {QStringLiteral("area_samples"), r.samples},
+                           {QStringLiteral("flicker_frames"), r.flickerFrames},
+                           {QStringLiteral("configurations"), configurations}};
+    return QString::fromLatin1(QCryptographicHash::hash(QJsonDocument(what).toJson(QJsonDocument::Compact), QCryptographicHash::Sha256).toHex().left(16));
+}
 
 ReportRequest readReportRequest(const QCommandLineParser& parser)
 {
@@ -140,6 +193,20 @@ ReportRequest readReportRequest(const QCommandLineParser& parser)
     r.sweep = distinctConfigurations(r.base, loadSweep(parser.value(QStringLiteral("sweep")), r.base));
     r.tutorial = applySweepEntry(r.base, {QStringLiteral("tutorial"), tutorialAssignments()});
     r.flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
+    r.configurations = int(r.sweep.size());
+    r.fingerprint = sweepFingerprint(r);
+    if (parser.isSet(QStringLiteral("shard")))
+        std::tie(r.shard, r.shards) = parseShard(parser.value(QStringLiteral("shard")), r.sweep.size());
+    // Every Nth from the Kth: neighbours in a sweep differ in cost (map sizes, filters), so each
+    // share gets some of each.
+    std::vector<SweepConfiguration> share;
+    for (int i = 0; i < r.configurations; ++i) {
+        if (i % r.shards == r.shard - 1) {
+            share.push_back(r.sweep[std::size_t(i)]);
+            r.sweepIndex.push_back(i);
+        }
+    }
+    r.sweep = std::move(share);
     return r;
 }
 
@@ -185,6 +252,9 @@ AccuracyPass measureAllAccuracy(const ReportRequest& request, HeadlessRenderer& 
     for (std::size_t c = 0; c < sweep.size(); ++c) {
         const double start = kAccuracyShare * double(c) / sweep.size(), step = kAccuracyShare / sweep.size();
         ReportRow row = measureRow(request, sweep[c], headless, meter, progress, start, step);
+        row.sweepIndex = request.sweepIndex[c];
+        row.renderer = headless.renderer().rendererString();
+        row.machine = machineFacts();
         if (row.accuracy.raysPerSecond > 0.0)
             pass.raysPerSecond = row.accuracy.raysPerSecond;
         pass.noiseFloor = std::max(pass.noiseFloor, row.accuracy.areaNoiseFloor);
@@ -231,6 +301,10 @@ ReportFacts reportFacts(const ReportRequest& request, const Renderer& renderer, 
     facts.raysPerSecond = accuracy.raysPerSecond;
     facts.referenceComputations = meter.referenceComputations();
     facts.seconds = double(total.elapsed()) / 1000.0;
+    facts.sweep = request.fingerprint;
+    facts.configurations = request.configurations;
+    facts.shard = request.shard;
+    facts.shards = request.shards;
     return facts;
 }
 
@@ -242,6 +316,44 @@ void printSummary(const ReportRequest& request, const std::vector<ReportRow>& ro
         printFlicker(rows);
     printFronts(rows);
     out() << "wrote " << QDir(request.directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
+    if (request.shards > 1)
+        out() << "this is share " << request.shard << " of " << request.shards << " (" << rows.size() << " of the sweep's " << request.configurations
+              << " configurations): put the shares together with `shadowlab report --merge --out DIR SHARE_DIR...`" << Qt::endl;
+}
+
+// report --merge: the reports in the folders given, put together into --out.
+int runMerge(const QCommandLineParser& parser, const QStringList& folders)
+{
+    for (const QString& option : parser.optionNames()) {
+        if (option != u"merge" && option != u"out")
+            throw UsageError(QStringLiteral("--merge measures nothing, so --%1 does not apply; give only --out and the report folders").arg(displayText(option)));
+    }
+    if (!parser.isSet(QStringLiteral("out")))
+        throw UsageError(QStringLiteral("say where to write the merged report: --out DIR"));
+    if (folders.isEmpty())
+        throw UsageError(QStringLiteral("give the report folders to merge after the options: report --merge --out DIR SHARE_DIR..."));
+    const QString directory = parser.value(QStringLiteral("out"));
+    checkOutputFolder(directory, QStringLiteral("--out"));
+    for (const QString& folder : folders) {
+        if (QFileInfo(folder).absoluteFilePath() == QFileInfo(directory).absoluteFilePath())
+            throw UsageError(QStringLiteral("--out %1 is one of the reports being merged; write the merged report to a folder of its own").arg(displayText(directory)));
+    }
+    try {
+        std::vector<ReportPart> parts;
+        for (const QString& folder : folders)
+            parts.push_back(readReportPart(folder));
+        const MergedReport merged = mergeReportParts(parts);
+        writeReport(directory, merged.rows, merged.facts);
+        out() << "merged " << folders.size() << " reports: " << merged.rows.size() << " rows of the sweep's " << merged.facts.configurations
+              << " configurations, measured in " << QString::number(merged.facts.seconds, 'f', 1) << " s in all\n";
+        for (const QString& note : merged.notes)
+            out() << "note: " << note << '\n';
+        printFronts(merged.rows);
+        out() << "wrote " << QDir(directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
+    } catch (const ReportMergeError& e) {
+        throw UsageError(QString::fromStdString(e.what()));
+    }
+    return kExitOk;
 }
 
 } // namespace
@@ -251,8 +363,24 @@ int runReport(const QStringList& arguments)
     return guarded(QStringLiteral("report"), [&] {
         QCommandLineParser parser;
         addReportOptions(parser);
-        if (!parseArguments(parser, QStringLiteral("report"), arguments))
+        // The folders --merge reads are words of their own; nothing else takes one.
+        const bool merge = arguments.contains(QStringLiteral("--merge"));
+        QStringList options = arguments;
+        QStringList folders;
+        if (merge) {
+            options.clear();
+            for (qsizetype i = 0; i < arguments.size(); ++i) {
+                const QString& a = arguments[i];
+                if (!a.startsWith(QLatin1Char('-')) && !(i > 0 && arguments[i - 1] == u"--out"))
+                    folders << a;
+                else
+                    options << a;
+            }
+        }
+        if (!parseArguments(parser, QStringLiteral("report"), options))
             return kExitOk;
+        if (merge)
+            return runMerge(parser, folders);
         const ReportRequest request = readReportRequest(parser);
 
         QElapsedTimer total;

@@ -22,11 +22,13 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
 {
     // Times in ms, errors in percent of the measured pixels (MAE and RMSE in percent of full
     // visibility), as the page shows them; every column says its unit, but dssim (1 - mean
-    // SSIM), a plain number. Flicker not measured (--flicker-frames 0) is empty, not 0: no
+    // SSIM), a plain number. The renderer and machine that measured the row close it (a merged
+    // report can hold several). Flicker not measured (--flicker-frames 0) is empty, not 0: no
     // flicker is a finding.
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
-                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct\n");
+                                 "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct,"
+                                 "renderer,machine\n");
     for (const ReportRow& r : rows) {
         const bool flickerMeasured = r.flicker.measured();
         const ErrorMetrics& h = r.accuracy.hard;
@@ -40,7 +42,7 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                            flickerMeasured ? number(100 * r.flicker.meanChange, 4) : QString(),
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
                            r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6),
-                           number(100 * r.density.fineShare(), 3)}
+                           number(100 * r.density.fineShare(), 3), csvField(r.renderer), csvField(r.machine)}
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
     }

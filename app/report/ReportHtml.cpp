@@ -121,9 +121,9 @@ double errorPercent(const ReportRow& r, ErrorAxis axis)
     return 100.0 * errorShare(r, axis);
 }
 
-QLatin1String lightColour(const ReportRow& r, const QStringList& lights)
+QLatin1String lightColour(const ReportRow& r, const std::vector<ReportRow>& rows, const QStringList& lights)
 {
-    return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(r.light)) % std::size(kLightColours)]);
+    return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(lightOf(r, rows))) % std::size(kLightColours)]);
 }
 
 // Where a chart puts its values: frame time (ms) across on round ticks, the error (%) up on a
@@ -228,7 +228,7 @@ QString frontLines(const std::vector<ReportRow>& rows, const QStringList& lights
         QString points;
         for (const ReportRow* r : steps)
             points += QStringLiteral("%1,%2 ").arg(c.px(r->frame.median)).arg(c.py(errorPercent(*r, axis)));
-        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), lightColour(*steps.front(), lights));
+        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), lightColour(*steps.front(), rows, lights));
     }
     return svg;
 }
@@ -244,14 +244,14 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lig
                    .arg(c.px(r.frame.p10))
                    .arg(y)
                    .arg(c.px(r.frame.p90))
-                   .arg(lightColour(r, lights));
+                   .arg(lightColour(r, rows, lights));
         if (measuredPixels(r, axis) > 0) {
             const auto [low, high] = noiseBand(r, axis);
             svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
                        .arg(x)
                        .arg(c.py(std::min(high, c.yMax)))
                        .arg(c.py(low))
-                       .arg(lightColour(r, lights));
+                       .arg(lightColour(r, rows, lights));
         }
         taken.push_back({x - 6, y - 6, x + 6, y + 6});
     }
@@ -260,7 +260,7 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lig
                    .arg(c.px(r.frame.median))
                    .arg(c.py(errorPercent(r, axis)))
                    .arg(onFront(r, axis) ? 6 : 4)
-                   .arg(lightColour(r, lights), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(lightColour(r, rows, lights), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
                    .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(errorPercent(r, axis)));
     }
     return svg;
@@ -381,9 +381,11 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
     }
     const bool area = std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return measuredPixels(r, ErrorAxis::AreaMae) > 0; });
 
-    QString table = QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1<th>on the front</th><th>frame ms (p10–p90)</th>"
+    const bool machines = severalMachines(rows);
+    QString table = QStringLiteral("<h2>All configurations</h2><table><tr><th>configuration</th>%1%2<th>on the front</th><th>frame ms (p10–p90)</th>"
                                    "<th>shadow pass ms</th><th>lit pass ms</th><th>misclassified %</th><th>misclassified px</th>")
-                        .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString());
+                        .arg(lights.size() > 1 ? QStringLiteral("<th>light</th>") : QString(),
+                             machines ? QStringLiteral("<th>renderer</th>") : QString());
     if (area)
         table += QStringLiteral("<th>area MAE %</th>");
     for (const Column* c : shown)
@@ -399,7 +401,9 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
         table += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6 (%7–%8)</td><td>%9</td>")
                      .arg(r.paretoFront || r.areaFront ? QStringLiteral(" class=\"front\"") : QString())
                      .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label),
-                          lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(r.light) + 1) : QString(), fronts.join(QStringLiteral(", ")))
+                          (lights.size() > 1 ? QStringLiteral("<td>%1</td>").arg(lights.indexOf(lightOf(r, rows)) + 1) : QString())
+                              + (machines ? QStringLiteral("<td title=\"%1\">%2</td>").arg(html(r.machine), html(r.renderer)) : QString()),
+                          fronts.join(QStringLiteral(", ")))
                      .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), number(r.shadowPass.median, 2));
         table += QStringLiteral("<td>%1</td><td>%2</td><td>%3 ± %4</td>")
                      .arg(number(r.litPass.median, 2), percentText(100 * r.accuracy.hard.misclassified), number(misclassified, 0),

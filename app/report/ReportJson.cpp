@@ -12,7 +12,9 @@ namespace {
 
 QJsonObject statsJson(const SampleStats& s)
 {
-    return {{QStringLiteral("median_ms"), s.median}, {QStringLiteral("p10_ms"), s.p10}, {QStringLiteral("p90_ms"), s.p90}};
+    return {{QStringLiteral("median_ms"), s.median}, {QStringLiteral("p10_ms"), s.p10}, {QStringLiteral("p90_ms"), s.p90},
+            {QStringLiteral("min_ms"), s.min}, {QStringLiteral("max_ms"), s.max}, {QStringLiteral("mean_ms"), s.mean},
+            {QStringLiteral("count"), s.count}};
 }
 
 QJsonObject metricsJson(const ErrorMetrics& m)
@@ -34,13 +36,25 @@ QJsonValue flickerValue(const ReportRow& r, double fraction)
 
 } // namespace
 
+QString errorImageName(std::size_t position)
+{
+    return QStringLiteral("errors/%1.png").arg(position, 3, 10, QLatin1Char('0'));
+}
+
 QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
     QJsonArray jsonRows;
-    for (const ReportRow& r : rows) {
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const ReportRow& r = rows[i];
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
         jsonRows.append(QJsonObject{{QStringLiteral("label"), r.label},
+                                    {QStringLiteral("sweep_index"), r.sweepIndex},
+                                    {QStringLiteral("defaults"), r.defaults},
+                                    {QStringLiteral("tutorial"), r.tutorial},
+                                    {QStringLiteral("renderer"), r.renderer},
+                                    {QStringLiteral("machine"), r.machine},
+                                    {QStringLiteral("error_image"), r.accuracy.hardErrors.isNull() ? QJsonValue() : QJsonValue(errorImageName(i))},
                                     {QStringLiteral("settings"), QJsonArray::fromStringList(r.assignments)},
                                     {QStringLiteral("light"), r.light},
                                     {QStringLiteral("shadow_pass_wall"), statsJson(r.shadowPass)},
@@ -55,13 +69,16 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("area_mae_noise_pct"), areaNoisePercent(r)},
                                     {QStringLiteral("mean_ssim"), r.accuracy.ssim},
                                     {QStringLiteral("dssim"), dssim(r)},
+                                    {QStringLiteral("area_noise_floor_pct"), 100 * r.accuracy.areaNoiseFloor},
                                     {QStringLiteral("texel_density"), QJsonObject{{QStringLiteral("fine_texels_pct"), 100 * r.density.fineShare()},
+                                                                                  {QStringLiteral("fine"), r.density.fine},
                                                                                   {QStringLiteral("median_pixels_per_texel"), r.density.medianPixelsPerTexel},
                                                                                   {QStringLiteral("pixels"), r.density.counted}}},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), flickerValue(r, r.flicker.flicker)},
                                                                             {QStringLiteral("worst_pair_pct"), flickerValue(r, r.flicker.worstPair)},
                                                                             {QStringLiteral("mean_change_pct"), flickerValue(r, r.flicker.meanChange)},
                                                                             {QStringLiteral("frames"), r.flicker.frames},
+                                                                            {QStringLiteral("pixels"), r.flicker.pixels},
                                                                             {QStringLiteral("map_moves"), r.flicker.mapMoves}}}});
     }
     const QJsonObject json{{QStringLiteral("scene"), facts.scene},
@@ -77,6 +94,10 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                            {QStringLiteral("rays_per_second"), facts.raysPerSecond},
                            {QStringLiteral("reference_computations"), facts.referenceComputations},
                            {QStringLiteral("seconds"), facts.seconds},
+                           {QStringLiteral("sweep"), facts.sweep},
+                           {QStringLiteral("configurations"), facts.configurations},
+                           {QStringLiteral("shard"), QStringLiteral("%1/%2").arg(facts.shard).arg(facts.shards)},
+                           {QStringLiteral("parts"), facts.parts},
                            {QStringLiteral("rows"), jsonRows}};
     return QJsonDocument(json).toJson(QJsonDocument::Indented);
 

@@ -1,0 +1,346 @@
+#include "ReportParts.h"
+
+#include "MessageText.h"
+#include "ReportWriter.h"
+
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace shadowlab {
+
+namespace {
+
+// report.json's values, each read with the file and field named when it is missing or of
+// another type.
+class JsonReader {
+public:
+    JsonReader(QString file, QString context) : m_file(std::move(file)), m_context(std::move(context)) {}
+
+    [[noreturn]] void fail(const QString& key, const QString& problem) const
+    {
+        throw ReportMergeError(QStringLiteral("%1: %2%3 %4; it is not a report.json that `shadowlab report` wrote, or one of an "
+                                              "older version: measure it again")
+                                   .arg(displayText(m_file), m_context, key, problem));
+    }
+    QJsonValue value(const QJsonObject& object, const QString& key) const
+    {
+        const QJsonValue v = object.value(key);
+        if (v.isUndefined())
+            fail(key, QStringLiteral("is missing"));
+        return v;
+    }
+    double number(const QJsonObject& object, const QString& key) const
+    {
+        const QJsonValue v = value(object, key);
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            fail(key, QStringLiteral("is not a number"));
+        return v.toDouble();
+    }
+    // A number, or null where the figure was not measured.
+    double numberOrZero(const QJsonObject& object, const QString& key) const
+    {
+        return value(object, key).isNull() ? 0.0 : number(object, key);
+    }
+    int count(const QJsonObject& object, const QString& key) const
+    {
+        const double v = number(object, key);
+        if (v < 0 || v > 1e9 || v != std::floor(v))
+            fail(key, QStringLiteral("is not a count"));
+        return int(v);
+    }
+    QString text(const QJsonObject& object, const QString& key) const
+    {
+        const QJsonValue v = value(object, key);
+        if (!v.isString())
+            fail(key, QStringLiteral("is not a string"));
+        return v.toString();
+    }
+    bool flag(const QJsonObject& object, const QString& key) const
+    {
+        const QJsonValue v = value(object, key);
+        if (!v.isBool())
+            fail(key, QStringLiteral("is not true or false"));
+        return v.toBool();
+    }
+    QJsonObject object(const QJsonObject& object, const QString& key) const
+    {
+        const QJsonValue v = value(object, key);
+        if (!v.isObject())
+            fail(key, QStringLiteral("is not an object"));
+        return v.toObject();
+    }
+    JsonReader within(const QString& context) const { return JsonReader(m_file, m_context + context + QLatin1Char('.')); }
+
+private:
+    QString m_file;
+    QString m_context;
+};
+
+SampleStats readStats(const JsonReader& json, const QJsonObject& object)
+{
+    SampleStats s;
+    s.median = json.number(object, QStringLiteral("median_ms"));
+    s.p10 = json.number(object, QStringLiteral("p10_ms"));
+    s.p90 = json.number(object, QStringLiteral("p90_ms"));
+    s.min = json.number(object, QStringLiteral("min_ms"));
+    s.max = json.number(object, QStringLiteral("max_ms"));
+    s.mean = json.number(object, QStringLiteral("mean_ms"));
+    s.count = json.count(object, QStringLiteral("count"));
+    return s;
+}
+
+ErrorMetrics readMetrics(const JsonReader& json, const QJsonObject& object)
+{
+    ErrorMetrics m;
+    m.pixels = json.count(object, QStringLiteral("pixels"));
+    m.misclassified = json.number(object, QStringLiteral("misclassified_pct")) / 100;
+    m.falseShadow = json.number(object, QStringLiteral("false_shadow_pct")) / 100;
+    m.falseLight = json.number(object, QStringLiteral("false_light_pct")) / 100;
+    m.mae = json.number(object, QStringLiteral("mae_pct")) / 100;
+    m.rmse = json.number(object, QStringLiteral("rmse_pct")) / 100;
+    return m;
+}
+
+ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir& dir)
+{
+    ReportRow r;
+    r.label = file.text(object, QStringLiteral("label"));
+    const JsonReader json = file.within(QStringLiteral("rows['%1']").arg(r.label));
+    r.sweepIndex = json.count(object, QStringLiteral("sweep_index"));
+    r.defaults = json.flag(object, QStringLiteral("defaults"));
+    r.tutorial = json.flag(object, QStringLiteral("tutorial"));
+    r.renderer = json.text(object, QStringLiteral("renderer"));
+    r.machine = json.text(object, QStringLiteral("machine"));
+    r.light = json.text(object, QStringLiteral("light"));
+    const QJsonValue settings = json.value(object, QStringLiteral("settings"));
+    for (const QJsonValue& assignment : settings.toArray()) {
+        if (!assignment.isString())
+            json.fail(QStringLiteral("settings"), QStringLiteral("is not a list of key=value strings"));
+        r.assignments << assignment.toString();
+    }
+    r.shadowPass = readStats(json.within(QStringLiteral("shadow_pass_wall")), json.object(object, QStringLiteral("shadow_pass_wall")));
+    r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
+    r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
+    r.accuracy.hard = readMetrics(json.within(QStringLiteral("hard_reference")), json.object(object, QStringLiteral("hard_reference")));
+    r.accuracy.area = readMetrics(json.within(QStringLiteral("area_reference")), json.object(object, QStringLiteral("area_reference")));
+    r.accuracy.ssim = json.number(object, QStringLiteral("mean_ssim"));
+    r.accuracy.areaNoiseFloor = json.number(object, QStringLiteral("area_noise_floor_pct")) / 100;
+    r.paretoFront = json.flag(object, QStringLiteral("pareto_front"));
+    r.areaFront = json.flag(object, QStringLiteral("area_pareto_front"));
+
+    const QJsonObject density = json.object(object, QStringLiteral("texel_density"));
+    const JsonReader d = json.within(QStringLiteral("texel_density"));
+    r.density.counted = d.count(density, QStringLiteral("pixels"));
+    r.density.fine = d.count(density, QStringLiteral("fine"));
+    r.density.medianPixelsPerTexel = d.number(density, QStringLiteral("median_pixels_per_texel"));
+
+    const QJsonObject flicker = json.object(object, QStringLiteral("flicker"));
+    const JsonReader f = json.within(QStringLiteral("flicker"));
+    r.flicker.frames = f.count(flicker, QStringLiteral("frames"));
+    r.flicker.pixels = f.count(flicker, QStringLiteral("pixels"));
+    r.flicker.mapMoves = f.count(flicker, QStringLiteral("map_moves"));
+    r.flicker.flicker = f.numberOrZero(flicker, QStringLiteral("flips_pct")) / 100;
+    r.flicker.worstPair = f.numberOrZero(flicker, QStringLiteral("worst_pair_pct")) / 100;
+    r.flicker.meanChange = f.numberOrZero(flicker, QStringLiteral("mean_change_pct")) / 100;
+
+    const QJsonValue image = json.value(object, QStringLiteral("error_image"));
+    if (!image.isNull()) {
+        const QString name = json.text(object, QStringLiteral("error_image"));
+        // Only the name the writer gives: an edited file cannot make this read elsewhere.
+        if (name.contains(QLatin1String("..")) || QDir::isAbsolutePath(name))
+            json.fail(QStringLiteral("error_image"), QStringLiteral("is not a file of the report's folder"));
+        r.accuracy.hardErrors = QImage(dir.filePath(name));
+        if (r.accuracy.hardErrors.isNull())
+            throw ReportMergeError(QStringLiteral("%1 cannot be read as an image: copy the report's whole folder, errors/ with it")
+                                       .arg(displayText(dir.filePath(name))));
+    }
+    return r;
+}
+
+// "K/N" as the report wrote it.
+std::pair<int, int> readShard(const JsonReader& json, const QJsonObject& top)
+{
+    const QStringList parts = json.text(top, QStringLiteral("shard")).split(QLatin1Char('/'));
+    bool okK = false, okN = false;
+    const int k = parts.value(0).toInt(&okK), n = parts.value(1).toInt(&okN);
+    if (parts.size() != 2 || !okK || !okN || n < 1 || k < 1 || k > n)
+        json.fail(QStringLiteral("shard"), QStringLiteral("is not K/N"));
+    return {k, n};
+}
+
+QString partName(const ReportPart& part)
+{
+    return part.facts.shards > 1 ? QStringLiteral("%1 (share %2/%3)").arg(displayText(part.directory)).arg(part.facts.shard).arg(part.facts.shards)
+                                 : displayText(part.directory);
+}
+
+// What two parts of different sweeps differ in, as a reader would check it first.
+QString sweepDifference(const ReportFacts& a, const ReportFacts& b)
+{
+    if (a.scene != b.scene)
+        return QStringLiteral("scene %1 against %2").arg(displayText(a.scene), displayText(b.scene));
+    if (a.size != b.size)
+        return QStringLiteral("size %1x%2 against %3x%4").arg(a.size.width()).arg(a.size.height()).arg(b.size.width()).arg(b.size.height());
+    if (a.configurations != b.configurations)
+        return QStringLiteral("%1 configurations against %2").arg(a.configurations).arg(b.configurations);
+    if (a.frames != b.frames || a.minFrames != b.minFrames || a.warmup != b.warmup)
+        return QStringLiteral("--frames, --min-frames or --warmup");
+    if (a.areaSamplesPerPixel != b.areaSamplesPerPixel)
+        return QStringLiteral("--area-samples");
+    return QStringLiteral("the sweep's configurations or settings");
+}
+
+} // namespace
+
+ReportPart readReportPart(const QString& directory)
+{
+    const QDir dir(directory);
+    const QString path = dir.filePath(QStringLiteral("report.json"));
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw ReportMergeError(QStringLiteral("%1: cannot be read (%2); give folders that `shadowlab report --out` wrote")
+                                   .arg(displayText(path), file.errorString()));
+    QJsonParseError error{};
+    const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &error);
+    if (document.isNull() || !document.isObject())
+        throw ReportMergeError(QStringLiteral("%1: is not JSON (%2 at byte %3)").arg(displayText(path), error.errorString()).arg(error.offset));
+    const QJsonObject top = document.object();
+    const JsonReader json(path, QString());
+
+    ReportPart part;
+    part.directory = directory;
+    ReportFacts& f = part.facts;
+    f.scene = json.text(top, QStringLiteral("scene"));
+    const QStringList size = json.text(top, QStringLiteral("size")).split(QLatin1Char('x'));
+    f.size = QSize(size.value(0).toInt(), size.value(1).toInt());
+    if (size.size() != 2 || f.size.isEmpty())
+        json.fail(QStringLiteral("size"), QStringLiteral("is not WxH"));
+    f.frames = json.count(top, QStringLiteral("frames"));
+    f.minFrames = json.count(top, QStringLiteral("min_frames"));
+    f.warmup = json.count(top, QStringLiteral("warmup"));
+    f.renderer = json.text(top, QStringLiteral("renderer"));
+    f.machine = json.text(top, QStringLiteral("machine"));
+    f.areaSamplesPerPixel = json.count(top, QStringLiteral("area_samples_per_pixel"));
+    f.lightRadius = json.number(top, QStringLiteral("light_radius"));
+    f.areaNoiseFloor = json.numberOrZero(top, QStringLiteral("area_noise_floor_pct")) / 100;
+    f.raysPerSecond = json.number(top, QStringLiteral("rays_per_second"));
+    f.referenceComputations = json.count(top, QStringLiteral("reference_computations"));
+    f.seconds = json.number(top, QStringLiteral("seconds"));
+    f.sweep = json.text(top, QStringLiteral("sweep"));
+    f.configurations = json.count(top, QStringLiteral("configurations"));
+    std::tie(f.shard, f.shards) = readShard(json, top);
+    f.parts = json.count(top, QStringLiteral("parts"));
+    const QJsonValue rows = json.value(top, QStringLiteral("rows"));
+    if (!rows.isArray())
+        json.fail(QStringLiteral("rows"), QStringLiteral("is not a list"));
+    for (const QJsonValue& row : rows.toArray()) {
+        if (!row.isObject())
+            json.fail(QStringLiteral("rows"), QStringLiteral("holds something other than rows"));
+        part.rows.push_back(readRow(json, row.toObject(), dir));
+        if (part.rows.back().sweepIndex >= f.configurations)
+            json.fail(QStringLiteral("rows"), QStringLiteral("holds a configuration past the sweep's %1").arg(f.configurations));
+    }
+    return part;
+}
+
+MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
+{
+    if (parts.empty())
+        throw ReportMergeError(QStringLiteral("give the report folders to merge"));
+    const ReportPart& first = parts.front();
+    for (const ReportPart& part : parts) {
+        if (part.facts.sweep != first.facts.sweep)
+            throw ReportMergeError(QStringLiteral("%1 and %2 measured different sweeps (%3): merge only shares and reports of one sweep, "
+                                                  "made with the same --scene, --size, --sweep, settings, --frames and --area-samples")
+                                       .arg(partName(first), partName(part), sweepDifference(first.facts, part.facts)));
+    }
+    // Each configuration once per machine: a second copy is the same share given twice.
+    std::map<std::pair<int, QString>, const ReportPart*> measured;
+    for (const ReportPart& part : parts) {
+        for (const ReportRow& row : part.rows) {
+            const auto [at, fresh] = measured.emplace(std::pair(row.sweepIndex, row.renderer + u'\n' + row.machine), &part);
+            if (!fresh)
+                throw ReportMergeError(QStringLiteral("%1 and %2 both hold '%3' measured on the same machine: give each share once")
+                                           .arg(partName(*at->second), partName(part), row.label));
+        }
+    }
+    std::set<int> missing;
+    for (int i = 0; i < first.facts.configurations; ++i)
+        missing.insert(i);
+    for (const auto& entry : measured)
+        missing.erase(entry.first.first);
+    if (!missing.empty()) {
+        // Said as the shares to add, where every part was cut into the same number of shares.
+        const int shards = first.facts.shards;
+        const bool sameCut = std::all_of(parts.begin(), parts.end(), [&](const ReportPart& p) { return p.facts.shards == shards; });
+        QStringList absent;
+        std::set<int> shares;
+        for (int i : missing) {
+            absent << QString::number(i + 1);
+            shares.insert(i % shards + 1);
+        }
+        QString hint;
+        if (sameCut && shards > 1) {
+            QStringList named;
+            for (int k : shares)
+                named << QStringLiteral("--shard %1/%2").arg(k).arg(shards);
+            hint = QStringLiteral(": add the report of %1").arg(named.join(QStringLiteral(", ")));
+        }
+        throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations are in none of the reports given (number %3)%4")
+                                   .arg(missing.size())
+                                   .arg(first.facts.configurations)
+                                   .arg(absent.mid(0, 12).join(QStringLiteral(", ")) + (absent.size() > 12 ? QStringLiteral(", …") : QString()), hint));
+    }
+
+    MergedReport merged;
+    ReportFacts& f = merged.facts;
+    f = first.facts;
+    f.shard = f.shards = 1;
+    f.parts = 0;
+    f.seconds = 0.0;
+    f.referenceComputations = 0;
+    f.areaNoiseFloor = 0.0;
+    f.raysPerSecond = 0.0;
+    QStringList renderers, machines;
+    for (const ReportPart& part : parts) {
+        f.parts += part.facts.parts;
+        f.seconds += part.facts.seconds;
+        f.referenceComputations += part.facts.referenceComputations;
+        f.areaNoiseFloor = std::max(f.areaNoiseFloor, part.facts.areaNoiseFloor);
+        f.raysPerSecond = std::max(f.raysPerSecond, part.facts.raysPerSecond);
+        if (!renderers.contains(part.facts.renderer))
+            renderers << part.facts.renderer;
+        if (!machines.contains(part.facts.machine))
+            machines << part.facts.machine;
+        merged.rows.insert(merged.rows.end(), part.rows.begin(), part.rows.end());
+    }
+    f.renderer = renderers.join(QStringLiteral("; "));
+    f.machine = machines.join(QStringLiteral("; "));
+    std::stable_sort(merged.rows.begin(), merged.rows.end(), [](const ReportRow& a, const ReportRow& b) { return a.sweepIndex < b.sweepIndex; });
+    markParetoFronts(merged.rows);
+
+    if (severalMachines(merged.rows)) {
+        merged.notes << QStringLiteral("the rows were measured on %1 renderers or machines: each row's times are compared only with rows of "
+                                       "its own machine, each machine has its own front, and the renderer column says whose a row is")
+                            .arg(std::max(renderers.size(), machines.size()));
+        std::map<QString, int> perMachine;
+        for (const ReportRow& r : merged.rows)
+            ++perMachine[r.renderer + QStringLiteral(" (") + r.machine + u')'];
+        for (const auto& [machine, rows] : perMachine) {
+            if (rows < f.configurations)
+                merged.notes << QStringLiteral("%1 measured %2 of the %3 configurations").arg(machine).arg(rows).arg(f.configurations);
+        }
+    }
+    return merged;
+}
+
+} // namespace shadowlab
