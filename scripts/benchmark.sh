@@ -5,11 +5,22 @@
 # per scene with its machine and GL renderer named, and each report's Pareto charts as SVG under
 # docs/benchmark/. A benchmark, not a test: nothing here has a time limit.
 #
-#   ./scripts/benchmark.sh [--size WxH] [--frames N] [--area-samples N] [--out DIR]
+#   ./scripts/benchmark.sh [--size WxH] [--frames N] [--area-samples N] [--out DIR] [--scenes "A B"]
+#                          [--shards N] [--jobs N] [--parts DIR] [--print-jobs | --merge-only]
 #
 # The defaults (320x180, 6 timed frames after 1 warm-up, 4 x 4 area rays a pixel, no flicker
 # walk) keep the whole run to about 8 minutes on two cores with llvmpipe (docs/benchmark.md
 # says how long its run took); moment techniques under a point light are the slowest part.
+#
+# Spread over processes, machines or a scheduler (docs/cli-guide.md shows each):
+#   --shards N     cut each scene and light's report into N shares (`report --shard K/N`)
+#   --jobs N       run the reports, or their shares, N at a time through GNU parallel; on one
+#                  machine they then share its cores, which their times show
+#   --parts DIR    where each share's report goes (kept; default: a temporary folder)
+#   --print-jobs   print one shell command a line, each share's report, and stop: for a
+#                  scheduler (a Slurm job array runs line $SLURM_ARRAY_TASK_ID) or
+#                  `parallel --sshlogin` across machines
+#   --merge-only   measure nothing: merge the shares already in --parts into docs/benchmark.md
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 binary="${SHADOWLAB:-$root/build/release/app/shadowlab}"
@@ -18,15 +29,36 @@ size=320x180
 frames=6
 area_samples=4
 out="$root/docs"
+scenes=(seed torus cubes city "$models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" "$models/OBJ/spider.obj")
+shards=1
+jobs=1
+parts=
+mode=run
+usage='use [--size WxH] [--frames N] [--area-samples N] [--out DIR] [--scenes "A B"] [--shards N] [--jobs N] [--parts DIR] [--print-jobs | --merge-only]'
+count() {   # a whole number of 1 or more for option $1, or exit 2
+    [[ $2 =~ ^[1-9][0-9]*$ ]] || { echo "benchmark.sh: $1 $2: give a whole number of 1 or more" >&2; exit 2; }
+}
 while [ $# -gt 0 ]; do
     case "$1" in
         --size) size=$2; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
         --area-samples) area_samples=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        *) echo "benchmark.sh: unknown option '$1'; use [--size WxH] [--frames N] [--area-samples N] [--out DIR]" >&2; exit 2 ;;
+        --scenes) read -r -a scenes <<<"$2"; shift 2 ;;
+        --shards) count "$1" "$2"; shards=$2; shift 2 ;;
+        --jobs) count "$1" "$2"; jobs=$2; shift 2 ;;
+        --parts) parts=$2; shift 2 ;;
+        --print-jobs) mode=print; shift ;;
+        --merge-only) mode=merge; shift ;;
+        *) echo "benchmark.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     esac
 done
+[ "$mode" != merge ] || [ -n "$parts" ] || { echo "benchmark.sh: --merge-only merges the shares in --parts DIR; say where they are" >&2; exit 2; }
+[ "$mode" != print ] || [ -n "$parts" ] || { echo "benchmark.sh: --print-jobs needs --parts DIR, a folder every job can write its share to" >&2; exit 2; }
+if [ "$jobs" -gt 1 ] && ! command -v parallel >/dev/null; then
+    echo "benchmark.sh: --jobs runs the reports through GNU parallel, which is missing; scripts/setup.sh installs it" >&2
+    exit 2
+fi
 [ -x "$binary" ] || { echo "benchmark.sh: no program at $binary; build it with scripts/setup.sh (or set SHADOWLAB)" >&2; exit 2; }
 export QT_QPA_PLATFORM=headless
 
@@ -41,28 +73,64 @@ python3 -c 'import json, sys
 modes = next(s for s in json.load(open(sys.argv[1])) if s["key"] == "filter.mode")["choices"]
 json.dump([{"label": m, "set": {"filter.mode": m}} for m in modes], open(sys.argv[2], "w"))' "$work/settings.json" "$work/techniques.json"
 
-scenes=(seed torus cubes city "$models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" "$models/OBJ/spider.obj")
 for scene in "${scenes[@]}"; do
     [ -f "$scene" ] || [[ "$scene" != */* ]] || { echo "benchmark.sh: $scene is missing; install assimp-testmodels (scripts/setup.sh)" >&2; exit 2; }
 done
+parts=${parts:-$work/parts}
+mkdir -p "$parts"
+parts=$(cd "$parts" && pwd)
 
-start=$(date +%s)
+# One line a share: a shell command that measures it into $parts/<scene>/<light>/<k>, its log
+# beside it. Every line reads the sweep from $parts, so a scheduler's job needs nothing else.
 names=()
+: >"$work/jobs"
 for scene in "${scenes[@]}"; do
     name=$(basename "$scene"); name=${name%.*}
     names+=("$name")
-    mkdir -p "$work/reports/$name"
     for light in "${light_types[@]}"; do
-        echo "==> $name, $light light"
-        report_start=$(date +%s)
-        "$binary" report --scene "$scene" --set "light.type=$light" --size "$size" --sweep "$work/techniques.json" \
-            --frames "$frames" --warmup 1 --area-samples "$area_samples" --flicker-frames 0 --out "$work/reports/$name/$light" \
-            > "$work/report.log" 2>&1 || { cat "$work/report.log" >&2; exit 1; }
-        echo "$(( $(date +%s) - report_start )) s"
+        mkdir -p "$parts/$name/$light"
+        for ((k = 1; k <= shards; k++)); do
+            printf 'QT_QPA_PLATFORM=headless %q report --scene %q --set light.type=%q --size %q --sweep %q --frames %q --warmup 1 --area-samples %q --flicker-frames 0 --shard %d/%d --out %q >%q 2>&1\n' \
+                "$binary" "$scene" "$light" "$size" "$parts/techniques.json" "$frames" "$area_samples" "$k" "$shards" \
+                "$parts/$name/$light/$k" "$parts/$name/$light/$k.log" >>"$work/jobs"
+        done
+    done
+done
+[ "$mode" = merge ] || cp "$work/techniques.json" "$parts/techniques.json"
+if [ "$mode" = print ]; then
+    cat "$work/jobs"
+    exit 0
+fi
+
+start=$(date +%s)
+if [ "$mode" = run ]; then
+    echo "==> $(wc -l <"$work/jobs") reports ($shards share(s) of each scene and light), $jobs at a time; each log beside its report in $parts"
+    if [ "$jobs" -gt 1 ]; then
+        parallel --jobs "$jobs" --halt now,fail=1 <"$work/jobs" \
+            || { echo "benchmark.sh: a report failed; its log is beside its folder in $parts" >&2; exit 1; }
+    else
+        while IFS= read -r job; do
+            bash -c "$job" || { echo "benchmark.sh: a report failed: $job" >&2; exit 1; }
+        done <"$work/jobs"
+    fi
+fi
+
+# Each scene and light's shares, put together into one report.
+for name in "${names[@]}"; do
+    for light in "${light_types[@]}"; do
+        shares=()
+        for ((k = 1; k <= shards; k++)); do
+            shares+=("$parts/$name/$light/$k")
+        done
+        "$binary" report --merge --out "$work/reports/$name/$light" "${shares[@]}" >"$work/merge.log" 2>&1 \
+            || { cat "$work/merge.log" >&2; exit 1; }
     done
 done
 seconds=$(( $(date +%s) - start ))
 
+command="scripts/benchmark.sh --size $size --frames $frames --area-samples $area_samples"
+[ "$shards" -eq 1 ] || command+=" --shards $shards"
+[ "$jobs" -eq 1 ] || command+=" --jobs $jobs"
 python3 "$root/scripts/benchmark-doc.py" --reports "$work/reports" --out "$out" --seconds "$seconds" \
-    --scenes "${names[@]}" --lights "${light_types[@]}" --command "scripts/benchmark.sh --size $size --frames $frames --area-samples $area_samples"
+    --scenes "${names[@]}" --lights "${light_types[@]}" --command "$command"
 echo "wrote $out/benchmark.md in $seconds s"

@@ -18,6 +18,7 @@ packages=(
     desktop-file-utils appstream  # install test: the desktop entry's and the metainfo's validators
     dpkg-dev file      # scripts/package.sh: CPack's .deb and its dependencies (dpkg-shlibdeps)
     chromium           # report test: the HTML report opened, printed and pictured headless
+    parallel           # scripts/benchmark.sh --jobs: its reports, or their shares, N at a time
     xvfb xauth         # stop-signal test: the explorer on a virtual display, stopped by SIGTERM, SIGINT, SIGHUP
 )
 
@@ -47,4 +48,5 @@ fi
 echo "==> configuring and building (preset $preset)"
 cd "$root"  # presets are read from the working directory
 cmake --preset "$preset" >/dev/null
-cmake --build --preset "$preset" -j "$(nproc)"
+# SHADOWLAB_BUILD_TARGET builds one target and what it needs (scripts/test.sh --sanitize-quick).
+cmake --build --preset "$preset" -j "$(nproc)" ${SHADOWLAB_BUILD_TARGET:+--target "$SHADOWLAB_BUILD_TARGET"}

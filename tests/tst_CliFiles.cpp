@@ -188,6 +188,32 @@ private Q_SLOTS:
             QVERIFY(readFile(folder + "/" + target).startsWith("label,"));
     }
 
+    // A command stopped by SIGTERM or SIGINT (a scheduler's time limit, Ctrl+C) dies of it, as
+    // scripts and schedulers expect (128 + n in a shell), and leaves nothing half-written where
+    // its output goes.
+    void stopSignalLeavesNoPartialFile_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::newRow("SIGTERM") << SIGTERM;
+        QTest::newRow("SIGINT") << SIGINT;
+    }
+    void stopSignalLeavesNoPartialFile()
+    {
+        QFETCH(int, signal);
+        const QString folder = m_dir.filePath(QStringLiteral("stopped-%1").arg(signal));
+        QVERIFY(QDir().mkpath(folder));
+        QProcess process;
+        process.start(QStringLiteral(SHADOWLAB_BINARY), {"report", "--scene", "seed", "--size", "320x180", "--out", folder});
+        QVERIFY(process.waitForStarted());
+        QTest::qWait(1500);     // into the work: the default sweep takes a minute
+        QCOMPARE(process.state(), QProcess::Running);
+        QCOMPARE(::kill(pid_t(process.processId()), signal), 0);
+        QVERIFY(process.waitForFinished(30000));
+        QCOMPARE(process.exitStatus(), QProcess::CrashExit);
+        QCOMPARE(process.exitCode(), signal);
+        QCOMPARE(entries(folder), QStringList());
+    }
+
     void depthOutCheckedBeforeOutIsWritten()
     {
         const QString folder = folderWithOldFile("depth-out-first");
@@ -462,7 +488,8 @@ private Q_SLOTS:
         QFETCH(QString, flag);
         const Run r = shadowlab({flag});
         QCOMPARE(r.exitCode, 0);
-        QCOMPARE(r.out, QStringLiteral("shadowlab " SHADOWLAB_VERSION "\n"));
+        QVERIFY2(r.out.startsWith(QStringLiteral("shadowlab " SHADOWLAB_VERSION "\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("\nLicence: MIT ")) && r.out.contains("NO WARRANTY"), qPrintable(r.out));
     }
 
     void unknownPlatformIsAClearError_data()

@@ -13,13 +13,14 @@ void writeReport(const QString& directory, const std::vector<ReportRow>& rows, c
     if (!QDir().mkpath(directory))
         throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot create the report folder '%1'").arg(displayText(directory)));
     const QDir dir(directory);
+    // report.json after the error images it names, so that a report.json always has them.
+    writeOutputFile(dir.filePath(QStringLiteral("report.csv")), reportCsv(rows));
     if (!dir.mkpath(QStringLiteral("errors")))
         throw OutputError(OutputError::Kind::WriteFailed, QStringLiteral("cannot create the folder '%1'").arg(displayText(dir.filePath(QStringLiteral("errors")))));
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (!rows[i].accuracy.hardErrors.isNull())
             writeOutputFile(dir.filePath(errorImageName(i)), encodePng(rows[i].accuracy.hardErrors));
     }
-    writeOutputFile(dir.filePath(QStringLiteral("report.csv")), reportCsv(rows));
     writeOutputFile(dir.filePath(QStringLiteral("report.json")), reportJson(rows, facts));
     writeOutputFile(dir.filePath(QStringLiteral("report.html")), reportHtml(rows, facts));
 }
