@@ -6,6 +6,7 @@
 #include <embree3/rtcore_config.h>
 
 #include <QFile>
+#include <QRegularExpression>
 #include <QSysInfo>
 #include <QThread>
 
@@ -62,21 +63,29 @@ void markParetoFronts(std::vector<ReportRow>& rows)
     markFront(rows, ErrorAxis::AreaMae, &ReportRow::areaFront);
 }
 
+QString timedOn(const ReportRow& row)
+{
+    // What decides a frame's time: the renderer, and the CPU and its cores (a software
+    // rasteriser's threads; a scheduler's allocation). Memory size and software versions are
+    // facts of the run, not a reason to keep two alike nodes' rows apart.
+    static const QRegularExpression cpuAndCores(QStringLiteral("^.*?, \\d+ cores"));
+    const QRegularExpressionMatch match = cpuAndCores.match(row.machine);
+    return row.renderer + QStringLiteral(" (") + (match.hasMatch() ? match.captured(0) : row.machine) + u')';
+}
+
 bool comparable(const ReportRow& a, const ReportRow& b)
 {
-    return a.light == b.light && a.renderer == b.renderer && a.machine == b.machine;
+    return a.light == b.light && timedOn(a) == timedOn(b);
 }
 
 bool severalMachines(const std::vector<ReportRow>& rows)
 {
-    return std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) {
-        return r.renderer != rows.front().renderer || r.machine != rows.front().machine;
-    });
+    return std::any_of(rows.begin(), rows.end(), [&](const ReportRow& r) { return timedOn(r) != timedOn(rows.front()); });
 }
 
 QString lightOf(const ReportRow& row, const std::vector<ReportRow>& rows)
 {
-    return severalMachines(rows) ? QStringLiteral("%1, on %2 (%3)").arg(row.light, row.renderer, row.machine) : row.light;
+    return severalMachines(rows) ? QStringLiteral("%1, on %2").arg(row.light, timedOn(row)) : row.light;
 }
 
 QStringList lightsOf(const std::vector<ReportRow>& rows)

@@ -35,8 +35,10 @@ struct ReportRow {
     QString machine;            // machineFacts() of that machine
 };
 
-// Rows are compared (on a front, a chart) only with rows of the same light measured on the same
-// renderer and machine: times from two machines say nothing of each other.
+// What `row`'s times were taken on: its renderer, CPU and cores ("llvmpipe (...) (AMD EPYC 7B13,
+// 2 cores)"). Rows are compared (on a front, a chart) only with rows of the same light timed on
+// the same: times from two machines say nothing of each other.
+QString timedOn(const ReportRow& row);
 bool comparable(const ReportRow& a, const ReportRow& b);
 
 // The two errors a front is drawn on: misclassified pixels against the hard reference, and

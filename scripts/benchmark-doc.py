@@ -34,8 +34,8 @@ def front(row):
 def scene_table(reports):
     """One row a technique and light; with reports merged from several machines, a renderer
     column says whose each row is (their times are compared only with their own machine's)."""
-    renderers = {row.get("renderer") for _, report in reports for row in report["rows"]}
-    several = len(renderers) > 1
+    machines = {(row["renderer"], row["machine"]) for _, report in reports for row in report["rows"]}
+    several = len(machines) > 1
     lines = ["| light | technique |%s misclassified % | false shadow % | false light % | area MAE % | DSSIM | frame ms (p10–p90) | shadow pass ms | lit pass ms | on the front |"
              % (" renderer |" if several else ""),
              "| --- | --- |%s ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |" % (" --- |" if several else "")]
@@ -43,7 +43,7 @@ def scene_table(reports):
         for row in report["rows"]:
             hard, frame = row["hard_reference"], row["frame_wall"]
             lines.append("| %s | %s |%s %s | %s | %s | %s ± %s | %.5f | %.1f (%.1f–%.1f) | %.1f | %.1f | %s |" % (
-                light, row["label"], (" %s |" % row["renderer"]) if several else "", percent(hard["misclassified_pct"]),
+                light, row["label"], (" %s, %s |" % (row["renderer"], row["machine"].split(", ")[0])) if several else "", percent(hard["misclassified_pct"]),
                 percent(hard["false_shadow_pct"]), percent(hard["false_light_pct"]),
                 percent(row["area_reference"]["mae_pct"]), percent(row["area_mae_noise_pct"]), row["dssim"], frame["median_ms"],
                 frame["p10_ms"], frame["p90_ms"], row["shadow_pass_wall"]["median_ms"], row["lit_pass_wall"]["median_ms"], front(row)))

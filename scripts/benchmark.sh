@@ -20,7 +20,8 @@
 #   --print-jobs   print one shell command a line, each share's report, and stop: for a
 #                  scheduler (a Slurm job array runs line $SLURM_ARRAY_TASK_ID) or
 #                  `parallel --sshlogin` across machines
-#   --merge-only   measure nothing: merge the shares already in --parts into docs/benchmark.md
+#   --merge-only   measure nothing: merge the shares already in --parts into docs/benchmark.md;
+#                  give it the options the jobs were printed with
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 binary="${SHADOWLAB:-$root/build/release/app/shadowlab}"
@@ -38,13 +39,16 @@ usage='use [--size WxH] [--frames N] [--area-samples N] [--out DIR] [--scenes "A
 count() {   # a whole number of 1 or more for option $1, or exit 2
     [[ $2 =~ ^[1-9][0-9]*$ ]] || { echo "benchmark.sh: $1 $2: give a whole number of 1 or more" >&2; exit 2; }
 }
+scenes_given=
 while [ $# -gt 0 ]; do
     case "$1" in
+        --size|--frames|--area-samples|--out|--scenes|--shards|--jobs|--parts)
+            [ $# -ge 2 ] || { echo "benchmark.sh: $1 needs a value; $usage" >&2; exit 2; } ;;&
         --size) size=$2; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
         --area-samples) area_samples=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        --scenes) read -r -a scenes <<<"$2"; shift 2 ;;
+        --scenes) read -r -a scenes <<<"$2"; scenes_given=$2; shift 2 ;;
         --shards) count "$1" "$2"; shards=$2; shift 2 ;;
         --jobs) count "$1" "$2"; jobs=$2; shift 2 ;;
         --parts) parts=$2; shift 2 ;;
@@ -53,6 +57,7 @@ while [ $# -gt 0 ]; do
         *) echo "benchmark.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     esac
 done
+[ ${#scenes[@]} -gt 0 ] || { echo "benchmark.sh: --scenes names no scene; give presets or model files, e.g. --scenes \"seed torus\"" >&2; exit 2; }
 [ "$mode" != merge ] || [ -n "$parts" ] || { echo "benchmark.sh: --merge-only merges the shares in --parts DIR; say where they are" >&2; exit 2; }
 [ "$mode" != print ] || [ -n "$parts" ] || { echo "benchmark.sh: --print-jobs needs --parts DIR, a folder every job can write its share to" >&2; exit 2; }
 if [ "$jobs" -gt 1 ] && ! command -v parallel >/dev/null; then
@@ -74,7 +79,7 @@ modes = next(s for s in json.load(open(sys.argv[1])) if s["key"] == "filter.mode
 json.dump([{"label": m, "set": {"filter.mode": m}} for m in modes], open(sys.argv[2], "w"))' "$work/settings.json" "$work/techniques.json"
 
 for scene in "${scenes[@]}"; do
-    [ -f "$scene" ] || [[ "$scene" != */* ]] || { echo "benchmark.sh: $scene is missing; install assimp-testmodels (scripts/setup.sh)" >&2; exit 2; }
+    [ "$mode" = merge ] || [ -f "$scene" ] || [[ "$scene" != */* ]] || { echo "benchmark.sh: $scene is missing; install assimp-testmodels (scripts/setup.sh)" >&2; exit 2; }
 done
 parts=${parts:-$work/parts}
 mkdir -p "$parts"
@@ -110,7 +115,12 @@ if [ "$mode" = run ]; then
             || { echo "benchmark.sh: a report failed; its log is beside its folder in $parts" >&2; exit 1; }
     else
         while IFS= read -r job; do
-            bash -c "$job" || { echo "benchmark.sh: a report failed: $job" >&2; exit 1; }
+            if ! bash -c "$job" </dev/null; then
+                log=${job% 2>&1}; log=${log##*>}
+                echo "benchmark.sh: a report failed: $job" >&2
+                cat "$log" >&2 || true
+                exit 1
+            fi
         done <"$work/jobs"
     fi
 fi
@@ -127,10 +137,16 @@ for name in "${names[@]}"; do
     done
 done
 seconds=$(( $(date +%s) - start ))
+if [ "$mode" = merge ]; then
+    # Measured elsewhere: the reports' own time, every share's added.
+    seconds=$(python3 -c 'import json, sys
+print(round(sum(json.load(open(f))["seconds"] for f in sys.argv[1:])))' "$work"/reports/*/*/report.json)
+fi
 
 command="scripts/benchmark.sh --size $size --frames $frames --area-samples $area_samples"
 [ "$shards" -eq 1 ] || command+=" --shards $shards"
 [ "$jobs" -eq 1 ] || command+=" --jobs $jobs"
+[ -z "$scenes_given" ] || command+=" --scenes \"$scenes_given\""
 python3 "$root/scripts/benchmark-doc.py" --reports "$work/reports" --out "$out" --seconds "$seconds" \
     --scenes "${names[@]}" --lights "${light_types[@]}" --command "$command"
 echo "wrote $out/benchmark.md in $seconds s"

@@ -116,7 +116,7 @@ def read_program(binary):
     found = sections(text)
     commands = [parse_command(Command(name, summary), run(binary, "help", name)) for name, summary in entries(found["Commands"])]
     options = [parse_option(*e) for e in entries(found["Options"])]
-    version = run(binary, "--version").split()[-1]
+    version = run(binary, "--version").splitlines()[0].split()[-1]   # "shadowlab 0.1.0", then the licence
     return Program(usage, intro, commands, options, json.loads(run(binary, "settings", "--json")), version)
 
 

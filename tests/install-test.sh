@@ -57,6 +57,9 @@ check_tree() {
     grep -q '^Copyright: .*ShadowLab developers' "$prefix/share/doc/shadowlab/copyright" || fail "the copyright file names no holder"
     grep -q '<project_license>MIT</project_license>' "$prefix/share/metainfo/$app_id.metainfo.xml" || fail "the metainfo names no MIT licence"
     grep -q '^\.TH SHADOWLAB 1' "$prefix/share/man/man1/shadowlab.1" || fail "shadowlab.1 has no .TH line"
+    local version
+    version=$("$prefix/bin/shadowlab" --version | head -n 1 | cut -d ' ' -f 2)
+    grep '^\.TH SHADOWLAB 1' "$prefix/share/man/man1/shadowlab.1" | grep -qF "ShadowLab $version" || fail "shadowlab.1's .TH line does not name version $version"
     for command in render bench report settings audit tune screenshot; do
         grep -q "^\.SS \"shadowlab $command" "$prefix/share/man/man1/shadowlab.1" || fail "shadowlab.1 has no section on $command"
     done

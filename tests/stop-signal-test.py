@@ -14,7 +14,12 @@ import tempfile
 import time
 
 
+log_path = None  # the explorer's output, shown with a failure
+
+
 def fail(message):
+    if log_path and os.path.exists(log_path):
+        print(open(log_path, errors="replace").read()[-6000:], file=sys.stderr)
     print("FAIL: " + message, file=sys.stderr)
     sys.exit(1)
 
@@ -52,25 +57,41 @@ def start_display(work):
     return xvfb, ":" + line.decode()
 
 
+running = []     # what to stop however the test ends
+
+
 def main():
     binary = os.path.abspath(sys.argv[1])
     work = tempfile.mkdtemp(prefix="shadowlab-stop-")
     try:
         xvfb, display = start_display(work)
+        running.append(xvfb)
         config = os.path.join(work, "config")
         env = {"PATH": "/usr/bin:/bin", "HOME": os.path.join(work, "home"), "XDG_CONFIG_HOME": config, "LANG": "C.UTF-8",
                "DISPLAY": display, "QT_QPA_PLATFORM": "xcb"}
         for name in ("ASAN_OPTIONS", "UBSAN_OPTIONS", "LSAN_OPTIONS"):
             if name in os.environ:
                 env[name] = os.environ[name]
+        # On a sanitizer build the leak check is off for this program: at exit the xcb
+        # platform's own stack leaks (libdbus's connection, and allocations of Mesa's GLX driver,
+        # unloaded by then, so that no suppression can name it). The window's code is checked for
+        # leaks in process on the headless platform (tst_MainWindow, tst_SessionRecovery, ...).
+        env["ASAN_OPTIONS"] = (env.get("ASAN_OPTIONS", "") + ":detect_leaks=0").lstrip(":")
         os.makedirs(env["HOME"])
 
         def start(ignore=None):
             def child():
+                # As a desktop starts it, whatever this test was started with (nohup, a shell's
+                # background job), and then as `nohup` would where the row asks for it.
+                for stop in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+                    signal.signal(stop, signal.SIG_DFL)
                 if ignore is not None:
                     signal.signal(ignore, signal.SIG_IGN)
-            log = open(os.path.join(work, "explorer.log"), "a")
+            global log_path
+            log_path = os.path.join(work, "explorer.log")
+            log = open(log_path, "a")
             explorer = subprocess.Popen([binary], env=env, cwd=work, stdout=log, stderr=log, preexec_fn=child)
+            running.append(explorer)
             wait_for(lambda: session_running(config) == "true" or explorer.poll() is not None, 120, "the explorer to start its session")
             if explorer.poll() is not None:
                 fail("the explorer stopped by itself with %d: %s" % (explorer.returncode, open(log.name).read()))
@@ -91,6 +112,14 @@ def main():
                 fail("after %s the session is still marked as running: the next start would offer a restore" % sig.name)
             print("%s: closed with exit code 0, the session marked as ended" % sig.name)
 
+        # A logout: SIGTERM and SIGHUP together are one request to close, not a second one.
+        explorer = start()
+        explorer.send_signal(signal.SIGTERM)
+        explorer.send_signal(signal.SIGHUP)
+        if explorer.wait(60) != 0 or session_running(config) != "false":
+            fail("SIGTERM and SIGHUP together (a logout) did not close the explorer with 0 and its session ended (%d)" % explorer.returncode)
+        print("SIGTERM and SIGHUP together: closed with exit code 0, the session marked as ended")
+
         explorer = start(ignore=signal.SIGHUP)
         explorer.send_signal(signal.SIGHUP)
         time.sleep(2.0)
@@ -100,10 +129,12 @@ def main():
         if explorer.wait(60) != 0:
             fail("the explorer started under nohup did not close with 0 on SIGTERM")
         print("SIGHUP ignored under nohup; SIGTERM then closed it with 0")
-        xvfb.terminate()
-        xvfb.wait(10)
         print("PASS")
     finally:
+        for process in reversed(running):
+            if process.poll() is None:
+                process.kill()
+                process.wait(10)
         shutil.rmtree(work, ignore_errors=True)
 
 

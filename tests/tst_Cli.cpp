@@ -545,6 +545,20 @@ private Q_SLOTS:
         const Run notAReport = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.path()});
         QCOMPARE(notAReport.exitCode, 2);
         QVERIFY2(notAReport.err.contains("report.json") && notAReport.err.contains("cannot be read"), qPrintable(notAReport.err));
+        const Run overItself = shadowlab({"report", "--merge", "--out", m_dir.filePath("share2") + "/", m_dir.filePath("share1"), m_dir.filePath("share2")});
+        QCOMPARE(overItself.exitCode, 2);
+        QVERIFY2(overItself.err.contains("is one of the reports being merged"), qPrintable(overItself.err));
+        const Run notForMerge = shadowlab({"report", "--merge", "--size", "96x54", "--out", m_dir.filePath("never"), m_dir.filePath("share1")});
+        QCOMPARE(notForMerge.exitCode, 2);
+        QVERIFY2(notForMerge.err.contains("--size does not apply"), qPrintable(notForMerge.err));
+        // A damaged count is refused before anything is sized by it.
+        QVERIFY(QDir().mkpath(m_dir.filePath("damaged")));
+        QJsonObject damaged = readJson(m_dir.filePath("share2/report.json"));
+        damaged.insert("configurations", 1e9);
+        QVERIFY(writeFile(m_dir.filePath("damaged/report.json"), QJsonDocument(damaged).toJson()));
+        const Run huge = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("damaged")});
+        QCOMPARE(huge.exitCode, 2);
+        QVERIFY2(huge.err.contains("configurations is not between 1 and 100000"), qPrintable(huge.err));
         for (const QString& shard : {QString("0/2"), QString("3/2"), QString("two"), QString("1/4")}) {
             const Run bad = report("never", {"--shard", shard});
             QCOMPARE(bad.exitCode, 2);

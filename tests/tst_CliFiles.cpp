@@ -203,6 +203,10 @@ private Q_SLOTS:
         const QString folder = m_dir.filePath(QStringLiteral("stopped-%1").arg(signal));
         QVERIFY(QDir().mkpath(folder));
         QProcess process;
+        process.setChildProcessModifier([] {
+            for (int s : {SIGTERM, SIGINT})
+                std::signal(s, SIG_DFL);    // however this test was started (a shell's background job ignores SIGINT)
+        });
         process.start(QStringLiteral(SHADOWLAB_BINARY), {"report", "--scene", "seed", "--size", "320x180", "--out", folder});
         QVERIFY(process.waitForStarted());
         QTest::qWait(1500);     // into the work: the default sweep takes a minute

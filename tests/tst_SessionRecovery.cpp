@@ -170,20 +170,24 @@ private slots:
 
     // A logout, a shutdown, `kill` or Ctrl+C is a close, not a crash: the last edit (still
     // inside its second before the autosave) is saved, the session is marked as ended, and the
-    // next start restores it without asking. (The process's exit code 0 is the install test's
-    // and stop-signal-test.sh's to check, on a real display.)
+    // next start restores it without asking. (The process's exit code 0 is stop-signal-test.py's
+    // to check, on a virtual display.)
     void stopSignalClosesAsTheUserWould_data()
     {
         QTest::addColumn<int>("signal");
-        QTest::newRow("SIGTERM") << SIGTERM;
-        QTest::newRow("SIGINT") << SIGINT;
-        QTest::newRow("SIGHUP") << SIGHUP;
+        QTest::addColumn<int>("then");      // a second, other signal at once (0: none)
+        QTest::newRow("SIGTERM") << SIGTERM << 0;
+        QTest::newRow("SIGINT") << SIGINT << 0;
+        QTest::newRow("SIGHUP") << SIGHUP << 0;
+        QTest::newRow("logout: SIGTERM and SIGHUP together") << SIGTERM << SIGHUP;
     }
     void stopSignalClosesAsTheUserWould()
     {
         QFETCH(int, signal);
+        QFETCH(int, then);
         {
-            std::signal(signal, SIG_DFL);   // as a desktop or a terminal starts it (nohup would ignore SIGHUP)
+            for (int s : {SIGTERM, SIGINT, SIGHUP})
+                std::signal(s, SIG_DFL);    // as a desktop or a terminal starts it (nohup would ignore SIGHUP)
             MainWindow window(MainWindow::Persistence::Restore);
             StopSignals stop;
             QSignalSpy stopping(&stop, &StopSignals::stopping);
@@ -195,6 +199,8 @@ private slots:
             window.setSettings(MainWindow::Side::A, edited);
             QVERIFY(!storedSettings(QStringLiteral("A")).contains(QStringLiteral("0.0789")));
             QCOMPARE(::kill(::getpid(), signal), 0);
+            if (then != 0)
+                QCOMPARE(::kill(::getpid(), then), 0);   // before the window has begun to close: not a second request
             QTRY_VERIFY_WITH_TIMEOUT(!window.isVisible(), 2000);
             QCOMPARE(stopping.count(), 1);
             QCOMPARE(stopping.first().first().toInt(), signal);

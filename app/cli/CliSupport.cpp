@@ -55,7 +55,7 @@ QString commandHelp(const QCommandLineParser& parser, const QString& command)
     return first + text.mid(end);
 }
 
-bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments)
+bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments, bool positional)
 {
     const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")}, QStringLiteral("Print the version and exit."));
     parser.addOption(version);
@@ -79,7 +79,7 @@ bool parseArguments(QCommandLineParser& parser, const QString& command, const QS
         out() << versionText() << Qt::flush;
         return false;
     }
-    if (!parser.positionalArguments().isEmpty())
+    if (!positional && !parser.positionalArguments().isEmpty())
         throw UsageError(QStringLiteral("unexpected argument '%1'; run `%2 --help`").arg(displayText(parser.positionalArguments().first()), invocation));
     // QCommandLineParser keeps the last of a repeated option; a user who wrote two meant something.
     const QStringList given = parser.optionNames();

@@ -29,9 +29,9 @@ QTextStream& err();
 
 // Parses `arguments` (those after the command's name); throws UsageError for unknown options
 // (suggesting the nearest known one), options given twice (all but --set and --set-b) or stray
-// positional arguments. Adds -v/--version. Returns false when --help or --version was asked
-// for and printed on stdout.
-bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments);
+// positional arguments (unless `positional`, where the command reads them). Adds -v/--version.
+// Returns false when --help or --version was asked for and printed on stdout.
+bool parseArguments(QCommandLineParser& parser, const QString& command, const QStringList& arguments, bool positional = false);
 // The parser's help with its usage line naming `shadowlab <command>`, not the binary's path.
 QString commandHelp(const QCommandLineParser& parser, const QString& command);
 

@@ -121,7 +121,14 @@ int runExplorer(const QStringList& arguments)
         if (!preset.isEmpty())
             window.propertiesDock()->showPreset(preset);
     }
-    const StopSignals stop;     // a logout or `kill` closes the window as the user would
+    // A logout or `kill` closes the window as the user would; where the process cannot have
+    // that (no socket pair to spare), a signal stops it as it would any program.
+    std::optional<StopSignals> stop;
+    try {
+        stop.emplace();
+    } catch (const std::runtime_error& e) {
+        err() << "shadowlab: " << e.what() << "; a logout or `kill` will stop the explorer without saving the session" << Qt::endl;
+    }
     window.show();
     if (!backgroundScene.isEmpty())
         window.openSceneInBackground(backgroundScene);

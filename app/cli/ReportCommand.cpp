@@ -334,8 +334,14 @@ int runMerge(const QCommandLineParser& parser, const QStringList& folders)
         throw UsageError(QStringLiteral("give the report folders to merge after the options: report --merge --out DIR SHARE_DIR..."));
     const QString directory = parser.value(QStringLiteral("out"));
     checkOutputFolder(directory, QStringLiteral("--out"));
+    // Compared as the file system sees them: "share2/", "./share2" and a link to it are share2.
+    const auto samePlace = [](const QString& a, const QString& b) {
+        const QFileInfo x(a), y(b);
+        return x.exists() && y.exists() ? x.canonicalFilePath() == y.canonicalFilePath()
+                                        : QDir::cleanPath(x.absoluteFilePath()) == QDir::cleanPath(y.absoluteFilePath());
+    };
     for (const QString& folder : folders) {
-        if (QFileInfo(folder).absoluteFilePath() == QFileInfo(directory).absoluteFilePath())
+        if (samePlace(folder, directory))
             throw UsageError(QStringLiteral("--out %1 is one of the reports being merged; write the merged report to a folder of its own").arg(displayText(directory)));
     }
     try {
@@ -363,24 +369,12 @@ int runReport(const QStringList& arguments)
     return guarded(QStringLiteral("report"), [&] {
         QCommandLineParser parser;
         addReportOptions(parser);
-        // The folders --merge reads are words of their own; nothing else takes one.
+        // The folders --merge reads are its words of their own (after `--` too).
         const bool merge = arguments.contains(QStringLiteral("--merge"));
-        QStringList options = arguments;
-        QStringList folders;
-        if (merge) {
-            options.clear();
-            for (qsizetype i = 0; i < arguments.size(); ++i) {
-                const QString& a = arguments[i];
-                if (!a.startsWith(QLatin1Char('-')) && !(i > 0 && arguments[i - 1] == u"--out"))
-                    folders << a;
-                else
-                    options << a;
-            }
-        }
-        if (!parseArguments(parser, QStringLiteral("report"), options))
+        if (!parseArguments(parser, QStringLiteral("report"), arguments, merge))
             return kExitOk;
         if (merge)
-            return runMerge(parser, folders);
+            return runMerge(parser, parser.positionalArguments());
         const ReportRequest request = readReportRequest(parser);
 
         QElapsedTimer total;

@@ -496,12 +496,33 @@ Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of r
         .arg(number(facts.seconds, 1));
 }
 
+// Whether this report is one share of a sweep, or several reports put together.
+QString partsNote(const std::vector<ReportRow>& rows, const ReportFacts& facts)
+{
+    if (facts.shards > 1)
+        return QStringLiteral("<p class=\"facts\">Share %1 of %2 of the sweep: %3 of its %4 configurations, each front among them only. "
+                              "Put the shares together with <code>shadowlab report --merge</code>.</p>")
+            .arg(facts.shard)
+            .arg(facts.shards)
+            .arg(rows.size())
+            .arg(facts.configurations);
+    if (facts.parts > 1)
+        return QStringLiteral("<p class=\"facts\">Put together from %1 reports (<code>report --merge</code>); the whole run is their times "
+                              "added.%2</p>")
+            .arg(facts.parts)
+            .arg(severalMachines(rows) ? QStringLiteral(" Measured on several machines: a row's times are compared only with rows of its own "
+                                                        "machine, and each machine has its own front.")
+                                       : QString());
+    return QString();
+}
+
 // Under several lights, the colour of each: every light has its own front.
 QString lightsLegend(const QStringList& lights)
 {
     if (lights.size() <= 1)
         return QString();
-    QString legend = QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable):");
+    QString legend = QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable, "
+                                    "nor times taken on different machines):");
     for (qsizetype i = 0; i < lights.size(); ++i)
         legend += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
     return legend + QStringLiteral("</p>");
@@ -560,7 +581,7 @@ QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& fac
 {
     // The lights in order of appearance: each has its own front and colour.
     const QStringList lights = lightsOf(rows);
-    QString page = pageHead(rows, facts);
+    QString page = pageHead(rows, facts) + partsNote(rows, facts);
     page += lightsLegend(lights);
     page += chartsSection(rows, lights);
     page += configurationTable(rows, lights);

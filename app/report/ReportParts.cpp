@@ -19,6 +19,10 @@ namespace shadowlab {
 
 namespace {
 
+// More than any sweep has (the default has 58): a larger count is a damaged file, refused before
+// anything is sized by it.
+constexpr int kMostConfigurations = 100000;
+
 // report.json's values, each read with the file and field named when it is missing or of
 // another type.
 class JsonReader {
@@ -158,7 +162,7 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
         // Only the name the writer gives: an edited file cannot make this read elsewhere.
         if (name.contains(QLatin1String("..")) || QDir::isAbsolutePath(name))
             json.fail(QStringLiteral("error_image"), QStringLiteral("is not a file of the report's folder"));
-        r.accuracy.hardErrors = QImage(dir.filePath(name));
+        r.accuracy.hardErrors = QImage(dir.filePath(name), "PNG");   // only through the decoder the writer used
         if (r.accuracy.hardErrors.isNull())
             throw ReportMergeError(QStringLiteral("%1 cannot be read as an image: copy the report's whole folder, errors/ with it")
                                        .arg(displayText(dir.filePath(name))));
@@ -179,8 +183,9 @@ std::pair<int, int> readShard(const JsonReader& json, const QJsonObject& top)
 
 QString partName(const ReportPart& part)
 {
-    return part.facts.shards > 1 ? QStringLiteral("%1 (share %2/%3)").arg(displayText(part.directory)).arg(part.facts.shard).arg(part.facts.shards)
-                                 : displayText(part.directory);
+    return part.facts.shards > 1
+               ? QStringLiteral("%1 (share %2/%3)").arg(displayText(part.directory), QString::number(part.facts.shard), QString::number(part.facts.shards))
+               : displayText(part.directory);
 }
 
 // What two parts of different sweeps differ in, as a reader would check it first.
@@ -196,7 +201,7 @@ QString sweepDifference(const ReportFacts& a, const ReportFacts& b)
         return QStringLiteral("--frames, --min-frames or --warmup");
     if (a.areaSamplesPerPixel != b.areaSamplesPerPixel)
         return QStringLiteral("--area-samples");
-    return QStringLiteral("the sweep's configurations or settings");
+    return QStringLiteral("the sweep's configurations, their settings or --flicker-frames");
 }
 
 } // namespace
@@ -211,8 +216,11 @@ ReportPart readReportPart(const QString& directory)
                                    .arg(displayText(path), file.errorString()));
     QJsonParseError error{};
     const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &error);
-    if (document.isNull() || !document.isObject())
-        throw ReportMergeError(QStringLiteral("%1: is not JSON (%2 at byte %3)").arg(displayText(path), error.errorString()).arg(error.offset));
+    if (document.isNull())
+        throw ReportMergeError(QStringLiteral("%1: is not JSON (%2 at byte %3)").arg(displayText(path), error.errorString(), QString::number(error.offset)));
+    if (!document.isObject())
+        throw ReportMergeError(QStringLiteral("%1: is JSON but not a report (no object at its top); give folders that `shadowlab report --out` wrote")
+                                   .arg(displayText(path)));
     const QJsonObject top = document.object();
     const JsonReader json(path, QString());
 
@@ -237,11 +245,15 @@ ReportPart readReportPart(const QString& directory)
     f.seconds = json.number(top, QStringLiteral("seconds"));
     f.sweep = json.text(top, QStringLiteral("sweep"));
     f.configurations = json.count(top, QStringLiteral("configurations"));
+    if (f.configurations < 1 || f.configurations > kMostConfigurations)
+        json.fail(QStringLiteral("configurations"), QStringLiteral("is not between 1 and %1").arg(kMostConfigurations));
     std::tie(f.shard, f.shards) = readShard(json, top);
     f.parts = json.count(top, QStringLiteral("parts"));
     const QJsonValue rows = json.value(top, QStringLiteral("rows"));
     if (!rows.isArray())
         json.fail(QStringLiteral("rows"), QStringLiteral("is not a list"));
+    if (rows.toArray().size() > f.configurations * qsizetype(f.parts))
+        json.fail(QStringLiteral("rows"), QStringLiteral("holds more rows than the sweep has configurations"));
     for (const QJsonValue& row : rows.toArray()) {
         if (!row.isObject())
             json.fail(QStringLiteral("rows"), QStringLiteral("holds something other than rows"));
@@ -260,24 +272,28 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
     for (const ReportPart& part : parts) {
         if (part.facts.sweep != first.facts.sweep)
             throw ReportMergeError(QStringLiteral("%1 and %2 measured different sweeps (%3): merge only shares and reports of one sweep, "
-                                                  "made with the same --scene, --size, --sweep, settings, --frames and --area-samples")
+                                                  "made with the same --scene, --size, --sweep, settings, --frames, --min-frames, --warmup, --area-samples and "
+                                                  "--flicker-frames")
                                        .arg(partName(first), partName(part), sweepDifference(first.facts, part.facts)));
     }
     // Each configuration once per machine: a second copy is the same share given twice.
     std::map<std::pair<int, QString>, const ReportPart*> measured;
     for (const ReportPart& part : parts) {
         for (const ReportRow& row : part.rows) {
-            const auto [at, fresh] = measured.emplace(std::pair(row.sweepIndex, row.renderer + u'\n' + row.machine), &part);
+            const auto [at, fresh] = measured.emplace(std::pair(row.sweepIndex, timedOn(row)), &part);
             if (!fresh)
                 throw ReportMergeError(QStringLiteral("%1 and %2 both hold '%3' measured on the same machine: give each share once")
                                            .arg(partName(*at->second), partName(part), row.label));
         }
     }
-    std::set<int> missing;
-    for (int i = 0; i < first.facts.configurations; ++i)
-        missing.insert(i);
+    std::vector<bool> found(std::size_t(first.facts.configurations), false);
     for (const auto& entry : measured)
-        missing.erase(entry.first.first);
+        found[std::size_t(entry.first.first)] = true;
+    std::vector<int> missing;
+    for (int i = 0; i < first.facts.configurations; ++i) {
+        if (!found[std::size_t(i)])
+            missing.push_back(i);
+    }
     if (!missing.empty()) {
         // Said as the shares to add, where every part was cut into the same number of shares.
         const int shards = first.facts.shards;
@@ -285,7 +301,8 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
         QStringList absent;
         std::set<int> shares;
         for (int i : missing) {
-            absent << QString::number(i + 1);
+            if (absent.size() < 12)
+                absent << QString::number(i + 1);
             shares.insert(i % shards + 1);
         }
         QString hint;
@@ -298,7 +315,7 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
         throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations are in none of the reports given (number %3)%4")
                                    .arg(missing.size())
                                    .arg(first.facts.configurations)
-                                   .arg(absent.mid(0, 12).join(QStringLiteral(", ")) + (absent.size() > 12 ? QStringLiteral(", …") : QString()), hint));
+                                   .arg(absent.join(QStringLiteral(", ")) + (missing.size() > 12 ? QStringLiteral(", …") : QString()), hint));
     }
 
     MergedReport merged;
@@ -334,7 +351,7 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
                             .arg(std::max(renderers.size(), machines.size()));
         std::map<QString, int> perMachine;
         for (const ReportRow& r : merged.rows)
-            ++perMachine[r.renderer + QStringLiteral(" (") + r.machine + u')'];
+            ++perMachine[timedOn(r)];
         for (const auto& [machine, rows] : perMachine) {
             if (rows < f.configurations)
                 merged.notes << QStringLiteral("%1 measured %2 of the %3 configurations").arg(machine).arg(rows).arg(f.configurations);

@@ -17,20 +17,24 @@ namespace {
 
 constexpr std::array kStopSignals{SIGTERM, SIGINT, SIGHUP};
 
-// What the handler may touch: a descriptor and a flag, nothing of Qt's.
+// What the handler may touch: a descriptor and the signal being handled, nothing of Qt's.
 volatile std::sig_atomic_t g_writeSocket = -1;
-volatile std::sig_atomic_t g_stopping = 0;
+volatile std::sig_atomic_t g_stopping = 0;      // the first signal's number while closing
 struct sigaction g_previous[std::size(kStopSignals)];
+bool g_installed[std::size(kStopSignals)] = {};
 
 extern "C" void onStopSignal(int signal)
 {
-    if (g_stopping) {
-        // Asked again while closing (the close hangs, or the user means it): stop now.
+    if (g_stopping == signal) {
+        // The same signal again while closing (the close hangs, or Ctrl+C pressed twice): stop
+        // now. Another signal is not a second request: a logout sends SIGTERM and SIGHUP at once.
         std::signal(signal, SIG_DFL);
         std::raise(signal);
         return;
     }
-    g_stopping = 1;
+    if (g_stopping)
+        return;
+    g_stopping = signal;
     const int saved = errno;
     const char number = char(signal);
     [[maybe_unused]] const ssize_t written = ::write(g_writeSocket, &number, 1);
@@ -52,21 +56,27 @@ StopSignals::StopSignals()
     struct sigaction action {};
     action.sa_handler = onStopSignal;
     sigemptyset(&action.sa_mask);
+    for (int signal : kStopSignals)
+        sigaddset(&action.sa_mask, signal);    // one handler at a time
     action.sa_flags = SA_RESTART;
     for (std::size_t i = 0; i < kStopSignals.size(); ++i) {
-        ::sigaction(kStopSignals[i], &action, &g_previous[i]);
+        ::sigaction(kStopSignals[i], nullptr, &g_previous[i]);
         // A signal the explorer was started ignoring stays ignored: `nohup` asks for it with
         // SIGHUP, and a shell without job control with SIGINT for what it runs in the background.
-        if (g_previous[i].sa_handler == SIG_IGN)
-            ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+        g_installed[i] = g_previous[i].sa_handler != SIG_IGN;
+        if (g_installed[i])
+            ::sigaction(kStopSignals[i], &action, nullptr);
     }
 }
 
 StopSignals::~StopSignals()
 {
-    for (std::size_t i = 0; i < kStopSignals.size(); ++i)
-        ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+    for (std::size_t i = 0; i < kStopSignals.size(); ++i) {
+        if (g_installed[i])
+            ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+    }
     g_writeSocket = -1;
+    delete m_notifier;     // before the descriptor it watches
     ::close(m_sockets[0]);
     ::close(m_sockets[1]);
 }

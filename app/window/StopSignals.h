@@ -10,8 +10,9 @@ namespace shadowlab {
 // started the explorer) or SIGHUP (that terminal closed) closes the windows as the user would
 // close them: the main window saves the session and marks it as ended, a dialog left open is
 // rejected, and the last window closed ends the event loop with exit code 0. The next start
-// offers no restore of a "crashed" session. A second signal while closing stops the
-// process at once, as the signal's default does. The handler itself only writes the signal's
+// offers no restore of a "crashed" session. The same signal again while closing stops the
+// process at once, as the signal's default does; another one is ignored (a logout sends SIGTERM
+// and SIGHUP together). The handler itself only writes the signal's
 // number to a socket, which the event loop reads (Qt's "Calling Qt Functions From Unix Signal
 // Handlers"). A signal the process was started ignoring (nohup) stays ignored. One at a time; the
 // previous handlers come back when it is destroyed.
