@@ -63,11 +63,12 @@ void checkOutputFolder(const QString& path, const QString& what)
             throw badLocation(what, path, problem);
         return;
     }
-    // The nearest existing parent must let the missing folders be created.
-    QDir parent(info.absoluteFilePath());
-    while (!parent.exists() && parent.cdUp()) {
-    }
-    if (const QString problem = folderProblem(parent.absolutePath()); !problem.isEmpty())
+    // The nearest existing parent must let the missing folders be created. (QDir::cdUp() does
+    // not leave a folder that does not exist, so the path is walked up by its text.)
+    QString parent = QDir::cleanPath(info.absoluteFilePath());
+    while (!QFileInfo::exists(parent) && parent != QDir::rootPath())
+        parent = QFileInfo(parent).absolutePath();
+    if (const QString problem = folderProblem(parent); !problem.isEmpty())
         throw badLocation(what, path, problem);
 }
 

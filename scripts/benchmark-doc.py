@@ -36,9 +36,9 @@ def scene_table(reports):
     column says whose each row is (their times are compared only with their own machine's)."""
     machines = {(row["renderer"], row["machine"]) for _, report in reports for row in report["rows"]}
     several = len(machines) > 1
-    lines = ["| light | technique |%s misclassified % | false shadow % | false light % | area MAE % | DSSIM | frame ms (p10–p90) | shadow pass ms | lit pass ms | on the front |"
-             % (" renderer |" if several else ""),
-             "| --- | --- |%s ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |" % (" --- |" if several else "")]
+    lines = ["| light | technique |" + (" renderer |" if several else "")
+             + " misclassified % | false shadow % | false light % | area MAE % | DSSIM | frame ms (p10–p90) | shadow pass ms | lit pass ms | on the front |",
+             "| --- | --- |" + (" --- |" if several else "") + " ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
     for light, report in reports:
         for row in report["rows"]:
             hard, frame = row["hard_reference"], row["frame_wall"]

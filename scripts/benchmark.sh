@@ -127,6 +127,7 @@ fi
 
 # Each scene and light's shares, put together into one report.
 for name in "${names[@]}"; do
+    mkdir -p "$work/reports/$name"
     for light in "${light_types[@]}"; do
         shares=()
         for ((k = 1; k <= shards; k++)); do

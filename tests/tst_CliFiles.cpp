@@ -218,6 +218,21 @@ private Q_SLOTS:
         QCOMPARE(entries(folder), QStringList());
     }
 
+    // A report folder may be several levels new, as its help says: the nearest folder that
+    // exists is the one that must take new folders.
+    void reportMakesMissingFolders()
+    {
+        const QString folder = m_dir.filePath("deep/er/report");
+        QVERIFY(writeFile(m_dir.filePath("one.json"), R"([{"label": "hard", "set": {"filter.mode": "hard"}}])"));
+        const Run r = shadowlab({"report", "--size", "32x18", "--sweep", m_dir.filePath("one.json"), "--frames", "1", "--warmup", "0",
+                                 "--area-samples", "1", "--flicker-frames", "0", "--out", folder});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFile::exists(folder + "/report.json"));
+        const Run proc = shadowlab({"report", "--out", "/proc/nope/deeper"});
+        QCOMPARE(proc.exitCode, 2);
+        QVERIFY2(proc.err.contains("/proc"), qPrintable(proc.err));
+    }
+
     void depthOutCheckedBeforeOutIsWritten()
     {
         const QString folder = folderWithOldFile("depth-out-first");
