@@ -72,7 +72,8 @@ check_tree() {
 # What bash would offer after `line` (the cursor at its end), from the installed completion.
 complete_line() {
     local completion=$1 line=$2
-    bash -c '
+    # In a folder of its own: where nothing else matches, bash falls back to the file names here.
+    (cd "$work/home" && bash -c '
         compopt() { :; }
         source "$1"
         COMP_LINE=$2 COMP_POINT=${#2}
@@ -80,7 +81,7 @@ complete_line() {
         [[ $2 == *" " ]] && COMP_WORDS+=("")
         COMP_CWORD=$((${#COMP_WORDS[@]} - 1))
         _shadowlab
-        printf "%s\n" "${COMPREPLY[@]}" | sort | tr "\n" " "' _ "$completion" "$line"
+        printf "%s\n" "${COMPREPLY[@]}" | sort | tr "\n" " "' _ "$completion" "$line")
 }
 
 check_completion() {
