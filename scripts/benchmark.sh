@@ -52,8 +52,10 @@ while [ $# -gt 0 ]; do
         --shards) count "$1" "$2"; shards=$2; shift 2 ;;
         --jobs) count "$1" "$2"; jobs=$2; shift 2 ;;
         --parts) parts=$2; shift 2 ;;
-        --print-jobs) mode=print; shift ;;
-        --merge-only) mode=merge; shift ;;
+        --print-jobs|--merge-only)
+            [ "$mode" = run ] || { echo "benchmark.sh: give one of --print-jobs and --merge-only" >&2; exit 2; }
+            mode=${1#--}; mode=${mode%-*}; shift ;;
+        -h|--help) sed -n '2,/^set -euo/{/^set -euo/d;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
         *) echo "benchmark.sh: unknown option '$1'; $usage" >&2; exit 2 ;;
     esac
 done
@@ -77,6 +79,8 @@ print(" ".join(next(s for s in json.load(open(sys.argv[1])) if s["key"] == "ligh
 python3 -c 'import json, sys
 modes = next(s for s in json.load(open(sys.argv[1])) if s["key"] == "filter.mode")["choices"]
 json.dump([{"label": m, "set": {"filter.mode": m}} for m in modes], open(sys.argv[2], "w"))' "$work/settings.json" "$work/techniques.json"
+techniques=$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))))' "$work/techniques.json")
+[ "$shards" -le "$techniques" ] || { echo "benchmark.sh: --shards $shards: each report has $techniques techniques, so cut it into at most $techniques shares" >&2; exit 2; }
 
 for scene in "${scenes[@]}"; do
     [ "$mode" = merge ] || [ -f "$scene" ] || [[ "$scene" != */* ]] || { echo "benchmark.sh: $scene is missing; install assimp-testmodels (scripts/setup.sh)" >&2; exit 2; }
@@ -133,13 +137,25 @@ for name in "${names[@]}"; do
         for ((k = 1; k <= shards; k++)); do
             shares+=("$parts/$name/$light/$k")
         done
-        "$binary" report --merge --out "$work/reports/$name/$light" "${shares[@]}" >"$work/merge.log" 2>&1 \
-            || { cat "$work/merge.log" >&2; exit 1; }
+        if ! "$binary" report --merge --out "$work/reports/$name/$light" "${shares[@]}" >"$work/merge.log" 2>&1; then
+            cat "$work/merge.log" >&2
+            echo "benchmark.sh: the shares of $name under the $light light did not merge; a job may have failed: see its log, $parts/$name/$light/K.log" >&2
+            exit 1
+        fi
     done
 done
 seconds=$(( $(date +%s) - start ))
 if [ "$mode" = merge ]; then
-    # Measured elsewhere: the reports' own time, every share's added.
+    # Measured elsewhere: the options the page names must be those the shares were measured with.
+    python3 -c 'import json, math, sys
+r = json.load(open(sys.argv[1]))
+measured = (r["size"], r["frames"], round(math.sqrt(r["area_samples_per_pixel"])))
+given = (sys.argv[2], int(sys.argv[3]), int(sys.argv[4]))
+if measured != given:
+    sys.exit("benchmark.sh: the shares were measured with --size %s --frames %d --area-samples %d; give --merge-only the same options "
+             "(it was given --size %s --frames %d --area-samples %d)" % (measured + given))' \
+        "$work/reports/${names[0]}/${light_types[0]}/report.json" "$size" "$frames" "$area_samples" || exit 2
+    # Their own time, every share's added.
     seconds=$(python3 -c 'import json, sys
 print(round(sum(json.load(open(f))["seconds"] for f in sys.argv[1:])))' "$work"/reports/*/*/report.json)
 fi

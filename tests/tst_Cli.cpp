@@ -531,7 +531,7 @@ private Q_SLOTS:
         // What does not make one report.
         const Run alone = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1")});
         QCOMPARE(alone.exitCode, 2);
-        QVERIFY2(alone.err.contains("1 of the sweep's 3 configurations are in none") && alone.err.contains("--shard 2/2"), qPrintable(alone.err));
+        QVERIFY2(alone.err.contains("1 of the sweep's 3 configurations is in none of the reports given (number 2)") && alone.err.contains("--shard 2/2"), qPrintable(alone.err));
         const Run twice = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("share2"),
                                      m_dir.filePath("share1")});
         QCOMPARE(twice.exitCode, 2);
@@ -559,6 +559,17 @@ private Q_SLOTS:
         const Run huge = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("damaged")});
         QCOMPARE(huge.exitCode, 2);
         QVERIFY2(huge.err.contains("configurations is not between 1 and 100000"), qPrintable(huge.err));
+        damaged = readJson(m_dir.filePath("share2/report.json"));
+        QJsonArray damagedRows = damaged.value("rows").toArray();
+        QJsonObject row = damagedRows[0].toObject(), hard = row.value("hard_reference").toObject();
+        hard.insert("misclassified_pct", -5);
+        row.insert("hard_reference", hard);
+        damagedRows[0] = row;
+        damaged.insert("rows", damagedRows);
+        QVERIFY(writeFile(m_dir.filePath("damaged/report.json"), QJsonDocument(damaged).toJson()));
+        const Run negative = shadowlab({"report", "--merge", "--out", m_dir.filePath("never"), m_dir.filePath("share1"), m_dir.filePath("damaged")});
+        QCOMPARE(negative.exitCode, 2);
+        QVERIFY2(negative.err.contains("hard_reference.misclassified_pct is not a percentage"), qPrintable(negative.err));
         for (const QString& shard : {QString("0/2"), QString("3/2"), QString("two"), QString("1/4")}) {
             const Run bad = report("never", {"--shard", shard});
             QCOMPARE(bad.exitCode, 2);
@@ -602,6 +613,13 @@ private Q_SLOTS:
         const qsizetype renderer = csvCells(lines[0]).indexOf("renderer");
         QVERIFY(renderer > 0);
         QCOMPARE(csvCells(lines[2]).at(renderer), QStringLiteral("NVIDIA Test GPU/PCIe/SSE2"));   // sweep order, the same configuration twice
+
+        // Written again into the same folder with fewer rows: no image of the old report stays
+        // to be taken for the new one's.
+        QVERIFY(QFile::exists(m_dir.filePath("compared/errors/005.png")));
+        const Run again = shadowlab({"report", "--merge", "--out", m_dir.filePath("compared"), m_dir.filePath("share1"), m_dir.filePath("share2")});
+        QVERIFY2(again.exitCode == 0, qPrintable(again.err));
+        QVERIFY(QFile::exists(m_dir.filePath("compared/errors/002.png")) && !QFile::exists(m_dir.filePath("compared/errors/003.png")));
     }
 
     void reportRejectsABadSweep()

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -53,6 +54,14 @@ public:
     double numberOrZero(const QJsonObject& object, const QString& key) const
     {
         return value(object, key).isNull() ? 0.0 : number(object, key);
+    }
+    // A share in percent, as a fraction.
+    double percent(const QJsonObject& object, const QString& key) const
+    {
+        const double v = number(object, key);
+        if (v < 0.0 || v > 100.0)
+            fail(key, QStringLiteral("is not a percentage from 0 to 100"));
+        return v / 100;
     }
     int count(const QJsonObject& object, const QString& key) const
     {
@@ -106,11 +115,11 @@ ErrorMetrics readMetrics(const JsonReader& json, const QJsonObject& object)
 {
     ErrorMetrics m;
     m.pixels = json.count(object, QStringLiteral("pixels"));
-    m.misclassified = json.number(object, QStringLiteral("misclassified_pct")) / 100;
-    m.falseShadow = json.number(object, QStringLiteral("false_shadow_pct")) / 100;
-    m.falseLight = json.number(object, QStringLiteral("false_light_pct")) / 100;
-    m.mae = json.number(object, QStringLiteral("mae_pct")) / 100;
-    m.rmse = json.number(object, QStringLiteral("rmse_pct")) / 100;
+    m.misclassified = json.percent(object, QStringLiteral("misclassified_pct"));
+    m.falseShadow = json.percent(object, QStringLiteral("false_shadow_pct"));
+    m.falseLight = json.percent(object, QStringLiteral("false_light_pct"));
+    m.mae = json.percent(object, QStringLiteral("mae_pct"));
+    m.rmse = json.percent(object, QStringLiteral("rmse_pct"));
     return m;
 }
 
@@ -137,7 +146,9 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.accuracy.hard = readMetrics(json.within(QStringLiteral("hard_reference")), json.object(object, QStringLiteral("hard_reference")));
     r.accuracy.area = readMetrics(json.within(QStringLiteral("area_reference")), json.object(object, QStringLiteral("area_reference")));
     r.accuracy.ssim = json.number(object, QStringLiteral("mean_ssim"));
-    r.accuracy.areaNoiseFloor = json.number(object, QStringLiteral("area_noise_floor_pct")) / 100;
+    if (r.accuracy.ssim < -1.0 || r.accuracy.ssim > 1.0)
+        json.fail(QStringLiteral("mean_ssim"), QStringLiteral("is not from -1 to 1"));
+    r.accuracy.areaNoiseFloor = json.percent(object, QStringLiteral("area_noise_floor_pct"));
     r.paretoFront = json.flag(object, QStringLiteral("pareto_front"));
     r.areaFront = json.flag(object, QStringLiteral("area_pareto_front"));
 
@@ -152,9 +163,10 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.flicker.frames = f.count(flicker, QStringLiteral("frames"));
     r.flicker.pixels = f.count(flicker, QStringLiteral("pixels"));
     r.flicker.mapMoves = f.count(flicker, QStringLiteral("map_moves"));
-    r.flicker.flicker = f.numberOrZero(flicker, QStringLiteral("flips_pct")) / 100;
-    r.flicker.worstPair = f.numberOrZero(flicker, QStringLiteral("worst_pair_pct")) / 100;
-    r.flicker.meanChange = f.numberOrZero(flicker, QStringLiteral("mean_change_pct")) / 100;
+    const auto flickerShare = [&](const QString& key) { return f.value(flicker, key).isNull() ? 0.0 : f.percent(flicker, key); };
+    r.flicker.flicker = flickerShare(QStringLiteral("flips_pct"));
+    r.flicker.worstPair = flickerShare(QStringLiteral("worst_pair_pct"));
+    r.flicker.meanChange = flickerShare(QStringLiteral("mean_change_pct"));
 
     const QJsonValue image = json.value(object, QStringLiteral("error_image"));
     if (!image.isNull()) {
@@ -197,17 +209,27 @@ QString sweepDifference(const ReportFacts& a, const ReportFacts& b)
         return QStringLiteral("size %1x%2 against %3x%4").arg(a.size.width()).arg(a.size.height()).arg(b.size.width()).arg(b.size.height());
     if (a.configurations != b.configurations)
         return QStringLiteral("%1 configurations against %2").arg(a.configurations).arg(b.configurations);
-    if (a.frames != b.frames || a.minFrames != b.minFrames || a.warmup != b.warmup)
-        return QStringLiteral("--frames, --min-frames or --warmup");
+    const auto option = [](const QString& name, auto x, auto y) { return QStringLiteral("%1 %2 against %3").arg(name).arg(x).arg(y); };
+    if (a.frames != b.frames)
+        return option(QStringLiteral("--frames"), a.frames, b.frames);
+    if (a.minFrames != b.minFrames)
+        return option(QStringLiteral("--min-frames"), a.minFrames, b.minFrames);
+    if (a.warmup != b.warmup)
+        return option(QStringLiteral("--warmup"), a.warmup, b.warmup);
     if (a.areaSamplesPerPixel != b.areaSamplesPerPixel)
-        return QStringLiteral("--area-samples");
-    return QStringLiteral("the sweep's configurations, their settings or --flicker-frames");
+        return option(QStringLiteral("rays a pixel (--area-samples squared)"), a.areaSamplesPerPixel, b.areaSamplesPerPixel);
+    return QStringLiteral("the sweep's configurations, their settings (--sweep, --set, --settings, --preset) or --flicker-frames");
 }
 
 } // namespace
 
 ReportPart readReportPart(const QString& directory)
 {
+    const QFileInfo folder(directory);
+    if (!folder.exists())
+        throw ReportMergeError(QStringLiteral("%1: no such folder; give folders that `shadowlab report --out` wrote").arg(displayText(directory)));
+    if (!folder.isDir())
+        throw ReportMergeError(QStringLiteral("%1: is a file, not a report's folder; give the folder it is in").arg(displayText(directory)));
     const QDir dir(directory);
     const QString path = dir.filePath(QStringLiteral("report.json"));
     QFile file(path);
@@ -252,6 +274,8 @@ ReportPart readReportPart(const QString& directory)
     const QJsonValue rows = json.value(top, QStringLiteral("rows"));
     if (!rows.isArray())
         json.fail(QStringLiteral("rows"), QStringLiteral("is not a list"));
+    if (rows.toArray().isEmpty())
+        json.fail(QStringLiteral("rows"), QStringLiteral("is empty"));
     if (rows.toArray().size() > f.configurations * qsizetype(f.parts))
         json.fail(QStringLiteral("rows"), QStringLiteral("holds more rows than the sweep has configurations"));
     for (const QJsonValue& row : rows.toArray()) {
@@ -270,7 +294,7 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
         throw ReportMergeError(QStringLiteral("give the report folders to merge"));
     const ReportPart& first = parts.front();
     for (const ReportPart& part : parts) {
-        if (part.facts.sweep != first.facts.sweep)
+        if (part.facts.sweep != first.facts.sweep || part.facts.configurations != first.facts.configurations)
             throw ReportMergeError(QStringLiteral("%1 and %2 measured different sweeps (%3): merge only shares and reports of one sweep, "
                                                   "made with the same --scene, --size, --sweep, settings, --frames, --min-frames, --warmup, --area-samples and "
                                                   "--flicker-frames")
@@ -282,7 +306,8 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
         for (const ReportRow& row : part.rows) {
             const auto [at, fresh] = measured.emplace(std::pair(row.sweepIndex, timedOn(row)), &part);
             if (!fresh)
-                throw ReportMergeError(QStringLiteral("%1 and %2 both hold '%3' measured on the same machine: give each share once")
+                throw ReportMergeError(QStringLiteral("%1 and %2 both hold '%3', measured on the same machine: give each share once, all of one "
+                                                      "cut (--shard K/N with the same N), or a whole report alone")
                                            .arg(partName(*at->second), partName(part), row.label));
         }
     }
@@ -312,10 +337,12 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
                 named << QStringLiteral("--shard %1/%2").arg(k).arg(shards);
             hint = QStringLiteral(": add the report of %1").arg(named.join(QStringLiteral(", ")));
         }
-        throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations are in none of the reports given (number %3)%4")
+        throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations %3 in none of the reports given (%4 %5)%6")
                                    .arg(missing.size())
                                    .arg(first.facts.configurations)
-                                   .arg(absent.join(QStringLiteral(", ")) + (missing.size() > 12 ? QStringLiteral(", …") : QString()), hint));
+                                   .arg(missing.size() == 1 ? QStringLiteral("is") : QStringLiteral("are"),
+                                        missing.size() == 1 ? QStringLiteral("number") : QStringLiteral("numbers"),
+                                        absent.join(QStringLiteral(", ")) + (missing.size() > 12 ? QStringLiteral(", …") : QString()), hint));
     }
 
     MergedReport merged;
