@@ -227,8 +227,9 @@ int loadImage(Importing& in, const aiMaterial* material)
     if (image.isNull()) {
         aiString materialName;
         material->Get(AI_MATKEY_NAME, materialName);
-        in.scene.warnings << QStringLiteral("texture '%1' of material '%2' cannot be read (missing, or not an image Qt reads); "
-                                            "drawing its base colour instead — put the texture next to the model")
+        in.scene.warnings << QStringLiteral("texture '%1' of material '%2' cannot be read (missing, or not an image Qt reads; TGA, TIFF and WebP "
+                                            "need the package qt6-image-formats-plugins); drawing its base colour instead — put the "
+                                            "texture next to the model")
                                  .arg(name, QString::fromUtf8(materialName.C_Str()));
         return -1;
     }

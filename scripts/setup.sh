@@ -10,6 +10,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     qt6-base-dev qt6-base-private-dev libqt6opengl6-dev qt6-charts-dev
     libglm-dev libgl-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libembree-dev libassimp-dev
+    qt6-image-formats-plugins   # models' TGA, TIFF and WebP textures (Qt reads them only through these plugins)
     fonts-dejavu-core
     python3            # scripts: the generated test mesh, the speed guard, the damaged-model survey,
                        # the man page, completion and docs made from the program's help

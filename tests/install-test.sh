@@ -154,7 +154,7 @@ deb=$(ls "$work"/package/*.deb)
 depends=$(dpkg-deb --field "$deb" Depends)
 echo "Depends: $depends"
 # Library packages by their stems (their names carry ABI versions that change between releases).
-for package in libqt6gui6 libqt6widgets6 libqt6charts6 libassimp libembree libgl1-mesa-dri qt6-qpa-plugins; do
+for package in libqt6gui6 libqt6widgets6 libqt6charts6 libassimp libembree libgl1-mesa-dri qt6-qpa-plugins qt6-image-formats-plugins; do
     [[ $depends == *"$package"* ]] || fail "the package does not depend on $package"
 done
 dpkg-deb -x "$deb" "$work/deb"

@@ -122,6 +122,7 @@ private Q_SLOTS:
         QTest::newRow("glTF 2 binary engine") << model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb") << 0 << 0.0 << false;
         QTest::newRow("glTF 1 milk truck") << model("glTF/CesiumMilkTruck/CesiumMilkTruck.gltf") << 0 << 0.0 << true;
         QTest::newRow("COLLADA cube") << model("Collada/cube_triangulate.dae") << 12 << 0.0 << false;
+        QTest::newRow("COLLADA duck, TGA texture") << model("Collada/duck.dae") << 0 << 0.0 << true;
         QTest::newRow("FBX box") << model("FBX/box.fbx") << 12 << 0.0 << false;
     }
 
@@ -152,6 +153,30 @@ private Q_SLOTS:
         const bool hasImage = std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.texture == TextureKind::Image; });
         QCOMPARE(hasImage, textured);
         QCOMPARE(scene.identity.size(), 64);    // sha256 in hex
+    }
+
+    // Textures in the formats real models use beside PNG and JPEG, read through Qt's
+    // image-formats plugins (qt6-image-formats-plugins, installed by the set-up): TIFF and WebP
+    // here, written by those plugins; TGA, which they only read, by the duck of formatsLoad().
+    void texturesInPluginFormatsAreRead_data()
+    {
+        QTest::addColumn<QString>("format");
+        QTest::newRow("TIFF") << "tif";
+        QTest::newRow("WebP") << "webp";
+    }
+    void texturesInPluginFormatsAreRead()
+    {
+        QFETCH(QString, format);
+        QTemporaryDir dir;
+        QImage texture(8, 8, QImage::Format_RGB32);
+        texture.fill(qRgb(200, 40, 40));
+        QVERIFY2(texture.save(dir.filePath("red." + format), qPrintable(format.toUpper())), "Qt cannot write it: is qt6-image-formats-plugins installed?");
+        writeFile(dir, "red.mtl", "newmtl red\nKd 1 1 1\nmap_Kd red." + format.toLatin1() + "\n");
+        const QString path = writeFile(dir, "quad.obj", "mtllib red.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                                         "usemtl red\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+        const Scene scene = importModel(path);
+        QVERIFY2(scene.warnings.filter("cannot be read").isEmpty(), qPrintable(scene.warnings.join('\n')));
+        QVERIFY(std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.texture == TextureKind::Image; }));
     }
 
     // What a user sees first: the model, a ground under it and a light that casts its shadow
