@@ -127,11 +127,10 @@ void addReportOptions(QCommandLineParser& parser)
 // "K/N" of --shard: 1 <= K <= N <= the configurations there are to share.
 std::pair<int, int> parseShard(const QString& text, std::size_t configurations)
 {
-    const QStringList parts = text.split(QLatin1Char('/'));
-    bool okK = false, okN = false;
-    const int k = parts.value(0).trimmed().toInt(&okK), n = parts.value(1).trimmed().toInt(&okN);
-    if (parts.size() != 2 || !okK || !okN || n < 1 || k < 1 || k > n)
+    const std::optional<std::pair<int, int>> share = parseShare(text);
+    if (!share)
         throw UsageError(QStringLiteral("--shard %1: give share K of N as K/N, with 1 <= K <= N, e.g. --shard 2/4").arg(displayText(text)));
+    const auto [k, n] = *share;
     if (std::size_t(n) > configurations)
         throw UsageError(QStringLiteral("--shard %1: the sweep has %2 configurations, so it cannot be cut into %3 shares; use at most --shard K/%2")
                              .arg(displayText(text))
@@ -249,12 +248,13 @@ AccuracyPass measureAllAccuracy(const ReportRequest& request, HeadlessRenderer& 
 {
     AccuracyPass pass;
     const std::vector<SweepConfiguration>& sweep = request.sweep;
+    const QString renderer = headless.renderer().rendererString(), machine = machineFacts();
     for (std::size_t c = 0; c < sweep.size(); ++c) {
         const double start = kAccuracyShare * double(c) / sweep.size(), step = kAccuracyShare / sweep.size();
         ReportRow row = measureRow(request, sweep[c], headless, meter, progress, start, step);
         row.sweepIndex = request.sweepIndex[c];
-        row.renderer = headless.renderer().rendererString();
-        row.machine = machineFacts();
+        row.renderer = renderer;
+        row.machine = machine;
         if (row.accuracy.raysPerSecond > 0.0)
             pass.raysPerSecond = row.accuracy.raysPerSecond;
         pass.noiseFloor = std::max(pass.noiseFloor, row.accuracy.areaNoiseFloor);

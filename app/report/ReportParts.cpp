@@ -182,17 +182,6 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     return r;
 }
 
-// "K/N" as the report wrote it.
-std::pair<int, int> readShard(const JsonReader& json, const QJsonObject& top)
-{
-    const QStringList parts = json.text(top, QStringLiteral("shard")).split(QLatin1Char('/'));
-    bool okK = false, okN = false;
-    const int k = parts.value(0).toInt(&okK), n = parts.value(1).toInt(&okN);
-    if (parts.size() != 2 || !okK || !okN || n < 1 || k < 1 || k > n)
-        json.fail(QStringLiteral("shard"), QStringLiteral("is not K/N"));
-    return {k, n};
-}
-
 QString partName(const ReportPart& part)
 {
     return part.facts.shards > 1
@@ -222,6 +211,16 @@ QString sweepDifference(const ReportFacts& a, const ReportFacts& b)
 }
 
 } // namespace
+
+std::optional<std::pair<int, int>> parseShare(const QString& text)
+{
+    const QStringList parts = text.split(QLatin1Char('/'));
+    bool okK = false, okN = false;
+    const int k = parts.value(0).trimmed().toInt(&okK), n = parts.value(1).trimmed().toInt(&okN);
+    if (parts.size() != 2 || !okK || !okN || n < 1 || k < 1 || k > n)
+        return std::nullopt;
+    return std::pair(k, n);
+}
 
 ReportPart readReportPart(const QString& directory)
 {
@@ -269,7 +268,10 @@ ReportPart readReportPart(const QString& directory)
     f.configurations = json.count(top, QStringLiteral("configurations"));
     if (f.configurations < 1 || f.configurations > kMostConfigurations)
         json.fail(QStringLiteral("configurations"), QStringLiteral("is not between 1 and %1").arg(kMostConfigurations));
-    std::tie(f.shard, f.shards) = readShard(json, top);
+    const std::optional<std::pair<int, int>> share = parseShare(json.text(top, QStringLiteral("shard")));
+    if (!share)
+        json.fail(QStringLiteral("shard"), QStringLiteral("is not K/N"));
+    std::tie(f.shard, f.shards) = *share;
     f.parts = json.count(top, QStringLiteral("parts"));
     const QJsonValue rows = json.value(top, QStringLiteral("rows"));
     if (!rows.isArray())

@@ -5,7 +5,9 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -16,6 +18,10 @@ class ReportMergeError : public std::runtime_error {
 public:
     explicit ReportMergeError(const QString& message) : std::runtime_error(message.toStdString()) {}
 };
+
+// Share K of N as `report --shard` takes it and report.json says it ("2/4"): {K, N} with
+// 1 <= K <= N, or nothing when `text` is not that.
+std::optional<std::pair<int, int>> parseShare(const QString& text);
 
 // One report read back from its folder: report.json and the error images beside it.
 struct ReportPart {
