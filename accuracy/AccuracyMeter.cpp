@@ -38,7 +38,15 @@ AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const Refere
         if (counts[i])
             referenceShade[i] = reference.hard[i];
     }
-    result.ssim = meanSsim(shadedLuma(buffer, measured), shadedLuma(buffer, referenceShade));
+    const GreyImage shown = shadedLuma(buffer, measured);
+    result.ssim = meanSsim(shown, shadedLuma(buffer, referenceShade));
+    if (!reference.area.empty()) {
+        for (std::size_t i = 0; i < counts.size() && i < reference.area.size(); ++i) {
+            if (counts[i])
+                referenceShade[i] = reference.area[i];
+        }
+        result.areaSsim = meanSsim(shown, shadedLuma(buffer, referenceShade));
+    }
     result.areaNoiseFloor = reference.areaNoiseFloor;
     result.frame = buffer.image;
     result.hardErrors = errorImage(buffer.image, measured, reference.hard, counts);

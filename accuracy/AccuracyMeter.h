@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct AccuracyResult {
     // The frame as a person sees it, shaded with the measured shadow term, against the same
     // frame shaded with the hard reference's: their mean SSIM (Ssim.h) on luma, 1 when alike.
     double ssim = 1.0;
+    // The same against the frame shaded with the area reference, where it was traced: a soft
+    // technique's right picture is that one.
+    std::optional<double> areaSsim;
     QImage frame;                   // the shaded frame that was measured
     QImage hardErrors;              // false shadow / false light over the greyed frame
     double areaNoiseFloor = 0.0;

@@ -90,6 +90,14 @@ struct BiasSettings {
     // with the tap's distance (poisson, pcss): exact on planar receivers, wrong where the
     // gradient is (curved surfaces, silhouettes).
     bool receiverPlane = false;
+    // Every lookup's bias covers the texels it reads, whatever the filter: the lookup moves off
+    // the surface by half a texel times sin(theta) along the normal (its own texel), and each tap
+    // of a wide filter compares against a depth grown with its distance by the receiver's slope.
+    // Off: the textbook form, one bias for every tap (acne and moiré where a kernel is wide).
+    bool footprint = true;
+    // A floor (a flat object with everything else on the side it faces) under a light on that
+    // side shadows nothing, so the shadow pass leaves it out: it cannot shadow itself either.
+    bool skipFloors = true;
 
     bool operator==(const BiasSettings&) const = default;
 };

@@ -289,6 +289,19 @@ void mapKeys(std::vector<Entry>& e)
                         .help = "Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane (its depth gradient in shadow-map space): no over-darkening of lit slopes by wide kernels with a small bias, but acne or leaks on curved receivers and at silhouettes, where the gradient is wrong",
                         .look = {.label = QStringLiteral("Receiver-plane depth for wide filters"), .group = kBias}},
                        [](auto& s) -> auto& { return s.bias.receiverPlane; }));
+    e.push_back(toggle({.key = "bias.footprint",
+                        .help = "Each lookup's bias covers the texels it reads: the lookup moves off the surface by half a texel times "
+                                "sin(theta) along the normal, and each tap of a wide filter (pcf, pcf64, poisson, pcss, dpcf) compares "
+                                "against a depth grown with its distance by the receiver's slope, so no filter shows acne or moire on "
+                                "lit slopes and curved meshes; off: one bias for every tap, the textbook form (depth-compare filters only)",
+                        .look = {.label = QStringLiteral("Bias follows the filter's footprint"), .group = kBias}},
+                       [](auto& s) -> auto& { return s.bias.footprint; }));
+    e.push_back(toggle({.key = "bias.skip_floors",
+                        .help = "Leave out of the shadow pass a floor the light is above (a flat object with every other object on "
+                                "the side it faces, such as a model's ground): it can shadow nothing there, so leaving it out is "
+                                "exact and it cannot shadow itself (no acne or moire on it); off: it is drawn like any caster",
+                        .look = {.label = QStringLiteral("Leave floors out of the shadow pass"), .group = kBias}},
+                       [](auto& s) -> auto& { return s.bias.skipFloors; }));
 }
 
 // The filter, its parameters and the moments map the moment filters read.

@@ -33,9 +33,15 @@ bool beats(const ReportRow& b, const ReportRow& a, ErrorAxis axis)
 
 void markFront(std::vector<ReportRow>& rows, ErrorAxis axis, bool ReportRow::*flag)
 {
-    for (ReportRow& a : rows) {
-        const bool measured = measuredPixels(a, axis) > 0;
-        a.*flag = measured && std::none_of(rows.begin(), rows.end(), [&](const ReportRow& b) { return beats(b, a, axis); });
+    std::vector<bool> wrong;
+    for (const ReportRow& r : rows)
+        wrong.push_back(!visiblyWrong(r).isEmpty());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        ReportRow& a = rows[i];
+        bool beaten = false;
+        for (std::size_t j = 0; j < rows.size() && !beaten; ++j)
+            beaten = !wrong[j] && beats(rows[j], a, axis);
+        a.*flag = measuredPixels(a, axis) > 0 && !wrong[i] && !beaten;
     }
 }
 
@@ -112,6 +118,27 @@ std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const 
 double dssim(const ReportRow& r)
 {
     return 1.0 - r.accuracy.ssim;
+}
+
+std::optional<double> areaDssim(const ReportRow& r)
+{
+    if (!r.accuracy.areaSsim)
+        return std::nullopt;
+    return 1.0 - *r.accuracy.areaSsim;
+}
+
+QString visiblyWrong(const ReportRow& r)
+{
+    const std::optional<double> area = areaDssim(r);
+    if (dssim(r) <= kVisibleDssim || (area && *area <= kVisibleDssim))
+        return {};
+    const QString against = area ? QStringLiteral("DSSIM %1 against the hard light's picture and %2 against the area light's")
+                                       .arg(dssim(r), 0, 'f', 3)
+                                       .arg(*area, 0, 'f', 3)
+                                 : QStringLiteral("DSSIM %1 against the reference's picture").arg(dssim(r), 0, 'f', 3);
+    return QStringLiteral("visibly wrong: %1, over %2 (acne or a moiré of partial shadow that misclassified pixels miss)")
+        .arg(against)
+        .arg(kVisibleDssim);
 }
 
 double areaNoisePercent(const ReportRow& r)

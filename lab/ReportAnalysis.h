@@ -12,6 +12,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 #include <vector>
 
 namespace shadowlab {
@@ -72,6 +74,18 @@ std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const 
 // 1 - mean SSIM of the frame against it shaded with the reference: 0 when alike, an error
 // that grows like the others.
 double dssim(const ReportRow& row);
+// The same against the frame shaded with the area reference, where it was traced.
+std::optional<double> areaDssim(const ReportRow& row);
+
+// Above this DSSIM against both references a frame is visibly wrong: acne, or a moiré of
+// partial shadow that misclassified pixels and the area MAE barely see. Clean rows of real
+// models score about 0.001, moiré rows 0.05 to 0.2 (tests/tst_RealModels.cpp holds every
+// technique under it).
+inline constexpr double kVisibleDssim = 0.01;
+// Why `row`'s picture is visibly wrong (unlike the hard reference's picture, and the area
+// reference's where traced, beyond kVisibleDssim), or empty when it is not. Such a row is never
+// on a front nor recommended: it beats no other row either.
+QString visiblyWrong(const ReportRow& row);
 // The area MAE's ± (ErrorNoise.h) in percent.
 double areaNoisePercent(const ReportRow& row);
 

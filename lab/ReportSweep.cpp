@@ -63,26 +63,35 @@ std::vector<SweepEntry> resolutionSweep()
 std::vector<SweepEntry> biasSweep()
 {
     std::vector<SweepEntry> s;
-    // The slope/min grid in world units draws front faces, where bias alone must hold acne off.
+    // The classic forms draw front faces and the floor, with one bias for every tap, where the
+    // bias alone must hold acne off: the slope/min grid in world units, texels, depth units,
+    // culling and polygon offset.
+    const auto classic = [](QStringList assignments) {
+        return QStringList{QStringLiteral("bias.footprint=false"), QStringLiteral("bias.skip_floors=false")} + assignments;
+    };
     for (const char* slope : {"0", "0.01", "0.05", "0.2"}) {
         for (const char* min : {"0", "0.001", "0.005", "0.02"})
             s.push_back({QStringLiteral("bias %1/%2 wu").arg(QLatin1String(slope), QLatin1String(min)),
-                         {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
-                          QStringLiteral("bias.min=%1").arg(QLatin1String(min))}});
+                         classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
+                                  QStringLiteral("bias.min=%1").arg(QLatin1String(min))})});
     }
     for (const char* slope : {"1", "3"}) {
         s.push_back({QStringLiteral("bias %1/0.5 texels").arg(QLatin1String(slope)),
-                     {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=texel"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
-                      QStringLiteral("bias.min=0.5")}});
+                     classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=texel"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
+                              QStringLiteral("bias.min=0.5")})});
     }
-    s.push_back({QStringLiteral("bias 0.02/0.001 depth units"), {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=depth"),
-                                                                  QStringLiteral("bias.slope=0.02"), QStringLiteral("bias.min=0.001")}});
-    s.push_back({QStringLiteral("cull front, no bias"), {QStringLiteral("bias.cull_front=true"), QStringLiteral("bias.slope=0"),
-                                                          QStringLiteral("bias.min=0")}});
+    s.push_back({QStringLiteral("bias 0.02/0.001 depth units"), classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=depth"),
+                                                                          QStringLiteral("bias.slope=0.02"), QStringLiteral("bias.min=0.001")})});
+    s.push_back({QStringLiteral("cull front, no bias"), classic({QStringLiteral("bias.cull_front=true"), QStringLiteral("bias.slope=0"),
+                                                                  QStringLiteral("bias.min=0")})});
+    s.push_back({QStringLiteral("polygon offset 2/4"), classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.polygon_factor=2"),
+                                                                 QStringLiteral("bias.polygon_units=4"), QStringLiteral("bias.slope=0"),
+                                                                 QStringLiteral("bias.min=0")})});
+    // The defaults' bias, one part of it off at a time, and the receiver plane in its place.
     s.push_back({QStringLiteral("no front-face culling"), {QStringLiteral("bias.cull_front=false")}});
-    s.push_back({QStringLiteral("polygon offset 2/4"), {QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.polygon_factor=2"),
-                                                         QStringLiteral("bias.polygon_units=4"), QStringLiteral("bias.slope=0"),
-                                                         QStringLiteral("bias.min=0")}});
+    s.push_back({QStringLiteral("no footprint bias"), {QStringLiteral("bias.footprint=false")}});
+    s.push_back({QStringLiteral("floors in the map"), {QStringLiteral("bias.skip_floors=false")}});
+    s.push_back({QStringLiteral("receiver-plane taps"), {QStringLiteral("bias.receiver_plane=true")}});
     return s;
 }
 
@@ -228,9 +237,14 @@ std::vector<SweepEntry> sweepAround(const Settings& base)
     }
     for (const int size : {base.map.size / 2, base.map.size * 2})
         entries.push_back({QStringLiteral("map %1").arg(size) + QChar(0x00B2), {QStringLiteral("map.size=%1").arg(size)}});
-    for (const double factor : {0.5, 2.0, 0.0})
-        entries.push_back({factor == 0.0 ? QStringLiteral("no bias") : QStringLiteral("bias ×%1").arg(factor),
+    for (const double factor : {0.5, 2.0})
+        entries.push_back({QStringLiteral("bias ×%1").arg(factor),
                            {QStringLiteral("bias.slope=") + number(base.bias.slope * factor), QStringLiteral("bias.min=") + number(base.bias.min * factor)}});
+    // No bias at all: nor the footprint's, nor floors left out.
+    entries.push_back({QStringLiteral("no bias"), {QStringLiteral("bias.slope=0"), QStringLiteral("bias.min=0"), QStringLiteral("bias.footprint=false"),
+                                                   QStringLiteral("bias.skip_floors=false")}});
+    entries.push_back({base.bias.footprint ? QStringLiteral("no footprint bias") : QStringLiteral("footprint bias"),
+                       {QStringLiteral("bias.footprint=%1").arg(base.bias.footprint ? "false" : "true")}});
     entries.push_back({base.bias.cullFront ? QStringLiteral("no front-face culling") : QStringLiteral("front-face culling"),
                        {QStringLiteral("bias.cull_front=%1").arg(base.bias.cullFront ? "false" : "true")}});
     entries.push_back({base.contact.enabled ? QStringLiteral("no contact shadows") : QStringLiteral("contact shadows"),

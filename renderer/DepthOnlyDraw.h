@@ -24,6 +24,8 @@ public:
         glm::dmat4 culling{1.0};            // items outside this frustum are left out
         bool clampDepth = false;            // culling keeps what lies before the near plane (depth clamp)
         bool castersOnly = false;
+        // The light the casters are drawn for: what shadows nothing under it is left out (shadowsNothing).
+        const LightFrame* light = nullptr;
         bool cutouts = true;                // cut-outs through their masks; false: whole
     };
     // Draws the items into the bound framebuffer with the raster state as set; leaves texture unit

@@ -77,7 +77,7 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
 
     const int draws = m_draw.draw(scene, {.viewProjection = light.depthViewProjection, .culling = light.viewProjection, .clampDepth = clampDepth,
-                                          .castersOnly = true, .cutouts = cutouts});
+                                          .castersOnly = true, .light = bias.skipFloors ? &light : nullptr, .cutouts = cutouts});
     m_gl->glDisable(GL_SCISSOR_TEST);
     // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.
     applyPassState(m_gl, PassState{});

@@ -19,6 +19,7 @@ public:
     {
         ShadowStorageKey key = commonStorageKey(settings, sceneGeneration, reversedDepth, grid);
         key.cullFront = settings.bias.cullFront;
+        key.skipFloors = settings.bias.skipFloors;
         key.polygonFactor = settings.bias.polygonFactor;
         key.polygonUnits = settings.bias.polygonUnits;
         key.slices = ShadowMap::slicesFor(settings);

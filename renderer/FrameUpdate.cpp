@@ -20,22 +20,6 @@ std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
     return objects;
 }
 
-// A mesh's plane, if it is flat, through `model` to world: by two edges, so a mirroring model
-// turns the side it faces too.
-std::optional<WorldPlane> worldPlane(const std::optional<MeshPlane>& plane, const glm::dmat4& model)
-{
-    if (!plane)
-        return std::nullopt;
-    const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
-    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(model * glm::dvec4(p, 1.0)); };
-    const glm::dvec3 origin = world(plane->point);
-    const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
-    if (!(glm::length(normal) > 0.0))
-        return std::nullopt;
-    return WorldPlane{origin, glm::normalize(normal)};
-}
-
 } // namespace
 
 ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
@@ -45,13 +29,14 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
     casters.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        const std::optional<WorldPlane> plane = worldPlane(layout.meshPlane(object.mesh), object.model);
+        const std::optional<WorldPlane> plane = layout.objectPlane(i);
+        // A floor is left out of the map as a culled plane is: from its front side.
         casters.push_back({.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
-                           .frontFacesCulled = cullsFrontFaces && plane});
+                           .frontFacesCulled = (cullsFrontFaces || (settings.bias.skipFloors && layout.isFloor(i))) && plane});
     }
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : layout.drawItems()) {
-        const std::optional<WorldPlane> plane = item.batch ? std::nullopt : worldPlane(layout.meshPlane(item.mesh), item.model);
+        const std::optional<WorldPlane> plane = item.batch ? std::nullopt : layout.objectPlane(item.objects.front());
         const std::optional<std::array<glm::dvec3, 8>> box = item.batch ? std::nullopt : std::optional(layout.objectBox(item.objects.front()));
         receivers.push_back({.bounds = item.bounds, .box = box, .casts = item.castsShadow, .receives = item.receivesShadow, .plane = plane, .frontFacesCulled = false});
     }

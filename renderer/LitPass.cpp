@@ -114,6 +114,9 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         defines << QStringLiteral("BIAS_TEXEL");
     if (lookups && settings.bias.receiverPlane)
         defines << QStringLiteral("RECEIVER_PLANE");
+    // Filtered moments read their own bias (filter.moment_bias); depth comparisons the footprint's.
+    if (lookups && settings.bias.footprint && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments)
+        defines << QStringLiteral("FOOTPRINT_BIAS");
     if (lookups && usesDepthRange(settings))
         defines << QStringLiteral("EARLY_OUT");
     // Both sides of the reach march: a receiver no caster reaches in the map has none in view either.
@@ -384,6 +387,8 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
         p.program.set(p.modelViewProjection, glm::mat4(camera.viewProjection * item.model));
         p.program.set(p.shadowModel, glm::mat4(p.shadowMatrix * item.model));
         p.program.set(p.receives, int(item.receivesShadow));
+        // A floor left out of the map cannot shadow itself: its lookups need no footprint bias.
+        p.program.set(p.techniqueUniform("uSelfShadowing"), int(!(m_floorsLeftOutFor && shadowsNothing(item, *m_floorsLeftOutFor))));
         if (cutout)
             p.program.set(p.alphaCutoff, item.alphaCutoff);
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
@@ -544,6 +549,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
 {
     const bool shadows = settings.shadow.enabled && map != nullptr;
     const bool readsRange = usesDepthRange(settings) && map != nullptr;
+    m_floorsLeftOutFor = settings.bias.skipFloors ? &light : nullptr;
     const bool contact = shadows && usesContactShadows(settings);
     checkInputs(settings, shadows ? map : nullptr, readsRange, depthRange, moments, contact ? m_contactDepth : GLuint(1));
 

@@ -158,6 +158,8 @@ private:
     GLsizei m_maskVertexCount = 0;
     int m_maskGeneration = -1;                  // the reach the uploaded boxes were made from
     glm::dvec3 m_maskOrigin{0.0};               // the boxes' vertices are relative to it
+    // The light the shadow pass left floors out for (bias.skip_floors), during render().
+    const LightFrame* m_floorsLeftOutFor = nullptr;
 };
 
 } // namespace shadowlab

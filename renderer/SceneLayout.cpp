@@ -55,7 +55,52 @@ SceneLayout::SceneLayout(const Scene& scene)
     }
     for (const Mesh& mesh : scene.meshes)
         m_meshPlanes.push_back(flatPlane(mesh));
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        m_objectFloors.push_back(floorPlane(i).has_value());
     layOutItems(scene);
+}
+
+std::optional<WorldPlane> SceneLayout::objectPlane(std::size_t i) const
+{
+    const std::optional<MeshPlane>& plane = m_meshPlanes.at(std::size_t(m_objectMeshes.at(i)));
+    if (!plane)
+        return std::nullopt;
+    // By two edges through the model, so a mirroring model turns the side it faces too.
+    const glm::dmat4& model = m_objectModels.at(i);
+    const glm::dvec3 u = glm::abs(plane->normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 e1 = glm::cross(plane->normal, u), e2 = glm::cross(plane->normal, e1);
+    const auto world = [&](const glm::dvec3& p) { return glm::dvec3(model * glm::dvec4(p, 1.0)); };
+    const glm::dvec3 origin = world(plane->point);
+    const glm::dvec3 normal = glm::cross(world(plane->point + e1) - origin, world(plane->point + e2) - origin);
+    if (!(glm::length(normal) > 0.0))
+        return std::nullopt;
+    return WorldPlane{origin, glm::normalize(normal)};
+}
+
+std::optional<WorldPlane> SceneLayout::floorPlane(std::size_t i) const
+{
+    std::optional<WorldPlane> plane = objectPlane(i);
+    if (!plane)
+        return std::nullopt;
+    // Every other object's box on the front side, or on the plane within rounding.
+    const double tolerance = 1e-6 * std::max(glm::length(m_bounds.max - m_bounds.min), 1e-30);
+    for (std::size_t j = 0; j < m_objectBounds.size(); ++j) {
+        if (j == i)
+            continue;
+        for (const glm::dvec3& c : objectBox(j)) {
+            if (glm::dot(c - plane->point, plane->normal) < -tolerance)
+                return std::nullopt;
+        }
+    }
+    return plane;
+}
+
+bool shadowsNothing(const DrawItem& item, const LightFrame& light)
+{
+    if (!item.floor)
+        return false;
+    const glm::dvec3 toLight = light.perspective ? light.position - item.floor->point : -light.direction;
+    return glm::dot(toLight, item.floor->normal) > 0.0;
 }
 
 std::array<glm::dvec3, 8> SceneLayout::objectBox(std::size_t i) const
@@ -79,6 +124,8 @@ void SceneLayout::layOutItems(const Scene& scene)
         const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
         if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh))) {
             m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
+            if (m_objectFloors[i])
+                m_items.back().floor = floorPlane(i);
             continue;
         }
         const glm::dvec3 size = glm::max(m_bounds.max - m_bounds.min, glm::dvec3(1e-30));

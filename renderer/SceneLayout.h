@@ -1,6 +1,8 @@
 #pragma once
 
+#include "LightMath.h"
 #include "Scene.h"
+#include "ShadowReach.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -30,7 +32,15 @@ struct DrawItem {
     // Items that honour a mask draw with their pass's ALPHA_CUTOUT variant (shaders/cutout.glsl).
     float alphaCutoff = 0.0f;
     int mesh = 0;                       // an object's mesh; a batch's index among the batches otherwise
+    // A floor: a flat object with every other object on the side its plane faces (a model's
+    // ground). A light on that side sees nothing through it, so it shadows nothing there and the
+    // shadow passes leave it out: exact, and the floor cannot shadow itself (no acne, no moiré
+    // of a wide filter's taps on it), whatever the bias.
+    std::optional<WorldPlane> floor;
 };
+
+// Whether `item` can shadow nothing under `light`: a floor with the light on its front side.
+bool shadowsNothing(const DrawItem& item, const LightFrame& light);
 
 // A batch's merged geometry: its members' vertices in world space around the batch's centre,
 // each with its object's base colour (a vertex first, so the attributes of both lie alike).
@@ -61,6 +71,10 @@ public:
     const Bounds& bounds() const { return m_bounds; }
     // flatPlane() of scene.meshes[mesh].
     const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
+    // The world plane scene.objects[i] lies in, if its mesh is flat.
+    std::optional<WorldPlane> objectPlane(std::size_t i) const;
+    // Whether scene.objects[i] is a floor (DrawItem::floor).
+    bool isFloor(std::size_t i) const { return m_objectFloors.at(i); }
     const std::vector<DrawItem>& drawItems() const { return m_items; }
     // The batched items, in the order of their DrawItem::mesh.
     int batchCount() const { return m_batchCount; }
@@ -69,12 +83,14 @@ public:
 
 private:
     void layOutItems(const Scene& scene);
+    std::optional<WorldPlane> floorPlane(std::size_t i) const;
 
     std::vector<Bounds> m_objectBounds;
     std::vector<Bounds> m_meshBounds;           // each mesh's, in its own space
     std::vector<glm::dmat4> m_objectModels;
     std::vector<int> m_objectMeshes;
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
+    std::vector<bool> m_objectFloors;
     std::vector<DrawItem> m_items;
     Bounds m_bounds;
     int m_batchCount = 0;

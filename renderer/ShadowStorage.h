@@ -27,6 +27,7 @@ struct ShadowStorageKey {
     bool cutouts = true;            // shadow.cutouts: cut-out casters drawn through their mask
     // The depth pass's raster state against acne (depth storage only).
     bool cullFront = false;
+    bool skipFloors = false;        // bias.skip_floors: floors the light is above left out
     double polygonFactor = 0.0;
     double polygonUnits = 0.0;
     int slices = 1;                 // map.slices: the lit pass reads the map through its slice

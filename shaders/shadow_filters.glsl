@@ -60,9 +60,26 @@ float tapWorldLength(vec2 offset)
 #endif
 }
 
-// The depth the tap `offset` (uv) away from the receiver compares against: on the receiver's
-// plane with RECEIVER_PLANE, else the centre's depth (a box filter's classic form).
-float planeTapReference(vec2 offset, float reference)
+// The depth a tap `offset` (uv) away from the receiver compares against, for every filter: a
+// bias chosen for the centre is wrong for a tap that lies elsewhere on a receiver sloping
+// relative to the light, so each tap gets its own. On the receiver's plane with RECEIVER_PLANE
+// (exact on planes, wrong where the gradient is: curved receivers, silhouettes); with
+// FOOTPRINT_BIAS the bias grown with the tap's distance by the receiver's slope, the most a
+// planar receiver rises toward the light that far away, so no tap of a wide kernel shadows a
+// lit slope (moiré); else the centre's (the textbook box filter).
+float tapReference(vec2 offset, float reference)
+{
+#ifdef RECEIVER_PLANE
+    return reference + dot(gReceiverSlope, offset);
+#elif defined(FOOTPRINT_BIAS)
+    return reference + gGrowth * tapWorldLength(offset);
+#else
+    return reference;
+#endif
+}
+
+// The centre's reference on the receiver's plane with RECEIVER_PLANE, else the centre's own.
+float centreReference(vec2 offset, float reference)
 {
 #ifdef RECEIVER_PLANE
     return reference + dot(gReceiverSlope, offset);
@@ -71,26 +88,24 @@ float planeTapReference(vec2 offset, float reference)
 #endif
 }
 
-// For the disk filters: on the receiver's plane with RECEIVER_PLANE, else the bias grown with
-// the tap's distance by the receiver's slope, so a wide disk does not darken a lit slope.
-float wideTapReference(vec2 offset, float reference)
+// The comparison of the tap `offset` (uv) away from the receiver at `uv`, against that tap's
+// own reference: what every filter sums.
+float footprintTap(vec2 uv, vec2 offset, float reference)
 {
-#ifdef RECEIVER_PLANE
-    return reference + dot(gReceiverSlope, offset);
-#else
-    return reference + gGrowth * tapWorldLength(offset);
-#endif
+    return shadowTap(uv + offset, tapReference(offset, reference));
 }
 
 // The lowest and highest reference of taps within `radius` (uv, per axis) of the centre.
-vec2 tapReferenceRange(vec2 radius, float reference, bool grown)
+vec2 tapReferenceRange(vec2 radius, float reference)
 {
 #ifdef RECEIVER_PLANE
     float spread = dot(abs(gReceiverSlope), radius);
     return vec2(reference - spread, reference + spread);
-#else
-    float grownBy = grown ? gGrowth * tapWorldLength(radius) : 0.0;
+#elif defined(FOOTPRINT_BIAS)
+    float grownBy = gGrowth * tapWorldLength(radius);
     return vec2(min(reference, reference + grownBy), max(reference, reference + grownBy));
+#else
+    return vec2(reference);
 #endif
 }
 

@@ -5,6 +5,9 @@
 // the technique's own filterShadow inside that view's tile.
 uniform float uBiasSlope;           // per unit of (1 - N.L); world units (texels with BIAS_TEXEL, depth units with BIAS_DEPTH)
 uniform float uBiasMin;             // the same units
+#ifdef FOOTPRINT_BIAS
+uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
+#endif
 uniform int uShadowViewCount;
 uniform mat4 uShadowViews[6];       // camera-relative world -> map uv (of the whole map) and the view's depth
 uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max xy
@@ -22,7 +25,7 @@ uniform float uShadowViewRayDepth[6];   // each view's depth change per world un
 // here, per pixel; one plain view takes it from the vertex stage.
 #if defined(SHADOW_VIEWS) || defined(LIGHT_WARP) || defined(VIRTUAL_MAP)
 #define VIEW_PER_PIXEL
-uniform float uNormalOffsetTexels;  // bias.normal
+uniform float uNormalOffsetTexels;  // bias.normal (one view's is in vShadowCoord, from the vertex stage)
 #endif
 #ifdef CASCADES
 uniform vec4 uCascadeFar;           // view depth where each cascade ends (the last: shadow.distance)
@@ -87,25 +90,60 @@ float warpTexel(vec2 uvWorld)
 }
 #endif
 
+// The footprint's move along the normal, in texels (viewPosition), and its clearance along the
+// ray, in texels of depth (viewVisibility): 0 without FOOTPRINT_BIAS or on a floor left out.
+float footprintNormalTexels(vec3 normal, vec3 toLight)
+{
+#ifdef FOOTPRINT_BIAS
+    float cosTheta = clamp(dot(normal, toLight), 0.0, 1.0);
+    float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
+    return uSelfShadowing ? 0.5 * max(sinTheta - cosTheta, 0.0) : 0.0;
+#else
+    return 0.0;
+#endif
+}
+
+float footprintRayTexels(float tanTheta)
+{
+#ifdef FOOTPRINT_BIAS
+    return uSelfShadowing ? 0.5 * min(tanTheta, 1.0) : 0.0;
+#else
+    return 0.0;
+#endif
+}
+
 // The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
 // view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
 // interpolated); several views' are taken here, as each pixel picks its own.
 vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
 {
+    // The lookup's own footprint (FOOTPRINT_BIAS): the texel it reads lies up to half a texel
+    // across the map from the receiver, where a receiver sloping by theta to the light lies up
+    // to half a texel times tan(theta) nearer the light. Up to 45 degrees that clearance is taken
+    // along the ray to the light (footprintRayTexels), which moves nothing across the map; beyond,
+    // where tan(theta) grows without bound, the rest is a move along the normal of half a texel
+    // times (sin - cos)(theta), whose distance to the plane along the ray is that over
+    // cos(theta): bounded by half a texel however grazing the light, and small where the light
+    // is high, so shadow edges on lit ground do not shift. Measured against a normal offset
+    // alone (edges of cut-out shadows moved) and a ray offset alone (terminator acne on real
+    // models) in docs/techniques.md#bias.
+    float footprint = footprintNormalTexels(normal, toLight);
 #ifdef VIEW_PER_PIXEL
     vec4 plain = view.matrix * vec4(vPosition, 1.0);
 #ifdef LIGHT_WARP
-    float offset = uNormalOffsetTexels * warpTexel(warpUvWorld(view.matrix, plain, toLight));
+    float texel = warpTexel(warpUvWorld(view.matrix, plain, toLight));
 #else
-    float offset = uNormalOffsetTexels * view.texel;
+    float texel = view.texel;
+#endif
+    float offset = (uNormalOffsetTexels + footprint) * texel;
+#else
+    vec4 plain = vShadowCoord;  // with bias.normal's offset from the vertex stage
+    float offset = footprint * view.texel;
 #endif
 #ifdef LIGHT_PERSPECTIVE
     offset *= plain.w;
 #endif
     return plain + view.matrix * vec4(normal * offset, 0.0);
-#else
-    return vShadowCoord;
-#endif
 }
 
 // A view's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
@@ -162,9 +200,11 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
     // For the wide filters: a tap d world units away on this receiver's plane lies up to
-    // d tan(theta) nearer the light; gGrowth is that in depth per world unit (tan capped at 10,
-    // where N.L and so the light term is nearly 0 anyway).
-    float cosTheta = clamp(dot(normal, toLight), 0.1, 1.0);    // rounding can put N.L above 1: no NaN
+    // d tan(theta) nearer the light; gGrowth is that in depth per world unit. tan is capped at 3
+    // (72 degrees): beyond it the lookup's normal offset (viewPosition) holds the centre, and a
+    // growth of up to 10 (the cap before) lit grazing receivers in a crest's own shadow; on real
+    // models 3 misclassifies least (docs/techniques.md#bias).
+    float cosTheta = clamp(dot(normal, toLight), 0.316, 1.0);  // rounding can put N.L above 1: no NaN
     float tanTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
 #if defined(VIRTUAL_MAP) && !defined(BIAS_TEXEL) && !defined(BIAS_DEPTH)
     // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
@@ -187,11 +227,20 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // depth range here, from 0, in world units (as an ortho view's, for shadowDistance).
     gShadowDepthRange = vec2(0.0, 1.0 / max(abs(depthPerWorld), 1e-30));
 #endif
+    // The footprint's clearance along the ray, in world units.
+#ifdef LIGHT_WARP
+    float footprintWorld = footprintRayTexels(tanTheta) * warpTexel(gShadowUvWorld);
+#else
+    float footprintWorld = footprintRayTexels(tanTheta) * view.texel;
+#endif
+#ifdef LIGHT_PERSPECTIVE
+    footprintWorld *= shadowCoord.w;
+#endif
 #ifdef BIAS_DEPTH
 #ifdef REVERSED_Z
-    return filterShadow(coord.xy, coord.z + bias);  // nearer the light is greater
+    return filterShadow(coord.xy, coord.z + bias + footprintWorld * depthPerWorld);  // nearer the light is greater
 #else
-    return filterShadow(coord.xy, coord.z - bias);
+    return filterShadow(coord.xy, coord.z - bias + footprintWorld * depthPerWorld);
 #endif
 #else
 #ifdef BIAS_TEXEL
@@ -204,6 +253,7 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     bias *= shadowCoord.w;      // a perspective texel grows with the distance from the light
 #endif
 #endif
+    bias += footprintWorld;
     // Compare from a point moved toward the light by `bias` world units: on the ray to the
     // light, so it stays on the same texel, and the same offset whatever the depth range.
 #ifdef AFFINE_VIEW

@@ -124,7 +124,7 @@ private Q_SLOTS:
 
         AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
         const AccuracyResult defaults = measureAccuracy(meter, headless.renderer(), presetSettings("seed"), size);
-        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
         qInfo("SSIM against the frame shaded with the reference: defaults %.5f, no bias %.5f", defaults.ssim, acne.ssim);
         QVERIFY(defaults.ssim > 0.95 && defaults.ssim < 1.0);
         QVERIFY(1.0 - acne.ssim > 10.0 * (1.0 - defaults.ssim));
@@ -246,9 +246,9 @@ private Q_SLOTS:
         AccuracyMeter meter(ReferenceOptions{false, 0.0, 1});
         const QSize size(320, 180);
         // The classic demonstration: the whole plane in the map (a manual volume), no bias.
-        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"light.fit=manual", "bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult acne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"light.fit=manual", "bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
         // Fitted, the map holds only what a caster can shadow: acne stays near the casters.
-        const AccuracyResult fittedAcne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
+        const AccuracyResult fittedAcne = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}), size);
         const AccuracyResult defaults = measureAccuracy(meter, headless.renderer(), presetSettings("seed"), size);
         const AccuracyResult panning = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"bias.cull_front=false", "bias.min=1", "filter.mode=hard"}), size);
         qInfo("no bias: false shadow %.2f%%, false light %.2f%%", 100 * acne.hard.falseShadow, 100 * acne.hard.falseLight);

@@ -30,7 +30,7 @@ const QSize kViewSize(320, 180);
 Settings acneSettings()
 {
     Settings s = presetSettings(QStringLiteral("seed"));
-    for (const char* a : {"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"})
+    for (const char* a : {"bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"})
         applyAssignment(s, QString::fromLatin1(a));
     return s;
 }

@@ -74,6 +74,8 @@ private Q_SLOTS:
         QFETCH(QString, space);
         Settings s = presetSettings("seed");
         applySetting(s, "bias.cull_front", "false");
+        applySetting(s, "bias.footprint", "false");
+        applySetting(s, "bias.skip_floors", "false");
         applySetting(s, "bias.space", space);
         s.bias.slope = 0.0;
         s.bias.min = 0.0;

@@ -255,7 +255,7 @@ private Q_SLOTS:
     {
         const QString out = m_dir.filePath("measured.png");
         const Run r = shadowlab({"screenshot", "--compare", "--accuracy", "--size", "1000x600", "--set-b", "bias.cull_front=false",
-                                 "--set-b", "bias.slope=0", "--set-b", "bias.min=0", "--set-b", "filter.mode=hard", "--out", out});
+                                 "--set-b", "bias.footprint=false", "--set-b", "bias.skip_floors=false", "--set-b", "bias.slope=0", "--set-b", "bias.min=0", "--set-b", "filter.mode=hard", "--out", out});
         QCOMPARE(r.exitCode, 0);
         const QImage image(out);
         QVERIFY(!image.isNull());
@@ -390,7 +390,7 @@ private Q_SLOTS:
         const QString sweep = m_dir.filePath("sweep.json");
         QVERIFY(writeFile(sweep, R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
                     {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
-                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])"));
+                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.footprint": false, "bias.skip_floors": false, "bias.slope": 0, "bias.min": 0}}])"));
         const QString dir = m_dir.filePath("report");
         const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "2", "--warmup", "0",
                                  "--area-samples", "2", "--out", dir});
@@ -434,7 +434,7 @@ private Q_SLOTS:
     {
         const QString sweep = m_dir.filePath("ssim-sweep.json");
         QVERIFY(writeFile(sweep, R"([{"label": "defaults", "set": {}},
-                    {"label": "acne", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0, "filter.mode": "hard"}}])"));
+                    {"label": "acne", "set": {"bias.cull_front": false, "bias.footprint": false, "bias.skip_floors": false, "bias.slope": 0, "bias.min": 0, "filter.mode": "hard"}}])"));
         const QString dir = m_dir.filePath("ssim-report");
         const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "1", "--warmup", "0",
                                  "--area-samples", "1", "--flicker-frames", "0", "--out", dir});
@@ -477,7 +477,7 @@ private Q_SLOTS:
         const QString sweep = m_dir.filePath("shard-sweep.json");
         QVERIFY(writeFile(sweep, R"([{"label": "hard 512", "set": {"filter.mode": "hard", "map.size": 512}},
                     {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
-                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.slope": 0, "bias.min": 0}}])"));
+                    {"label": "no bias", "set": {"bias.cull_front": false, "bias.footprint": false, "bias.skip_floors": false, "bias.slope": 0, "bias.min": 0}}])"));
         const auto report = [&](const QString& out, const QStringList& more) {
             return shadowlab(QStringList{"report", "--scene", "seed", "--size", "96x54", "--sweep", sweep, "--frames", "2", "--warmup", "0",
                                          "--area-samples", "2", "--flicker-frames", "2", "--out", m_dir.filePath(out)}
@@ -651,8 +651,8 @@ private Q_SLOTS:
     // recommends is a point of the curve it printed.
     void tuneRecommendsAPointOfItsCurve()
     {
-        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54", "--set", "bias.cull_front=false", "--set", "bias.slope=0",
-                                 "--set", "bias.min=0"});
+        const Run r = shadowlab({"tune", "--scene", "seed", "--size", "96x54", "--set", "bias.cull_front=false", "--set", "bias.footprint=false",
+                                 "--set", "bias.skip_floors=false", "--set", "bias.slope=0", "--set", "bias.min=0"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         static const QRegularExpression apply(R"(apply with: --set bias.space=\S+ --set bias.slope=(\S+) --set bias.min=(\S+))");
         const QRegularExpressionMatch set = apply.match(r.out);

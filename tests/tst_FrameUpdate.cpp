@@ -145,6 +145,40 @@ private slots:
     }
 
     // The fit runs when one of its inputs changes and never on a still frame.
+    // A floor (flat, everything else on the side it faces) shadows nothing from that side, so
+    // the shadow pass leaves it out; from below it is a caster like any other. A wall with
+    // something behind it is no floor; nor is anything but a plane.
+    void floorsShadowNothingFromAbove()
+    {
+        const Scene seed = buildScene(QStringLiteral("seed"));
+        const SceneLayout layout(seed);
+        int floors = 0;
+        for (const DrawItem& item : layout.drawItems()) {
+            const SceneObject& o = seed.objects.at(item.objects.front());
+            QCOMPARE(item.floor.has_value(), o.name == u"ground");
+            floors += item.floor.has_value();
+            LightFrame light;
+            light.perspective = true;
+            light.position = {1.0, 8.0, 2.0};
+            QCOMPARE(shadowsNothing(item, light), item.floor.has_value());
+            light.position.y = -8.0;        // under the ground: it shadows all above it
+            QVERIFY(!shadowsNothing(item, light));
+            light.perspective = false;
+            light.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.2));
+            QCOMPARE(shadowsNothing(item, light), item.floor.has_value());
+        }
+        QCOMPARE(floors, 1);
+
+        // The ground turned into a wall at x = 0 facing +x, with the cubes on both sides of it.
+        Scene walled = seed;
+        for (SceneObject& o : walled.objects) {
+            if (o.name == u"ground")
+                o.model = glm::rotate(glm::dmat4(1.0), glm::radians(-90.0), glm::dvec3(0.0, 0.0, 1.0));
+        }
+        const SceneLayout walledLayout(walled);
+        QVERIFY(std::none_of(walledLayout.drawItems().begin(), walledLayout.drawItems().end(), [](const DrawItem& i) { return i.floor.has_value(); }));
+    }
+
     void fitsOnlyWhenAnInputChanges()
     {
         Update u(buildScene(QStringLiteral("seed")));

@@ -53,10 +53,13 @@ int frames(const MainWindow& w)
 }
 
 // Runs the event loop until every visible view has drawn and then no frame came for 250 ms.
-// `s` with front faces in the map, no bias and one hard tap: acne everywhere the light grazes.
+// `s` with front faces in the map, no bias (no footprint offset, the ground in the map) and one
+// hard tap: acne everywhere the light grazes.
 Settings acneOf(Settings s)
 {
     s.bias.cullFront = false;
+    s.bias.footprint = false;
+    s.bias.skipFloors = false;
     s.bias.slope = 0.0;
     s.bias.min = 0.0;
     s.filter.mode = FilterMode::Hard;
@@ -213,7 +216,7 @@ void tst_MainWindow::dockSliderChangesTheScene_data()
 
     QTest::newRow("light azimuth") << QString() << QStringLiteral("light.azimuth") << int(Qt::Key_PageUp) << 3 << true;
     QTest::newRow("spot light x") << QStringLiteral("light.type=spot") << QStringLiteral("light.position.x") << int(Qt::Key_PageUp) << 3 << true;
-    QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.cull_front=false;bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
+    QTest::newRow("bias slope to 0: acne") << QStringLiteral("bias.cull_front=false;bias.footprint=false;bias.skip_floors=false;bias.min=0") << QStringLiteral("bias.slope") << int(Qt::Key_Home) << 1
                                            << false;
     QTest::newRow("pcf kernel to 9") << QStringLiteral("filter.mode=pcf") << QStringLiteral("filter.kernel") << int(Qt::Key_End) << 1
                                      << false;

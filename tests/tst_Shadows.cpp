@@ -235,7 +235,7 @@ private Q_SLOTS:
 
     void noBiasShowsAcneAndTheDefaultsDoNot()
     {
-        const Agreement acne = renderAndCompare(seedWith({"bias.cull_front=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}));
+        const Agreement acne = renderAndCompare(seedWith({"bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0", "filter.mode=hard"}));
         const double acneShare = double(acne.litWrong) / acne.litExpected;
         qInfo("falsely dark lit-plane samples: %.1f%% with no bias", 100.0 * acneShare);
         QVERIFY2(acneShare > 0.05, qPrintable(QString("only %1% acne without bias").arg(100.0 * acneShare)));
@@ -351,6 +351,10 @@ private Q_SLOTS:
         s.light.position.x += 0.25;
         m_headless->renderFrame(s, kSize);
         QVERIFY(r.lastFrame().shadowPassRendered);
+        QCOMPARE(r.lastFrame().shadowDraws, 3);     // the three cubes: the ground shadows nothing (bias.skip_floors)
+        s.bias.skipFloors = false;
+        m_headless->renderFrame(s, kSize);
+        QVERIFY(r.lastFrame().shadowPassRendered);
         QCOMPARE(r.lastFrame().shadowDraws, 4);
         s.bias.cullFront = !s.bias.cullFront;
         m_headless->renderFrame(s, kSize);
@@ -358,7 +362,7 @@ private Q_SLOTS:
         s.map.size = 512;
         m_headless->renderFrame(s, kSize);
         QVERIFY(r.lastFrame().shadowPassRendered);
-        QCOMPARE(r.shadowPassCount(), before + 3);
+        QCOMPARE(r.shadowPassCount(), before + 4);
     }
 
     void aStillFrameDoesNoFitting_data()
@@ -486,9 +490,9 @@ private Q_SLOTS:
     void depthMapShowsTheCastersAndLinearisesPerspective()
     {
         // The classic map: the hand-set volume centred on the high cube, the ground drawn too.
-        m_headless->renderFrame(seedWith({"light.fit=manual", "bias.cull_front=false"}), kSize);
+        m_headless->renderFrame(seedWith({"light.fit=manual", "bias.cull_front=false", "bias.skip_floors=false"}), kSize);
         const QImage ortho = m_headless->renderDepthMap(QSize(256, 256));
-        m_headless->renderFrame(seedWith({"light.projection=perspective", "light.fit=manual", "bias.cull_front=false"}), kSize);
+        m_headless->renderFrame(seedWith({"light.projection=perspective", "light.fit=manual", "bias.cull_front=false", "bias.skip_floors=false"}), kSize);
         const QImage perspective = m_headless->renderDepthMap(QSize(256, 256));
         // The high cube is darker (nearer the light) than the plane just beyond it; the plane's
         // part before the near plane is clamped to depth 0, the darkest of all, so the
@@ -554,17 +558,17 @@ private Q_SLOTS:
         for (const ShadowTechnique& t : shadowTechniques())
             QTest::newRow(qPrintable(QStringLiteral("seed, ") + t.key)) << "seed" << QStringList{"filter.mode=" + t.key} << true;
         QTest::newRow("ground in the map") << "seed" << QStringList{"bias.cull_front=false"} << true;
-        QTest::newRow("no bias") << "seed" << QStringList{"bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
+        QTest::newRow("no bias") << "seed" << QStringList{"bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0"} << true;
         QTest::newRow("normal offset") << "seed" << QStringList{"bias.normal=3"} << true;
         QTest::newRow("receiver plane") << "seed" << QStringList{"filter.mode=pcf", "filter.kernel=7", "bias.receiver_plane=true", "bias.cull_front=false"} << true;
         // The high cube wholly before the near plane of a manual volume, stored at depth 0:
         // receiver-plane taps on its own faces may still compare deeper than that.
         QTest::newRow("receiver plane, a caster before the near plane")
             << "seed" << QStringList{"light.type=spot", "light.fit=manual", "light.near=4.2", "filter.mode=pcf", "filter.kernel=7",
-                                     "bias.receiver_plane=true", "bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
+                                     "bias.receiver_plane=true", "bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0"} << true;
         QTest::newRow("receiver plane, an ortho near plane through the cubes")
             << "seed" << QStringList{"light.fit=manual", "light.near=4.3", "filter.mode=pcf", "filter.kernel=5", "bias.receiver_plane=true",
-                                     "bias.cull_front=false", "bias.slope=0", "bias.min=0"} << true;
+                                     "bias.cull_front=false", "bias.footprint=false", "bias.skip_floors=false", "bias.slope=0", "bias.min=0"} << true;
         QTest::newRow("depth units") << "seed" << QStringList{"bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"} << true;
         QTest::newRow("texel units") << "seed" << QStringList{"bias.space=texel"} << true;
         QTest::newRow("reversed depth") << "seed" << QStringList{"map.format=depth32f"} << true;
@@ -955,7 +959,7 @@ private Q_SLOTS:
     {
         Renderer& r = m_headless->renderer();
         for (const bool groundInMap : {false, true}) {
-            Settings s = seedWith({groundInMap ? "bias.cull_front=false" : "bias.cull_front=true"});
+            Settings s = groundInMap ? seedWith({"bias.cull_front=false", "bias.skip_floors=false"}) : seedWith({"bias.cull_front=true"});
             const LightAngles start = lightAngles(s.light.position, s.light.target);
             int clears = 0;
             for (int step = 0; step < 8; ++step) {

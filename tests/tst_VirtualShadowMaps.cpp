@@ -291,7 +291,7 @@ private Q_SLOTS:
             {"filter.mode=pcf-dither4"},
             {"filter.mode=pcf64"},
             {"bias.space=texel", "bias.slope=1.5", "bias.min=0.5"},
-            {"bias.normal=1", "filter.mode=pcf"},
+            {"bias.normal=1", "bias.footprint=false", "filter.mode=pcf"},   // the normal offset alone against acne
             {"bias.receiver_plane=true", "filter.mode=pcf", "filter.kernel=5"},
             {"map.format=depth32f"},
             {"shadow.virtual_levels=12"},

@@ -86,6 +86,10 @@ void printFronts(const std::vector<ReportRow>& rows)
                            : QString())
                   << "  " << which.join(QStringLiteral(", ")) << '\n';
         }
+        for (const ReportRow& r : rows) {
+            if (const QString wrong = visiblyWrong(r); lightOf(r, rows) == light && !wrong.isEmpty())
+                out() << "  left out: " << r.label << ", " << wrong << '\n';
+        }
     }
 }
 

@@ -397,6 +397,9 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
             fronts << QStringLiteral("misclassified");
         if (r.areaFront)
             fronts << QStringLiteral("area");
+        // Left off the fronts for its picture, with the reason.
+        if (const QString wrong = visiblyWrong(r); !wrong.isEmpty())
+            fronts << QStringLiteral("<span class=\"wrong\" title=\"%1\">left out: visibly wrong</span>").arg(html(wrong));
         const double misclassified = errorPixels(r, ErrorAxis::Misclassified);
         table += QStringLiteral("<tr%1><td title=\"%2\">%3</td>%4<td>%5</td><td>%6 (%7–%8)</td><td>%9</td>")
                      .arg(r.paretoFront || r.areaFront ? QStringLiteral(" class=\"front\"") : QString())
@@ -416,8 +419,11 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
     }
     table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
                             "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
-                            "picture. Texels ≤ 1 px: the share of the measured receivers inside the light's map whose shadow texel "
-                            "covers at most one screen pixel (blue in the texel density view).</p>");
+                            "picture. A row over %1 against both the hard and the area reference's picture is visibly wrong (acne, or a "
+                            "moiré of partial shadow that misclassified pixels miss): it is left off the fronts and beats no other row. "
+                            "Texels ≤ 1 px: the share of the measured receivers inside the light's map whose shadow texel "
+                            "covers at most one screen pixel (blue in the texel density view).</p>")
+                 .arg(kVisibleDssim);
     if (!zero.isEmpty())
         table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
     return table;
@@ -468,7 +474,7 @@ h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
 .label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
-td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}
+td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}.wrong{color:#b00}
 .images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}.images img.zoom{image-rendering:pixelated}
 .lights span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle;border-radius:6px}
 .key span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle}

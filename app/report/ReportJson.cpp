@@ -69,6 +69,8 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("area_mae_noise_pct"), areaNoisePercent(r)},
                                     {QStringLiteral("mean_ssim"), r.accuracy.ssim},
                                     {QStringLiteral("dssim"), dssim(r)},
+                                    {QStringLiteral("area_mean_ssim"), r.accuracy.areaSsim ? QJsonValue(*r.accuracy.areaSsim) : QJsonValue()},
+                                    {QStringLiteral("visibly_wrong"), visiblyWrong(r).isEmpty() ? QJsonValue() : QJsonValue(visiblyWrong(r))},
                                     {QStringLiteral("area_noise_floor_pct"), 100 * r.accuracy.areaNoiseFloor},
                                     {QStringLiteral("texel_density"), QJsonObject{{QStringLiteral("fine_texels_pct"), 100 * r.density.fineShare()},
                                                                                   {QStringLiteral("fine"), r.density.fine},

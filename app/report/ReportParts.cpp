@@ -148,6 +148,11 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.accuracy.ssim = json.number(object, QStringLiteral("mean_ssim"));
     if (r.accuracy.ssim < -1.0 || r.accuracy.ssim > 1.0)
         json.fail(QStringLiteral("mean_ssim"), QStringLiteral("is not from -1 to 1"));
+    if (const QJsonValue area = object.value(QStringLiteral("area_mean_ssim")); !area.isUndefined() && !area.isNull()) {
+        r.accuracy.areaSsim = json.number(object, QStringLiteral("area_mean_ssim"));
+        if (*r.accuracy.areaSsim < -1.0 || *r.accuracy.areaSsim > 1.0)
+            json.fail(QStringLiteral("area_mean_ssim"), QStringLiteral("is not from -1 to 1"));
+    }
     r.accuracy.areaNoiseFloor = json.percent(object, QStringLiteral("area_noise_floor_pct"));
     r.paretoFront = json.flag(object, QStringLiteral("pareto_front"));
     r.areaFront = json.flag(object, QStringLiteral("area_pareto_front"));

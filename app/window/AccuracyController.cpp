@@ -347,6 +347,7 @@ void AccuracyController::measure(const Capture& capture, const ReferenceVisibili
     Measurement m;
     m.settings = capture.settings;
     m.hard = result.hard;
+    m.dssim = 1.0 - result.ssim;
     m.area = result.area;
     m.areaNoiseFloor = result.areaNoiseFloor;
     m.referenceSamplesPerPixel = reference.samplesPerPixel;

@@ -39,6 +39,7 @@ public:
         Settings settings;
         ErrorMetrics hard;
         ErrorMetrics area;
+        double dssim = 0.0;         // of the frame, against it shaded with the hard reference (AccuracyResult::ssim)
         double areaNoiseFloor = 0.0;
         int referenceSamplesPerPixel = 0;   // rays per pixel of the area reference
         QImage errors;              // false shadow / false light over the measured frame

@@ -2,6 +2,7 @@
 
 #include "NoteLabel.h"
 #include "AccuracyController.h"
+#include "ReportAnalysis.h"
 
 #include <QCheckBox>
 #include <QGridLayout>
@@ -107,6 +108,12 @@ QGroupBox* AccuracyMetricsPanel::createHardGroup()
                              tr("Share of lit-facing pixels on the wrong side of half visibility compared with one shadow ray per "
                                 "pixel: false shadow plus false light."),
                              Kind::Share);
+    m_dssim = addRow(hardGrid, QStringLiteral("dssim"), tr("DSSIM (picture)"),
+                     tr("How unlike the frame looks from the same frame shaded with the reference: 1 − its mean SSIM, 0 when a "
+                        "reader sees the same picture. It sees what a misclassified count misses, such as a moiré of partial "
+                        "shadow over a lit floor; over %1 the picture is visibly wrong.")
+                         .arg(kVisibleDssim),
+                     Kind::Error);
     m_falseShadow = addRow(hardGrid, QStringLiteral("falseShadow"), tr("False shadow (acne)"),
                            tr("Dark where the reference is lit: shadow acne from too little bias, over-darkened edges. "
                               "Magenta on the scene view."),
@@ -271,6 +278,7 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     };
     using M = AccuracyController::Measurement;
     put(*m_misclassified, values([](const M& x) { return std::optional(x.hard.misclassified); }), stale, 0.0);
+    put(*m_dssim, values([](const M& x) { return std::optional(x.dssim); }), stale, 5e-5);
     put(*m_falseShadow, values([](const M& x) { return std::optional(x.hard.falseShadow); }), stale, 0.0);
     put(*m_falseLight, values([](const M& x) { return std::optional(x.hard.falseLight); }), stale, 0.0);
     put(*m_hardMae, values([](const M& x) { return std::optional(x.hard.mae); }), stale, 5e-5);

@@ -65,6 +65,7 @@ private:
     int m_sides = 1;
     QCheckBox* m_overlayCheck = nullptr;
     Row* m_misclassified = nullptr;
+    Row* m_dssim = nullptr;
     Row* m_falseShadow = nullptr;
     Row* m_falseLight = nullptr;
     Row* m_hardMae = nullptr;

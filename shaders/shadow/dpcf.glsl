@@ -15,13 +15,14 @@ float filterShadow(vec2 uv, float reference)
     vec2 search = blockerSearchRegion(receiver);
 #ifdef EARLY_OUT
     // Every tap lies in the search region: all lit there is no blocker, all shadowed is 0.
-    float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference, true));
+    float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference));
     if (verdict >= 0.0)
         return verdict;
 #endif
-    // Blockers as pcss finds them (the bias grown with each tap's distance, so a lit slope holds
-    // none); occluded taps as a box filter counts them (on the receiver's plane with
-    // bias.receiver_plane), within half and three quarters of the region's radius and in all.
+    // Blockers as pcss finds them, each tap against its own reference (tapReference: a lit slope
+    // holds none); occluded taps as a box filter of the centre's reference counts them (on the
+    // receiver's plane with bias.receiver_plane), within half and three quarters of the region's
+    // radius and in all: a reference grown over the whole search region lit contacts (torus).
     mat2 rotation = tapRotation();
     float blockerSum = 0.0, blockers = 0.0;
     vec3 occluded = vec3(0.0), taps = vec3(0.0);
@@ -30,12 +31,12 @@ float filterShadow(vec2 uv, float reference)
         vec3 within = vec3(step(distance, 0.5), step(distance, 0.75), 1.0);
         vec2 offset = rotation * kPoissonDisk[i] * search;
         float depth = blockerDepth(uv + offset);
-        if (isBlocker(depth, wideTapReference(offset, reference))) {
+        if (isBlocker(depth, tapReference(offset, reference))) {
             blockerSum += depth;
             blockers += 1.0;
         }
         taps += within;
-        if (isBlocker(depth, planeTapReference(offset, reference)))
+        if (isBlocker(depth, centreReference(offset, reference)))
             occluded += within;
     }
     if (blockers == 0.0)

@@ -6,8 +6,8 @@ float filterShadow(vec2 uv, float reference)
     offset.y += offset.x;
     if (offset.y > 1.1)
         offset.y = 0.0;
-    return 0.25 * (shadowTap(uv + (offset + vec2(-1.5, 0.5)) * uShadowTexel, reference)
-                 + shadowTap(uv + (offset + vec2(0.5, 0.5)) * uShadowTexel, reference)
-                 + shadowTap(uv + (offset + vec2(-1.5, -1.5)) * uShadowTexel, reference)
-                 + shadowTap(uv + (offset + vec2(0.5, -1.5)) * uShadowTexel, reference));
+    return 0.25 * (footprintTap(uv, (offset + vec2(-1.5, 0.5)) * uShadowTexel, reference)
+                 + footprintTap(uv, (offset + vec2(0.5, 0.5)) * uShadowTexel, reference)
+                 + footprintTap(uv, (offset + vec2(-1.5, -1.5)) * uShadowTexel, reference)
+                 + footprintTap(uv, (offset + vec2(0.5, -1.5)) * uShadowTexel, reference));
 }

@@ -39,7 +39,7 @@ float filterShadow(vec2 uv, float reference)
 #ifdef EARLY_OUT
     // The taps blend texels up to half a kernel and one texel from the receiver.
     vec2 footprint = (float(PCF_KERNEL - 1) * 0.5 + 1.0) * uShadowTexel;
-    float verdict = footprintVerdict(uv, footprint, tapReferenceRange(footprint, reference, false));
+    float verdict = footprintVerdict(uv, footprint, tapReferenceRange(footprint, reference));
     if (verdict >= 0.0)
         return verdict;
 #endif
@@ -55,7 +55,7 @@ float filterShadow(vec2 uv, float reference)
         for (int i = 0; i < kAxisTaps; ++i) {
             vec2 tap = (base + vec2(atU[i], atV[j])) * uShadowTexel;
             float weight = weightU[i] * weightV[j];
-            lit += weight * shadowTap(tap, planeTapReference(tap - uv, reference));
+            lit += weight * footprintTap(uv, tap - uv, reference);
             total += weight;
         }
     }

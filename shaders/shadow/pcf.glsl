@@ -8,7 +8,7 @@ float filterShadow(vec2 uv, float reference)
 #ifdef EARLY_OUT
     if (radius > 0) {
         vec2 footprint = float(radius) * uShadowTexel;
-        verdict = footprintVerdict(uv, footprint, tapReferenceRange(footprint, reference, false));
+        verdict = footprintVerdict(uv, footprint, tapReferenceRange(footprint, reference));
     }
     // A tap count known only per pixel keeps this a loop: a software rasteriser, which runs an
     // unrolled loop for every pixel of a group, leaves it once the group's pixels are decided.
@@ -18,7 +18,7 @@ float filterShadow(vec2 uv, float reference)
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = vec2(i % PCF_KERNEL - radius, i / PCF_KERNEL - radius) * uShadowTexel;
-        lit += shadowTap(uv + offset, planeTapReference(offset, reference));
+        lit += footprintTap(uv, offset, reference);
     }
     return verdict >= 0.0 ? verdict : lit / float(PCF_KERNEL * PCF_KERNEL);
 }

@@ -16,7 +16,7 @@ float filterShadow(vec2 uv, float reference)
 #ifdef EARLY_OUT
     // Every tap of both loops lies in the search region: where it is all lit there is no blocker
     // (1), where it is all shadowed every filter tap is too (0).
-    float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference, true));
+    float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference));
     if (verdict >= 0.0)
         return verdict;
 #endif
@@ -26,7 +26,7 @@ float filterShadow(vec2 uv, float reference)
     for (int i = 0; i < kBlockerTaps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * search;
         float depth = blockerDepth(uv + offset);
-        if (isBlocker(depth, wideTapReference(offset, reference))) {
+        if (isBlocker(depth, tapReference(offset, reference))) {
             blockerSum += depth;
             blockers += 1.0;
         }
@@ -39,7 +39,7 @@ float filterShadow(vec2 uv, float reference)
     float lit = 0.0;
     for (int i = 0; i < POISSON_TAPS; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * radius;
-        lit += shadowTap(uv + offset, wideTapReference(offset, reference));
+        lit += footprintTap(uv, offset, reference);
     }
     return lit / float(POISSON_TAPS);
 }

@@ -1,6 +1,6 @@
 // poisson: POISSON_TAPS taps of a Poisson disk of uPoissonRadius texels, rotated per pixel by
 // interleaved gradient noise: a round kernel whose sparse taps give fine noise, not bands.
-// Each tap's bias grows with its distance (wideTapReference), so a wide disk keeps lit slopes lit.
+// Each tap's bias grows with its distance (tapReference), so a wide disk keeps lit slopes lit.
 uniform float uPoissonRadius;   // texels (filter.radius)
 
 float filterShadow(vec2 uv, float reference)
@@ -9,7 +9,7 @@ float filterShadow(vec2 uv, float reference)
     int taps = POISSON_TAPS;
     float verdict = -1.0;
 #ifdef EARLY_OUT
-    verdict = footprintVerdict(uv, radius, tapReferenceRange(radius, reference, true));
+    verdict = footprintVerdict(uv, radius, tapReferenceRange(radius, reference));
     // A tap count known only per pixel keeps this a loop (see pcf.glsl).
     if (verdict >= 0.0)
         taps = 0;
@@ -18,7 +18,7 @@ float filterShadow(vec2 uv, float reference)
     float lit = 0.0;
     for (int i = 0; i < taps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * radius;
-        lit += shadowTap(uv + offset, wideTapReference(offset, reference));
+        lit += footprintTap(uv, offset, reference);
     }
     return verdict >= 0.0 ? verdict : lit / float(POISSON_TAPS);
 }
