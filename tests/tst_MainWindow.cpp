@@ -929,9 +929,9 @@ void tst_MainWindow::depthLegendSpansTheDepthsInTheMap_data()
     QTest::addColumn<double>("farthest");
     // The occluder scene's light is 6 above the ground, straight down; the board's top is at 1.02,
     // its bottom at 0.98. With back faces only (front faces culled) the ground is not in the map.
-    QTest::newRow("ortho, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false"} << 4.98 << 6.0;
+    QTest::newRow("ortho, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false", "bias.skip_floors=false"} << 4.98 << 6.0;
     QTest::newRow("ortho, back faces only") << QStringList{"light.fit=manual", "bias.cull_front=true"} << 5.02 << 5.02;
-    QTest::newRow("perspective, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false", "light.projection=perspective", "light.fov=60"}
+    QTest::newRow("perspective, both faces") << QStringList{"light.fit=manual", "bias.cull_front=false", "bias.skip_floors=false", "light.projection=perspective", "light.fov=60"}
                                              << 4.98 << 6.0;
 }
 

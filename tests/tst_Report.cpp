@@ -80,6 +80,28 @@ class tst_Report : public QObject {
     Q_OBJECT
 
 private slots:
+    // A moiré of partial shadow barely moves misclassified pixels or the area MAE: a row whose
+    // picture is unlike both references is left off the fronts with its reason, and the rows it
+    // would have beaten stay on; soft edges that match the area light's picture are not wrong.
+    void visiblyWrongRowsAreNeverOnTheFront()
+    {
+        std::vector<ReportRow> rows{row("moire", 0.5, 4.0, 0.3), row("clean", 1.0, 8.0, 0.3), row("soft", 1.5, 12.0, 0.3)};
+        rows[0].accuracy.ssim = 0.9;            // DSSIM 0.1 against the hard light's picture...
+        rows[0].accuracy.areaSsim = 0.92;       // ...and 0.08 against the area light's
+        rows[1].accuracy.ssim = 0.999;
+        rows[1].accuracy.areaSsim = 0.99;
+        rows[2].accuracy.ssim = 0.97;           // unlike the hard picture, like the area light's
+        rows[2].accuracy.areaSsim = 0.998;
+        markParetoFronts(rows);
+        QVERIFY(!rows[0].paretoFront && !rows[0].areaFront);
+        QVERIFY(visiblyWrong(rows[0]).contains("0.100") && visiblyWrong(rows[0]).contains("0.080"));
+        QVERIFY(rows[1].paretoFront && rows[1].areaFront);      // beaten only by the wrong row
+        QVERIFY(visiblyWrong(rows[2]).isEmpty());
+        // Without an area reference the hard light's picture decides.
+        rows[2].accuracy.areaSsim.reset();
+        QVERIFY(!visiblyWrong(rows[2]).isEmpty());
+    }
+
     void frontHoldsUnderTimingNoise()
     {
         // fast/rough and slow/exact are the classic trade-off; "twin" is as fast as "exact"
