@@ -21,7 +21,7 @@ SWEEP = [
     {"label": "defaults", "set": {}},
     {"label": "hard", "set": {"filter.mode": "hard"}},
     {"label": "pcf 5", "set": {"filter.mode": "pcf", "filter.kernel": 5}},
-    {"label": "acne", "set": {"bias.cull_front": False, "bias.slope": 0, "bias.min": 0, "filter.mode": "hard"}},
+    {"label": "acne", "set": {"bias.cull_front": False, "bias.footprint": False, "bias.skip_floors": False, "bias.slope": 0, "bias.min": 0, "filter.mode": "hard"}},
 ]
 
 # Runs before anything of the page: records script errors, console.error and pictures that fail
