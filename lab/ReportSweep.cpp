@@ -339,11 +339,13 @@ std::vector<SweepEntry> virtualSweep()
         {QStringLiteral("4 stabilised cascades of 2048 x 2048"), {cascades, QStringLiteral("map.size=2048"), QStringLiteral("light.stabilize=true")}},
         {QStringLiteral("4 stabilised cascades of 2048 x 2048, pcf 3x3"),
          {cascades, QStringLiteral("map.size=2048"), QStringLiteral("light.stabilize=true"), QStringLiteral("filter.mode=pcf")}},
-        {QStringLiteral("virtual, pool of 30 x 30 pages"), {QStringLiteral("shadow.virtual=true")}},
-        {QStringLiteral("virtual, pool of 30 x 30 pages, pcf 3x3"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("filter.mode=pcf")}},
-        {QStringLiteral("virtual, pool of 30 x 30 pages, lod bias 1"),
-         {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_lod_bias=1")}},
-        {QStringLiteral("virtual, pool of 6 x 6 pages"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=6")}},
+        {QStringLiteral("virtual at its defaults (40 x 40 pages, a level finer)"), {QStringLiteral("shadow.virtual=true")}},
+        {QStringLiteral("virtual at its defaults, pcf 3x3"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("filter.mode=pcf")}},
+        {QStringLiteral("virtual, 30 x 30 pages (the cascades' memory)"),
+         {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=30")}},
+        {QStringLiteral("virtual, 30 x 30 pages, no level finer"),
+         {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=30"), QStringLiteral("shadow.virtual_lod_bias=0")}},
+        {QStringLiteral("virtual, 6 x 6 pages"), {QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.virtual_pool=6")}},
     };
 }
 

@@ -27,6 +27,7 @@ public:
     }
 
     bool cullsFrontFaces(const Settings& settings) const override { return settings.bias.cullFront; }
+    bool leavesOutFloors(const Settings& settings) const override { return settings.bias.skipFloors; }
 
     void clear(const LightFrame& light, const Settings&, const QRect& tile) override
     {

@@ -23,7 +23,7 @@ std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
 } // namespace
 
 ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
-                       bool cullsFrontFaces, const CameraFrame& camera)
+                       bool cullsFrontFaces, bool floorsLeftOut, const CameraFrame& camera)
 {
     std::vector<ReachObject> casters;
     casters.reserve(scene.objects.size());
@@ -32,7 +32,7 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
         const std::optional<WorldPlane> plane = layout.objectPlane(i);
         // A floor is left out of the map as a culled plane is: from its front side.
         casters.push_back({.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
-                           .frontFacesCulled = (cullsFrontFaces || (settings.bias.skipFloors && layout.isFloor(i))) && plane});
+                           .frontFacesCulled = (cullsFrontFaces || (floorsLeftOut && layout.isFloor(i))) && plane});
     }
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : layout.drawItems()) {
@@ -91,7 +91,7 @@ void FrameUpdate::fit(const Frame& frame, const Scene& scene, const SceneLayout&
     ++m_fitCount;
     // Where lookups can find a caster follows the fit, and so is kept with it.
     const int generation = m_reach.generation + 1;
-    m_reach = settings.shadow.enabled ? sceneReach(settings, m_views.frames, scene, layout, sources.cullsFrontFaces, frame.camera) : ShadowReach{};
+    m_reach = settings.shadow.enabled ? sceneReach(settings, m_views.frames, scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, frame.camera) : ShadowReach{};
     m_reach.generation = generation;
 }
 

@@ -46,6 +46,7 @@ public:
         std::optional<VisibleDepthRange> visibleRange;     // sdsm: the depth range the fitting camera draws
         std::optional<VirtualLayout> virtualLayout;        // shadow.virtual: one view, its coarsest level
         bool cullsFrontFaces = false;                      // the shadow pass culls front faces (for the reach)
+        bool floorsLeftOut = false;                        // ... and leaves floors out (bias.skip_floors)
     };
 
     Frame begin(Inputs inputs, const Bounds& sceneBounds) const;
@@ -74,6 +75,6 @@ private:
 // Where the lookups of `views` can find a caster: casters one by one (a flat one-sided one whose
 // front faces the pass culls as its plane), receivers as drawn.
 ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
-                       bool cullsFrontFaces, const CameraFrame& camera);
+                       bool cullsFrontFaces, bool floorsLeftOut, const CameraFrame& camera);
 
 } // namespace shadowlab

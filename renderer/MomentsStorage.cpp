@@ -39,6 +39,8 @@ public:
     }
 
     bool cullsFrontFaces(const Settings&) const override { return false; }
+    // The moments hold every surface, floors too (MomentsPass::render).
+    bool leavesOutFloors(const Settings&) const override { return false; }
 
     void clear(const LightFrame& light, const Settings& settings, const QRect& tile) override
     {

@@ -141,6 +141,7 @@ void Renderer::refit(const FrameUpdate::Frame& frame, const ShadowStorage& stora
         sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
     sources.cullsFrontFaces = storage.cullsFrontFaces(settings);
+    sources.floorsLeftOut = storage.leavesOutFloors(settings);
     m_update.fit(frame, m_scene->scene(), m_scene->layout(), sources);
 }
 

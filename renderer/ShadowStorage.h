@@ -73,6 +73,8 @@ public:
     // Whether the pass drawing `settings` culls front faces (bias.cull_front): where a flat
     // one-sided caster facing the light then casts nothing (core/ShadowReach.h).
     virtual bool cullsFrontFaces(const Settings& settings) const = 0;
+    // Whether it leaves out floors the light is above (bias.skip_floors): the same for a floor.
+    virtual bool leavesOutFloors(const Settings& settings) const = 0;
     // The whole map read lit (every tile), or one view's `tile` of it.
     virtual void clear(const LightFrame& light, const Settings& settings, const QRect& tile = QRect()) = 0;
     // Draws one view into its tile; returns the casters drawn. `blurWallMs`, when given, gets

@@ -440,6 +440,32 @@ private Q_SLOTS:
         qInfo().noquote() << "first:" << describe(first) << "| camera moved:" << describe(moved) << "| light moved:" << describe(lightMoved);
     }
 
+    // The defaults as fine as the anchor's: on the city's street camera at most half the
+    // misclassified pixels of 4 stabilised cascades of 2048² (Unreal renders its sun 1.5 levels
+    // finer than a texel per pixel), and a 1920 x 1080 view of it fits the default pool whole.
+    void defaultsBeatTheCascadesAndFitAFullHdView()
+    {
+        Renderer& renderer = m_headless->renderer();
+        renderer.setScene(std::nullopt);
+        Settings cascades = presetSettings(QStringLiteral("city"));
+        for (const char* a : {"shadow.cascades=4", "map.size=2048", "light.stabilize=true"})
+            applyAssignment(cascades, QString::fromLatin1(a));
+        Settings virtualMap = presetSettings(QStringLiteral("city"));
+        applyAssignment(virtualMap, QStringLiteral("shadow.virtual=true"));
+        const QSize size(640, 360);
+        const VisibilityBuffer c = renderer.renderVisibility(cascades, size);
+        const Agreement ca = probe::agreement(c, probe::hardReference(renderer, c), renderer.lightFrame());
+        const VisibilityBuffer v = renderer.renderVisibility(virtualMap, size);
+        const Agreement va = probe::agreement(v, probe::hardReference(renderer, v), renderer.lightFrame());
+        qInfo().noquote() << "cascades:" << describe(ca) << "| virtual:" << describe(va);
+        const int virtualWrong = va.falseShadow + va.falseLight, cascadesWrong = ca.falseShadow + ca.falseLight;
+        QVERIFY2(2 * virtualWrong <= cascadesWrong, qPrintable(QString("virtual %1 px, cascades %2 px").arg(virtualWrong).arg(cascadesWrong)));
+
+        renderer.renderVisibility(virtualMap, QSize(1920, 1080));
+        const VirtualMapStats& pages = renderer.lastFrame().virtualPages;
+        QVERIFY2(pages.coarsened == 0 && pages.overflow == 0 && pages.resident > 900, qPrintable(describe(pages)));
+    }
+
     // A pool far too small for the view coarsens the finest requests, says by how much, and
     // the shadows stay where the reference has them (coarser, but no holes of light).
     void aSmallPoolCoarsens()
