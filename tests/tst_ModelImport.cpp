@@ -2,6 +2,7 @@
 // and sizes in every format, their shadows agree with the Embree reference, broken files give
 // an error that names the file and the problem, a scene file places models and sets keys,
 // references are cached by content, and the window keeps its scene when a file is bad.
+#include "AccuracyDock.h"
 #include "Application.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
@@ -23,7 +24,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QLabel>
+#include <QUndoStack>
 #include <QDoubleSpinBox>
 #include <QSlider>
 #include <QMimeData>
@@ -419,6 +423,58 @@ private Q_SLOTS:
         writeFile(dir, "c.obj", squareObj(2.0));
         QVERIFY(!(referenceKeyFor(sc, QSize(64, 64), 4) == before));
         QVERIFY(!(referenceKeyFor(sa, QSize(64, 64), 4) == before));
+    }
+
+    // A model opened in the window has its bias tuned against the reference in the background:
+    // where the tuner finds a clearly better bias it is set as one undo step, and the dock says
+    // what it chose and why; otherwise the dock says the defaults stay. Unchecked, nothing runs.
+    void openedModelsBiasIsTunedAsOneUndoStep()
+    {
+        using Side = MainWindow::Side;
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto* dock = window.findChild<AccuracyDock*>();
+        auto* note = window.findChild<QLabel*>(QStringLiteral("tuningResult"));
+        auto* onOpen = window.findChild<QCheckBox*>(QStringLiteral("tuneOnOpen"));
+        QVERIFY(dock && note && onOpen);
+        onOpen->setChecked(true);
+        const auto openAndTune = [&](const QString& path) {
+            note->setText(QString());
+            window.openSceneInBackground(path);
+            QTRY_COMPARE_WITH_TIMEOUT(window.settings(Side::A).scene, path, 60000);
+            QTRY_VERIFY_WITH_TIMEOUT(note->text().startsWith("Tuned as the model opened") && !dock->isBusy(), 240000);
+            qInfo().noquote() << note->text();
+        };
+        // A scene file whose own keys leave acne (no bias, front faces and the ground in the map):
+        // the tuner finds a clearly better bias and sets it, one undo step.
+        QTemporaryDir dir;
+        const QString acne = writeFile(dir, "acne.json", QStringLiteral(R"({"models": [{"file": "%1"}], "bias.cull_front": false,
+            "bias.footprint": false, "bias.skip_floors": false, "bias.slope": 0, "bias.min": 0})").arg(model("Collada/duck.dae")).toUtf8());
+        openAndTune(acne);
+        const BiasSettings asOpened = presetSettings(acne).bias;
+        const BiasSettings tuned = window.settings(Side::A).bias;
+        QVERIFY(tuned.slope + tuned.min > 0.0);     // the file's own bias is 0/0
+        QVERIFY2(note->text().contains("Undo"), qPrintable(note->text()));
+        QCOMPARE(window.undoStack(Side::A)->undoText(), QStringLiteral("Tune bias for the model"));
+        window.undoStack(Side::A)->undo();
+        const BiasSettings undone = window.settings(Side::A).bias;
+        QVERIFY(undone.slope == asOpened.slope && undone.min == asOpened.min && undone.space == asOpened.space);
+        // A model whose defaults already sit on the knee keeps them, and the dock says so.
+        const QString duck = model("Collada/duck.dae");
+        openAndTune(duck);
+        QCOMPARE(window.settings(Side::A).bias, presetSettings(duck).bias);
+        QVERIFY2(note->text().contains("stay"), qPrintable(note->text()));
+
+        // Unchecked (and remembered so), opening another model tunes nothing.
+        onOpen->setChecked(false);
+        note->setText(QString());
+        const QString box = model("OBJ/box.obj");
+        window.openSceneInBackground(box);
+        QTRY_COMPARE(window.settings(Side::A).scene, box);
+        QTest::qWait(200);
+        QVERIFY(!dock->isBusy() && note->text().isEmpty());
+        onOpen->setChecked(true);
     }
 
     void windowKeepsItsSceneOnABadFile()

@@ -6,10 +6,12 @@
 #include "SettingsKeys.h"
 #include "SweepChartPanel.h"
 
+#include <QCheckBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSettings>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
 #include <QtCharts/QLineSeries>
@@ -17,6 +19,8 @@
 #include <QtCharts/QValueAxis>
 #include <QScrollArea>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace shadowlab {
 
@@ -85,6 +89,13 @@ void AccuracyDock::addTuningRows(QVBoxLayout* layout)
     tuneRow->addWidget(m_tuneButton);
     tuneRow->addWidget(m_applyTuningButton);
     layout->addLayout(tuneRow);
+    m_tuneOnOpen = new QCheckBox(tr("Tune when a model opens"));
+    m_tuneOnOpen->setObjectName(QStringLiteral("tuneOnOpen"));
+    m_tuneOnOpen->setToolTip(tr("When a model file opens, tune its bias against the ray-traced reference in the background and set "
+                                "the result as one undo step where it is clearly better than the model's defaults"));
+    m_tuneOnOpen->setChecked(QSettings().value(QStringLiteral("accuracy/tuneOnOpen"), true).toBool());
+    connect(m_tuneOnOpen, &QCheckBox::toggled, this, [](bool on) { QSettings().setValue(QStringLiteral("accuracy/tuneOnOpen"), on); });
+    layout->addWidget(m_tuneOnOpen);
     m_tuningChart = new QChartView;
     m_tuningChart->setObjectName(QStringLiteral("tuningChart"));
     m_tuningChart->setRenderHint(QPainter::Antialiasing);
@@ -101,7 +112,15 @@ void AccuracyDock::connectController()
     connect(m_compareButton, &QPushButton::clicked, m_controller, &AccuracyController::compare);
     connect(m_chart->sweepButton(), &QPushButton::clicked, m_controller, &AccuracyController::sweep);
     connect(m_cancelButton, &QPushButton::clicked, m_controller, &AccuracyController::cancel);
-    connect(m_tuneButton, &QPushButton::clicked, m_controller, &AccuracyController::tuneBias);
+    connect(m_tuneButton, &QPushButton::clicked, this, [this] {
+        m_tuningForOpen = false;
+        m_controller->tuneBias();
+    });
+    // A tuning that ends without a result (cancelled, failed) applies nothing later.
+    connect(m_controller, &AccuracyController::busyChanged, this, [this](bool busy) {
+        if (!busy && !m_controller->tuning())
+            m_tuningForOpen = false;
+    });
     connect(m_controller, &AccuracyController::tuningFinished, this, &AccuracyDock::showTuning);
     connect(m_applyTuningButton, &QPushButton::clicked, this, [this] {
         const auto& t = m_controller->tuning();
@@ -203,9 +222,25 @@ void AccuracyDock::updateOverlay()
     }
 }
 
+bool AccuracyDock::tunesOnOpen() const
+{
+    return m_tuneOnOpen->isChecked();
+}
+
+void AccuracyDock::tuneForOpenedModel()
+{
+    if (!tunesOnOpen() || m_controller->isBusy())
+        return;
+    m_tuningForOpen = true;
+    m_controller->tuneBias();
+    if (!m_controller->isBusy())
+        m_tuningForOpen = false;    // it could not start
+}
+
 void AccuracyDock::showTuning()
 {
     const auto& t = m_controller->tuning();
+    const bool forOpen = std::exchange(m_tuningForOpen, false);
     m_tuningChart->setVisible(t.has_value());
     m_tuningResult->setVisible(t.has_value());
     // Nothing to apply when the bias as set is already as good as any on the curve.
@@ -266,6 +301,30 @@ void AccuracyDock::showTuning()
                                              "clearly better, so there is nothing to apply.")
                                               .arg(100.0 * t->current.misclassified(), 0, 'f', 3));
     m_tuningResult->setVisible(true);
+    if (!forOpen)
+        return;
+    // Tuned as the model opened: set it (one undo step), and say what and why.
+    if (t->improves) {
+        Settings tuned = m_controller->settings();
+        tuned.bias.space = t->space;
+        tuned.bias.slope = knee.slope;
+        tuned.bias.min = knee.min;
+        m_applyTuningButton->setEnabled(false);
+        m_tuningResult->setText(tr("Tuned as the model opened: slope %1, min %2 (%3 units), %4 % misclassified against %5 % at the "
+                                   "model's defaults, over this view and %6 light directions around it, against the ray-traced "
+                                   "reference. Edit → Undo brings the defaults back.")
+                                    .arg(knee.slope)
+                                    .arg(knee.min)
+                                    .arg(toString(t->space))
+                                    .arg(100.0 * knee.misclassified(), 0, 'f', 3)
+                                    .arg(100.0 * t->current.misclassified(), 0, 'f', 3)
+                                    .arg(int(t->placements.size()) - 1));
+        emit tunedBiasRequested(tuned);
+    } else {
+        m_tuningResult->setText(tr("Tuned as the model opened: its defaults (%1 % misclassified) are already on the knee of the "
+                                   "curve against the ray-traced reference, so they stay.")
+                                    .arg(100.0 * t->current.misclassified(), 0, 'f', 3));
+    }
 }
 
 void AccuracyDock::updateButtons()

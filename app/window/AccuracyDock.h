@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+class QCheckBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -54,12 +55,21 @@ public:
     // Whether a reference trace or a sweep is under way.
     bool isBusy() const;
 
+    // A model was opened: with "Tune when a model opens" checked (the default, kept between
+    // sessions), tune its bias against the reference in the background, at the dock's small
+    // size, and ask for the result as one undo step (tunedBiasRequested) when it is clearly
+    // better than the model's defaults; the tuning's note says what was chosen and why.
+    void tuneForOpenedModel();
+    bool tunesOnOpen() const;
+
 signals:
     // The error image over side `side`'s measured frame (0 A, 1 B), or a null image when
     // there is none to show.
     void errorOverlayChanged(int side, const QImage& image);
     // A sweep point was clicked: show these settings.
     void applySettingsRequested(const shadowlab::Settings& settings);
+    // The bias tuned when a model opened, to set as one undo step.
+    void tunedBiasRequested(const shadowlab::Settings& settings);
 
 private:
     // The compare button, the progress bar with Cancel, and the status line.
@@ -79,6 +89,8 @@ private:
     QPushButton* m_cancelButton = nullptr;
     QPushButton* m_tuneButton = nullptr;
     QPushButton* m_applyTuningButton = nullptr;
+    QCheckBox* m_tuneOnOpen = nullptr;
+    bool m_tuningForOpen = false;           // the tuning under way was started by a model's opening
     QChartView* m_tuningChart = nullptr;   // false shadow against false light of the tuned grid
     QLabel* m_tuningResult = nullptr;      // what the curve says: the best point, or nothing to apply
     QProgressBar* m_progress = nullptr;

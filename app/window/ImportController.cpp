@@ -192,6 +192,7 @@ void ImportController::finished(const QString& path, const QString& error, bool 
     }
     // Suspect until its first frame is drawn: a crash before that does not reopen it.
     emit sceneApplied(m_sides.selectedSettings().scene, true);
+    emit fileOpened(path);
 }
 
 void ImportController::finishRestore(const QString& path, const QString& error, bool cancelled)

@@ -68,6 +68,8 @@ signals:
     void readingEnded();
     // `scene` is shown, but not yet drawn: `flush` to say so on disk at once.
     void sceneApplied(const QString& scene, bool flush);
+    // The user opened a model or scene file, now shown (not a restored session's).
+    void fileOpened(const QString& path);
     // Sides of the restored session took their saved settings (or stayed, on a refusal).
     void restoredSidesChanged();
     void message(const QString& text, int timeoutMs);

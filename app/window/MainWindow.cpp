@@ -151,6 +151,15 @@ void MainWindow::createDocks()
             showStatusMessage(tr("Cannot apply that configuration: %1").arg(QString::fromUtf8(e.what())), 8000);
         }
     });
+    // A model's bias, tuned as it opens (once the dock has its settings), is one undo step.
+    connect(m_import, &ImportController::fileOpened, this, [this] { QTimer::singleShot(0, m_accuracyDock, &AccuracyDock::tuneForOpenedModel); });
+    connect(m_accuracyDock, &AccuracyDock::tunedBiasRequested, this, [this](const Settings& settings) {
+        try {
+            setSettings(selectedSide(), settings, tr("Tune bias for the model"));
+        } catch (const SettingsError& e) {
+            showStatusMessage(tr("Cannot apply the tuned bias: %1").arg(QString::fromUtf8(e.what())), 8000);
+        }
+    });
     connect(m_depthView, &DepthMapView::texelHovered, this, [this](const QString& text) { m_status->setTexel(text); });
 
     m_animation = new LightAnimation(this);
