@@ -133,9 +133,9 @@ QString visiblyWrong(const ReportRow& r)
     if (dssim(r) <= kVisibleDssim || (area && *area <= kVisibleDssim))
         return {};
     const QString against = area ? QStringLiteral("DSSIM %1 against the hard light's picture and %2 against the area light's")
-                                       .arg(dssim(r), 0, 'f', 3)
-                                       .arg(*area, 0, 'f', 3)
-                                 : QStringLiteral("DSSIM %1 against the reference's picture").arg(dssim(r), 0, 'f', 3);
+                                       .arg(dssim(r), 0, 'f', 4)
+                                       .arg(*area, 0, 'f', 4)
+                                 : QStringLiteral("DSSIM %1 against the reference's picture").arg(dssim(r), 0, 'f', 4);
     return QStringLiteral("visibly wrong: %1, over %2 (acne or a moiré of partial shadow that misclassified pixels miss)")
         .arg(against)
         .arg(kVisibleDssim);

@@ -17,6 +17,13 @@ in vec3 vNormal;
 in vec2 vUv;
 in vec3 vColour;            // multiplies the texture: white for presets, a material's base colour for models
 in vec4 vShadowCoord;
+#ifdef FOOTPRINT_BIAS
+#ifdef LIGHT_PERSPECTIVE
+in vec4 vShadowNormal;
+#else
+in vec3 vShadowNormal;
+#endif
+#endif
 
 uniform sampler2D uDiffuse;
 #ifdef ALPHA_CUTOUT

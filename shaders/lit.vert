@@ -21,6 +21,14 @@ out vec3 vColour;
 // its side of a stencil mask: the same depth from both.
 invariant gl_Position;
 out vec4 vShadowCoord;
+#ifdef FOOTPRINT_BIAS
+// The unit normal as a step in shadow-map space, for the footprint's move (one view).
+#ifdef LIGHT_PERSPECTIVE
+out vec4 vShadowNormal;
+#else
+out vec3 vShadowNormal;
+#endif
+#endif
 
 void main()
 {
@@ -40,6 +48,14 @@ void main()
 #endif
     float normalLength = length(vNormal);   // 0 only on a degenerate mesh: no offset, no NaN
     vec3 unitNormal = normalLength > 0.0 ? vNormal / normalLength : vec3(0.0);
-    vShadowCoord = shadowCoord + uShadowWorld * vec4(unitNormal * offset, 0.0);
+    vec4 normalStep = uShadowWorld * vec4(unitNormal, 0.0);
+    vShadowCoord = shadowCoord + normalStep * offset;
+#ifdef FOOTPRINT_BIAS
+#ifdef LIGHT_PERSPECTIVE
+    vShadowNormal = normalStep;
+#else
+    vShadowNormal = normalStep.xyz;
+#endif
+#endif
     gl_Position = uModelViewProjection * position;
 }

@@ -92,11 +92,9 @@ float warpTexel(vec2 uvWorld)
 
 // The footprint's move along the normal, in texels (viewPosition), and its clearance along the
 // ray, in texels of depth (viewVisibility): 0 without FOOTPRINT_BIAS or on a floor left out.
-float footprintNormalTexels(vec3 normal, vec3 toLight)
+float footprintNormalTexels(float cosTheta, float sinTheta)
 {
 #ifdef FOOTPRINT_BIAS
-    float cosTheta = clamp(dot(normal, toLight), 0.0, 1.0);
-    float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
     return uSelfShadowing ? 0.5 * max(sinTheta - cosTheta, 0.0) : 0.0;
 #else
     return 0.0;
@@ -115,7 +113,7 @@ float footprintRayTexels(float tanTheta)
 // The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
 // view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
 // interpolated); several views' are taken here, as each pixel picks its own.
-vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
+vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight, float cosTheta, float sinTheta)
 {
     // The lookup's own footprint (FOOTPRINT_BIAS): the texel it reads lies up to half a texel
     // across the map from the receiver, where a receiver sloping by theta to the light lies up
@@ -127,7 +125,7 @@ vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
     // is high, so shadow edges on lit ground do not shift. Measured against a normal offset
     // alone (edges of cut-out shadows moved) and a ray offset alone (terminator acne on real
     // models) in docs/techniques.md#bias.
-    float footprint = footprintNormalTexels(normal, toLight);
+    float footprint = footprintNormalTexels(cosTheta, sinTheta);
 #ifdef VIEW_PER_PIXEL
     vec4 plain = view.matrix * vec4(vPosition, 1.0);
 #ifdef LIGHT_WARP
@@ -136,21 +134,35 @@ vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight)
     float texel = view.texel;
 #endif
     float offset = (uNormalOffsetTexels + footprint) * texel;
-#else
-    vec4 plain = vShadowCoord;  // with bias.normal's offset from the vertex stage
-    float offset = footprint * view.texel;
-#endif
 #ifdef LIGHT_PERSPECTIVE
     offset *= plain.w;
 #endif
     return plain + view.matrix * vec4(normal * offset, 0.0);
+#else
+    // With bias.normal's offset from the vertex stage, and the normal's step in the map from
+    // there too: no matrix product per pixel (a branch around one cost llvmpipe more).
+#ifdef FOOTPRINT_BIAS
+    float offset = footprint * view.texel;
+#ifdef LIGHT_PERSPECTIVE
+    offset *= vShadowCoord.w;
+    return vShadowCoord + vShadowNormal * offset;
+#else
+    return vShadowCoord + vec4(vShadowNormal * offset, 0.0);    // an ortho view's w stays 1
+#endif
+#else
+    return vShadowCoord;
+#endif
+#endif
 }
 
 // A view's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
 // camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
-    vec4 shadowCoord = viewPosition(view, normal, toLight);
+    // The receiver's angle to the light, once: rounding can put N.L above 1, so no NaN.
+    float cosTheta = clamp(dot(normal, toLight), 0.0, 1.0);
+    float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
+    vec4 shadowCoord = viewPosition(view, normal, toLight, cosTheta, sinTheta);
 #ifdef AFFINE_VIEW
     vec3 coord = shadowCoord.xyz;
 #else
@@ -204,8 +216,7 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // (72 degrees): beyond it the lookup's normal offset (viewPosition) holds the centre, and a
     // growth of up to 10 (the cap before) lit grazing receivers in a crest's own shadow; on real
     // models 3 misclassifies least (docs/techniques.md#bias).
-    float cosTheta = clamp(dot(normal, toLight), 0.316, 1.0);  // rounding can put N.L above 1: no NaN
-    float tanTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / cosTheta;
+    float tanTheta = min(sinTheta / max(cosTheta, 1e-6), 3.0);
 #if defined(VIRTUAL_MAP) && !defined(BIAS_TEXEL) && !defined(BIAS_DEPTH)
     // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
     // levels and no one world-unit bias fits them all: at least the depth this receiver's own

@@ -94,7 +94,7 @@ private slots:
         rows[2].accuracy.areaSsim = 0.998;
         markParetoFronts(rows);
         QVERIFY(!rows[0].paretoFront && !rows[0].areaFront);
-        QVERIFY(visiblyWrong(rows[0]).contains("0.100") && visiblyWrong(rows[0]).contains("0.080"));
+        QVERIFY(visiblyWrong(rows[0]).contains("0.1000") && visiblyWrong(rows[0]).contains("0.0800"));
         QVERIFY(rows[1].paretoFront && rows[1].areaFront);      // beaten only by the wrong row
         QVERIFY(visiblyWrong(rows[2]).isEmpty());
         // Without an area reference the hard light's picture decides.
