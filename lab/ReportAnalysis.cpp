@@ -129,13 +129,19 @@ std::optional<double> areaDssim(const ReportRow& r)
 
 QString visiblyWrong(const ReportRow& r)
 {
-    const std::optional<double> area = areaDssim(r);
-    if (dssim(r) <= kVisibleDssim || (area && *area <= kVisibleDssim))
+    return visiblyWrong(r.accuracy);
+}
+
+QString visiblyWrong(const AccuracyResult& a)
+{
+    const double hard = 1.0 - a.ssim;
+    const std::optional<double> area = a.areaSsim ? std::optional(1.0 - *a.areaSsim) : std::nullopt;
+    if (hard <= kVisibleDssim || (area && *area <= kVisibleDssim))
         return {};
     const QString against = area ? QStringLiteral("DSSIM %1 against the hard light's picture and %2 against the area light's")
-                                       .arg(dssim(r), 0, 'f', 4)
+                                       .arg(hard, 0, 'f', 4)
                                        .arg(*area, 0, 'f', 4)
-                                 : QStringLiteral("DSSIM %1 against the reference's picture").arg(dssim(r), 0, 'f', 4);
+                                 : QStringLiteral("DSSIM %1 against the reference's picture").arg(hard, 0, 'f', 4);
     return QStringLiteral("visibly wrong: %1, over %2 (acne or a moiré of partial shadow that misclassified pixels miss)")
         .arg(against)
         .arg(kVisibleDssim);

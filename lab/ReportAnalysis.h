@@ -86,6 +86,8 @@ inline constexpr double kVisibleDssim = 0.01;
 // reference's where traced, beyond kVisibleDssim), or empty when it is not. Such a row is never
 // on a front nor recommended: it beats no other row either.
 QString visiblyWrong(const ReportRow& row);
+// The same for one measurement (the accuracy dock's sweep points).
+QString visiblyWrong(const AccuracyResult& result);
 // The area MAE's ± (ErrorNoise.h) in percent.
 double areaNoisePercent(const ReportRow& row);
 

@@ -335,9 +335,10 @@ private Q_SLOTS:
         auto* view = m_dock->findChild<QChartView*>(QStringLiteral("sweepChart"));
         QVERIFY(view);
         const QList<QAbstractSeries*> series = view->chart()->series();
-        QCOMPARE(series.size(), 2);
+        QCOMPARE(series.size(), 3);
         auto* variations = qobject_cast<QScatterSeries*>(series[0]);
         auto* marker = qobject_cast<QScatterSeries*>(series[1]);
+        auto* wrong = qobject_cast<QScatterSeries*>(series[2]);     // rings over visibly wrong pictures
         QVERIFY2(variations->count() >= 8, qPrintable(QString::number(variations->count())));
         QCOMPARE(marker->count(), 1);
         for (const QPointF& p : variations->points())
@@ -356,6 +357,10 @@ private Q_SLOTS:
         QApplication::sendEvent(view->viewport(), &move);
         QTRY_VERIFY(label("pointInfo")->text().contains(QStringLiteral("Click to apply")));
         QVERIFY(label("pointInfo")->text().contains(QStringLiteral("no bias")));   // the highest error
+        // Acne everywhere: its picture is visibly wrong, ringed, and the note says why.
+        QVERIFY(wrong->points().contains(target));
+        QVERIFY(wrong->count() < variations->count());
+        QVERIFY2(label("pointInfo")->text().contains(QStringLiteral("visibly wrong: DSSIM")), qPrintable(label("pointInfo")->text()));
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, at);
         QTRY_COMPARE(apply.count(), 1);
         const Settings chosen = apply.last().at(0).value<Settings>();

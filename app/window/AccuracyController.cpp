@@ -5,6 +5,7 @@
 #include "AccuracyMeter.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
+#include "ReportAnalysis.h"
 #include "RayTracer.h"
 #include "RenderError.h"
 #include "SampleStats.h"
@@ -368,7 +369,7 @@ void AccuracyController::startSweep()
     for (const SweepEntry& entry : sweepAround(settings())) {
         Settings s = applySweepEntry(settings(), entry);    // valid: sweepAround() keeps only what is
         if (s.map.size <= maxTextureSize)
-            m_sweepPlan.push_back({entry.label, std::move(s), 0.0, 0.0});
+            m_sweepPlan.push_back({entry.label, std::move(s), 0.0, 0.0, QString()});
     }
     m_sweepPoints.clear();
     m_sweepSkipped.clear();
@@ -401,7 +402,9 @@ void AccuracyController::sweepStep()
         if (!reference)
             throw RenderError(tr("the reference is gone; compare again"));
         const VisibilityBuffer buffer = h.renderer().renderVisibility(point.settings, m_sweepSize);
-        point.misclassifiedPercent = 100.0 * compareWithReference(buffer, *reference).hard.misclassified;
+        const AccuracyResult result = compareWithReference(buffer, *reference);
+        point.misclassifiedPercent = 100.0 * result.hard.misclassified;
+        point.visiblyWrong = visiblyWrong(result);
 
         // One untimed frame compiles the lit variant; every frame redraws the shadow map, so
         // the time is what a moving light costs, not the cached-map best case.

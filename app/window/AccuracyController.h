@@ -51,6 +51,7 @@ public:
         Settings settings;
         double frameMs = 0.0;
         double misclassifiedPercent = 0.0;
+        QString visiblyWrong;       // why its picture is visibly wrong (ReportAnalysis.h), or empty
     };
 
     explicit AccuracyController(QObject* parent = nullptr);

@@ -62,6 +62,8 @@ SweepChartPanel::SweepChartPanel(QWidget* parent) : QGroupBox(parent)
     connect(m_currentMarker, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
     connect(m_variations, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
     connect(m_currentMarker, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
+    connect(m_wrong, &QScatterSeries::clicked, this, &SweepChartPanel::pointClicked);
+    connect(m_wrong, &QScatterSeries::hovered, this, &SweepChartPanel::pointHovered);
 }
 
 void SweepChartPanel::createChart()
@@ -89,8 +91,17 @@ void SweepChartPanel::createChart()
     m_currentMarker->setMarkerSize(15.0);
     m_currentMarker->setColor(kCurrentColor);
     m_currentMarker->setBorderColor(kCurrentColor.darker(140));
+    // Rings over the points whose picture is visibly wrong: the count may look fine, the frame
+    // does not (DSSIM over ReportAnalysis' kVisibleDssim).
+    m_wrong = new QScatterSeries;
+    m_wrong->setName(tr("Visibly wrong picture"));
+    m_wrong->setMarkerSize(15.0);
+    m_wrong->setColor(Qt::transparent);
+    m_wrong->setBorderColor(QColor(200, 40, 40));
+    m_wrong->setPen(QPen(QColor(200, 40, 40), 2.0));
     m_chart->addSeries(m_variations);
     m_chart->addSeries(m_currentMarker);
+    m_chart->addSeries(m_wrong);
     createAxes(small);
 }
 
@@ -116,7 +127,7 @@ void SweepChartPanel::createAxes(const QFont& small)
     }
     m_chart->addAxis(m_timeAxis, Qt::AlignBottom);
     m_chart->addAxis(m_errorAxis, Qt::AlignLeft);
-    for (QScatterSeries* series : {m_variations, m_currentMarker}) {
+    for (QScatterSeries* series : {m_variations, m_currentMarker, m_wrong}) {
         series->attachAxis(m_timeAxis);
         series->attachAxis(m_errorAxis);
     }
@@ -152,10 +163,14 @@ void SweepChartPanel::setPoints(const std::vector<AccuracyController::SweepPoint
     // A hair below the decade, or rounding in pow() drops the lowest label.
     m_errorAxis->setRange(low * (1.0 - 1e-9), std::max(high, low * 10.0));
 
-    QList<QPointF> points;
-    for (const AccuracyController::SweepPoint& p : m_points)
+    QList<QPointF> points, wrong;
+    for (const AccuracyController::SweepPoint& p : m_points) {
         points << plotted(p);
+        if (!p.visiblyWrong.isEmpty())
+            wrong << plotted(p);
+    }
     m_variations->replace(points);
+    m_wrong->replace(wrong);
     updateCurrentMarker();
 }
 
@@ -195,16 +210,19 @@ void SweepChartPanel::pointHovered(const QPointF& point, bool state)
         return;
     }
     const AccuracyController::SweepPoint& p = m_points[std::size_t(index)];
-    const QString text = tr("<b>%1</b><br>%2 ms · %3 % misclassified<br><small>%4</small>")
+    const QString wrong = p.visiblyWrong.isEmpty() ? QString() : tr("Its picture is %1.").arg(p.visiblyWrong);
+    const QString text = tr("<b>%1</b><br>%2 ms · %3 % misclassified<br>%4<small>%5</small>")
                              .arg(p.label.toHtmlEscaped())
                              .arg(p.frameMs, 0, 'f', 1)
                              .arg(p.misclassifiedPercent, 0, 'f', 2)
+                             .arg(wrong.isEmpty() ? QString() : wrong.toHtmlEscaped() + QStringLiteral("<br>"))
                              .arg(settingsSummary(p.settings).toHtmlEscaped());
     QToolTip::showText(QCursor::pos(), text, this);
-    m_pointInfo->setText(tr("%1: %2 ms, %3 % misclassified. Click to apply.")
+    m_pointInfo->setText(tr("%1: %2 ms, %3 % misclassified. %4Click to apply.")
                              .arg(p.label)
                              .arg(p.frameMs, 0, 'f', 1)
-                             .arg(p.misclassifiedPercent, 0, 'f', 2));
+                             .arg(p.misclassifiedPercent, 0, 'f', 2)
+                             .arg(wrong.isEmpty() ? QString() : wrong + QLatin1Char(' ')));
 }
 
 void SweepChartPanel::updateCurrentMarker()

@@ -51,6 +51,7 @@ private:
     QChart* m_chart = nullptr;
     QScatterSeries* m_variations = nullptr;
     QScatterSeries* m_currentMarker = nullptr;
+    QScatterSeries* m_wrong = nullptr;      // rings over the variations whose picture is visibly wrong
     QValueAxis* m_timeAxis = nullptr;
     QLogValueAxis* m_errorAxis = nullptr;
     QLabel* m_pointInfo = nullptr;
