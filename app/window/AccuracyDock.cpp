@@ -123,14 +123,8 @@ void AccuracyDock::connectController()
     });
     connect(m_controller, &AccuracyController::tuningFinished, this, &AccuracyDock::showTuning);
     connect(m_applyTuningButton, &QPushButton::clicked, this, [this] {
-        const auto& t = m_controller->tuning();
-        if (!t)
-            return;
-        Settings tuned = m_controller->settings();
-        tuned.bias.space = t->space;
-        tuned.bias.slope = t->candidates[t->best].slope;
-        tuned.bias.min = t->candidates[t->best].min;
-        emit applySettingsRequested(tuned);
+        if (m_controller->tuning())
+            emit applySettingsRequested(tunedSettings());
     });
     connect(m_metrics, &AccuracyMetricsPanel::overlayToggled, this, &AccuracyDock::updateOverlay);
     connect(m_chart, &SweepChartPanel::applySettingsRequested, this, &AccuracyDock::applySettingsRequested);
@@ -222,6 +216,16 @@ void AccuracyDock::updateOverlay()
     }
 }
 
+Settings AccuracyDock::tunedSettings() const
+{
+    const auto& t = *m_controller->tuning();
+    Settings tuned = m_controller->settings();
+    tuned.bias.space = t.space;
+    tuned.bias.slope = t.candidates[t.best].slope;
+    tuned.bias.min = t.candidates[t.best].min;
+    return tuned;
+}
+
 bool AccuracyDock::tunesOnOpen() const
 {
     return m_tuneOnOpen->isChecked();
@@ -290,13 +294,13 @@ void AccuracyDock::showTuning()
     m_applyTuningButton->setEnabled(t->improves);
     // What the curve says, under it, where it stays while the status line moves on.
     const BiasCandidate& knee = t->candidates[t->best];
-    m_tuningResult->setText(t->improves ? tr("Best on the curve: slope %1, min %2 (%3 units), %4 % misclassified against %5 % as set. "
-                                             "Apply tuned bias sets it.")
-                                              .arg(knee.slope)
-                                              .arg(knee.min)
-                                              .arg(toString(t->space))
-                                              .arg(100.0 * knee.misclassified(), 0, 'f', 3)
-                                              .arg(100.0 * t->current.misclassified(), 0, 'f', 3)
+    const QString kneeText = tr("slope %1, min %2 (%3 units), %4 % misclassified against %5 %")
+                             .arg(knee.slope)
+                             .arg(knee.min)
+                             .arg(toString(t->space))
+                             .arg(100.0 * knee.misclassified(), 0, 'f', 3)
+                             .arg(100.0 * t->current.misclassified(), 0, 'f', 3);
+    m_tuningResult->setText(t->improves ? tr("Best on the curve: %1 as set. Apply tuned bias sets it.").arg(kneeText)
                                         : tr("The bias as set (%1 % misclassified) is already on the knee: no point of the curve is "
                                              "clearly better, so there is nothing to apply.")
                                               .arg(100.0 * t->current.misclassified(), 0, 'f', 3));
@@ -305,21 +309,12 @@ void AccuracyDock::showTuning()
         return;
     // Tuned as the model opened: set it (one undo step), and say what and why.
     if (t->improves) {
-        Settings tuned = m_controller->settings();
-        tuned.bias.space = t->space;
-        tuned.bias.slope = knee.slope;
-        tuned.bias.min = knee.min;
         m_applyTuningButton->setEnabled(false);
-        m_tuningResult->setText(tr("Tuned as the model opened: slope %1, min %2 (%3 units), %4 % misclassified against %5 % at the "
-                                   "model's defaults, over this view and %6 light directions around it, against the ray-traced "
-                                   "reference. Edit → Undo brings the defaults back.")
-                                    .arg(knee.slope)
-                                    .arg(knee.min)
-                                    .arg(toString(t->space))
-                                    .arg(100.0 * knee.misclassified(), 0, 'f', 3)
-                                    .arg(100.0 * t->current.misclassified(), 0, 'f', 3)
+        m_tuningResult->setText(tr("Tuned as the model opened: %1 at the model's defaults, over this view and %2 light directions around "
+                                   "it, against the ray-traced reference. Edit → Undo brings the defaults back.")
+                                    .arg(kneeText)
                                     .arg(int(t->placements.size()) - 1));
-        emit tunedBiasRequested(tuned);
+        emit tunedBiasRequested(tunedSettings());
     } else {
         m_tuningResult->setText(tr("Tuned as the model opened: its defaults (%1 % misclassified) are already on the knee of the "
                                    "curve against the ray-traced reference, so they stay.")

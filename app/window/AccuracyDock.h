@@ -80,6 +80,8 @@ private:
     void updateOverlay();
     void updateButtons();
     void showTuning();
+    // The settings with the tuning's best bias (a tuning must be there).
+    Settings tunedSettings() const;
     void setStatus(const QString& text, bool error = false);
 
     AccuracyController* m_controller = nullptr;
