@@ -120,13 +120,6 @@ double dssim(const ReportRow& r)
     return 1.0 - r.accuracy.ssim;
 }
 
-std::optional<double> areaDssim(const ReportRow& r)
-{
-    if (!r.accuracy.areaSsim)
-        return std::nullopt;
-    return 1.0 - *r.accuracy.areaSsim;
-}
-
 QString visiblyWrong(const ReportRow& r)
 {
     return visiblyWrong(r.accuracy);

@@ -12,8 +12,6 @@
 #include <QString>
 #include <QStringList>
 
-#include <optional>
-
 #include <vector>
 
 namespace shadowlab {
@@ -74,8 +72,6 @@ std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const 
 // 1 - mean SSIM of the frame against it shaded with the reference: 0 when alike, an error
 // that grows like the others.
 double dssim(const ReportRow& row);
-// The same against the frame shaded with the area reference, where it was traced.
-std::optional<double> areaDssim(const ReportRow& row);
 
 // Above this DSSIM against both references a frame is visibly wrong: acne, or a moiré of
 // partial shadow that misclassified pixels and the area MAE barely see. Clean rows of real

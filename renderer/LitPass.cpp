@@ -40,6 +40,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       normalOffset(program.uniform("uNormalOffset")),
       diffuse(program.uniform("uDiffuse")),
       receives(program.uniform("uReceives")),
+      selfShadowing(program.uniform("uSelfShadowing")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowMoments(program.uniform("uShadowMoments")),
@@ -388,7 +389,7 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
         p.program.set(p.shadowModel, glm::mat4(p.shadowMatrix * item.model));
         p.program.set(p.receives, int(item.receivesShadow));
         // A floor left out of the map cannot shadow itself: its lookups need no footprint bias.
-        p.program.set(p.techniqueUniform("uSelfShadowing"), int(!(m_floorsLeftOutFor && shadowsNothing(item, *m_floorsLeftOutFor))));
+        p.program.set(p.selfShadowing, int(!(m_floorsLeftOutFor && shadowsNothing(item, *m_floorsLeftOutFor))));
         if (cutout)
             p.program.set(p.alphaCutoff, item.alphaCutoff);
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));

@@ -93,7 +93,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, receives, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
+        GLint diffuse, receives, selfShadowing, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
         GLint lightPosition, lightDirection, biasSlope, biasMin, alphaCutoff;
         bool depthSlices;               // compiled with DEPTH_SLICES: its lookups compare in stored depth
         glm::dmat4 shadowMatrix{1.0};   // this frame's world -> map, the slice folded in where it reads one

@@ -56,7 +56,7 @@ SceneLayout::SceneLayout(const Scene& scene)
     for (const Mesh& mesh : scene.meshes)
         m_meshPlanes.push_back(flatPlane(mesh));
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        m_objectFloors.push_back(floorPlane(i).has_value());
+        m_objectFloors.push_back(floorPlane(i));
     layOutItems(scene);
 }
 
@@ -124,8 +124,7 @@ void SceneLayout::layOutItems(const Scene& scene)
         const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
         if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh))) {
             m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
-            if (m_objectFloors[i])
-                m_items.back().floor = floorPlane(i);
+            m_items.back().floor = m_objectFloors[i];
             continue;
         }
         const glm::dvec3 size = glm::max(m_bounds.max - m_bounds.min, glm::dvec3(1e-30));

@@ -74,7 +74,7 @@ public:
     // The world plane scene.objects[i] lies in, if its mesh is flat.
     std::optional<WorldPlane> objectPlane(std::size_t i) const;
     // Whether scene.objects[i] is a floor (DrawItem::floor).
-    bool isFloor(std::size_t i) const { return m_objectFloors.at(i); }
+    bool isFloor(std::size_t i) const { return m_objectFloors.at(i).has_value(); }
     const std::vector<DrawItem>& drawItems() const { return m_items; }
     // The batched items, in the order of their DrawItem::mesh.
     int batchCount() const { return m_batchCount; }
@@ -90,7 +90,7 @@ private:
     std::vector<glm::dmat4> m_objectModels;
     std::vector<int> m_objectMeshes;
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
-    std::vector<bool> m_objectFloors;
+    std::vector<std::optional<WorldPlane>> m_objectFloors;     // each object's plane, where it is a floor
     std::vector<DrawItem> m_items;
     Bounds m_bounds;
     int m_batchCount = 0;
