@@ -116,8 +116,16 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     if (lookups && settings.bias.receiverPlane)
         defines << QStringLiteral("RECEIVER_PLANE");
     // Filtered moments read their own bias (filter.moment_bias); depth comparisons the footprint's.
-    if (lookups && settings.bias.footprint && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments)
+    if (lookups && settings.bias.footprint && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments) {
         defines << QStringLiteral("FOOTPRINT_BIAS");
+        // Each tap's growth, unless the pass culls front faces (bias.cull_front, closed casters):
+        // a lit surface's own depth is then not in the map, so no far tap can shadow it, and the
+        // growth only lets light leak at contacts (torus, low spot light, 640x360: pcf64 0.240 %
+        // misclassified with it, 0.145 % without). The lookup's own texel keeps its clearance,
+        // which thin parts and terminators still need (hard on the torus: 0.029 % with it, 0.05 % without).
+        if (!settings.bias.cullFront)
+            defines << QStringLiteral("FOOTPRINT_TAPS");
+    }
     if (lookups && usesDepthRange(settings))
         defines << QStringLiteral("EARLY_OUT");
     // Both sides of the reach march: a receiver no caster reaches in the map has none in view either.

@@ -64,14 +64,15 @@ float tapWorldLength(vec2 offset)
 // bias chosen for the centre is wrong for a tap that lies elsewhere on a receiver sloping
 // relative to the light, so each tap gets its own. On the receiver's plane with RECEIVER_PLANE
 // (exact on planes, wrong where the gradient is: curved receivers, silhouettes); with
-// FOOTPRINT_BIAS the bias grown with the tap's distance by the receiver's slope, the most a
-// planar receiver rises toward the light that far away, so no tap of a wide kernel shadows a
-// lit slope (moiré); else the centre's (the textbook box filter).
+// FOOTPRINT_TAPS (the footprint bias where the map holds lit surfaces: no front faces culled)
+// the bias grown with the tap's distance by the receiver's slope, the most a planar receiver
+// rises toward the light that far away, so no tap of a wide kernel shadows a lit slope (moiré);
+// else the centre's (the textbook box filter).
 float tapReference(vec2 offset, float reference)
 {
 #ifdef RECEIVER_PLANE
     return reference + dot(gReceiverSlope, offset);
-#elif defined(FOOTPRINT_BIAS)
+#elif defined(FOOTPRINT_TAPS)
     return reference + gGrowth * tapWorldLength(offset);
 #else
     return reference;
@@ -101,7 +102,7 @@ vec2 tapReferenceRange(vec2 radius, float reference)
 #ifdef RECEIVER_PLANE
     float spread = dot(abs(gReceiverSlope), radius);
     return vec2(reference - spread, reference + spread);
-#elif defined(FOOTPRINT_BIAS)
+#elif defined(FOOTPRINT_TAPS)
     float grownBy = gGrowth * tapWorldLength(radius);
     return vec2(min(reference, reference + grownBy), max(reference, reference + grownBy));
 #else
