@@ -11,6 +11,7 @@
 #include <QThread>
 
 #include <algorithm>
+#include <cmath>
 
 namespace shadowlab {
 
@@ -140,6 +141,163 @@ QString visiblyWrong(const AccuracyResult& a)
         .arg(kVisibleDssim);
 }
 
+namespace {
+
+bool tiedInTime(const ReportRow& a, const ReportRow& b)
+{
+    return !clearlyFaster(a.frame, b.frame) && !clearlyFaster(b.frame, a.frame);
+}
+
+bool tiedInError(const ReportRow& a, const ReportRow& b, ErrorAxis axis)
+{
+    return !clearlyFewer(errorPixels(a, axis), errorPixels(b, axis)) && !clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
+}
+
+QString msText(double ms)
+{
+    return QStringLiteral("%1 ms").arg(ms, 0, 'f', ms < 10.0 ? 2 : 1);
+}
+
+// A share in percent with the digits its size needs: 0.0031 %, 0.052 %, 1.4 %.
+QString shareText(double fraction)
+{
+    const double v = 100.0 * fraction;
+    const int decimals = v <= 0.0 ? 0 : std::clamp(1 - int(std::floor(std::log10(v))), 0, 4);
+    return QStringLiteral("%1 %").arg(v, 0, 'f', decimals);
+}
+
+QString errorText(const ReportRow& r, ErrorAxis axis)
+{
+    const double pixels = errorPixels(r, axis);
+    return axis == ErrorAxis::Misclassified
+               ? QStringLiteral("%1 misclassified (%2 ± %3 px)").arg(shareText(errorShare(r, axis))).arg(pixels, 0, 'f', 0).arg(errorNoisePixels(pixels), 0, 'f', 0)
+               : QStringLiteral("area MAE %1 ± %2").arg(shareText(errorShare(r, axis)), shareText(errorNoisePixels(pixels) / std::max(1, measuredPixels(r, axis))));
+}
+
+// Of `candidates`, those tied with the best on `axis`; the pick is the fastest of them.
+Recommendation mostAccurate(std::vector<const ReportRow*> candidates, ErrorAxis axis, Recommendation::Kind kind)
+{
+    Recommendation pick;
+    pick.kind = kind;
+    if (candidates.empty())
+        return pick;
+    const ReportRow* best = *std::min_element(candidates.begin(), candidates.end(), [&](const ReportRow* a, const ReportRow* b) {
+        return errorPixels(*a, axis) < errorPixels(*b, axis);
+    });
+    std::vector<const ReportRow*> tied;
+    for (const ReportRow* r : candidates) {
+        if (tiedInError(*r, *best, axis))
+            tied.push_back(r);
+    }
+    std::stable_sort(tied.begin(), tied.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    pick.row = tied.front();
+    pick.ties.assign(tied.begin() + 1, tied.end());
+    return pick;
+}
+
+} // namespace
+
+std::vector<const ReportRow*> visiblyWrongRows(const std::vector<ReportRow>& rows, const QString& light)
+{
+    std::vector<const ReportRow*> wrong;
+    for (const ReportRow& r : rows) {
+        if (lightOf(r, rows) == light && !visiblyWrong(r).isEmpty())
+            wrong.push_back(&r);
+    }
+    return wrong;
+}
+
+std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const QString& light)
+{
+    std::vector<const ReportRow*> clean;
+    for (const ReportRow& r : rows) {
+        if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && visiblyWrong(r).isEmpty())
+            clean.push_back(&r);
+    }
+    if (clean.empty())
+        return {};
+    std::vector<Recommendation> picks;
+    // The cheapest: of the rows as fast as the fastest within the noise, the most accurate;
+    // its ties are as fast and as accurate.
+    const ReportRow* fastest = *std::min_element(clean.begin(), clean.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    std::vector<const ReportRow*> asFast;
+    for (const ReportRow* r : clean) {
+        if (!clearlyFaster(fastest->frame, r->frame))
+            asFast.push_back(r);
+    }
+    Recommendation cheapest = mostAccurate(asFast, ErrorAxis::Misclassified, Recommendation::Kind::Cheapest);
+    std::erase_if(cheapest.ties, [&](const ReportRow* r) { return !tiedInTime(*r, *cheapest.row); });
+    picks.push_back(cheapest);
+    // The most accurate within the budget.
+    const double budget = kRecommendationBudget * cheapest.row->frame.median;
+    std::vector<const ReportRow*> affordable;
+    for (const ReportRow* r : clean) {
+        if (r->frame.median <= budget)
+            affordable.push_back(r);
+    }
+    Recommendation accurate = mostAccurate(affordable, ErrorAxis::Misclassified, Recommendation::Kind::MostAccurate);
+    accurate.budgetMs = budget;
+    accurate.sameAsCheapest = accurate.row == cheapest.row;
+    picks.push_back(accurate);
+    // The closest to the area light, at any cost.
+    std::vector<const ReportRow*> traced;
+    for (const ReportRow* r : clean) {
+        if (measuredPixels(*r, ErrorAxis::AreaMae) > 0)
+            traced.push_back(r);
+    }
+    if (!traced.empty())
+        picks.push_back(mostAccurate(traced, ErrorAxis::AreaMae, Recommendation::Kind::ClosestToArea));
+    return picks;
+}
+
+QString Recommendation::title() const
+{
+    switch (kind) {
+    case Kind::Cheapest:
+        return QStringLiteral("Cheapest with nothing visibly wrong");
+    case Kind::MostAccurate:
+        return QStringLiteral("Most accurate within %1 (%2× the cheapest)").arg(msText(budgetMs)).arg(kRecommendationBudget);
+    case Kind::ClosestToArea:
+        return QStringLiteral("Closest to the area light");
+    }
+    return {};
+}
+
+QString Recommendation::reason() const
+{
+    if (row == nullptr)
+        return {};
+    const ErrorAxis axis = kind == Kind::ClosestToArea ? ErrorAxis::AreaMae : ErrorAxis::Misclassified;
+    QString text;
+    switch (kind) {
+    case Kind::Cheapest:
+        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms), the fastest of the rows whose picture is not visibly wrong; %4")
+                   .arg(msText(row->frame.median))
+                   .arg(row->frame.p10, 0, 'f', row->frame.p10 < 10.0 ? 2 : 1)
+                   .arg(row->frame.p90, 0, 'f', row->frame.p90 < 10.0 ? 2 : 1)
+                   .arg(errorText(*row, axis));
+        break;
+    case Kind::MostAccurate:
+        text = sameAsCheapest ? QStringLiteral("the cheapest again: no row within %1 a frame is clearly more accurate (%2)")
+                                    .arg(msText(budgetMs), errorText(*row, axis))
+                              : QStringLiteral("%1, the fewest of the rows that take at most %2 a frame; %3 a frame")
+                                    .arg(errorText(*row, axis), msText(budgetMs), msText(row->frame.median));
+        break;
+    case Kind::ClosestToArea:
+        text = QStringLiteral("%1, the smallest at any cost; %2 a frame").arg(errorText(*row, axis), msText(row->frame.median));
+        break;
+    }
+    if (!ties.empty()) {
+        QStringList names;
+        for (const ReportRow* r : ties)
+            names << QStringLiteral("%1 (%2, %3)").arg(r->label, msText(r->frame.median), errorText(*r, axis));
+        text += (kind == Kind::Cheapest ? QStringLiteral(". Ties, as fast and as accurate within their noise: ")
+                                        : QStringLiteral(". Ties, as accurate within their noise: "))
+              + names.join(QStringLiteral("; "));
+    }
+    return text + u'.';
+}
+
 double areaNoisePercent(const ReportRow& r)
 {
     return 100.0 * errorNoisePixels(errorPixels(r, ErrorAxis::AreaMae)) / std::max(1, measuredPixels(r, ErrorAxis::AreaMae));
@@ -147,9 +305,11 @@ double areaNoisePercent(const ReportRow& r)
 
 QString lightDescription(const Settings& settings)
 {
-    auto vec = [&](const QString& key) { return QStringLiteral("(%1)").arg(settingValue(settings, key).replace(QLatin1Char(','), QStringLiteral(", "))); };
+    // Six significant digits: a model's fitted light reads (-104.289, 243.34, -69.5257), not to
+    // fifteen digits, and two lights a sweep sets apart still differ.
+    auto vec = [&](const glm::dvec3& v) { return QStringLiteral("(%1, %2, %3)").arg(v.x, 0, 'g', 6).arg(v.y, 0, 'g', 6).arg(v.z, 0, 'g', 6); };
     return QStringLiteral("%1 light at %2 towards %3")
-        .arg(toString(settings.light.projection), vec(QStringLiteral("light.position")), vec(QStringLiteral("light.target")));
+        .arg(toString(settings.light.projection), vec(settings.light.position), vec(settings.light.target));
 }
 
 QImage zoomOnErrors(const QImage& errors, int factor)

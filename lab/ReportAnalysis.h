@@ -87,6 +87,35 @@ QString visiblyWrong(const AccuracyResult& result);
 // The area MAE's ± (ErrorNoise.h) in percent.
 double areaNoisePercent(const ReportRow& row);
 
+// What to pick under one light, and why: the report's first section and its terminal summary's
+// last lines. Only rows whose picture is not visibly wrong are picked; rows that tie with the
+// pick within the noise of time (p10-p90 overlap) and of the error (ErrorNoise.h) are named as
+// ties, and of tied rows the faster (or, tied in time, the more accurate) is the pick.
+struct Recommendation {
+    enum class Kind {
+        Cheapest,       // the fastest row with nothing visibly wrong
+        MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's time
+        ClosestToArea,  // the smallest MAE against the area light, at any cost
+    };
+    Kind kind = Kind::Cheapest;
+    const ReportRow* row = nullptr;
+    std::vector<const ReportRow*> ties;
+    double budgetMs = 0.0;          // MostAccurate: the frame time it was chosen within
+    bool sameAsCheapest = false;    // MostAccurate: nothing within the budget is clearly more accurate
+    QString title() const;          // "Cheapest with nothing visibly wrong", ...
+    QString reason() const;         // why this row, in figures, and its ties
+};
+
+// The cost a row may take to be "most accurate within a cost": this times the cheapest clean
+// row's median frame time.
+inline constexpr double kRecommendationBudget = 2.0;
+
+// The picks for the group `light` (lightsOf()): none where every row is visibly wrong or none
+// was measured; ClosestToArea only where the area light was traced.
+std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const QString& light);
+// The rows of `light` that no pick may be, for their picture (visiblyWrong()).
+std::vector<const ReportRow*> visiblyWrongRows(const std::vector<ReportRow>& rows, const QString& light);
+
 struct ReportFacts {
     QString scene;
     QSize size;

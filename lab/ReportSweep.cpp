@@ -69,16 +69,13 @@ std::vector<SweepEntry> biasSweep()
     const auto classic = [](QStringList assignments) {
         return QStringList{QStringLiteral("bias.footprint=false"), QStringLiteral("bias.skip_floors=false")} + assignments;
     };
-    for (const char* slope : {"0", "0.01", "0.05", "0.2"}) {
-        for (const char* min : {"0", "0.001", "0.005", "0.02"})
-            s.push_back({QStringLiteral("bias %1/%2 wu").arg(QLatin1String(slope), QLatin1String(min)),
-                         classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
+    // The grid is in texels of the map, so that it spans acne to peter panning alike on a 1-unit
+    // cube and a 250-unit model (a world-unit grid of 0 to 0.2 was all acne on the latter).
+    for (const char* slope : {"0", "1", "3", "8"}) {
+        for (const char* min : {"0", "0.25", "0.5", "1.5"})
+            s.push_back({QStringLiteral("bias %1/%2 texels").arg(QLatin1String(slope), QLatin1String(min)),
+                         classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=texel"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
                                   QStringLiteral("bias.min=%1").arg(QLatin1String(min))})});
-    }
-    for (const char* slope : {"1", "3"}) {
-        s.push_back({QStringLiteral("bias %1/0.5 texels").arg(QLatin1String(slope)),
-                     classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=texel"), QStringLiteral("bias.slope=%1").arg(QLatin1String(slope)),
-                              QStringLiteral("bias.min=0.5")})});
     }
     s.push_back({QStringLiteral("bias 0.02/0.001 depth units"), classic({QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.space=depth"),
                                                                           QStringLiteral("bias.slope=0.02"), QStringLiteral("bias.min=0.001")})});

@@ -102,6 +102,61 @@ private slots:
         QVERIFY(!visiblyWrong(rows[2]).isEmpty());
     }
 
+    // The report answers "which one": the cheapest row with nothing visibly wrong (never the
+    // faster moiré), the most accurate within twice its time, the closest to the area light;
+    // rows inside the noise of a pick are named as its ties, and the faster of tied rows wins.
+    void recommendsWhatToPickAndWhy()
+    {
+        std::vector<ReportRow> rows{row("moire", 0.30, 3.0, 0.2), row("hard", 0.50, 4.0, 0.3), row("hw", 0.49, 4.1, 0.3),
+                                    row("pcf", 0.20, 6.0, 0.3), row("poisson", 0.201, 7.5, 0.3), row("pcss", 0.10, 20.0, 1.0)};
+        for (ReportRow& r : rows) {
+            r.accuracy.ssim = 0.999;
+            r.accuracy.areaSsim = 0.995;
+        }
+        rows[0].accuracy.ssim = 0.9;        // a moiré: unlike both pictures
+        rows[0].accuracy.areaSsim = 0.9;
+        rows[5].accuracy.area.mae = 0.0002; // the soft filter is the area light's match
+        markParetoFronts(rows);
+        const std::vector<Recommendation> picks = recommend(rows, rows[0].light);
+        QCOMPARE(picks.size(), std::size_t(3));
+        // hw ties hard in time and in error (0.49 % against 0.50 %, inside the noise): the faster is picked.
+        QCOMPARE(picks[0].kind, Recommendation::Kind::Cheapest);
+        QCOMPARE(picks[0].row->label, QStringLiteral("hard"));
+        QCOMPARE(picks[0].ties.size(), std::size_t(1));
+        QCOMPARE(picks[0].ties.front()->label, QStringLiteral("hw"));
+        QVERIFY2(picks[0].reason().contains("hw (") && picks[0].reason().contains("as fast and as accurate"), qPrintable(picks[0].reason()));
+        // Within 8 ms (2 x 4 ms): pcf and poisson tie in error, pcf is faster; pcss is over the budget.
+        QCOMPARE(picks[1].kind, Recommendation::Kind::MostAccurate);
+        QCOMPARE(picks[1].row->label, QStringLiteral("pcf"));
+        QCOMPARE(picks[1].budgetMs, 8.0);
+        QCOMPARE(picks[1].ties.size(), std::size_t(1));
+        QCOMPARE(picks[1].ties.front()->label, QStringLiteral("poisson"));
+        QVERIFY2(picks[1].title().contains("8.00 ms"), qPrintable(picks[1].title()));
+        QCOMPARE(picks[2].kind, Recommendation::Kind::ClosestToArea);
+        QCOMPARE(picks[2].row->label, QStringLiteral("pcss"));
+        QCOMPARE(visiblyWrongRows(rows, rows[0].light).size(), std::size_t(1));
+
+        // The report leads with the answer, the JSON carries it, the moiré is named as never picked.
+        QTemporaryDir dir;
+        writeReport(dir.path(), rows, seedFacts());
+        QFile page(dir.filePath("report.html"));
+        QVERIFY(page.open(QIODevice::ReadOnly));
+        const QString html = QString::fromUtf8(page.readAll());
+        QVERIFY(html.indexOf("What to pick") < html.indexOf("<svg"));
+        QVERIFY(html.contains("Never picked") && html.contains(">moire</span>"));
+        QFile json(dir.filePath("report.json"));
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QJsonArray recommended = QJsonDocument::fromJson(json.readAll()).object().value("recommendations").toArray();
+        QCOMPARE(recommended.size(), 3);
+        QCOMPARE(recommended[0].toObject().value("label").toString(), QStringLiteral("hard"));
+        QCOMPARE(recommended[0].toObject().value("ties").toArray().first().toString(), QStringLiteral("hw"));
+
+        // Every row visibly wrong: nothing is picked, and the page says so.
+        for (ReportRow& r : rows)
+            r.accuracy.areaSsim = r.accuracy.ssim = 0.9;
+        QVERIFY(recommend(rows, rows[0].light).empty());
+    }
+
     void frontHoldsUnderTimingNoise()
     {
         // fast/rough and slow/exact are the classic trade-off; "twin" is as fast as "exact"

@@ -93,6 +93,22 @@ void printFronts(const std::vector<ReportRow>& rows)
     }
 }
 
+// The summary's last lines: what to pick under each light, why, and what was left out for its picture.
+void printRecommendations(const std::vector<ReportRow>& rows)
+{
+    const QStringList lights = lightsOf(rows);
+    for (const QString& light : lights) {
+        out() << "\nWhat to pick" << (lights.size() > 1 ? QStringLiteral(" under the %1").arg(light) : QString()) << ":\n";
+        const std::vector<Recommendation> picks = recommend(rows, light);
+        if (picks.empty())
+            out() << "  nothing: every configuration's picture is visibly wrong at this size (listed above as left out)\n";
+        for (const Recommendation& pick : picks)
+            out() << "  " << pick.title() << ": " << pick.row->label << "\n    " << pick.reason() << '\n';
+        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty() && !picks.empty())
+            out() << "  never picked, visibly wrong: " << wrong.size() << " configuration" << (wrong.size() == 1 ? "" : "s") << " (listed above as left out)\n";
+    }
+}
+
 void addReportOptions(QCommandLineParser& parser)
 {
     parser.setApplicationDescription(QStringLiteral("Error against run time over a sweep of configurations, "
@@ -100,7 +116,7 @@ void addReportOptions(QCommandLineParser& parser)
     parser.addHelpOption();
     addSettingsOptions(parser);
     parser.addOption({QStringLiteral("size"), QStringLiteral("Image size (default 640x360)."), QStringLiteral("WxH"), QStringLiteral("640x360")});
-    parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias, lights, filterable (moment techniques, blur "
+    parser.addOption({QStringLiteral("sweep"), QStringLiteral("default, filters, resolution, bias (a slope/min grid in texels of the map, depth units, polygon offset, culling), lights, filterable (moment techniques, blur "
                                      "0/3/7, 16/32-bit), penumbra (each wide filter with and without penumbra-only filtering), cascades (1-4 at equal texels, stabilised or not, and sdsm), warp (lispsm against "
                                      "no warp at three light placements, its strength, with cascades), virtual (virtual maps against one map and stabilised cascades of the same memory), around (the settings given, "
                                      "one change at a time, as the accuracy dock sweeps), or a JSON file (default: default)."),
@@ -319,6 +335,7 @@ void printSummary(const ReportRequest& request, const std::vector<ReportRow>& ro
     if (request.flickerFrames > 1)
         printFlicker(rows);
     printFronts(rows);
+    printRecommendations(rows);
     out() << "wrote " << QDir(request.directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
     if (request.shards > 1)
         out() << "this is share " << request.shard << " of " << request.shards << " (" << rows.size() << " of the sweep's " << request.configurations
@@ -359,6 +376,7 @@ int runMerge(const QCommandLineParser& parser, const QStringList& folders)
         for (const QString& note : merged.notes)
             out() << "note: " << note << '\n';
         printFronts(merged.rows);
+        printRecommendations(merged.rows);
         out() << "wrote " << QDir(directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;
     } catch (const ReportMergeError& e) {
         throw UsageError(QString::fromStdString(e.what()));

@@ -126,20 +126,27 @@ QLatin1String lightColour(const ReportRow& r, const std::vector<ReportRow>& rows
     return QLatin1String(kLightColours[std::max<qsizetype>(0, lights.indexOf(lightOf(r, rows))) % std::size(kLightColours)]);
 }
 
-// Where a chart puts its values: frame time (ms) across on round ticks, the error (%) up on a
-// log axis of whole decades, with a line of its own below them for 0 %.
+// A point's colour: its light's, as the legend gives it.
+using Colour = std::function<QLatin1String(const ReportRow&)>;
+
+// Where a chart puts its values: frame time (ms) across on a log axis from a 1-2-5 tick below
+// the fastest p10 to one above the slowest p90, so the fast cluster where nearly every choice
+// lies is as readable as a slow outlier ten times its time; the error (%) up on a log axis of
+// whole decades, with a line of its own below them for 0 %.
 struct ChartScale {
     static constexpr double w = 760, h = 440, left = 70, right = 20, top = 20, bottom = 50;
-    double xMax = 0.0;
-    double xStep = 1.0;
-    int xTicks = 0;
-    int xDecimals = 0;
+    double xMin = 1.0;
+    double xMax = 10.0;
     double yMin = 0.01;
     double yMax = 1.0;
     bool anyZero = false;
     double zeroBand = 0.0;
 
-    double px(double x) const { return left + x / xMax * (w - left - right); }
+    double px(double x) const
+    {
+        const double t = std::log10(std::clamp(x, xMin, xMax) / xMin) / std::log10(xMax / xMin);
+        return left + t * (w - left - right);
+    }
     double py(double y) const
     {
         if (y <= 0.0)
@@ -149,25 +156,42 @@ struct ChartScale {
     }
 };
 
+// The 1-2-5 step at or below `v` (down) or at or above it (up).
+double roundStep(double v, bool up)
+{
+    const double power = std::pow(10.0, std::floor(std::log10(v)));
+    const double steps[] = {1.0, 2.0, 5.0, 10.0};
+    if (up) {
+        for (double m : steps) {
+            if (power * m >= v * 0.9999)
+                return power * m;
+        }
+        return power * 10.0;
+    }
+    double below = power;
+    for (double m : steps) {
+        if (power * m <= v * 1.0001)
+            below = power * m;
+    }
+    return below;
+}
+
 ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
 {
     ChartScale c;
-    double xMax = 0.0, yLow = 0.0, yHigh = 0.0;
+    double xLow = 0.0, xHigh = 0.0, yLow = 0.0, yHigh = 0.0;
     for (const ReportRow& r : rows) {
-        xMax = std::max(xMax, r.frame.p90);
+        if (r.frame.p10 > 0.0)
+            xLow = xLow > 0.0 ? std::min(xLow, r.frame.p10) : r.frame.p10;
+        xHigh = std::max(xHigh, r.frame.p90);
         const double v = errorPercent(r, axis);
         if (v > 0.0) {
             yLow = yLow > 0.0 ? std::min(yLow, v) : v;
             yHigh = std::max(yHigh, v);
         }
     }
-    // Round ticks: a step of 1, 2 or 5 times a power of ten, about five of them.
-    const double rough = (xMax > 0.0 ? xMax * 1.05 : 1.0) / 5.0;
-    const double power = std::pow(10.0, std::floor(std::log10(rough)));
-    c.xStep = power * (rough <= power ? 1.0 : rough <= 2.0 * power ? 2.0 : rough <= 5.0 * power ? 5.0 : 10.0);
-    c.xTicks = int(std::ceil(xMax * 1.05 / c.xStep));
-    c.xMax = c.xStep * c.xTicks;
-    c.xDecimals = std::max(0, -int(std::floor(std::log10(c.xStep))));
+    c.xMin = xLow > 0.0 ? roundStep(xLow, false) : 1.0;
+    c.xMax = std::max(xHigh > 0.0 ? roundStep(xHigh, true) : 10.0, c.xMin * 2.0);
     // Whole decades around the values: one outlier at 40 % leaves 0.01 % readable.
     c.yMin = yLow > 0.0 ? std::pow(10.0, std::floor(std::log10(yLow))) : 0.01;
     c.yMax = yHigh > 0.0 ? std::pow(10.0, std::ceil(std::log10(yHigh))) : 1.0;
@@ -179,15 +203,41 @@ ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
     return c;
 }
 
+// The time axis's ticks: every 1-2-5 step between its ends, or only 1 and 5 of each decade,
+// or the decades alone, as many as fit with room between their numbers.
+std::vector<double> timeTicks(const ChartScale& c)
+{
+    std::vector<double> all;
+    for (double d = std::pow(10.0, std::floor(std::log10(c.xMin))); d <= c.xMax * 1.0001; d *= 10.0) {
+        for (double m : {1.0, 2.0, 5.0}) {
+            if (d * m >= c.xMin * 0.9999 && d * m <= c.xMax * 1.0001)
+                all.push_back(d * m);
+        }
+    }
+    for (const auto& keep : {std::vector<double>{1.0, 2.0, 5.0}, std::vector<double>{1.0, 5.0}, std::vector<double>{1.0}}) {
+        std::vector<double> ticks;
+        for (double t : all) {
+            const double mantissa = t / std::pow(10.0, std::floor(std::log10(t) + 1e-9));
+            if (std::any_of(keep.begin(), keep.end(), [&](double m) { return std::abs(mantissa - m) < 1e-6; }) || t == all.front() || t == all.back())
+                ticks.push_back(t);
+        }
+        bool roomy = true;
+        for (std::size_t i = 1; i < ticks.size(); ++i)
+            roomy = roomy && c.px(ticks[i]) - c.px(ticks[i - 1]) >= 34.0;
+        if (roomy)
+            return ticks;
+    }
+    return {all.front(), all.back()};
+}
+
 // The grid, its ticks and the two axis titles.
 QString chartAxes(const ChartScale& c, const QString& yTitle)
 {
     const double w = c.w, h = c.h, left = c.left, right = c.right, top = c.top, bottom = c.bottom;
     QString svg;
-    for (int i = 0; i <= c.xTicks; ++i) {
-        const double x = c.xStep * i;
+    for (double x : timeTicks(c)) {
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(c.px(x)).arg(top).arg(h - bottom);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(c.px(x)).arg(h - bottom + 18).arg(number(x, c.xDecimals));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(c.px(x)).arg(h - bottom + 18).arg(percentText(x));
     }
     if (c.anyZero) {
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(c.py(0.0)).arg(w - right);
@@ -202,7 +252,7 @@ QString chartAxes(const ChartScale& c, const QString& yTitle)
                    .arg(decade ? QStringLiteral("grid") : QStringLiteral("grid minor"));
         svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(c.py(y) + 4).arg(percentText(y));
     }
-    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms; median, bar p10–p90)</text>")
+    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms, log scale; median, bar p10–p90)</text>")
                .arg((left + w - right) / 2)
                .arg(h - 10);
     svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2 (log scale)</text>")
@@ -211,31 +261,40 @@ QString chartAxes(const ChartScale& c, const QString& yTitle)
     return svg;
 }
 
-// Each light's front, from fast to slow. The line steps down through the front points that beat
-// every faster one; the points that tie with them are on the front as well, as large dots, but
-// a line through every tie would zig-zag.
-QString frontLines(const std::vector<ReportRow>& rows, const QStringList& lights, ErrorAxis axis, const ChartScale& c)
+// Each light's front, from fast to slow. The solid line steps down through the front points
+// that beat every faster one; a thin dashed line joins every front point, the ties with them
+// included, so the front reaches as far as its slowest point.
+QString frontLines(const std::vector<ReportRow>& rows, const Colour& colour, ErrorAxis axis, const ChartScale& c)
 {
     QString svg;
-    for (const QString& light : lights) {
+    for (const QString& light : lightsOf(rows)) {
         std::vector<const ReportRow*> steps;
         for (const ReportRow* r : frontOf(rows, light, axis)) {
             if (steps.empty() || errorPercent(*r, axis) < errorPercent(*steps.back(), axis))
                 steps.push_back(r);
         }
-        if (steps.size() < 2)
+        const std::vector<const ReportRow*> all = frontOf(rows, light, axis);
+        if (all.size() < 2)
             continue;
-        QString points;
-        for (const ReportRow* r : steps)
-            points += QStringLiteral("%1,%2 ").arg(c.px(r->frame.median)).arg(c.py(errorPercent(*r, axis)));
-        svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(points.trimmed(), lightColour(*steps.front(), rows, lights));
+        // Every front point, fast to slow, joined by a thin dashed line: the ties that the steps
+        // leave out are on the front too, as far out as the slowest of them.
+        const auto line = [&](const std::vector<const ReportRow*>& points) {
+            QString text;
+            for (const ReportRow* r : points)
+                text += QStringLiteral("%1,%2 ").arg(c.px(r->frame.median)).arg(c.py(errorPercent(*r, axis)));
+            return text.trimmed();
+        };
+        if (all.size() > steps.size())
+            svg += QStringLiteral("<polyline points=\"%1\" class=\"front ties\" stroke=\"%2\"/>").arg(line(all), colour(*all.front()));
+        if (steps.size() >= 2)
+            svg += QStringLiteral("<polyline points=\"%1\" class=\"front\" stroke=\"%2\"/>").arg(line(steps), colour(*steps.front()));
     }
     return svg;
 }
 
 // Every row's noise bars, then its point; `taken` gets a box around each point, which labels
 // keep off.
-QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lights, ErrorAxis axis, const ChartScale& c, std::vector<Box>& taken)
+QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, ErrorAxis axis, const ChartScale& c, std::vector<Box>& taken)
 {
     QString svg;
     for (const ReportRow& r : rows) {
@@ -244,14 +303,14 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lig
                    .arg(c.px(r.frame.p10))
                    .arg(y)
                    .arg(c.px(r.frame.p90))
-                   .arg(lightColour(r, rows, lights));
+                   .arg(colour(r));
         if (measuredPixels(r, axis) > 0) {
             const auto [low, high] = noiseBand(r, axis);
             svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
                        .arg(x)
                        .arg(c.py(std::min(high, c.yMax)))
                        .arg(c.py(low))
-                       .arg(lightColour(r, rows, lights));
+                       .arg(colour(r));
         }
         taken.push_back({x - 6, y - 6, x + 6, y + 6});
     }
@@ -260,7 +319,7 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const QStringList& lig
                    .arg(c.px(r.frame.median))
                    .arg(c.py(errorPercent(r, axis)))
                    .arg(onFront(r, axis) ? 6 : 4)
-                   .arg(lightColour(r, rows, lights), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
+                   .arg(colour(r), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
                    .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(errorPercent(r, axis)));
     }
     return svg;
@@ -297,13 +356,27 @@ std::vector<Box> labelPlaces(double x, double y, double width)
     return places;
 }
 
+// A point's label: identical configurations' names joined with " = " are shown as the first and
+// how many more ("defaults (+3 identical)"; the tooltip and the table name them all); a long
+// name is cut at a word.
+QString chartLabel(const QString& label)
+{
+    const QStringList names = label.split(QStringLiteral(" = "));
+    QString text = names.front();
+    if (text.size() > 32) {
+        const qsizetype cut = text.lastIndexOf(u' ', 31);
+        text = text.left(cut > 12 ? cut : 31) + QChar(0x2026);
+    }
+    return names.size() > 1 ? QStringLiteral("%1 (+%2 identical)").arg(text).arg(names.size() - 1) : text;
+}
+
 // Labels for the front and the two reference configurations, first fit wins; a label that fits
 // nowhere is left out (the point's tooltip and the table still name it).
 QString pointLabels(const std::vector<ReportRow>& rows, ErrorAxis axis, const ChartScale& c, std::vector<Box>& taken)
 {
     QString svg;
     for (const ReportRow* r : labelledRows(rows, axis)) {
-        const QString text = r->label.size() > 40 ? r->label.left(39) + QChar(0x2026) : r->label;
+        const QString text = chartLabel(r->label);
         const double x = c.px(r->frame.median), y = c.py(errorPercent(*r, axis));
         for (const Box& b : labelPlaces(x, y, labelWidth(text))) {
             const bool inside = b.x0 >= c.left + 2 && b.x1 <= c.w - c.right && b.y0 >= c.top && b.y1 <= c.h - c.bottom;
@@ -330,14 +403,14 @@ QString pointLabels(const std::vector<ReportRow>& rows, ErrorAxis axis, const Ch
 // frame time, with both noises as bars (p10–p90 across, the error's band up and down); each
 // light's Pareto front on that axis marked, joined in its colour and labelled, with the
 // defaults and the tutorial; labels placed where they hide nothing.
-QString chart(const std::vector<ReportRow>& rows, const QStringList& lights, const QString& yTitle, ErrorAxis axis)
+QString chart(const std::vector<ReportRow>& rows, const Colour& colour, const QString& yTitle, ErrorAxis axis)
 {
     const ChartScale c = chartScale(rows, axis);
     std::vector<Box> taken;
     QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(c.w).arg(c.h);
     svg += chartAxes(c, yTitle);
-    svg += frontLines(rows, lights, axis, c);
-    svg += pointsAndBars(rows, lights, axis, c, taken);
+    svg += frontLines(rows, colour, axis, c);
+    svg += pointsAndBars(rows, colour, axis, c, taken);
     svg += pointLabels(rows, axis, c, taken);
     return svg + QStringLiteral("</svg>");
 }
@@ -471,12 +544,13 @@ body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:
 h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
 .grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
-.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
+.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.front.ties{stroke-width:1;stroke-dasharray:4 3;opacity:.7}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
 .label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
 td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}.wrong{color:#b00}
 .images{display:flex;gap:16px;flex-wrap:wrap}.images figure{margin:0}.images img{max-width:520px;border:1px solid #ccc}.images img.zoom{image-rendering:pixelated}
 .lights span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle;border-radius:6px}
+.picks dt{margin-top:.5em}.picks dd{margin-left:1.5em;color:#444}
 .key span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle}
 </style></head><body>
 <h1>Shadow error against run time: %1</h1>
@@ -534,13 +608,62 @@ QString lightsLegend(const QStringList& lights)
     return legend + QStringLiteral("</p>");
 }
 
-// Both charts and what their dots, lines and bars mean.
+// The report's answer first: under each light, what to pick and why, with its ties; and the
+// rows no pick may be, for their picture.
+QString recommendationSection(const std::vector<ReportRow>& rows, const QStringList& lights)
+{
+    QString section = QStringLiteral("<h2>What to pick</h2>");
+    for (const QString& light : lights) {
+        if (lights.size() > 1)
+            section += QStringLiteral("<h3>Under the %1</h3>").arg(html(light));
+        const std::vector<Recommendation> picks = recommend(rows, light);
+        if (picks.empty()) {
+            section += QStringLiteral("<p class=\"wrong\">Nothing: every configuration's picture is visibly wrong at this size (DSSIM over %1 "
+                                      "against both references). A larger image, a finer map or a tighter light volume may help.</p>")
+                           .arg(kVisibleDssim);
+            continue;
+        }
+        section += QStringLiteral("<dl class=\"picks\">");
+        for (const Recommendation& pick : picks)
+            section += QStringLiteral("<dt>%1: <b>%2</b></dt><dd>%3</dd>").arg(html(pick.title()), html(pick.row->label), html(pick.reason()));
+        section += QStringLiteral("</dl>");
+        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty()) {
+            QStringList names;
+            for (const ReportRow* r : wrong)
+                names << QStringLiteral("<span title=\"%1\">%2</span>").arg(html(visiblyWrong(*r)), html(r->label));
+            section += QStringLiteral("<p>Never picked, as their picture is visibly wrong (DSSIM over %1 against both references: acne, or "
+                                      "a moiré of partial shadow): %2.</p>")
+                           .arg(kVisibleDssim)
+                           .arg(names.join(QStringLiteral(", ")));
+        }
+    }
+    return section + QStringLiteral("<p class=\"facts\">Two rows tie when neither is clearly better: times whose p10–p90 overlap, "
+                                    "errors whose noise bands overlap (below). Of tied rows the faster is picked.</p>");
+}
+
+// Both charts and what their dots, lines and bars mean; a pair per light projection where the
+// sweep has both (an ortho and a perspective map differ in time and error by their nature, and
+// their points among each other's read as outliers).
 QString chartsSection(const std::vector<ReportRow>& rows, const QStringList& lights)
 {
-    QString section = QStringLiteral("<h2>Misclassified pixels against the hard reference</h2>");
-    section += chart(rows, lights, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
-    section += QStringLiteral("<h2>Mean absolute error against the area light</h2>");
-    section += chart(rows, lights, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
+    std::vector<std::pair<QString, std::vector<ReportRow>>> groups;
+    for (const ReportRow& r : rows) {
+        const QString projection = r.light.section(u' ', 0, 0);
+        auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == projection; });
+        if (group == groups.end())
+            group = groups.insert(groups.end(), {projection, {}});
+        group->second.push_back(r);
+    }
+    // Colours by the light's name among all rows, as the legend gives them.
+    const Colour colour = [&](const ReportRow& r) { return lightColour(r, rows, lights); };
+    QString section;
+    for (const auto& [projection, group] : groups) {
+        const QString of = groups.size() > 1 ? QStringLiteral(", %1 lights").arg(html(projection)) : QString();
+        section += QStringLiteral("<h2>Misclassified pixels against the hard reference%1</h2>").arg(of);
+        section += chart(group, colour, QStringLiteral("misclassified pixels, % (|V − V_ref| > 0.5)"), ErrorAxis::Misclassified);
+        section += QStringLiteral("<h2>Mean absolute error against the area light%1</h2>").arg(of);
+        section += chart(group, colour, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
+    }
     section += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
                               "are more accurate than every faster one. A configuration leaves "
                               "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
@@ -589,6 +712,7 @@ QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& fac
     const QStringList lights = lightsOf(rows);
     QString page = pageHead(rows, facts) + partsNote(rows, facts);
     page += lightsLegend(lights);
+    page += recommendationSection(rows, lights);
     page += chartsSection(rows, lights);
     page += configurationTable(rows, lights);
     page += flickerSection(rows);
