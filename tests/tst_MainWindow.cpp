@@ -12,6 +12,7 @@
 #include "MainWindow.h"
 #include "OrbitCamera.h"
 #include "PropertiesDock.h"
+#include "PropertyFields.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
 #include "SceneView.h"
@@ -153,6 +154,7 @@ private slots:
     void presetButtonShowsTheArtifactAndTheFix();
     void presetFromTheCommandLineShowsItsNoteAndFix();
     void everySettingHasADockField();
+    void fieldsTheSettingsIgnoreAreGreyedWithTheReason();
     void cameraFieldsMoveTheSharedCamera();
     void depthLegendSpansTheDepthsInTheMap_data();
     void depthLegendSpansTheDepthsInTheMap();
@@ -865,6 +867,30 @@ void tst_MainWindow::presetFromTheCommandLineShowsItsNoteAndFix()
     QCOMPARE(m_window->settings(Side::A), leaking);
 
     QVERIFY_THROWS_EXCEPTION(SettingsError, dock->showPreset(QStringLiteral("acme")));
+}
+
+// A field that does nothing with the current settings is greyed and says why; the reason
+// goes once a setting makes it count, and the field's own help comes back.
+void tst_MainWindow::fieldsTheSettingsIgnoreAreGreyedWithTheReason()
+{
+    Settings s = m_window->settings(Side::A);
+    applySetting(s, "filter.mode", "hw-bilinear");
+    applySetting(s, "shadow.virtual", "false");
+    m_window->setSettings(Side::A, s);
+    auto* dock = m_window->propertiesDock();
+    SliderSpinBox* pool = field(QStringLiteral("shadow.virtual_pool"));
+    auto* receiverPlane = dock->findChild<QWidget*>(QStringLiteral("bias.receiver_plane"));
+    QVERIFY(pool && receiverPlane);
+    QVERIFY(!pool->isEnabled());
+    QVERIFY2(pool->toolTip().contains("shadow.virtual"), qPrintable(pool->toolTip()));
+    QVERIFY(!receiverPlane->isEnabled());
+    QVERIFY2(receiverPlane->toolTip().contains("one lookup"), qPrintable(receiverPlane->toolTip()));
+    applySetting(s, "shadow.virtual", "true");
+    applySetting(s, "filter.mode", "pcf");
+    m_window->setSettings(Side::A, s);
+    QVERIFY(pool->isEnabled() && receiverPlane->isEnabled());
+    QVERIFY2(!pool->toolTip().contains("Virtual maps are off"), qPrintable(pool->toolTip()));
+    QVERIFY(pool->toolTip().contains(PropertyFields::toolTip("shadow.virtual_pool").left(30)));
 }
 
 void tst_MainWindow::everySettingHasADockField()

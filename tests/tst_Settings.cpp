@@ -1,6 +1,7 @@
 // Settings without GL: every key parses, prints and round-trips; every bad value is refused
 // with a message that names the key and the allowed range, and leaves the settings unchanged.
 #include "SceneLibrary.h"
+#include "SettingRelevance.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
@@ -15,6 +16,44 @@ class TestSettings : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // A field the current settings do not read says so, and what would make it count; the
+    // same field counts again once that is set.
+    void ignoredSettingsSayWhy()
+    {
+        Settings s;     // hw-bilinear, a directional light, one map, no virtual map, no contact shadows
+        QVERIFY(ignoredBecause(s, "filter.kernel").contains("pcf"));
+        QVERIFY(ignoredBecause(s, "bias.receiver_plane").contains("one lookup"));
+        QVERIFY(ignoredBecause(s, "shadow.virtual_pool").contains("shadow.virtual"));
+        QVERIFY(ignoredBecause(s, "shadow.split").contains("shadow.cascades"));
+        QVERIFY(ignoredBecause(s, "contact.steps").contains("contact.enabled"));
+        QVERIFY(ignoredBecause(s, "moments.blur").contains("moment"));
+        QVERIFY(ignoredBecause(s, "light.warp_scale").contains("lispsm"));
+        for (const char* key : {"map.size", "bias.slope", "filter.mode", "shadow.cascades", "shadow.virtual", "light.position", "shadow.enabled"})
+            QVERIFY2(ignoredBecause(s, key).isEmpty(), key);
+        applySetting(s, "filter.mode", "pcf64");
+        QVERIFY(ignoredBecause(s, "bias.receiver_plane").isEmpty());    // its 64 taps lie on the plane
+        applySetting(s, "filter.mode", "pcf");
+        QVERIFY(ignoredBecause(s, "filter.kernel").isEmpty());
+        applySetting(s, "shadow.virtual", "true");
+        QVERIFY(ignoredBecause(s, "shadow.virtual_pool").isEmpty());
+        applySetting(s, "shadow.cascades", "3");
+        applySetting(s, "shadow.split", "uniform");
+        QVERIFY(ignoredBecause(s, "shadow.split").isEmpty());
+        QVERIFY(ignoredBecause(s, "shadow.split_lambda").contains("practical"));
+        applySetting(s, "filter.mode", "msm");
+        QVERIFY(ignoredBecause(s, "moments.blur").isEmpty());
+        QVERIFY(ignoredBecause(s, "bias.cull_front").contains("filter.moment_bias"));
+        applySetting(s, "light.type", "point");
+        QVERIFY(ignoredBecause(s, "shadow.cascades").contains("six cube faces"));
+        QVERIFY(!ignoredBecause(s, "shadow.virtual_pool").isEmpty());
+        applySetting(s, "shadow.enabled", "false");
+        for (const SettingKey& key : settingKeys()) {
+            const bool shadowKey = key.key.startsWith("map.") || key.key.startsWith("bias.") || key.key.startsWith("filter.");
+            QVERIFY2(!shadowKey || ignoredBecause(s, key.key).contains("shadow.enabled"), qPrintable(key.key));
+        }
+        QVERIFY(ignoredBecause(s, "camera.fov").isEmpty());
+    }
+
     // The table is the dock's only source: every key names its label and group, and its slider
     // lies inside its range.
     void everyKeyCarriesItsPresentation()

@@ -6,6 +6,7 @@
 #include "ArtifactPresets.h"
 #include "PropertyFields.h"
 #include "SceneLibrary.h"
+#include "SettingRelevance.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
@@ -438,10 +439,6 @@ void PropertiesDock::updateDependentRows()
         w->setVisible(ortho);
     for (QWidget* w : m_fields->row(QStringLiteral("light.fov")))
         w->setVisible(!ortho);
-    for (const TechniqueParameter& parameter : techniqueParameters()) {
-        for (QWidget* w : m_fields->row(parameter.key))
-            w->setEnabled(usesParameter(m_pending.filter, parameter.key));
-    }
     // The cone's falloff for a spot light; cascades for a directional one, and their split
     // settings once there are several.
     for (QWidget* w : m_fields->row(QStringLiteral("light.falloff")))
@@ -454,11 +451,26 @@ void PropertiesDock::updateDependentRows()
         for (QWidget* w : m_fields->row(key))
             w->setVisible(directional);
     }
-    for (QWidget* w : m_fields->row(QStringLiteral("shadow.cascades")))
-        w->setEnabled(directional);
-    for (const QString key : {"shadow.split", "shadow.split_lambda", "shadow.distance", "shadow.blend"}) {
-        for (QWidget* w : m_fields->row(key))
-            w->setEnabled(directional && m_pending.shadow.cascades > 1);
+    // Every field the current settings leave unread is greyed, its tooltip saying why and what
+    // would make it count (the fitted volume's fields say so in showFit()).
+    for (const SettingKey& info : settingKeys()) {
+        if (std::any_of(std::begin(kFittedKeys), std::end(kFittedKeys), [&](const char* k) { return info.key == QLatin1String(k); }))
+            continue;
+        const QString why = ignoredBecause(m_pending, info.key);
+        for (QWidget* w : m_fields->row(info.key)) {
+            // The field's own tooltip is kept aside while the reason shows, and comes back after.
+            const QVariant own = w->property("ownToolTip");
+            if (!why.isEmpty()) {
+                if (!own.isValid())
+                    w->setProperty("ownToolTip", w->toolTip());
+                w->setEnabled(false);
+                w->setToolTip(QStringLiteral("<b>%1</b><br>%2").arg(why.toHtmlEscaped(), own.isValid() ? own.toString() : w->property("ownToolTip").toString()));
+            } else if (own.isValid()) {
+                w->setEnabled(true);
+                w->setToolTip(own.toString());
+                w->setProperty("ownToolTip", QVariant());
+            }
+        }
     }
 }
 

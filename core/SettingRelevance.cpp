@@ -1,0 +1,96 @@
+#include "SettingRelevance.h"
+
+#include "SettingsKeys.h"
+#include "ShadowTechnique.h"
+
+#include <QStringList>
+
+namespace shadowlab {
+
+namespace {
+
+// The techniques (by key) that read the parameter `key`.
+QStringList readersOf(const QString& key)
+{
+    QStringList readers;
+    for (const ShadowTechnique& t : shadowTechniques()) {
+        if (t.parameters.contains(key))
+            readers << t.key;
+    }
+    return readers;
+}
+
+QStringList momentTechniques()
+{
+    QStringList moments;
+    for (const ShadowTechnique& t : shadowTechniques()) {
+        if (t.map == ShadowMapKind::Moments)
+            moments << t.key;
+    }
+    return moments;
+}
+
+QString techniqueKey(const Settings& s)
+{
+    return shadowTechnique(s.filter.mode).key;
+}
+
+} // namespace
+
+QString ignoredBecause(const Settings& s, const QString& key)
+{
+    const bool moments = shadowTechnique(s.filter.mode).map == ShadowMapKind::Moments;
+    const bool directional = s.light.type == LightType::Directional;
+    const bool shadowKey = key.startsWith(u"map.") || key.startsWith(u"bias.") || key.startsWith(u"filter.") || key.startsWith(u"moments.")
+                           || key.startsWith(u"contact.") || (key.startsWith(u"shadow.") && key != u"shadow.enabled");
+    if (!s.shadow.enabled && shadowKey)
+        return QStringLiteral("Shadows are off: turn on shadow.enabled to use it.");
+
+    // The technique's own parameters, and the moment maps' settings.
+    for (const TechniqueParameter& parameter : techniqueParameters()) {
+        if (parameter.key == key && !usesParameter(s.filter, key))
+            return QStringLiteral("%1 does not read it; %2 %3.")
+                .arg(techniqueKey(s), readersOf(key).join(QStringLiteral(", ")), readersOf(key).size() == 1 ? QStringLiteral("does") : QStringLiteral("do"));
+    }
+    if (key.startsWith(u"moments.") && !moments)
+        return QStringLiteral("%1 stores depth, not moments; the moment filters (%2) read it.").arg(techniqueKey(s), momentTechniques().join(QStringLiteral(", ")));
+    if (moments && (key == u"bias.cull_front" || key == u"bias.polygon_factor" || key == u"bias.polygon_units" || key == u"bias.footprint"
+                    || key == u"bias.receiver_plane" || key == u"bias.skip_floors"))
+        return QStringLiteral("%1 draws every face into a moments map with no offset and compares no depths: filter.moment_bias holds "
+                              "its acne off. Depth-compare filters read it.")
+            .arg(techniqueKey(s));
+    if (key == u"bias.receiver_plane" && (s.filter.mode == FilterMode::Hard || s.filter.mode == FilterMode::HwBilinear))
+        return QStringLiteral("%1 takes one lookup, with no taps to place on the receiver's plane; the wide filters (pcf, poisson, pcss, …) read it.")
+            .arg(techniqueKey(s));
+    if (key == u"filter.early_out" && !(s.filter.mode == FilterMode::Pcf || s.filter.mode == FilterMode::Poisson || s.filter.mode == FilterMode::Pcss))
+        return QStringLiteral("Only pcf, poisson and pcss skip their taps outside penumbrae; %1 does not.").arg(techniqueKey(s));
+    if (key == u"map.slices" && (s.light.projection == LightProjection::Perspective || s.map.format != DepthFormat::Depth24))
+        return QStringLiteral("Only an ortho depth24 map is drawn into slices; perspective maps and depth32f clear every time.");
+
+    // The light's kinds of map.
+    if (key == u"light.warp" && !directional)
+        return QStringLiteral("Only a directional light's map is warped; set light.type to directional.");
+    if (key == u"light.warp_scale" && (!directional || s.light.warp != LightWarp::Lispsm))
+        return QStringLiteral("Only a lispsm warp reads it: set light.warp to lispsm (directional lights).");
+    if (key == u"light.stabilize" && s.light.fit == LightFit::Manual)
+        return QStringLiteral("A hand-set volume (light.fit manual) is not moved, so there is nothing to snap; set light.fit to scene.");
+    if (key == u"shadow.cascades" && !directional)
+        return QStringLiteral("Cascades split a directional light's map; a %1 light has %2.")
+            .arg(toString(s.light.type), s.light.type == LightType::Point ? QStringLiteral("six cube faces") : QStringLiteral("one perspective map"));
+    if (key == u"shadow.virtual" && !directional)
+        return QStringLiteral("Virtual shadow maps are for a directional light; set light.type to directional.");
+    const bool cascades = directional && s.shadow.cascades > 1;
+    if ((key == u"shadow.split" || key == u"shadow.split_lambda" || key == u"shadow.distance" || key == u"shadow.blend" || key == u"shadow.depth_fit")
+        && !cascades)
+        return directional ? QStringLiteral("With one map (shadow.cascades 1) there is no depth range to split; set shadow.cascades to 2 or more.")
+                           : QStringLiteral("Cascades split a directional light's map; set light.type to directional and shadow.cascades to 2 or more.");
+    if (key == u"shadow.split_lambda" && s.shadow.split != CascadeSplit::Practical)
+        return QStringLiteral("Only the practical split blends uniform and logarithmic; set shadow.split to practical.");
+    if ((key == u"shadow.virtual_pool" || key == u"shadow.virtual_levels" || key == u"shadow.virtual_lod_bias") && !(directional && s.shadow.virtualMap))
+        return QStringLiteral("Virtual maps are off: turn on shadow.virtual (directional lights) to use it.");
+    if ((key == u"contact.length" || key == u"contact.steps" || key == u"contact.thickness") && !s.contact.enabled)
+        return QStringLiteral("Contact shadows are off: turn on contact.enabled to use it.");
+    return {};
+}
+
+} // namespace shadowlab
