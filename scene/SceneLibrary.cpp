@@ -211,6 +211,27 @@ Settings presetSettings(const QString& name)
     return s;
 }
 
+CameraSettings presetCamera(const QString& name, double aspect)
+{
+    CameraSettings camera = presetSettings(name).camera;
+    if (isPresetName(name) || !std::isfinite(aspect) || aspect <= 0.0)
+        return camera;
+    const Bounds models = loadSceneFile(name)->modelBounds();
+    const double radius = glm::length(models.max - models.min) * 0.5;
+    const glm::dvec3 toCamera = camera.position - models.center();
+    const double distance = glm::length(toCamera);
+    // A camera the file sets itself (looking elsewhere than the models' centre) is its author's.
+    if (!(radius > 0.0) || !(distance > 0.0) || glm::length(camera.target - models.center()) > 1e-9 * (1.0 + radius))
+        return camera;
+    // The narrower half angle: the vertical field of view's, or the horizontal one of a tall view.
+    const double halfHeight = glm::radians(camera.fov * 0.5);
+    const double halfAngle = std::min(halfHeight, std::atan(std::tan(halfHeight) * aspect));
+    const double needed = radius / std::sin(halfAngle) * 1.1;   // a tenth of margin round the sphere
+    if (needed > distance)
+        camera.position = models.center() + toCamera * (needed / distance);
+    return camera;
+}
+
 Settings movedToScene(const Settings& side, const Settings& scene)
 {
     Settings moved = side;

@@ -18,6 +18,12 @@ Scene buildScene(const QString& name);
 // for a model or scene file (derived from its bounds, then the file's own keys).
 Settings presetSettings(const QString& name);
 
+// The camera the scene `name` opens with in a view of `aspect` (width / height): a preset's own;
+// a model's or scene file's moved back along its line of sight, where needed, until the models'
+// bounding sphere fits the narrower of the view's two angles, so a view taller than it is wide
+// does not crop a model its file frames for 16:9. Throws like presetSettings().
+CameraSettings presetCamera(const QString& name, double aspect);
+
 // `side`'s settings on the scene whose settings are `scene` (its presetSettings(), or another
 // side already on it): what belongs to the scene comes from there (the scene, its light and
 // camera, and the lengths in its world units: world-space bias, cascade distance, reference

@@ -32,6 +32,8 @@
 #include <QSlider>
 #include <QMimeData>
 #include <QTemporaryDir>
+#include <QToolButton>
+#include <QMenu>
 #include <QtTest>
 
 #include <memory>
@@ -313,6 +315,32 @@ private Q_SLOTS:
             QVERIFY(o.texture == TextureKind::Flat);
     }
 
+    // Every warning of a file opened in the window is reachable, whole: a button in the status
+    // bar counts them and lists them, where the status line shows only the first.
+    void everyWarningOfAnOpenedFileIsListed()
+    {
+        QTemporaryDir dir;
+        const QString folder = model("glTF2/BoxTextured-glTF/");
+        writeFile(dir, "first.gltf", readFile(folder + "BoxTextured.gltf"));
+        writeFile(dir, "second.gltf", readFile(folder + "BoxTextured.gltf").replace("CesiumLogoFlat.png", "AnotherMissing.png"));
+        writeFile(dir, "BoxTextured0.bin", readFile(folder + "BoxTextured0.bin"));
+        const QString scene = writeFile(dir, "two.json", R"({"models": [{"file": "first.gltf"}, {"file": "second.gltf", "position": [3, 0, 0]}]})");
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(window.openScene(scene), QString());
+        const QStringList warnings = window.warnings();
+        QVERIFY2(warnings.size() >= 2, qPrintable(warnings.join(" | ")));
+        QVERIFY(warnings.join(" ").contains("CesiumLogoFlat.png") && warnings.join(" ").contains("AnotherMissing.png"));
+        auto* button = window.findChild<QToolButton*>(QStringLiteral("warningsButton"));
+        QVERIFY(button && button->isVisibleTo(&window));
+        QCOMPARE(button->text(), QString::number(warnings.size()));
+        QCOMPARE(button->menu()->actions().size(), warnings.size());
+        // A clean file next: its own warnings, none, replace them.
+        QCOMPARE(window.openScene(model("OBJ/spider.obj")), QString());
+        QTRY_VERIFY(!window.warnings().join(" ").contains("AnotherMissing.png"));
+    }
+
     void largeMeshesAreSplitForCulling()
     {
         // A 300 x 300 x 2 grid of triangles: split into pieces no bigger than the chunk size.
@@ -569,6 +597,53 @@ private Q_SLOTS:
         QCOMPARE(window.settings(Side::A).scene, QStringLiteral("torus"));
         QCOMPARE(window.settings(Side::B).scene, QStringLiteral("torus"));
         QVERIFY(window.settings(Side::B).filter.mode == FilterMode::Pcf);
+    }
+
+    // A model opens whole in the scene view it is shown in, whatever that view's shape: the
+    // default window's view is taller than wide, and a camera its file frames for 16:9 cuts a
+    // model off in a narrower one. View > Reset Camera and R frame it the same way.
+    void openedModelsAreFramedWholeInTheView()
+    {
+        using Side = MainWindow::Side;
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        SceneView* view = window.sceneView(Side::A);
+        // Whether every corner of the models' bounds lies inside a view of `aspect` from `camera`.
+        const auto whole = [&](const QString& path, const CameraSettings& camera, double aspect) {
+            const Bounds models = loadSceneFile(path)->modelBounds();
+            const CameraFrame frame = computeCameraFrame(camera, aspect, models);
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::dvec3 p{corner & 1 ? models.max.x : models.min.x, corner & 2 ? models.max.y : models.min.y,
+                                   corner & 4 ? models.max.z : models.min.z};
+                const glm::dvec4 clip = frame.viewProjection * glm::dvec4(p, 1.0);
+                if (clip.w <= 0.0 || std::abs(clip.x) > clip.w || std::abs(clip.y) > clip.w)
+                    return false;
+            }
+            return true;
+        };
+        const QString spider = model("OBJ/spider.obj");
+        // The default window, then one whose view is narrower still.
+        for (const QSize size : {QSize(1200, 750), QSize(1000, 850)}) {
+            window.resize(size);
+            QTRY_VERIFY(view->width() < view->height());
+            const double aspect = double(view->width()) / view->height();
+            for (const QString& path : {spider, model("glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb")}) {
+                QCOMPARE(window.openScene(path), QString());
+                const CameraSettings opened = window.settings(Side::A).camera;
+                QVERIFY2(whole(path, opened, aspect), qPrintable(QStringLiteral("%1 is cropped in a %2:1 view").arg(path).arg(aspect)));
+                // Reset Camera brings the same framing back after a dolly.
+                Settings s = window.settings(Side::A);
+                s.camera.position = opened.target + (opened.position - opened.target) * 0.3;
+                window.setSettings(Side::A, s);
+                view->setFocus();
+                QTest::keyClick(view, Qt::Key_R);
+                QVERIFY(window.settings(Side::A).camera == opened);
+            }
+            // The file's own framing, for 16:9, crops the spider in the narrower view.
+            if (size.width() < 1200)
+                QVERIFY(!whole(spider, presetSettings(spider).camera, aspect));
+        }
     }
 
     // On an 850-unit engine the light's controls span the engine, not the seed's ±10 units, and

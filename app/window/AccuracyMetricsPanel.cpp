@@ -1,7 +1,8 @@
 #include "AccuracyMetricsPanel.h"
 
-#include "NoteLabel.h"
 #include "AccuracyController.h"
+#include "ErrorNoise.h"
+#include "NoteLabel.h"
 #include "ReportAnalysis.h"
 
 #include <QCheckBox>
@@ -123,9 +124,9 @@ QGroupBox* AccuracyMetricsPanel::createHardGroup()
                              "casters. Cyan on the scene view."),
                           Kind::Share);
     m_hardMae = addRow(hardGrid, QStringLiteral("hardMae"), tr("MAE"),
-                       tr("Mean absolute difference of visibility (0 shadowed … 1 lit); soft edges count in part."), Kind::Error);
+                       tr("Mean absolute difference of visibility (0 shadowed … 1 lit); soft edges count in part."), Kind::Share);
     m_hardRmse = addRow(hardGrid, QStringLiteral("hardRmse"), tr("RMSE"),
-                        tr("Root mean square difference of visibility; weighs whole wrong pixels more than MAE does."), Kind::Error);
+                        tr("Root mean square difference of visibility; weighs whole wrong pixels more than MAE does."), Kind::Share);
     m_flicker = addRow(hardGrid, QStringLiteral("flicker"), tr("Flicker"),
                        tr("Shimmer: the light's maps follow a camera walking in steps of a third of a texel while the same "
                           "pixels are measured; the share of them whose shadow flips from one step to the next. Stabilised "
@@ -142,13 +143,13 @@ QGroupBox* AccuracyMetricsPanel::createAreaGroup()
                         "filtered edge comes to a real penumbra."));
     QGridLayout* areaGrid = metricGrid(area, m_headers);
     m_areaMae = addRow(areaGrid, QStringLiteral("areaMae"), tr("MAE"), tr("Mean absolute difference from the area light's visibility."),
-                       Kind::Error);
+                       Kind::Share);
     m_areaRmse = addRow(areaGrid, QStringLiteral("areaRmse"), tr("RMSE"),
-                        tr("Root mean square difference from the area light's visibility."), Kind::Error);
+                        tr("Root mean square difference from the area light's visibility."), Kind::Share);
     m_noiseFloor = addRow(areaGrid, QStringLiteral("noiseFloor"), tr("Noise floor"),
                           tr("Mean standard error of the area reference itself: differences this small are sampling noise, "
                              "not error. More samples per pixel lower it."),
-                          Kind::Error);
+                          Kind::Share);
     return area;
 }
 
@@ -277,13 +278,30 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
         return out;
     };
     using M = AccuracyController::Measurement;
-    put(*m_misclassified, values([](const M& x) { return std::optional(x.hard.misclassified); }), stale, 0.0);
+    // The report's noise rule (ErrorNoise.h): a share of pixels is a count, known to
+    // n ± max(3, 2√n); two sides are the same while their bands overlap.
+    const auto countNoise = [&](auto share, auto pixels) {
+        double noise = 0.0;
+        for (int s = 0; s < 2; ++s) {
+            if (m[s] && pixels(*m[s]) > 0)
+                noise += errorNoisePixels(share(*m[s]) * pixels(*m[s])) / pixels(*m[s]);
+        }
+        return noise;
+    };
+    const auto hardPixels = [](const M& x) { return double(x.hard.pixels); };
+    const auto hard = [&](double ErrorMetrics::*share) {
+        return std::pair{values([share](const M& x) { return std::optional(x.hard.*share); }),
+                         countNoise([share](const M& x) { return x.hard.*share; }, hardPixels)};
+    };
+    for (auto [row, share] : {std::pair{m_misclassified, &ErrorMetrics::misclassified}, std::pair{m_falseShadow, &ErrorMetrics::falseShadow},
+                              std::pair{m_falseLight, &ErrorMetrics::falseLight}, std::pair{m_hardMae, &ErrorMetrics::mae}}) {
+        const auto [shown, noise] = hard(share);
+        put(*row, shown, stale, noise);
+    }
     put(*m_dssim, values([](const M& x) { return std::optional(x.dssim); }), stale, 5e-5);
-    put(*m_falseShadow, values([](const M& x) { return std::optional(x.hard.falseShadow); }), stale, 0.0);
-    put(*m_falseLight, values([](const M& x) { return std::optional(x.hard.falseLight); }), stale, 0.0);
-    put(*m_hardMae, values([](const M& x) { return std::optional(x.hard.mae); }), stale, 5e-5);
     put(*m_hardRmse, values([](const M& x) { return std::optional(x.hard.rmse); }), stale, 5e-5);
-    put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale, 0.0);
+    put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale,
+        countNoise([](const M& x) { return x.flicker.flicker; }, [](const M& x) { return double(x.flicker.frames > 1 ? x.flicker.pixels : 0); }));
     // A zero that measured nothing: the maps stood still through the walk.
     for (std::size_t s = 0; s < std::min<std::size_t>(controller.sideCount(), 2); ++s) {
         const auto& m = controller.measurement(s);
@@ -302,7 +320,8 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     const auto area = [](auto get) {
         return [get](const M& x) { return x.area.pixels > 0 ? std::optional(get(x)) : std::nullopt; };
     };
-    put(*m_areaMae, values(area([](const M& x) { return x.area.mae; })), stale, floor);
+    put(*m_areaMae, values(area([](const M& x) { return x.area.mae; })), stale,
+        std::max(floor, countNoise([](const M& x) { return x.area.mae; }, [](const M& x) { return double(x.area.pixels); })));
     put(*m_areaRmse, values(area([](const M& x) { return x.area.rmse; })), stale, floor);
     put(*m_noiseFloor, values(area([](const M& x) { return x.areaNoiseFloor; })), stale, floor);
 

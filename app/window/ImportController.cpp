@@ -49,8 +49,12 @@ QString ImportController::open(const QString& path)
     while (m_recentScenes.size() > kMaxRecentScenes)
         m_recentScenes.removeLast();
     updateRecentMenu();
-    if (!warnings.isEmpty())
-        emit message(tr("%1: %2").arg(QFileInfo(path).fileName(), warnings.join(QStringLiteral("; "))), 15000);
+    QStringList named;
+    for (const QString& warning : std::as_const(warnings))
+        named << tr("%1: %2").arg(QFileInfo(path).fileName(), warning);
+    emit warningsFound(named);
+    if (!named.isEmpty())
+        emit message(named.size() == 1 ? named.front() : tr("%1 (and %n more: the warnings button lists them)", nullptr, int(named.size() - 1)).arg(named.front()), 15000);
     return QString();
 }
 

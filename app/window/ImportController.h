@@ -70,6 +70,8 @@ signals:
     void sceneApplied(const QString& scene, bool flush);
     // The user opened a model or scene file, now shown (not a restored session's).
     void fileOpened(const QString& path);
+    // What the file just opened warns of, each warning whole (empty: none); in place of the last file's.
+    void warningsFound(const QStringList& warnings);
     // Sides of the restored session took their saved settings (or stayed, on a refusal).
     void restoredSidesChanged();
     void message(const QString& text, int timeoutMs);

@@ -112,7 +112,9 @@ void MainWindow::createControllers()
     m_timing = new TimingController(m_sides, m_views, this);
     connect(m_timing, &TimingController::frameRecorded, this, &MainWindow::showFrameTimes);
     connect(m_timing, &TimingController::message, this, &MainWindow::showStatusMessage);
-    m_import = new ImportController(this, m_sides, [this](const Settings& settings, const QString& undoText) {
+    m_import = new ImportController(this, m_sides, [this](Settings settings, const QString& undoText) {
+        // Framed for the view it is shown in, whatever its shape.
+        settings.camera = presetCamera(settings.scene, viewAspect());
         setSettings(selectedSide(), settings, undoText);
     });
     m_session = new PersistenceController(*this, m_sides, *m_import, m_persistence == Persistence::Restore);
@@ -196,6 +198,10 @@ void MainWindow::frameRendered(Side side)
         if (!warnings.empty() && warnings.front().message != m_lastFitWarning)
             showStatusMessage(tr("Warning: %1").arg(warnings.front().message), 10000);
         m_lastFitWarning = warnings.empty() ? QString() : warnings.front().message;
+        QStringList all;
+        for (const SettingsIssue& issue : warnings)
+            all << tr("%1: %2").arg(issue.key, issue.message);
+        m_status->setWarnings(QStringLiteral("fit"), all);
     }
 }
 
@@ -295,12 +301,12 @@ void MainWindow::createViewMenu()
     view->addAction(m_animateAction);
     QAction* resetCamera = view->addAction(tr("&Reset Camera"), this, [this] {
         try {
-            setCamera(presetSettings(m_sides.settings(0).scene).camera);
+            setCamera(presetCamera(m_sides.settings(0).scene, viewAspect()));
         } catch (const SettingsError& e) {
             showStatusMessage(tr("Cannot reset the camera: %1").arg(QString::fromUtf8(e.what())), 8000);
         }
     });
-    resetCamera->setToolTip(tr("Back to the scene preset's camera (R in a scene view)"));
+    resetCamera->setToolTip(tr("Back to the scene's own camera, a model framed whole in the view (R in a scene view)"));
     QAction* fitMap = view->addAction(tr("&Fit Depth Map"), m_depthView, &DepthMapView::resetZoom);
     fitMap->setObjectName(QStringLiteral("fitDepthMapAction"));
     fitMap->setToolTip(tr("The whole shadow map in its pane (Home or double-click in the pane)"));
@@ -360,6 +366,7 @@ void MainWindow::createStatusBar()
     m_status = new WindowStatusBar(m_import->createProgressBox());
     m_status->setTiming({}, m_timing->toolTip());
     setStatusBar(m_status);
+    connect(m_import, &ImportController::warningsFound, this, [this](const QStringList& warnings) { m_status->setWarnings(QStringLiteral("import"), warnings); });
 }
 
 QAction* MainWindow::action(const QString& objectName) const
@@ -415,6 +422,17 @@ void MainWindow::turnLight(double azimuthDegrees, double elevationDegrees)
     }
     applyEdit(turned);
     m_dock->updateFrom(turned, {QStringLiteral("light.position")});
+}
+
+QStringList MainWindow::warnings() const
+{
+    return m_status->warnings();
+}
+
+double MainWindow::viewAspect() const
+{
+    const SceneView* view = m_views[std::size_t(selectedSide())];
+    return view != nullptr && view->height() > 0 ? double(view->width()) / view->height() : 16.0 / 9.0;
 }
 
 void MainWindow::setCamera(const CameraSettings& camera)

@@ -91,6 +91,8 @@ public:
     QAction* action(const QString& objectName) const;
     // The status bar's message, whole (on screen it may end in "…"); empty when there is none.
     QString statusMessage() const { return m_status->message(); }
+    // Every warning the status bar's warnings button lists now.
+    QStringList warnings() const;
     // The undo history of each side: every settings change (dock edits, a sweep point or tuned
     // bias applied, reset, copy and swap, a scene or settings file opened) is a step; the camera
     // is the view's, not a setting one undoes. Edit > Undo works on the selected side's.
@@ -128,6 +130,8 @@ private:
     void showStatusMessage(const QString& text, int timeoutMs) { m_status->setMessage(text, timeoutMs); }
     void showUndoState(const SettingsChange::Sides& target, const SettingsChange::Sides& from);
     void setCamera(const CameraSettings& camera);
+    // The selected side's scene view's width over its height: what a model's camera is framed for.
+    double viewAspect() const;
     void pushSettings();
     // The sides shown as they now are: the views, and the dock on the selected one.
     void showSides();

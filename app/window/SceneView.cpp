@@ -249,7 +249,7 @@ void SceneView::keyPressEvent(QKeyEvent* event)
 {
     if (event->key() == Qt::Key_R || event->key() == Qt::Key_Home) {
         try {
-            emit cameraEdited(presetSettings(m_settings.scene).camera);
+            emit cameraEdited(presetCamera(m_settings.scene, height() > 0 ? double(width()) / height() : 1.0));
         } catch (const SettingsError& e) {
             // The scene's file changed or went away since it was loaded: keep the camera.
             emit renderFailed(e.key(), QString::fromUtf8(e.what()));

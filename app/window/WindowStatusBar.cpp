@@ -7,6 +7,10 @@
 #include "SettingsSummary.h"
 
 #include <QLabel>
+#include <QMenu>
+#include <QStyle>
+#include <QToolButton>
+#include <QWidgetAction>
 
 namespace shadowlab {
 
@@ -31,6 +35,15 @@ WindowStatusBar::WindowStatusBar(QWidget* progress, QWidget* parent) : QStatusBa
     m_messageLabel = new ElidedLabel;
     m_messageLabel->setObjectName(QStringLiteral("statusMessage"));
     addWidget(m_messageLabel, 1);
+    m_warningsButton = new QToolButton;
+    m_warningsButton->setObjectName(QStringLiteral("warningsButton"));
+    m_warningsButton->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+    m_warningsButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_warningsButton->setAutoRaise(true);
+    m_warningsButton->setPopupMode(QToolButton::InstantPopup);
+    m_warningsButton->setMenu(new QMenu(m_warningsButton));
+    m_warningsButton->setVisible(false);
+    addPermanentWidget(m_warningsButton);
     m_messageTimer.setSingleShot(true);
     connect(&m_messageTimer, &QTimer::timeout, this, [this] { m_messageLabel->setFullText({}); });
     addPermanentWidget(m_texelLabel);
@@ -50,6 +63,41 @@ void WindowStatusBar::setMessage(const QString& text, int timeoutMs)
 QString WindowStatusBar::message() const
 {
     return m_messageLabel->fullText();
+}
+
+void WindowStatusBar::setWarnings(const QString& source, const QStringList& warnings)
+{
+    if (m_warnings.value(source) == warnings)
+        return;
+    if (warnings.isEmpty())
+        m_warnings.remove(source);
+    else
+        m_warnings.insert(source, warnings);
+    const QStringList all = this->warnings();
+    m_warningsButton->setVisible(!all.isEmpty());
+    m_warningsButton->setText(QString::number(all.size()));
+    m_warningsButton->setToolTip(all.size() == 1 ? tr("1 warning: click to read it") : tr("%1 warnings: click to read them").arg(all.size()));
+    QMenu* menu = m_warningsButton->menu();
+    menu->clear();
+    for (const QString& warning : all) {
+        // Whole, on as many lines as it takes: a menu item is one line, so a wrapped label.
+        auto* label = new QLabel(warning);
+        label->setWordWrap(true);
+        label->setMinimumWidth(420);
+        label->setContentsMargins(8, 4, 8, 4);
+        label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        auto* item = new QWidgetAction(menu);
+        item->setDefaultWidget(label);
+        menu->addAction(item);
+    }
+}
+
+QStringList WindowStatusBar::warnings() const
+{
+    QStringList all;
+    for (const QStringList& list : m_warnings)
+        all += list;
+    return all;
 }
 
 void WindowStatusBar::setTexel(const QString& text)

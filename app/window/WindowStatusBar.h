@@ -1,9 +1,12 @@
 #pragma once
 
+#include <QMap>
 #include <QStatusBar>
+#include <QStringList>
 #include <QTimer>
 
 class QLabel;
+class QToolButton;
 
 namespace shadowlab {
 
@@ -29,12 +32,19 @@ public:
     void setTiming(const QString& text, const QString& toolTip);
     // The map of the frame `stats` rendered with `shown`.
     void showMap(const FrameStats& stats, const Settings& shown);
+    // The warnings that `source` ("fit", "import") stands by now, in place of its earlier ones:
+    // a button beside the messages counts them all and lists them whole, so none is lost behind
+    // another or cut off.
+    void setWarnings(const QString& source, const QStringList& warnings);
+    QStringList warnings() const;
 
 private:
     QLabel* m_texelLabel = nullptr;
     QLabel* m_timingLabel = nullptr;
     QLabel* m_mapLabel = nullptr;
     ElidedLabel* m_messageLabel = nullptr;
+    QToolButton* m_warningsButton = nullptr;
+    QMap<QString, QStringList> m_warnings;  // by source
     QTimer m_messageTimer;              // clears a message after its time
 };
 
