@@ -509,7 +509,7 @@ const Entry& entryFor(const QString& key)
     QStringList keys;
     for (const Entry& e : entries())
         keys << e.info.key;
-    throw SettingsError(key, QStringLiteral("unknown setting%1; run `shadowlab settings` for the list of keys").arg(didYouMean(key, keys)));
+    throw SettingsError::unknownKey(key, QStringLiteral("unknown setting%1").arg(didYouMean(key, keys)));
 }
 
 } // namespace settings

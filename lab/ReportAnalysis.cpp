@@ -216,6 +216,12 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
     }
     if (clean.empty())
         return {};
+    if (clean.size() == 1) {
+        Recommendation only;
+        only.kind = Recommendation::Kind::Only;
+        only.row = clean.front();
+        return {only};
+    }
     std::vector<Recommendation> picks;
     // The cheapest: of the rows as fast as the fastest within the noise, the most accurate;
     // its ties are as fast and as accurate.
@@ -259,6 +265,8 @@ QString Recommendation::title() const
         return QStringLiteral("Most accurate within %1 (%2× the cheapest)").arg(msText(budgetMs)).arg(kRecommendationBudget);
     case Kind::ClosestToArea:
         return QStringLiteral("Closest to the area light");
+    case Kind::Only:
+        return QStringLiteral("The one configuration with nothing visibly wrong");
     }
     return {};
 }
@@ -286,11 +294,18 @@ QString Recommendation::reason() const
     case Kind::ClosestToArea:
         text = QStringLiteral("%1, the smallest at any cost; %2 a frame").arg(errorText(*row, axis), msText(row->frame.median));
         break;
+    case Kind::Only:
+        text = QStringLiteral("%1 a frame, %2; nothing to choose between under this light").arg(msText(row->frame.median), errorText(*row, axis));
+        break;
     }
     if (!ties.empty()) {
+        // The fastest few in figures; the rest by count (report.json lists every tie).
+        constexpr std::size_t kNamed = 4;
         QStringList names;
-        for (const ReportRow* r : ties)
-            names << QStringLiteral("%1 (%2, %3)").arg(r->label, msText(r->frame.median), errorText(*r, axis));
+        for (std::size_t i = 0; i < std::min(ties.size(), kNamed); ++i)
+            names << QStringLiteral("%1 (%2, %3)").arg(ties[i]->label, msText(ties[i]->frame.median), errorText(*ties[i], axis));
+        if (ties.size() > kNamed)
+            names << QStringLiteral("and %1 more, each slower").arg(ties.size() - kNamed);
         text += (kind == Kind::Cheapest ? QStringLiteral(". Ties, as fast and as accurate within their noise: ")
                                         : QStringLiteral(". Ties, as accurate within their noise: "))
               + names.join(QStringLiteral("; "));

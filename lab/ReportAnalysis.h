@@ -96,6 +96,7 @@ struct Recommendation {
         Cheapest,       // the fastest row with nothing visibly wrong
         MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's time
         ClosestToArea,  // the smallest MAE against the area light, at any cost
+        Only,           // the one row under its light whose picture is not visibly wrong
     };
     Kind kind = Kind::Cheapest;
     const ReportRow* row = nullptr;

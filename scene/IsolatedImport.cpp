@@ -1,6 +1,7 @@
 #include "IsolatedImport.h"
 
 #include "ImportPayload.h"
+#include "ModelImporter.h"
 
 #include <QCoreApplication>
 #include <QCryptographicHash>
@@ -8,6 +9,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QLocale>
 #include <QProcess>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include <fcntl.h>
 
@@ -174,7 +177,8 @@ SceneFileError deathRefusal(const QString& path, int signal, const ImportLimits&
                                                    "nothing was changed").arg(limits.outputMiB));
     if (signal == SIGXCPU)
         return SceneFileError(path, QStringLiteral("the importer used more than %1 s of processor time on it and was stopped; the file is "
-                                                   "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2));
+                                                   "damaged or very large; nothing was changed").arg(std::ceil(limits.timeSeconds) + 2),
+                              SceneFileError::Limit::Time);
     return SceneFileError(path, QStringLiteral("the importer crashed reading it (signal %1, %2): the file is damaged or not what its name "
                                                "says; nothing was changed").arg(signal).arg(signalName(signal)));
 }
@@ -245,8 +249,9 @@ void waitForWorker(QProcess& process, const QString& path, const ImportControl& 
         if (clock.elapsed() > timeLimitMs) {
             stop();
             throw SceneFileError(path, QStringLiteral("took longer than %1 s to read, the import time limit, and was stopped; the file is "
-                                                      "damaged or very large — raise --import-time-limit if it is only large; nothing was changed")
-                                           .arg(control.limits.timeSeconds));
+                                                      "damaged or very large — raise the time limit if it is only large; nothing was changed")
+                                           .arg(control.limits.timeSeconds),
+                                 SceneFileError::Limit::Time);
         }
         if (process.state() == QProcess::NotRunning)
             break;
@@ -276,8 +281,9 @@ Scene sceneFromAnswer(const QString& path, const QProcess& process, AnswerFile& 
     }
     if (reply.kind == ImportReplyKind::OutOfMemory)
         throw SceneFileError(path, QStringLiteral("needs more memory to read than the import memory limit of %1 MiB (%2); the file is "
-                                                  "damaged or very large — raise --import-memory-limit if it is only large; nothing was changed")
-                                       .arg(limits.memoryMiB).arg(reply.message));
+                                                  "damaged or very large — raise the memory limit if it is only large; nothing was changed")
+                                       .arg(limits.memoryMiB).arg(reply.message),
+                             SceneFileError::Limit::Memory);
     if (reply.kind == ImportReplyKind::Refusal)
         throw SceneFileError(path, reply.message);
     return std::move(reply.scene);
@@ -303,9 +309,58 @@ QString importWorkerProgram()
     return QString();
 }
 
+std::optional<std::size_t> statedFaceCount(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return std::nullopt;    // the worker says why it cannot be read
+    const QByteArray head = file.read(64 * 1024);
+    const QByteArray lower = QFileInfo(path).suffix().toLower().toLatin1();
+    // PLY: "element face N" in the text header, for ASCII and binary bodies alike.
+    if (head.startsWith("ply")) {
+        const qsizetype end = head.indexOf("end_header");
+        for (const QByteArray& line : head.left(end < 0 ? head.size() : end).split('\n')) {
+            const QList<QByteArray> words = line.simplified().split(' ');
+            if (words.size() == 3 && words[0] == "element" && words[1] == "face") {
+                bool ok = false;
+                const qulonglong n = words[2].toULongLong(&ok);
+                return ok ? std::optional(std::size_t(n)) : std::nullopt;
+            }
+        }
+        return std::nullopt;
+    }
+    // OFF: "OFF", then "vertices faces edges" on the first line of numbers.
+    if (head.startsWith("OFF")) {
+        for (const QByteArray& line : head.split('\n').mid(1)) {
+            const QList<QByteArray> words = line.simplified().split(' ');
+            if (line.simplified().isEmpty() || line.startsWith('#'))
+                continue;
+            bool ok = false;
+            const qulonglong n = words.value(1).toULongLong(&ok);
+            return ok ? std::optional(std::size_t(n)) : std::nullopt;
+        }
+        return std::nullopt;
+    }
+    // Binary STL: an 80-byte header, a 32-bit count, 50 bytes a triangle; only where the size
+    // agrees, as an ASCII STL may begin with any 84 bytes.
+    if (lower == "stl" && head.size() >= 84) {
+        quint32 n = 0;
+        std::memcpy(&n, head.constData() + 80, sizeof n);
+        if (quint64(file.size()) == 84 + quint64(n) * 50)
+            return std::size_t(n);
+    }
+    return std::nullopt;
+}
+
 Scene importModelIsolated(const QString& path, const ImportControl& control)
 {
     control.limits.validate();
+    // A count the file's header states is checked before it is read: a file of 10^8 faces is
+    // refused at once, not after the worker has spent its time limit on it.
+    if (const std::optional<std::size_t> faces = statedFaceCount(path); faces && *faces > kMaxModelTriangles)
+        throw SceneFileError(path, QStringLiteral("has %1 faces by its header, more than the %2 triangles ShadowLab loads; decimate it first "
+                                                  "(nothing was read, nothing was changed)")
+                                       .arg(QLocale(QLocale::English).toString(qulonglong(*faces)), QLocale(QLocale::English).toString(qulonglong(kMaxModelTriangles))));
     const QString program = control.workerProgram.isEmpty() ? importWorkerProgram() : control.workerProgram;
     if (program.isEmpty())
         throw SceneFileError(path, QStringLiteral("cannot be read: the import worker '%1' is missing next to the program; reinstall ShadowLab")

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 
 namespace shadowlab {
 
@@ -34,6 +35,11 @@ public:
 // over a limit, an answer that does not hold together, or no answer; ImportCancelled when
 // cancelled.
 Scene importModelIsolated(const QString& path, const ImportControl& control = {});
+
+// The faces a file's header states, where its format states them (PLY's "element face", OFF's
+// counts line, a binary STL's count where the file's size agrees); nullopt otherwise. Read
+// before the worker starts, so a file far over kMaxModelTriangles is refused at once.
+std::optional<std::size_t> statedFaceCount(const QString& path);
 
 // The worker's path: $SHADOWLAB_IMPORT_WORKER, else next to the running program or in
 // ../libexec/shadowlab from it (installed), else, for a program in the build tree, where this

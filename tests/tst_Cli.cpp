@@ -271,6 +271,22 @@ private Q_SLOTS:
         const Run r = shadowlab({"render", "--out", m_dir.filePath("never.png"), "--set", "colour=red"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("unknown setting") && !r.err.contains("did you mean"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("`shadowlab settings`"), qPrintable(r.err));     // where the keys are, in the command line's words
+    }
+
+    // A file stopped by an import limit may only be large: the message names the option that
+    // raises it, with the value it had.
+    void importLimitsNameTheirOption()
+    {
+        qputenv("SHADOWLAB_IMPORT_WORKER", SHADOWLAB_FAKE_WORKER);
+        QTemporaryDir dir;
+        QFile slow(dir.filePath("slow.ply"));
+        QVERIFY(slow.open(QIODevice::WriteOnly) && slow.write("sleep\n") > 0);
+        slow.close();
+        const Run r = shadowlab({"render", "--scene", slow.fileName(), "--import-time-limit", "1", "--out", m_dir.filePath("never.png")});
+        qunsetenv("SHADOWLAB_IMPORT_WORKER");
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("took longer than 1 s") && r.err.contains("(--import-time-limit SECONDS, now 1)"), qPrintable(r.err));
     }
 
     void renderLoadsAModel()

@@ -70,6 +70,8 @@ private slots:
     void untrustedAnswer_data();
     void untrustedAnswer();
     void limitsValidate();
+    void refusalsSayWhichLimitStoppedThem();
+    void headerCountsAreCheckedBeforeReading();
 };
 
 void tst_ImportWorker::workerMisbehaves_data()
@@ -329,4 +331,47 @@ void tst_ImportWorker::limitsValidate()
 }
 
 QTEST_GUILESS_MAIN(tst_ImportWorker)
+
+// A file stopped by a limit says which, so that the command line can name its option and the
+// window offer a button that raises it; other refusals name none.
+void tst_ImportWorker::refusalsSayWhichLimitStoppedThem()
+{
+    QTemporaryDir dir;
+    const auto limitOf = [&](const QByteArray& mode) {
+        try {
+            importModelIsolated(writeFile(dir, QString::fromLatin1(mode) + QStringLiteral(".ply"), mode + "\n"), fakeControl(1.5));
+        } catch (const SceneFileError& e) {
+            return e.limit();
+        }
+        return SceneFileError::Limit::None;
+    };
+    QCOMPARE(limitOf("sleep"), SceneFileError::Limit::Time);
+    QCOMPARE(limitOf("out-of-memory"), SceneFileError::Limit::Memory);
+    QCOMPARE(limitOf("crash"), SceneFileError::Limit::None);
+    QVERIFY(!refusal(writeFile(dir, "slow.ply", "sleep\n"), fakeControl(1.5)).contains("--import"));   // the front end's words, not the loader's
+}
+
+// A count the file's header states is checked before the worker reads a byte: a PLY or OFF of
+// 2·10^7 faces is refused at once (the worker here would sleep through its time limit).
+void tst_ImportWorker::headerCountsAreCheckedBeforeReading()
+{
+    QTemporaryDir dir;
+    const QString ply = writeFile(dir, "huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 10000000\nproperty float x\n"
+                                                   "property float y\nproperty float z\nelement face 20000000\n"
+                                                   "property list uchar int vertex_indices\nend_header\n");
+    const QString off = writeFile(dir, "huge.off", "OFF\n# a comment\n10000000 20000000 0\n");
+    const QString small = writeFile(dir, "small.ply", "ply\nformat ascii 1.0\nelement vertex 3\nelement face 1\nend_header\n");
+    QCOMPARE(statedFaceCount(ply), std::optional<std::size_t>(20000000));
+    QCOMPARE(statedFaceCount(off), std::optional<std::size_t>(20000000));
+    QCOMPARE(statedFaceCount(small), std::optional<std::size_t>(1));
+    QCOMPARE(statedFaceCount(writeFile(dir, "any.obj", "v 0 0 0\n")), std::optional<std::size_t>());
+    for (const QString& path : {ply, off}) {
+        QElapsedTimer clock;
+        clock.start();
+        const QString message = refusal(path, fakeControl(30.0));
+        QVERIFY2(message.contains("20,000,000 faces by its header") && message.contains("decimate"), qPrintable(message));
+        QVERIFY2(clock.elapsed() < 10000, qPrintable(QString::number(clock.elapsed())));   // not the 30 s the worker would take
+    }
+}
+
 #include "tst_ImportWorker.moc"

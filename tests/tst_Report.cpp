@@ -155,6 +155,12 @@ private slots:
         for (ReportRow& r : rows)
             r.accuracy.areaSsim = r.accuracy.ssim = 0.9;
         QVERIFY(recommend(rows, rows[0].light).empty());
+        // One row left clean: it is the one pick, said as such.
+        rows[3].accuracy.ssim = 0.999;
+        const std::vector<Recommendation> only = recommend(rows, rows[0].light);
+        QCOMPARE(only.size(), std::size_t(1));
+        QCOMPARE(only.front().kind, Recommendation::Kind::Only);
+        QCOMPARE(only.front().row->label, QStringLiteral("pcf"));
     }
 
     void frontHoldsUnderTimingNoise()

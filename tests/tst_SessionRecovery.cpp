@@ -123,14 +123,16 @@ private slots:
     {
         QTest::addColumn<QByteArray>("mode");
         QTest::addColumn<QString>("says");
-        QTest::newRow("crash") << QByteArray("crash") << QStringLiteral("crashed reading it (signal 11");
-        QTest::newRow("hang") << QByteArray("sleep") << QStringLiteral("took longer than 1.5 s");
-        QTest::newRow("garbage") << QByteArray("garbage") << QStringLiteral("does not hold together");
+        QTest::addColumn<QString>("retry");     // the box's offer to raise the limit that stopped it, if any
+        QTest::newRow("crash") << QByteArray("crash") << QStringLiteral("crashed reading it (signal 11") << QString();
+        QTest::newRow("hang") << QByteArray("sleep") << QStringLiteral("took longer than 1.5 s") << QStringLiteral("Try Again with 60 s");
+        QTest::newRow("garbage") << QByteArray("garbage") << QStringLiteral("does not hold together") << QString();
     }
     void importerFailuresKeepTheScene()
     {
         QFETCH(QByteArray, mode);
         QFETCH(QString, says);
+        QFETCH(QString, retry);
         qputenv("SHADOWLAB_IMPORT_WORKER", SHADOWLAB_FAKE_WORKER);
         setImportLimits({.timeSeconds = 1.5});
         QTemporaryDir dir;
@@ -150,6 +152,19 @@ private slots:
         QVERIFY(window.sceneView(MainWindow::Side::A)->renderedSettings());
         QCOMPARE(window.sceneView(MainWindow::Side::A)->renderedSettings()->scene, before.scene);
         QVERIFY(window.recentScenes().isEmpty());
+        // The window's words, not the command line's: a limit is raised from the box itself.
+        QVERIFY2(!text.contains(QStringLiteral("--import")), qPrintable(text));
+        auto* again = box(window, QStringLiteral("openErrorBox"))->findChild<QPushButton*>(QStringLiteral("retryButton"));
+        QCOMPARE(again != nullptr, !retry.isEmpty());
+        if (again) {
+            QCOMPARE(again->text(), retry);
+            QTest::mouseClick(again, Qt::LeftButton);
+            QCOMPARE(importLimits().timeSeconds, 60.0);
+            QVERIFY(window.sceneOpener()->isBusy());    // trying again, with the time it now has
+            window.sceneOpener()->cancel();
+            QTRY_VERIFY_WITH_TIMEOUT(!window.sceneOpener()->isBusy(), 5000);
+            setImportLimits({.timeSeconds = 1.5});
+        }
     }
 
     void sessionIsOnDiskWithinASecond()

@@ -3,7 +3,9 @@
 #include "Application.h"
 #include "IoError.h"
 #include "OutputFile.h"
+#include "ImportLimits.h"
 #include "RenderError.h"
+#include "SceneFileError.h"
 #include "SettingsError.h"
 #include "TraceError.h"
 
@@ -138,8 +140,17 @@ int guarded(const QString& command, const std::function<int()>& body)
 {
     try {
         return body();
+    } catch (const SceneFileError& e) {
+        // A file only too large for an import limit opens with a higher one: this command's option.
+        err() << "shadowlab " << command << ": " << e.what();
+        if (e.limit() == SceneFileError::Limit::Time)
+            err() << " (--import-time-limit SECONDS, now " << importLimits().timeSeconds << ")";
+        else if (e.limit() == SceneFileError::Limit::Memory)
+            err() << " (--import-memory-limit MIB, now " << importLimits().memoryMiB << ")";
+        err() << Qt::endl;
+        return kExitBadInput;
     } catch (const SettingsError& e) {
-        err() << "shadowlab " << command << ": " << e.what() << Qt::endl;
+        err() << "shadowlab " << command << ": " << e.what() << (e.isUnknownKey() ? "; run `shadowlab settings` for the list of keys" : "") << Qt::endl;
         return kExitBadInput;
     } catch (const UsageError& e) {
         err() << "shadowlab " << command << ": " << e.what() << Qt::endl;

@@ -97,7 +97,7 @@ int runExplorer(const QStringList& arguments)
             preset = parser.value(QStringLiteral("preset"));
         }
     } catch (const SettingsError& e) {
-        err() << "shadowlab: " << e.what() << Qt::endl;
+        err() << "shadowlab: " << e.what() << (e.isUnknownKey() ? "; run `shadowlab settings` for the list of keys" : "") << Qt::endl;
         return kExitBadInput;
     } catch (const UsageError& e) {
         err() << "shadowlab: " << e.what() << Qt::endl;

@@ -544,7 +544,7 @@ body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:1100px;color:
 h1{font-size:1.6em}h2{margin-top:2em;font-size:1.2em}
 .facts{color:#555}.chart{width:100%;max-width:760px;background:#fff;border:1px solid #ddd}
 .grid{stroke:#eee}.tick{font-size:11px;fill:#777}.axis{font-size:12px;fill:#444}
-.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.front.ties{stroke-width:1;stroke-dasharray:4 3;opacity:.7}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
+.pt{opacity:.55}.onfront{opacity:1;stroke:#222;stroke-width:1}.front{fill:none;stroke-width:2}.front.ties{stroke-width:1;stroke-dasharray:4 3;opacity:.5}.spread{stroke-width:1.5;opacity:.45}.spread.noise{stroke-width:3;opacity:.25}.grid.minor{stroke:#f4f4f4}
 .label{font-size:11px;fill:#333}.leader{stroke:#999;stroke-width:.7}
 table{border-collapse:collapse;background:#fff;font-size:12.5px}td,th{border:1px solid #ddd;padding:3px 7px;text-align:right}
 td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}.wrong{color:#b00}

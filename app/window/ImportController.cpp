@@ -1,6 +1,7 @@
 #include "ImportController.h"
 
 #include "CompareController.h"
+#include "ImportLimits.h"
 #include "ModelImporter.h"
 #include "SceneLibrary.h"
 #include "SceneLoader.h"
@@ -8,11 +9,15 @@
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
@@ -20,6 +25,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 
 namespace shadowlab {
 
@@ -168,13 +174,71 @@ void ImportController::startRestore()
         m_opener->open(m_restoreQueue.first());
 }
 
-void ImportController::showOpenError(const QString& error)
+void ImportController::showOpenError(const QString& path, const QString& error, SceneFileError::Limit limit)
 {
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), tr("%1\n\nThe current scene stays.").arg(error),
                                 QMessageBox::Ok, m_window);
     box->setObjectName(QStringLiteral("openErrorBox"));
     box->setAttribute(Qt::WA_DeleteOnClose);
+    // A file that is only large opens with a higher limit: offered here, in the box that refused it.
+    ImportLimits raised = importLimits();
+    QString offer;
+    if (limit == SceneFileError::Limit::Time && raised.timeSeconds < 3600.0) {
+        raised.timeSeconds = std::min(3600.0, std::max(60.0, raised.timeSeconds * 4.0));
+        offer = tr("Try Again with %1 s").arg(raised.timeSeconds);
+    } else if (limit == SceneFileError::Limit::Memory && raised.memoryMiB < 65536) {
+        raised.memoryMiB = std::min(65536, raised.memoryMiB * 2);
+        offer = tr("Try Again with %1 MiB").arg(raised.memoryMiB);
+    }
+    if (!offer.isEmpty()) {
+        QPushButton* retry = box->addButton(offer, QMessageBox::AcceptRole);
+        retry->setObjectName(QStringLiteral("retryButton"));
+        box->setInformativeText(tr("File > Import Limits… sets both limits for the rest of this run."));
+        connect(retry, &QPushButton::clicked, this, [this, path, raised] {
+            setImportLimits(raised);
+            openInBackground(path);
+        });
+    }
     box->open();
+}
+
+void ImportController::editLimits()
+{
+    QDialog dialog(m_window);
+    dialog.setObjectName(QStringLiteral("importLimitsDialog"));
+    dialog.setWindowTitle(tr("Import Limits"));
+    auto* form = new QFormLayout(&dialog);
+    const ImportLimits current = importLimits();
+    auto* seconds = new QDoubleSpinBox;
+    seconds->setObjectName(QStringLiteral("importTimeLimit"));
+    seconds->setRange(1.0, 3600.0);
+    seconds->setDecimals(0);
+    seconds->setSuffix(tr(" s"));
+    seconds->setValue(current.timeSeconds);
+    seconds->setToolTip(tr("How long the importer may read one model file before it is stopped (a damaged file can take forever)"));
+    auto* memory = new QSpinBox;
+    memory->setObjectName(QStringLiteral("importMemoryLimit"));
+    memory->setRange(256, 65536);
+    memory->setSingleStep(1024);
+    memory->setSuffix(tr(" MiB"));
+    memory->setValue(current.memoryMiB);
+    memory->setToolTip(tr("How much memory the importer may use for one model file before it is stopped"));
+    form->addRow(tr("Time per file:"), seconds);
+    form->addRow(tr("Memory per file:"), memory);
+    auto* note = new QLabel(tr("For the rest of this run. A file that is only large opens with more; a damaged one is stopped sooner with less."));
+    note->setWordWrap(true);
+    form->addRow(note);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    ImportLimits limits = current;
+    limits.timeSeconds = seconds->value();
+    limits.memoryMiB = memory->value();
+    setImportLimits(limits);    // the fields' ranges are the limits' own: nothing to refuse
+    emit message(tr("Import limits: %1 s and %2 MiB per file").arg(limits.timeSeconds).arg(limits.memoryMiB), 8000);
 }
 
 void ImportController::finished(const QString& path, const QString& error, bool cancelled)
@@ -191,7 +255,7 @@ void ImportController::finished(const QString& path, const QString& error, bool 
     }
     const QString failure = error.isEmpty() ? open(path) : error;
     if (!failure.isEmpty()) {
-        showOpenError(failure);
+        showOpenError(path, failure, error.isEmpty() ? SceneFileError::Limit::None : m_opener->lastLimit());
         return;
     }
     // Suspect until its first frame is drawn: a crash before that does not reopen it.

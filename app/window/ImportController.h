@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SceneFileError.h"
 #include "Settings.h"
 
 #include <QObject>
@@ -44,6 +45,9 @@ public:
     void openInBackground(const QString& path);
     void openInteractively();
     void cancel();
+    // File > Import Limits…: how long and how much memory the importer may take on one file,
+    // for the rest of this run (the command line's --import-time-limit and --import-memory-limit).
+    void editLimits();
     // One local file dragged over the window or dropped on it (a model or a scene file).
     void dragEnter(QDragEnterEvent* event);
     void drop(QDropEvent* event);
@@ -79,7 +83,8 @@ signals:
 private:
     void finished(const QString& path, const QString& error, bool cancelled);
     void finishRestore(const QString& path, const QString& error, bool cancelled);
-    void showOpenError(const QString& error);
+    // `limit`: the import limit that stopped `path`, which the box offers to raise and try again.
+    void showOpenError(const QString& path, const QString& error, SceneFileError::Limit limit = SceneFileError::Limit::None);
     void updateRecentMenu();
 
     QWidget* m_window;

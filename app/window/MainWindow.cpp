@@ -272,6 +272,9 @@ void MainWindow::createFileMenu()
     QMenu* recent = file->addMenu(tr("Open &Recent"));
     recent->setObjectName(QStringLiteral("recentScenesMenu"));
     m_import->setRecentMenu(recent);
+    QAction* limits = file->addAction(tr("Import &Limits…"), m_import, &ImportController::editLimits);
+    limits->setObjectName(QStringLiteral("importLimitsAction"));
+    limits->setToolTip(tr("How long and how much memory reading one model file may take"));
     file->addSeparator();
     file->addAction(m_screenshotAction);
     file->addSeparator();

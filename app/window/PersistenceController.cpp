@@ -236,7 +236,9 @@ QString PersistenceController::importSettings(const QString& path)
         const Settings settings = loadSettingsFile(path, m_sides.selectedSettings());
         m_window.setSettings(m_window.selectedSide(), settings, tr("Import %1").arg(QFileInfo(path).fileName()));
     } catch (const SettingsError& e) {
-        return QString::fromStdString(e.what());
+        // Where the keys are, in the window's words.
+        return QString::fromStdString(e.what())
+               + (e.isUnknownKey() ? tr("\n\nEvery field of the Properties dock names its key at the top of its tooltip.") : QString());
     }
     emit message(tr("Imported %1").arg(QDir::toNativeSeparators(path)), 8000);
     return QString();

@@ -44,6 +44,9 @@ void SceneOpener::open(const QString& path)
                 loadSceneFile(probe.scene, control);
         } catch (const ImportCancelled&) {
             job->cancelled = true;
+        } catch (const SceneFileError& e) {
+            job->error = QString::fromUtf8(e.what());
+            job->limit = e.limit();
         } catch (const SettingsError& e) {
             job->error = QString::fromUtf8(e.what());
         } catch (const std::exception& e) {
@@ -58,6 +61,7 @@ void SceneOpener::open(const QString& path)
         m_thread = nullptr;
         m_job.reset();
         m_progressTimer.stop();
+        m_lastLimit = job->limit;
         emit finished(m_path, job->error, job->cancelled);
     });
     m_thread->start();

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "SceneFileError.h"
+
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -28,6 +30,8 @@ public:
     void cancel();
     bool isBusy() const { return m_thread != nullptr; }
     const QString& path() const { return m_path; }
+    // The import limit that stopped the file of the last finished(), if one did.
+    SceneFileError::Limit lastLimit() const { return m_lastLimit; }
 
 signals:
     void started(const QString& path);
@@ -40,6 +44,7 @@ private:
         std::atomic<bool> cancel = false;
         std::atomic<double> progress = 0.0;
         QString error;          // written by the thread before it ends, read after
+        SceneFileError::Limit limit = SceneFileError::Limit::None;
         bool cancelled = false;
     };
     void stopThread();   // cancels and waits; says nothing
@@ -48,6 +53,7 @@ private:
     std::shared_ptr<Job> m_job;
     QString m_path;
     QTimer m_progressTimer;
+    SceneFileError::Limit m_lastLimit = SceneFileError::Limit::None;
 };
 
 } // namespace shadowlab
