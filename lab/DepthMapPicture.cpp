@@ -67,6 +67,8 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     facts.views = std::max<int>(1, int(renderer.shadowViews().set.views.size()));
     // Several views sit in tiles side by side: the picture is of the whole texture.
     const ShadowMap& map = renderer.shadowMap();
+    facts.columns = map.columns();
+    facts.rows = map.rows();
     facts.aspect = facts.views > 1 && map.height() > 0 ? double(map.width()) / map.height() : DepthMapPicture::aspect(facts.light);
     // One map: where the camera looks, over it. (Several views side by side each have their own
     // projection; one outline over all of them would be wrong.)
@@ -195,17 +197,6 @@ int DepthMapPicture::depthDecimals(double a, double b)
     return apart > 0.0 && std::isfinite(apart) ? std::clamp(int(std::ceil(-std::log10(apart))) + 1, 4, 9) : 4;
 }
 
-namespace {
-
-// What the steps of DepthMapPicture::paint() draw with: the painter, the label font's metrics
-// and the map's area.
-struct Canvas {
-    QPainter& painter;
-    const QFontMetrics& metrics;
-    QRect area;
-};
-
-// What the light volume's label says, longest first: its kind and size, and the map's texels.
 QStringList volumeTexts(const DepthMapFacts& facts)
 {
     const LightVolume& v = facts.light.volume;
@@ -216,10 +207,21 @@ QStringList volumeTexts(const DepthMapFacts& facts)
                                              .arg(v.warped ? QStringLiteral(", lispsm-warped") : QString());
     const QString kind = facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual");
     const QString volumeText = facts.views > 1
-        ? QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize)
+        ? (facts.rows > 1 ? QStringLiteral("%1 views in %2 rows of %3, %4 × %4 texels each").arg(facts.views).arg(facts.rows).arg(facts.columns).arg(facts.mapSize)
+                          : QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize))
         : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(kind, size).arg(facts.mapSize);
     return {volumeText, QStringLiteral("%1 light volume %2").arg(kind, size), size};
 }
+
+namespace {
+
+// What the steps of DepthMapPicture::paint() draw with: the painter, the label font's metrics
+// and the map's area.
+struct Canvas {
+    QPainter& painter;
+    const QFontMetrics& metrics;
+    QRect area;
+};
 
 // The light volume: the map's border, dashed, and its label in the top corner.
 void drawVolume(const Canvas& c, const QRectF& border, const DepthMapFacts& facts)

@@ -29,7 +29,9 @@ struct DepthMapFacts {
     std::vector<glm::dvec2> footprint;      // the camera's visible region, map coordinates
     int mapSize = 0;
     int moment = 0;                         // 1-4: the pane shows that moment of a moments map, in grey
-    int views = 1;                          // cascades or cube faces side by side in the map
+    int views = 1;                          // cascades or cube faces in tiles of the map
+    int columns = 1;                        // ... laid out in this many columns
+    int rows = 1;                           // ... and rows
     double aspect = 1.0;                    // width over height of the picture of the whole map
     // shadow.virtual: the map is the pool of pages, drawn with their levels and counts instead
     // of a light volume and the camera's region.
@@ -39,6 +41,10 @@ struct DepthMapFacts {
 // The facts of `renderer`'s last frame, with `span` measured by whoever draws, and the map
 // point under the pointer where there is one (a virtual pool's slot is picked by it).
 DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span, const std::optional<QPointF>& pointer = std::nullopt);
+
+// What the light volume's label in the picture says, longest first (the longest that fits is
+// drawn): its kind and size, and the map's texels; for several views, how they are laid out.
+QStringList volumeTexts(const DepthMapFacts& facts);
 
 // Distance from the light along its axis of a conventional [0, 1] depth: linear for an ortho
 // light, the perspective depth curve inverted for a perspective one. A warped map's

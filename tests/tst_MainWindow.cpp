@@ -148,6 +148,7 @@ private slots:
     void screenshotNameSaysWhatIsOnScreen();
     void captionsSayWhatTheMapIs_data();
     void captionsSayWhatTheMapIs();
+    void compareCaptionsLeadWithWhatDiffers();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
@@ -679,6 +680,36 @@ void tst_MainWindow::captionsSayWhatTheMapIs_data()
                              << QStringLiteral("2048² ortho");
 }
 
+// Side A with a hand-set volume and side B with a fitted one read alike in the summary
+// ("hw-bilinear · slope 0.01 · …"): in compare mode each caption leads with where it differs.
+void tst_MainWindow::compareCaptionsLeadWithWhatDiffers()
+{
+    const Settings a = m_window->settings(Side::A);
+    Settings b = a;
+    applySetting(b, "light.fit", "manual");
+    QVERIFY(comparedSummary(b, a).startsWith("light.fit manual — "));
+    QVERIFY(comparedSummary(a, b).startsWith("light.fit scene — "));
+    QVERIFY(comparedSummary(a, a).startsWith("the same settings"));
+    applySetting(b, "map.size", "512");
+    applySetting(b, "filter.mode", "pcf");
+    applySetting(b, "bias.normal", "1");
+    applySetting(b, "shadow.enabled", "true");
+    QVERIFY2(comparedSummary(b, a).contains(" · 1 more — "), qPrintable(comparedSummary(b, a)));
+
+    m_window->setCompareMode(true);
+    m_window->setSettings(Side::B, b);
+    const auto captionOf = [&](const QString& start) {
+        for (QLabel* label : m_window->findChildren<QLabel*>()) {
+            if (label->toolTip().startsWith(start))
+                return true;
+        }
+        return false;
+    };
+    QVERIFY(captionOf("light.fit manual · map.size 512"));
+    QVERIFY(captionOf("light.fit scene · map.size 2048"));
+    m_window->setCompareMode(false);
+}
+
 // A new user read "ortho light" over a virtual map's pool: each caption names the map it shows,
 // and the window's depth pane carries the same words.
 void tst_MainWindow::captionsSayWhatTheMapIs()
@@ -698,6 +729,13 @@ void tst_MainWindow::captionsSayWhatTheMapIs()
     for (const QLabel* label : m_window->findChildren<QLabel*>())
         shown = shown || label->toolTip() == depthPane;
     QVERIFY2(shown, qPrintable(depthPane));
+    // The picture's own label says how several views lie: a point light's six faces in 2 rows
+    // of 3, four cascades in 2 of 2 (not "side by side").
+    const DepthMapFacts facts = depthMapFacts(*m_window->sceneView(Side::A)->renderer(), std::nullopt);
+    if (settings.light.type == LightType::Point)
+        QVERIFY2(volumeTexts(facts).front().startsWith("6 views in 2 rows of 3"), qPrintable(volumeTexts(facts).front()));
+    else if (settings.shadow.cascades == 4)
+        QVERIFY2(volumeTexts(facts).front().startsWith("4 views in 2 rows of 2"), qPrintable(volumeTexts(facts).front()));
 }
 
 void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()

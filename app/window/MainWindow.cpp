@@ -469,7 +469,7 @@ void MainWindow::updateCaptions()
     for (std::size_t i = 0; i < 2; ++i) {
         m_scenePanes[i]->setHighlighted(compareMode() && m_sides.selected() == i);
         m_scenePanes[i]->setCaption(compareMode() ? tr("Side %1").arg(QLatin1String(kSideNames[i])) : tr("Scene"),
-                                    settingsSummary(m_sides.settings(i)));
+                                    compareMode() ? comparedSummary(m_sides.settings(i), m_sides.settings(1 - i)) : settingsSummary(m_sides.settings(i)));
     }
     const Settings& shown = m_sides.selectedSettings();
     m_depthPane->setCaption(compareMode() ? tr("Shadow map of %1").arg(QLatin1String(kSideNames[m_sides.selected()])) : tr("Shadow map"),

@@ -46,6 +46,27 @@ QString settingsSummary(const Settings& settings)
     return text;
 }
 
+QString comparedSummary(const Settings& side, const Settings& other)
+{
+    constexpr int kShown = 3;
+    QStringList differences;
+    int more = 0;
+    for (const SettingKey& key : settingKeys()) {
+        const QString mine = settingValue(side, key.key);
+        if (key.key == u"scene" || mine == settingValue(other, key.key))
+            continue;
+        if (differences.size() < kShown)
+            differences << QStringLiteral("%1 %2").arg(key.key, mine);
+        else
+            ++more;
+    }
+    if (differences.isEmpty())
+        return QStringLiteral("the same settings · %1").arg(settingsSummary(side));
+    if (more > 0)
+        differences << QStringLiteral("%1 more").arg(more);
+    return QStringLiteral("%1 — %2").arg(differences.join(QStringLiteral(" · ")), settingsSummary(side));
+}
+
 QString screenshotFileName(const Settings& settings, const QDateTime& when)
 {
     // The label without spaces or signs a file name would not want: "pcf 5×5" -> "pcf5".

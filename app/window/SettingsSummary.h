@@ -10,6 +10,11 @@ namespace shadowlab {
 // One line that tells two techniques apart at a glance: "pcf 3×3 · slope 0.02 · min 0.001 · 2048² ortho".
 QString settingsSummary(const Settings& settings);
 
+// Compare mode's caption of a side: the settings where `side` differs from `other` first, in
+// the keys' own words ("light.fit manual · light.extent 3"; the first few, then how many more),
+// then settingsSummary(). Two sides that read alike in the summary still read apart.
+QString comparedSummary(const Settings& side, const Settings& other);
+
 // How the light's map is laid out: "2048² ortho", "4 cascades of 2048²", "six 1024² cube faces",
 // "virtual map of 900 pages of 128²".
 QString mapLayoutSummary(const Settings& settings);
