@@ -50,6 +50,7 @@ AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const Refere
     result.areaNoiseFloor = reference.areaNoiseFloor;
     result.frame = buffer.image;
     result.hardErrors = errorImage(buffer.image, measured, reference.hard, counts);
+    result.hardHeat = errorHeatImage(buffer.image, measured, reference.hard, counts);
     return result;
 }
 

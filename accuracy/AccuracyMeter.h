@@ -27,6 +27,7 @@ struct AccuracyResult {
     std::optional<double> areaSsim;
     QImage frame;                   // the shaded frame that was measured
     QImage hardErrors;              // false shadow / false light over the greyed frame
+    QImage hardHeat;                // |V - V_ref| over the greyed frame (errorHeatImage())
     double areaNoiseFloor = 0.0;
     double raysPerSecond = 0.0;     // of the reference computation, when it ran for this call
     bool referenceReused = false;

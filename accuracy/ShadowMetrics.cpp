@@ -1,5 +1,6 @@
 #include "ShadowMetrics.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -46,6 +47,40 @@ QImage errorImage(const QImage& frame, const std::vector<float>& measured, const
                     out = qRgb(235, 40, 200);   // false shadow
                 else if (d > 0.5)
                     out = qRgb(40, 220, 235);   // false light
+            }
+            row[x] = out;
+        }
+    }
+    return image;
+}
+
+QColor errorHeatColour(double e)
+{
+    // Stops of a perceptually ordered ramp (after matplotlib's inferno), by sqrt(e).
+    static const QColor stops[] = {QColor(40, 11, 84), QColor(136, 34, 106), QColor(212, 72, 66), QColor(250, 153, 11), QColor(252, 255, 164)};
+    const double t = std::sqrt(std::clamp(e, 0.0, 1.0)) * 4.0;
+    const int i = std::min(3, int(t));
+    const double f = t - i;
+    const QColor& a = stops[i];
+    const QColor& b = stops[i + 1];
+    return QColor(int(std::lround(a.red() + f * (b.red() - a.red()))), int(std::lround(a.green() + f * (b.green() - a.green()))),
+                  int(std::lround(a.blue() + f * (b.blue() - a.blue()))));
+}
+
+QImage errorHeatImage(const QImage& frame, const std::vector<float>& measured, const std::vector<float>& reference, const std::vector<bool>& counts)
+{
+    QImage image = frame.convertToFormat(QImage::Format_RGB32);
+    const int width = image.width();
+    for (int y = 0; y < image.height(); ++y) {
+        auto* row = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+            const int grey = 40 + qGray(row[x]) * 3 / 5;
+            QRgb out = qRgb(grey, grey, grey);
+            if (i < counts.size() && counts[i]) {
+                const double e = std::abs(double(measured[i]) - double(reference[i]));
+                if (e >= 0.02)
+                    out = errorHeatColour(e).rgb();
             }
             row[x] = out;
         }

@@ -43,7 +43,7 @@ QString ignoredBecause(const Settings& s, const QString& key)
     const bool directional = s.light.type == LightType::Directional;
     const bool shadowKey = key.startsWith(u"map.") || key.startsWith(u"bias.") || key.startsWith(u"filter.") || key.startsWith(u"moments.")
                            || key.startsWith(u"contact.") || (key.startsWith(u"shadow.") && key != u"shadow.enabled");
-    if (!s.shadow.enabled && shadowKey)
+    if (!s.shadow.enabled && (shadowKey || key == u"shading.shadow_only" || key == u"shading.texel_density"))
         return QStringLiteral("Shadows are off: turn on shadow.enabled to use it.");
 
     // The technique's own parameters, and the moment maps' settings.

@@ -182,6 +182,7 @@ struct ShadingSettings {
     // Colours the lit scene by how many screen pixels one shadow-map texel covers (aliasing at a
     // glance); the shadow term and every measurement stay as they are.
     bool texelDensity = false;
+    bool shadowOnly = false;                // a view only: the shadow term alone, never in what is measured
 
     bool operator==(const ShadingSettings&) const = default;
 };

@@ -460,6 +460,12 @@ void viewKeys(std::vector<Entry>& e)
                                 "yellow to red from 4 up (blocky edges); shadows and measurements are unchanged",
                         .look = {.label = QStringLiteral("Texel density overlay"), .group = kShading}},
                        [](auto& s) -> auto& { return s.shading.texelDensity; }));
+    e.push_back(toggle({.key = "shading.shadow_only",
+                        .help = "Show the shadow term alone, as engines' debug views do: white where lit, black where shadowed, grey between "
+                                "(a filter's partial shadow, a moiré), dark blue where a surface faces away from the light; no textures or "
+                                "lighting; measurements are unchanged",
+                        .look = {.label = QStringLiteral("Shadow only"), .group = kShading}},
+                       [](auto& s) -> auto& { return s.shading.shadowOnly; }));
     e.push_back(point({.key = "camera.position",
                        .help = "Where the viewer is",
                        .look = {.label = QStringLiteral("Position"), .unit = QStringLiteral(" wu"), .decimals = 2, .sliderLow = -20.0, .sliderHigh = 20.0, .group = kCamera}},

@@ -139,6 +139,8 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         defines << QStringLiteral("MEASURE");
     else if (settings.shading.texelDensity && settings.shadow.enabled)
         defines << QStringLiteral("TEXEL_DENSITY");   // a view only: never in what is measured
+    if (!measure && settings.shading.shadowOnly)
+        defines << QStringLiteral("SHADOW_ONLY");     // likewise
     return defines;
 }
 

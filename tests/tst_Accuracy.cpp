@@ -58,6 +58,23 @@ private Q_SLOTS:
         QCOMPARE(qRed(e.pixel(2, 0)), qGreen(e.pixel(2, 0)));                // right: grey
     }
 
+    // The heat map shows what the wrong-pixel image cannot: partial shadow wrong by less than
+    // half (a moiré over a lit floor), brighter the larger the error, and nothing where right.
+    void errorHeatShowsPartialErrors()
+    {
+        QImage frame(4, 1, QImage::Format_RGB32);
+        frame.fill(Qt::white);
+        const std::vector<float> measured{0.8f, 0.6f, 0.0f, 1.0f}, reference{1.0f, 1.0f, 1.0f, 1.0f};
+        const std::vector<bool> counts{true, true, true, true};
+        const QImage wrong = errorImage(frame, measured, reference, counts);
+        const QImage heat = errorHeatImage(frame, measured, reference, counts);
+        QCOMPARE(qRed(wrong.pixel(0, 0)), qBlue(wrong.pixel(0, 0)));    // 0.2 wrong: grey as if right...
+        QVERIFY(qRed(heat.pixel(0, 0)) != qBlue(heat.pixel(0, 0)));     // ...a colour in the heat map
+        const auto brightness = [&](int x) { return qGray(heat.pixel(x, 0)); };
+        QVERIFY(brightness(0) < brightness(1) && brightness(1) < brightness(2));
+        QCOMPARE(qRed(heat.pixel(3, 0)), qBlue(heat.pixel(3, 0)));      // right: the frame's grey
+    }
+
     // The frame shaded again from its light terms: ambient + V * direct, clamped as shown.
     void shadedLumaClampsAsTheDisplay()
     {
@@ -128,6 +145,25 @@ private Q_SLOTS:
         qInfo("SSIM against the frame shaded with the reference: defaults %.5f, no bias %.5f", defaults.ssim, acne.ssim);
         QVERIFY(defaults.ssim > 0.95 && defaults.ssim < 1.0);
         QVERIFY(1.0 - acne.ssim > 10.0 * (1.0 - defaults.ssim));
+        // The window's views (shadow only, texel density) change what is shown, never what is measured.
+        const AccuracyResult shadowOnly = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"shading.shadow_only=true"}), size);
+        QCOMPARE(shadowOnly.hard.misclassified, defaults.hard.misclassified);
+        QCOMPARE(shadowOnly.ssim, defaults.ssim);
+        // What a view with it shows: the shadow term alone, in grey levels, white and black both there.
+        const Settings view = presetWith("seed", {"shading.shadow_only=true"});
+        const QImage shown = headless.renderScene(view, size);
+        int grey = 0, white = 0, black = 0;
+        for (int y = 0; y < shown.height(); ++y) {
+            for (int x = 0; x < shown.width(); ++x) {
+                const QRgb p = shown.pixel(x, y);
+                grey += qRed(p) == qGreen(p) && qGreen(p) == qBlue(p);
+                white += qRed(p) == 255 && qGreen(p) == 255 && qBlue(p) == 255;
+                black += qRed(p) == 0 && qGreen(p) == 0 && qBlue(p) == 0;
+            }
+        }
+        const int pixels = shown.width() * shown.height();
+        qInfo("shadow only: %d grey, %d white, %d black of %d pixels", grey, white, black, pixels);
+        QVERIFY(grey > pixels / 2 && white > pixels / 4 && black > pixels / 200);
     }
 
     // The area reference traces its rays 16 at a time: each answer is the one a single ray

@@ -11,6 +11,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QScatterSeries>
@@ -126,16 +127,29 @@ private Q_SLOTS:
         QTest::mouseClick(toggle, Qt::LeftButton);
         QCOMPARE(overlay.count(), 3);
         QCOMPARE(overlay.last().at(1).value<QImage>().size(), kViewSize);
+        // The heat map of |V - V_ref| in its place, and back: another picture of the same pixels.
+        const QImage wrongPixels = overlay.last().at(1).value<QImage>();
+        auto* kind = m_dock->findChild<QComboBox*>(QStringLiteral("overlayKind"));
+        QVERIFY(kind);
+        kind->setCurrentIndex(1);
+        QCOMPARE(overlay.count(), 4);
+        const QImage heat = overlay.last().at(1).value<QImage>();
+        QCOMPARE(heat.size(), kViewSize);
+        QVERIFY(heat != wrongPixels);
+        QVERIFY2(label("overlayLegend")->text().contains("V_ref"), qPrintable(label("overlayLegend")->text()));
+        kind->setCurrentIndex(0);
+        QCOMPARE(overlay.count(), 5);
+        QVERIFY(overlay.last().at(1).value<QImage>() == wrongPixels);
 
         // A settings change makes the overlay stale: it goes, and only once.
         Settings moved = presetSettings(QStringLiteral("seed"));
         moved.map.size = 1024;
         m_dock->setSettings(moved);
-        QCOMPARE(overlay.count(), 4);
+        QCOMPARE(overlay.count(), 6);
         QVERIFY(overlay.last().at(1).value<QImage>().isNull());
         m_dock->setSettings(moved);
         m_dock->setSettings(presetSettings(QStringLiteral("seed")));
-        QCOMPARE(overlay.count(), 5);              // back to what was measured: shown again
+        QCOMPARE(overlay.count(), 7);              // back to what was measured: shown again
         QVERIFY(!overlay.last().at(1).value<QImage>().isNull());
     }
 

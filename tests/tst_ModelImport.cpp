@@ -315,32 +315,6 @@ private Q_SLOTS:
             QVERIFY(o.texture == TextureKind::Flat);
     }
 
-    // Every warning of a file opened in the window is reachable, whole: a button in the status
-    // bar counts them and lists them, where the status line shows only the first.
-    void everyWarningOfAnOpenedFileIsListed()
-    {
-        QTemporaryDir dir;
-        const QString folder = model("glTF2/BoxTextured-glTF/");
-        writeFile(dir, "first.gltf", readFile(folder + "BoxTextured.gltf"));
-        writeFile(dir, "second.gltf", readFile(folder + "BoxTextured.gltf").replace("CesiumLogoFlat.png", "AnotherMissing.png"));
-        writeFile(dir, "BoxTextured0.bin", readFile(folder + "BoxTextured0.bin"));
-        const QString scene = writeFile(dir, "two.json", R"({"models": [{"file": "first.gltf"}, {"file": "second.gltf", "position": [3, 0, 0]}]})");
-        const std::unique_ptr<MainWindow> shown = shownWindow();
-        MainWindow& window = *shown;
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QCOMPARE(window.openScene(scene), QString());
-        const QStringList warnings = window.warnings();
-        QVERIFY2(warnings.size() >= 2, qPrintable(warnings.join(" | ")));
-        QVERIFY(warnings.join(" ").contains("CesiumLogoFlat.png") && warnings.join(" ").contains("AnotherMissing.png"));
-        auto* button = window.findChild<QToolButton*>(QStringLiteral("warningsButton"));
-        QVERIFY(button && button->isVisibleTo(&window));
-        QCOMPARE(button->text(), QString::number(warnings.size()));
-        QCOMPARE(button->menu()->actions().size(), warnings.size());
-        // A clean file next: its own warnings, none, replace them.
-        QCOMPARE(window.openScene(model("OBJ/spider.obj")), QString());
-        QTRY_VERIFY(!window.warnings().join(" ").contains("AnotherMissing.png"));
-    }
-
     void largeMeshesAreSplitForCulling()
     {
         // A 300 x 300 x 2 grid of triangles: split into pieces no bigger than the chunk size.
@@ -599,6 +573,32 @@ private Q_SLOTS:
         QVERIFY(window.settings(Side::B).filter.mode == FilterMode::Pcf);
     }
 
+    // Every warning of a file opened in the window is reachable, whole: a button in the status
+    // bar counts them and lists them, where the status line shows only the first.
+    void everyWarningOfAnOpenedFileIsListed()
+    {
+        QTemporaryDir dir;
+        const QString folder = model("glTF2/BoxTextured-glTF/");
+        writeFile(dir, "first.gltf", readFile(folder + "BoxTextured.gltf"));
+        writeFile(dir, "second.gltf", readFile(folder + "BoxTextured.gltf").replace("CesiumLogoFlat.png", "AnotherMissing.png"));
+        writeFile(dir, "BoxTextured0.bin", readFile(folder + "BoxTextured0.bin"));
+        const QString scene = writeFile(dir, "two.json", R"({"models": [{"file": "first.gltf"}, {"file": "second.gltf", "position": [3, 0, 0]}]})");
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(window.openScene(scene), QString());
+        const QStringList warnings = window.warnings();
+        QVERIFY2(warnings.size() >= 2, qPrintable(warnings.join(" | ")));
+        QVERIFY(warnings.join(" ").contains("CesiumLogoFlat.png") && warnings.join(" ").contains("AnotherMissing.png"));
+        auto* button = window.findChild<QToolButton*>(QStringLiteral("warningsButton"));
+        QVERIFY(button && button->isVisibleTo(&window));
+        QCOMPARE(button->text(), QString::number(warnings.size()));
+        QCOMPARE(button->menu()->actions().size(), warnings.size());
+        // A clean file next: its own warnings, none, replace them.
+        QCOMPARE(window.openScene(model("OBJ/spider.obj")), QString());
+        QTRY_VERIFY(!window.warnings().join(" ").contains("AnotherMissing.png"));
+    }
+
     // A model opens whole in the scene view it is shown in, whatever that view's shape: the
     // default window's view is taller than wide, and a camera its file frames for 16:9 cuts a
     // model off in a narrower one. View > Reset Camera and R frame it the same way.
@@ -665,6 +665,14 @@ private Q_SLOTS:
             QSlider* slider = dock->findChild<SliderSpinBox*>(name)->slider();
             QVERIFY2(slider->value() > slider->minimum() && slider->value() < slider->maximum(),
                      qPrintable(QStringLiteral("%1 at %2 of [%3, %4]").arg(name).arg(slider->value()).arg(slider->minimum()).arg(slider->maximum())));
+        }
+        // No slider starts pinned at the end of its span with its field short of the range's:
+        // the bias's slope, a model's far plane, its light's reach all have room both ways.
+        for (SliderSpinBox* field : dock->findChildren<SliderSpinBox*>()) {
+            const QSlider* slider = field->slider();
+            const bool pinned = slider->value() == slider->maximum() && field->value() < field->spinBox()->maximum();
+            QVERIFY2(!pinned, qPrintable(QStringLiteral("%1 = %2 sits at the end of its slider [%3, %4]")
+                                             .arg(field->objectName()).arg(field->value()).arg(field->sliderLow()).arg(field->sliderHigh())));
         }
         // A directional light shows a direction, not a place.
         QVERIFY(!dock->findChild<SliderSpinBox*>("light.position.x")->isVisibleTo(dock));

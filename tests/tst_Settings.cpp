@@ -159,7 +159,7 @@ private Q_SLOTS:
         QTest::newRow("vector of two") << "light.position" << "1,2" << "x,y,z";
         QTest::newRow("vector with NaN") << "camera.position" << "1,nan,2" << "finite";
         QTest::newRow("not a bool") << "shadow.enabled" << "maybe" << "true | false";
-        QTest::newRow("unknown key") << "bias.sloppy" << "1" << "shadowlab settings";
+        QTest::newRow("unknown key") << "bias.sloppy" << "1" << "unknown setting (did you mean 'bias.slope'?)";
         QTest::newRow("7 Poisson taps") << "filter.taps" << "7" << "[8, 64]";
         QTest::newRow("65 Poisson taps") << "filter.taps" << "65" << "[8, 64]";
         QTest::newRow("fractional taps") << "filter.taps" << "12.5" << "whole number";
@@ -185,6 +185,8 @@ private Q_SLOTS:
             const QString message = QString::fromStdString(e.what());
             QVERIFY2(message.startsWith(key), qPrintable(message));
             QVERIFY2(message.contains(mentions), qPrintable(message));
+            // Only a key that is no setting says so: each front end then says where the keys are.
+            QCOMPARE(e.isUnknownKey(), key == u"bias.sloppy");
         }
         QVERIFY(s == before);
     }

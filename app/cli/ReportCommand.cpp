@@ -252,6 +252,7 @@ ReportRow measureRow(const ReportRequest& request, const SweepConfiguration& con
     row.accuracy = measureAccuracy(meter, headless.renderer(), configuration.settings, request.size,
                                    [&](double f) { progress.show(start + step * f, configuration.label + QStringLiteral(": accuracy")); },
                                    &row.density);
+    row.accuracy.hardHeat = QImage();   // a view's; a sweep of many rows keeps only what the page shows
     if (request.flickerFrames > 1) {
         progress.show(start + step, configuration.label + QStringLiteral(": flicker"));
         row.flicker = measureFlicker(headless.renderer(), configuration.settings,

@@ -353,6 +353,7 @@ void AccuracyController::measure(const Capture& capture, const ReferenceVisibili
     m.areaNoiseFloor = result.areaNoiseFloor;
     m.referenceSamplesPerPixel = reference.samplesPerPixel;
     m.errors = result.hardErrors;
+    m.heat = result.hardHeat;
     m.flicker = capture.flicker;
     if (capture.side < m_measurements.size())
         m_measurements[capture.side] = std::move(m);

@@ -43,6 +43,7 @@ public:
         double areaNoiseFloor = 0.0;
         int referenceSamplesPerPixel = 0;   // rays per pixel of the area reference
         QImage errors;              // false shadow / false light over the measured frame
+        QImage heat;                // |V - V_ref| over it
         FlickerResult flicker;      // over a sub-texel camera walk (Measurement.h)
     };
 

@@ -208,7 +208,9 @@ void AccuracyDock::updateOverlay()
 {
     for (std::size_t side = 0; side < m_overlays.size(); ++side) {
         const bool have = side < m_controller->sideCount() && m_controller->measurementIsCurrent(side);
-        const QImage wanted = have && m_metrics->overlayWanted() ? m_controller->measurement(side)->errors : QImage();
+        const QImage wanted = !have || !m_metrics->overlayWanted() ? QImage()
+                              : m_metrics->heatWanted()          ? m_controller->measurement(side)->heat
+                                                                 : m_controller->measurement(side)->errors;
         if (wanted.cacheKey() == m_overlays[side].cacheKey())
             continue;
         m_overlays[side] = wanted;

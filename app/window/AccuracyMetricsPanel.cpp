@@ -4,8 +4,10 @@
 #include "ErrorNoise.h"
 #include "NoteLabel.h"
 #include "ReportAnalysis.h"
+#include "ShadowMetrics.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -88,15 +90,37 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
     m_overlayCheck->setToolTip(tr("Grey the scene view and paint false shadow magenta and false light cyan "
                                   "(against the hard-shadow reference)"));
     overlayRow->addWidget(m_overlayCheck);
+    m_overlayKind = new QComboBox;
+    m_overlayKind->setObjectName(QStringLiteral("overlayKind"));
+    m_overlayKind->addItem(tr("wrong pixels"));
+    m_overlayKind->addItem(tr("|V − V_ref| heat"));
+    m_overlayKind->setToolTip(tr("Wrong pixels: those wrong by more than half, as false shadow or false light. Heat: every pixel's "
+                                 "difference from the reference, so partial shadow that is wrong by less (a filter's moiré over a lit "
+                                 "floor, a soft edge too wide) shows too."));
+    overlayRow->addWidget(m_overlayKind);
     overlayRow->addStretch(1);
     layout->addLayout(overlayRow);
-    // The colours of errorImage().
+    // The colours of errorImage(), or errorHeatImage()'s ramp.
     auto* legend = noteLabel(QStringLiteral("overlayLegend"));
-    legend->setText(tr("<span style='color:%1'>■</span> false shadow &nbsp; <span style='color:%2'>■</span> false light")
-                        .arg(QColor(235, 40, 200).name(), QColor(40, 220, 235).name()));
     legend->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);
     layout->addWidget(legend);
+    const auto showLegend = [this, legend] {
+        if (m_overlayKind->currentIndex() == 0) {
+            legend->setText(tr("<span style='color:%1'>■</span> false shadow &nbsp; <span style='color:%2'>■</span> false light")
+                                .arg(QColor(235, 40, 200).name(), QColor(40, 220, 235).name()));
+            return;
+        }
+        QString ramp;
+        for (double e : {0.02, 0.05, 0.1, 0.25, 0.5, 1.0})
+            ramp += QStringLiteral("<span style='color:%1'>■</span>%2 ").arg(errorHeatColour(e).name()).arg(e);
+        legend->setText(tr("|V − V_ref|: %1").arg(ramp));
+    };
+    showLegend();
     connect(m_overlayCheck, &QCheckBox::toggled, this, &AccuracyMetricsPanel::overlayToggled);
+    connect(m_overlayKind, &QComboBox::currentIndexChanged, this, [this, showLegend] {
+        showLegend();
+        emit overlayToggled(m_overlayCheck->isChecked());
+    });
     setColumns(1);
 }
 
@@ -258,6 +282,11 @@ void AccuracyMetricsPanel::put(Row& row, const std::array<std::optional<double>,
 bool AccuracyMetricsPanel::overlayWanted() const
 {
     return m_overlayCheck->isChecked();
+}
+
+bool AccuracyMetricsPanel::heatWanted() const
+{
+    return m_overlayKind->currentIndex() == 1;
 }
 
 void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)

@@ -10,6 +10,7 @@
 #include <vector>
 
 class QCheckBox;
+class QComboBox;
 class QGroupBox;
 class QGridLayout;
 class QLabel;
@@ -34,6 +35,8 @@ public:
     // The frame times of each side (one, or A and B), medians over the window's last frames.
     void showFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime);
     bool overlayWanted() const;
+    // The overlay as a heat map of |V - V_ref| rather than the wrong pixels.
+    bool heatWanted() const;
 
     // Frames each side needs before a difference in cost is told from noise (or called "same").
     static constexpr int kFramesToCompare = 5;
@@ -64,6 +67,7 @@ private:
     std::vector<QLabel*> m_headers;     // "A", "B", "B − A" over each grid
     int m_sides = 1;
     QCheckBox* m_overlayCheck = nullptr;
+    QComboBox* m_overlayKind = nullptr;
     Row* m_misclassified = nullptr;
     Row* m_dssim = nullptr;
     Row* m_falseShadow = nullptr;

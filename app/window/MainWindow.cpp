@@ -321,6 +321,7 @@ void MainWindow::createViewMenu()
     m_depthPane->addCaptionButton(fitMap);
     m_depthPane->addCaptionButton(frameFootprint);
     view->addAction(m_densityAction);
+    view->addAction(m_shadowOnlyAction);
     view->addAction(m_measureAction);
     view->addSeparator();
     view->addAction(m_dock->toggleViewAction());
@@ -338,6 +339,17 @@ void MainWindow::createMeasureActions()
     connect(m_densityAction, &QAction::toggled, this, [this](bool on) {
         for (Settings& s : m_sides.sides())
             s.shading.texelDensity = on;
+        showSides();
+    });
+    m_shadowOnlyAction = new QAction(tr("&Shadow Only"), this);
+    m_shadowOnlyAction->setObjectName(QStringLiteral("shadowOnlyAction"));
+    m_shadowOnlyAction->setCheckable(true);
+    m_shadowOnlyAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_J));
+    m_shadowOnlyAction->setToolTip(tr("The shadow term alone: white lit, black shadowed, grey partial (a filter's moiré shows here), dark blue "
+                                      "facing away from the light; no textures or lighting (Ctrl+J; the setting shading.shadow_only)"));
+    connect(m_shadowOnlyAction, &QAction::toggled, this, [this](bool on) {
+        for (Settings& s : m_sides.sides())
+            s.shading.shadowOnly = on;
         showSides();
     });
     m_measureAction = m_timing->createMeasureAction(this);
@@ -450,6 +462,10 @@ void MainWindow::pushSettings()
     if (m_densityAction) {
         const QSignalBlocker block(m_densityAction);
         m_densityAction->setChecked(m_sides.selectedSettings().shading.texelDensity);
+    }
+    if (m_shadowOnlyAction) {
+        const QSignalBlocker block(m_shadowOnlyAction);
+        m_shadowOnlyAction->setChecked(m_sides.selectedSettings().shading.shadowOnly);
     }
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_sides.settings(i));

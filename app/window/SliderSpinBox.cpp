@@ -79,7 +79,7 @@ QString SliderSpinBox::formatValue(double value, int decimals, const QLocale& lo
 
 SliderSpinBox::SliderSpinBox(double minimum, double maximum, int decimals, QWidget* parent)
     : QWidget(parent), m_slider(new QSlider(Qt::Horizontal, this)), m_spinBox(new PreciseSpinBox(decimals, this)),
-      m_spanLow(minimum), m_spanHigh(maximum), m_integer(decimals == 0), m_decimals(decimals)
+      m_spanLow(minimum), m_spanHigh(maximum), m_baseLow(minimum), m_baseHigh(maximum), m_integer(decimals == 0), m_decimals(decimals)
 {
     m_spinBox->setRange(minimum, maximum);
     m_spinBox->setKeyboardTracking(false);   // apply a typed number on Enter, not per keystroke
@@ -110,10 +110,36 @@ SliderSpinBox::SliderSpinBox(double minimum, double maximum, int decimals, QWidg
 
 void SliderSpinBox::setSliderSpan(double low, double high, Scale scale)
 {
-    m_spanLow = low;
-    m_spanHigh = high;
+    m_baseLow = m_spanLow = low;
+    m_baseHigh = m_spanHigh = high;
     m_scale = scale;
+    fitSpanTo(value());
     updateSliderRange();
+}
+
+void SliderSpinBox::fitSpanTo(double value)
+{
+    // The span as set, widened where a value set from outside (a model's bias, a scene's
+    // light) lies at or past one of its ends: that value then sits in the slider's middle, with
+    // room both ways, the spin box's range permitting.
+    double low = m_baseLow, high = m_baseHigh;
+    if (m_scale == Scale::Logarithmic) {
+        if (value > 0.0 && value >= std::pow(high, 0.9) * std::pow(low, 0.1))
+            high = std::max(high, value * std::sqrt(high / low));
+        if (value > 0.0 && value < low)
+            low = value / std::sqrt(high / low);
+    } else {
+        if (value >= low + 0.9 * (high - low))
+            high = std::max(high, low + 2.0 * (value - low));
+        if (value < low)
+            low = value - (high - value);
+    }
+    m_spanLow = std::max(low, m_spinBox->minimum());
+    m_spanHigh = std::min(high, m_spinBox->maximum());
+    if (!(m_spanHigh > m_spanLow) || (m_scale == Scale::Logarithmic && !(m_spanLow > 0.0))) {
+        m_spanLow = m_baseLow;
+        m_spanHigh = m_baseHigh;
+    }
 }
 
 void SliderSpinBox::setSingleStep(double step)
@@ -149,6 +175,15 @@ void SliderSpinBox::setValue(double value)
     m_settingValue = true;
     m_spinBox->setValue(value);
     m_settingValue = false;
+    // Not under a dragging hand: the thumb would jump away from it.
+    if (!m_slider->isSliderDown()) {
+        const double low = m_spanLow, high = m_spanHigh;
+        fitSpanTo(m_spinBox->value());
+        if (low != m_spanLow || high != m_spanHigh) {
+            updateSliderRange();
+            return;
+        }
+    }
     const QSignalBlocker block(m_slider);
     m_slider->setValue(sliderPosition(value));
 }

@@ -19,8 +19,13 @@ public:
 
     SliderSpinBox(double minimum, double maximum, int decimals, QWidget* parent = nullptr);
 
-    // The part of the range the slider covers; values outside it still fit in the spin box.
+    // The part of the range the slider covers; values outside it still fit in the spin box. A
+    // value set at or past one of its ends (setValue()) widens it so the value has room both
+    // ways; it narrows back to this span when the value returns inside.
     void setSliderSpan(double low, double high, Scale scale = Scale::Linear);
+    // The span the slider covers now.
+    double sliderLow() const { return m_spanLow; }
+    double sliderHigh() const { return m_spanHigh; }
     void setSingleStep(double step);
     void setSuffix(const QString& suffix);
 
@@ -43,6 +48,7 @@ signals:
 
 private:
     void updateSliderRange();
+    void fitSpanTo(double value);
     int sliderPosition(double value) const;
     double sliderValue(int position) const;
     void onSliderMoved(int position);
@@ -51,6 +57,8 @@ private:
     QDoubleSpinBox* m_spinBox;
     double m_spanLow;
     double m_spanHigh;
+    double m_baseLow;               // the span as set (setSliderSpan())
+    double m_baseHigh;
     Scale m_scale = Scale::Linear;
     bool m_integer;
     int m_decimals;                 // shown; the spin box holds the value exactly
