@@ -9,6 +9,7 @@
 #include "ErrorPixels.h"
 #include "AccuracyDock.h"
 #include "HeadlessTestMain.h"
+#include "Loupe.h"
 #include "MainWindow.h"
 #include "OrbitCamera.h"
 #include "PropertiesDock.h"
@@ -149,6 +150,7 @@ private slots:
     void captionsSayWhatTheMapIs_data();
     void captionsSayWhatTheMapIs();
     void compareCaptionsLeadWithWhatDiffers();
+    void loupeMagnifiesThePixelsUnderThePointer();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
@@ -708,6 +710,35 @@ void tst_MainWindow::compareCaptionsLeadWithWhatDiffers()
     QVERIFY(captionOf("light.fit manual · map.size 512"));
     QVERIFY(captionOf("light.fit scene · map.size 2048"));
     m_window->setCompareMode(false);
+}
+
+// View > Loupe: the pixels under the pointer, magnified beside it from the last frame; moving
+// the pointer redraws the loupe, not the scene.
+void tst_MainWindow::loupeMagnifiesThePixelsUnderThePointer()
+{
+    SceneView* view = m_window->sceneView(Side::A);
+    m_window->action(QStringLiteral("loupeAction"))->trigger();
+    QVERIFY(view->loupe());
+    QTRY_VERIFY(!view->loupeFrame().isNull());
+    QVERIFY(settle(*m_window));
+    auto* loupe = view->findChild<Loupe*>(QStringLiteral("loupe"));
+    QVERIFY(loupe);
+    const int frames = view->frameCount();
+    for (const QPoint at : {QPoint(view->width() / 2, view->height() / 2), QPoint(view->width() - 5, view->height() - 5), QPoint(40, 30)}) {
+        // A plain move with no button held, as the pointer passes over the view.
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), view->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QApplication::sendEvent(view, &move);
+        QVERIFY(loupe->isVisible());
+        QVERIFY2(view->rect().contains(loupe->geometry()), qPrintable(QStringLiteral("%1,%2 %3x%4 in %5x%6").arg(loupe->x()).arg(loupe->y()).arg(loupe->width()).arg(loupe->height()).arg(view->width()).arg(view->height())));      // beside the pointer, inside the view
+        const QPoint centre = loupe->centre();
+        const QImage shown = loupe->grab().toImage();
+        const int middle = 1 + Loupe::kRadius * Loupe::kZoom + Loupe::kZoom / 2;
+        QCOMPARE(QColor(shown.pixel(middle * shown.devicePixelRatio(), middle * shown.devicePixelRatio())).rgb(),
+                 QColor(view->loupeFrame().pixel(centre)).rgb());
+    }
+    QCOMPARE(view->frameCount(), frames);
+    m_window->action(QStringLiteral("loupeAction"))->trigger();
+    QVERIFY(!view->loupe() && view->loupeFrame().isNull());
 }
 
 // A new user read "ortho light" over a virtual map's pool: each caption names the map it shows,

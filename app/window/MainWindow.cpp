@@ -5,6 +5,7 @@
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "LightAnimation.h"
+#include "Loupe.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
@@ -322,6 +323,7 @@ void MainWindow::createViewMenu()
     m_depthPane->addCaptionButton(frameFootprint);
     view->addAction(m_densityAction);
     view->addAction(m_shadowOnlyAction);
+    view->addAction(m_loupeAction);
     view->addAction(m_measureAction);
     view->addSeparator();
     view->addAction(m_dock->toggleViewAction());
@@ -351,6 +353,16 @@ void MainWindow::createMeasureActions()
         for (Settings& s : m_sides.sides())
             s.shading.shadowOnly = on;
         showSides();
+    });
+    m_loupeAction = new QAction(tr("&Loupe"), this);
+    m_loupeAction->setObjectName(QStringLiteral("loupeAction"));
+    m_loupeAction->setCheckable(true);
+    m_loupeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    m_loupeAction->setToolTip(tr("Magnify the pixels under the pointer %1 times beside it, with the colour of the one in the middle: "
+                                 "acne, moiré and a filter's steps at their own size (Ctrl+M)").arg(Loupe::kZoom));
+    connect(m_loupeAction, &QAction::toggled, this, [this](bool on) {
+        for (SceneView* view : m_views)
+            view->setLoupe(on);
     });
     m_measureAction = m_timing->createMeasureAction(this);
 }

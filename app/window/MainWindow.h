@@ -172,6 +172,7 @@ private:
     QAction* m_screenshotAction = nullptr;
     QAction* m_densityAction = nullptr;
     QAction* m_shadowOnlyAction = nullptr;
+    QAction* m_loupeAction = nullptr;
     QAction* m_measureAction = nullptr;
     QToolBar* m_toolBar = nullptr;
     QString m_lastFitWarning;   // said once in the status bar, not on every frame

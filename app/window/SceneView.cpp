@@ -1,17 +1,22 @@
 #include "SceneView.h"
 
+#include "Loupe.h"
+
 #include "GlDebug.h"
 #include "LightGizmoPass.h"
+#include "Loupe.h"
 #include "OrbitCamera.h"
 #include "RenderError.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
 
+#include <QCursor>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QOpenGLPaintDevice>
 #include <QPainter>
@@ -197,6 +202,16 @@ void SceneView::paintGL()
         const double width = m_errorOverlay.width() * scale;
         painter.drawImage(QRectF((this->width() - width) * 0.5, 0.0, width, height()), m_errorOverlay);
     }
+    if (m_loupe) {
+        // The frame as shown (the overlay included), for the loupe to magnify between frames.
+        const QSize size = this->size() * devicePixelRatio();
+        QImage frame(size, QImage::Format_RGBA8888);
+        context()->functions()->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+        context()->functions()->glReadPixels(0, 0, size.width(), size.height(), GL_RGBA, GL_UNSIGNED_BYTE, frame.bits());
+        m_loupeFrame = frame.mirrored().convertToFormat(QImage::Format_RGB32);
+        if (m_loupe->isVisible())
+            m_loupe->showAt(mapFromGlobal(QCursor::pos()), m_loupeFrame, devicePixelRatio());
+    }
     m_lastFrameMs = double(timer.nsecsElapsed()) * 1e-6;
     ++m_frameCount;
     emit frameRendered();
@@ -209,9 +224,33 @@ void SceneView::mousePressEvent(QMouseEvent* event)
     emit activated();
 }
 
+void SceneView::setLoupe(bool on)
+{
+    if (on == loupe())
+        return;
+    if (on) {
+        m_loupe = new Loupe(this);
+    } else {
+        delete m_loupe;
+        m_loupe = nullptr;
+        m_loupeFrame = QImage();
+    }
+    setMouseTracking(on);
+    update();   // one frame to read back
+}
+
+void SceneView::leaveEvent(QEvent* event)
+{
+    if (m_loupe)
+        m_loupe->hide();
+    QOpenGLWidget::leaveEvent(event);
+}
+
 void SceneView::mouseMoveEvent(QMouseEvent* event)
 {
     const QPoint position = event->position().toPoint();
+    if (m_loupe)
+        m_loupe->showAt(position, m_loupeFrame, devicePixelRatio());
     const QPoint delta = position - m_lastMouse;
     m_lastMouse = position;
     if (delta.isNull())

@@ -12,6 +12,7 @@
 namespace shadowlab {
 
 class LightGizmoPass;
+class Loupe;
 class Renderer;
 
 // The lit scene in a QOpenGLWidget: one Renderer on this widget's context, drawn only when
@@ -35,6 +36,12 @@ public:
     void setErrorOverlay(const QImage& image);
     const QImage& errorOverlay() const { return m_errorOverlay; }
     bool showLightVolume() const { return m_showLightVolume; }
+    // The loupe: the pixels under the pointer magnified beside it, from the last frame (read
+    // back after each frame while it is on; moving the pointer redraws no frame).
+    void setLoupe(bool on);
+    bool loupe() const { return m_loupe != nullptr; }
+    // The last frame as read back for the loupe (null while it is off).
+    const QImage& loupeFrame() const { return m_loupeFrame; }
 
     // Null until the first initializeGL() and after the context goes away.
     const Renderer* renderer() const { return m_renderer.get(); }
@@ -65,6 +72,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     void cleanup();
@@ -76,6 +84,8 @@ private:
     std::unique_ptr<LightGizmoPass> m_gizmo;
     bool m_showLightVolume = true;
     QImage m_errorOverlay;
+    Loupe* m_loupe = nullptr;
+    QImage m_loupeFrame;
     QPoint m_lastMouse;
     int m_frameCount = 0;
     double m_lastFrameMs = 0.0;
