@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace shadowlab {
 
@@ -31,7 +32,11 @@ ErrorMetrics compareVisibility(const std::vector<float>& measured, const std::ve
     return m;
 }
 
-QImage errorImage(const QImage& frame, const std::vector<float>& measured, const std::vector<float>& reference, const std::vector<bool>& counts)
+namespace {
+
+// The frame dimmed to grey, and over it `colour(i)` for each measured pixel i that has one.
+template <typename Colour>
+QImage overGreyFrame(const QImage& frame, const std::vector<bool>& counts, Colour colour)
 {
     QImage image = frame.convertToFormat(QImage::Format_RGB32);
     const int width = image.width();
@@ -40,18 +45,28 @@ QImage errorImage(const QImage& frame, const std::vector<float>& measured, const
         for (int x = 0; x < width; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
             const int grey = 40 + qGray(row[x]) * 3 / 5; // dimmed so the colours stand out
-            QRgb out = qRgb(grey, grey, grey);
+            row[x] = qRgb(grey, grey, grey);
             if (i < counts.size() && counts[i]) {
-                const double d = double(measured[i]) - double(reference[i]);
-                if (d < -0.5)
-                    out = qRgb(235, 40, 200);   // false shadow
-                else if (d > 0.5)
-                    out = qRgb(40, 220, 235);   // false light
+                if (const std::optional<QRgb> c = colour(i))
+                    row[x] = *c;
             }
-            row[x] = out;
         }
     }
     return image;
+}
+
+} // namespace
+
+QImage errorImage(const QImage& frame, const std::vector<float>& measured, const std::vector<float>& reference, const std::vector<bool>& counts)
+{
+    return overGreyFrame(frame, counts, [&](std::size_t i) -> std::optional<QRgb> {
+        const double d = double(measured[i]) - double(reference[i]);
+        if (d < -0.5)
+            return qRgb(235, 40, 200);      // false shadow
+        if (d > 0.5)
+            return qRgb(40, 220, 235);      // false light
+        return std::nullopt;
+    });
 }
 
 QColor errorHeatColour(double e)
@@ -69,23 +84,10 @@ QColor errorHeatColour(double e)
 
 QImage errorHeatImage(const QImage& frame, const std::vector<float>& measured, const std::vector<float>& reference, const std::vector<bool>& counts)
 {
-    QImage image = frame.convertToFormat(QImage::Format_RGB32);
-    const int width = image.width();
-    for (int y = 0; y < image.height(); ++y) {
-        auto* row = reinterpret_cast<QRgb*>(image.scanLine(y));
-        for (int x = 0; x < width; ++x) {
-            const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
-            const int grey = 40 + qGray(row[x]) * 3 / 5;
-            QRgb out = qRgb(grey, grey, grey);
-            if (i < counts.size() && counts[i]) {
-                const double e = std::abs(double(measured[i]) - double(reference[i]));
-                if (e >= 0.02)
-                    out = errorHeatColour(e).rgb();
-            }
-            row[x] = out;
-        }
-    }
-    return image;
+    return overGreyFrame(frame, counts, [&](std::size_t i) -> std::optional<QRgb> {
+        const double e = std::abs(double(measured[i]) - double(reference[i]));
+        return e >= 0.02 ? std::optional(errorHeatColour(e).rgb()) : std::nullopt;
+    });
 }
 
 } // namespace shadowlab

@@ -2,6 +2,7 @@
 
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
+#include "ShadowViews.h"
 
 #include <QStringList>
 
@@ -62,10 +63,19 @@ QString ignoredBecause(const Settings& s, const QString& key)
     if (key == u"bias.receiver_plane" && (s.filter.mode == FilterMode::Hard || s.filter.mode == FilterMode::HwBilinear))
         return QStringLiteral("%1 takes one lookup, with no taps to place on the receiver's plane; the wide filters (pcf, poisson, pcss, …) read it.")
             .arg(techniqueKey(s));
-    if (key == u"filter.early_out" && !(s.filter.mode == FilterMode::Pcf || s.filter.mode == FilterMode::Poisson || s.filter.mode == FilterMode::Pcss))
-        return QStringLiteral("Only pcf, poisson and pcss skip their taps outside penumbrae; %1 does not.").arg(techniqueKey(s));
-    if (key == u"map.slices" && (s.light.projection == LightProjection::Perspective || s.map.format != DepthFormat::Depth24))
-        return QStringLiteral("Only an ortho depth24 map is drawn into slices; perspective maps and depth32f clear every time.");
+    if (key == u"filter.early_out" && !shadowTechnique(s.filter.mode).penumbraOnly) {
+        QStringList skipping;
+        for (const ShadowTechnique& t : shadowTechniques()) {
+            if (t.penumbraOnly)
+                skipping << t.key;
+        }
+        return QStringLiteral("Only %1 skip their taps outside penumbrae; %2 does not.").arg(skipping.join(QStringLiteral(", ")), techniqueKey(s));
+    }
+    // As the shadow pass decides (ShadowMap::slicesFor): one plain ortho depth24 map only.
+    const bool plainOrthoMap = s.light.projection == LightProjection::Ortho && !usesLightWarp(s) && !usesShadowViews(s) && !s.shadow.virtualMap;
+    if (key == u"map.slices" && (moments || !plainOrthoMap || s.map.format != DepthFormat::Depth24))
+        return QStringLiteral("Only one plain ortho depth24 map is drawn into slices; perspective and warped maps, cascades, virtual pages, "
+                              "depth32f and moments clear every time.");
 
     // The light's kinds of map.
     if (key == u"light.warp" && !directional)
@@ -79,10 +89,13 @@ QString ignoredBecause(const Settings& s, const QString& key)
             .arg(toString(s.light.type), s.light.type == LightType::Point ? QStringLiteral("six cube faces") : QStringLiteral("one perspective map"));
     if (key == u"shadow.virtual" && !directional)
         return QStringLiteral("Virtual shadow maps are for a directional light; set light.type to directional.");
-    const bool cascades = directional && s.shadow.cascades > 1;
+    if (key == u"shadow.cascades" && s.shadow.virtualMap)
+        return QStringLiteral("A virtual map replaces cascades; turn off shadow.virtual to use them.");
+    const bool cascades = directional && s.shadow.cascades > 1 && !s.shadow.virtualMap;
     if ((key == u"shadow.split" || key == u"shadow.split_lambda" || key == u"shadow.distance" || key == u"shadow.blend" || key == u"shadow.depth_fit")
         && !cascades)
-        return directional ? QStringLiteral("With one map (shadow.cascades 1) there is no depth range to split; set shadow.cascades to 2 or more.")
+        return s.shadow.virtualMap ? QStringLiteral("A virtual map replaces cascades; turn off shadow.virtual to split the view into cascades.")
+               : directional ? QStringLiteral("With one map (shadow.cascades 1) there is no depth range to split; set shadow.cascades to 2 or more.")
                            : QStringLiteral("Cascades split a directional light's map; set light.type to directional and shadow.cascades to 2 or more.");
     if (key == u"shadow.split_lambda" && s.shadow.split != CascadeSplit::Practical)
         return QStringLiteral("Only the practical split blends uniform and logarithmic; set shadow.split to practical.");

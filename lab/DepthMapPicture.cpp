@@ -207,7 +207,7 @@ QStringList volumeTexts(const DepthMapFacts& facts)
                                              .arg(v.warped ? QStringLiteral(", lispsm-warped") : QString());
     const QString kind = facts.fitted ? QStringLiteral("fitted") : QStringLiteral("manual");
     const QString volumeText = facts.views > 1
-        ? (facts.rows > 1 ? QStringLiteral("%1 views in %2 rows of %3, %4 × %4 texels each").arg(facts.views).arg(facts.rows).arg(facts.columns).arg(facts.mapSize)
+        ? (facts.rows > 1 ? QStringLiteral("%1 views in a %2 × %3 grid, %4 × %4 texels each").arg(facts.views).arg(facts.columns).arg(facts.rows).arg(facts.mapSize)
                           : QStringLiteral("%1 views side by side, %2 × %2 texels each").arg(facts.views).arg(facts.mapSize))
         : QStringLiteral("%1 light volume %2, %3 × %3 texels").arg(kind, size).arg(facts.mapSize);
     return {volumeText, QStringLiteral("%1 light volume %2").arg(kind, size), size};

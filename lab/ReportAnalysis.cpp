@@ -243,7 +243,13 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
     }
     Recommendation accurate = mostAccurate(affordable, ErrorAxis::Misclassified, Recommendation::Kind::MostAccurate);
     accurate.budgetMs = budget;
-    accurate.sameAsCheapest = accurate.row == cheapest.row;
+    // Nothing affordable clearly more accurate than the cheapest: the cheapest it is (ties are
+    // not transitive, so the best's tie set may hold another row as good as the cheapest).
+    if (!clearlyFewer(errorPixels(*accurate.row, ErrorAxis::Misclassified), errorPixels(*cheapest.row, ErrorAxis::Misclassified))) {
+        accurate.row = cheapest.row;
+        accurate.ties = cheapest.ties;
+        accurate.sameAsCheapest = true;
+    }
     picks.push_back(accurate);
     // The closest to the area light, at any cost.
     std::vector<const ReportRow*> traced;
@@ -279,7 +285,8 @@ QString Recommendation::reason() const
     QString text;
     switch (kind) {
     case Kind::Cheapest:
-        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms), the fastest of the rows whose picture is not visibly wrong; %4")
+        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms): of the rows whose picture is not visibly wrong, as fast as the fastest within "
+                              "the timing noise, and of those the most accurate; %4")
                    .arg(msText(row->frame.median))
                    .arg(row->frame.p10, 0, 'f', row->frame.p10 < 10.0 ? 2 : 1)
                    .arg(row->frame.p90, 0, 'f', row->frame.p90 < 10.0 ? 2 : 1)

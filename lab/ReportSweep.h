@@ -41,7 +41,8 @@ std::vector<SweepEntry> parseSweepFile(const QByteArray& bytes, const QString& p
 Settings applySweepEntry(const Settings& base, const SweepEntry& entry);
 
 // One configuration to measure: entries whose settings come out the same on `base` (the
-// defaults and "bias 0.01/0.002 wu", say) are measured once, their labels joined with " = ".
+// defaults and "no front-face culling" on open casters, say) are measured once, their labels
+// joined with " = ".
 struct SweepConfiguration {
     QString label;
     QStringList assignments;    // of the first entry

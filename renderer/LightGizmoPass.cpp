@@ -14,6 +14,20 @@ namespace {
 
 const glm::vec4 kLightColor{1.0f, 0.84f, 0.25f, 1.0f};
 const glm::vec4 kVolumeColor{1.0f, 0.72f, 0.2f, 0.8f};
+const glm::vec4 kFrozenColor{0.45f, 0.85f, 1.0f, 0.9f};
+
+// The world corners of the unit cube of a clip space: corner i has x, y, z at +1 where bit 0,
+// 1, 2 of i is set.
+std::array<glm::dvec3, 8> clipCorners(const glm::dmat4& viewProjection)
+{
+    const glm::dmat4 toWorld = glm::inverse(viewProjection);
+    std::array<glm::dvec3, 8> corner;
+    for (int i = 0; i < 8; ++i) {
+        const glm::dvec4 p = toWorld * glm::dvec4(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0, 1.0);
+        corner[std::size_t(i)] = glm::dvec3(p) / p.w;
+    }
+    return corner;
+}
 constexpr float kHiddenAlpha = 0.22f;
 
 // The star's size is a fixed fraction of its distance to the camera, so it reads the same
@@ -46,7 +60,18 @@ void LightGizmoPass::addLine(const glm::dvec3& a, const glm::dvec3& b, const glm
     m_lines.push_back({glm::vec3(b), color});
 }
 
-void LightGizmoPass::render(const LightFrame& light, const CameraFrame& camera, bool showVolume, const RenderTarget& target)
+void LightGizmoPass::addBox(const std::array<glm::dvec3, 8>& corner, const glm::vec4& color)
+{
+    for (int i = 0; i < 8; ++i) {
+        for (int bit : {1, 2, 4}) {
+            if (!(i & bit))
+                addLine(corner[std::size_t(i)], corner[std::size_t(i | bit)], color);
+        }
+    }
+}
+
+void LightGizmoPass::render(const LightFrame& light, const CameraFrame& camera, bool showVolume, const RenderTarget& target,
+                            const CameraFrame* frozen)
 {
     if (target.size.isEmpty())
         return;
@@ -61,23 +86,21 @@ void LightGizmoPass::render(const LightFrame& light, const CameraFrame& camera, 
 
     if (showVolume) {
         // The volume is the unit cube of the light's clip space taken back to the world.
-        const glm::dmat4 toWorld = glm::inverse(light.viewProjection);
-        std::array<glm::dvec3, 8> corner;
-        for (int i = 0; i < 8; ++i) {
-            const glm::dvec4 p = toWorld * glm::dvec4(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0, 1.0);
-            corner[std::size_t(i)] = glm::dvec3(p) / p.w;
-        }
-        for (int i = 0; i < 8; ++i) {
-            for (int bit : {1, 2, 4}) {
-                if (!(i & bit))
-                    addLine(corner[std::size_t(i)], corner[std::size_t(i | bit)], kVolumeColor);
-            }
-        }
+        const std::array<glm::dvec3, 8> corner = clipCorners(light.viewProjection);
+        addBox(corner, kVolumeColor);
         // Rays from the light to the near corners make a perspective volume read as a cone.
         if (light.perspective) {
             for (int i = 0; i < 4; ++i)
                 addLine(light.position, corner[std::size_t(i)], kVolumeColor * glm::vec4(1, 1, 1, 0.5f));
         }
+    }
+
+    if (frozen) {
+        // The frozen camera's frustum, its eye joined to the near corners.
+        const std::array<glm::dvec3, 8> corner = clipCorners(frozen->viewProjection);
+        addBox(corner, kFrozenColor);
+        for (int i = 0; i < 4; ++i)
+            addLine(frozen->position, corner[std::size_t(i)], kFrozenColor);
     }
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);

@@ -6,6 +6,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <vector>
 
 namespace shadowlab {
@@ -18,7 +19,10 @@ class LightGizmoPass {
 public:
     explicit LightGizmoPass(GlFunctions* gl);
 
-    void render(const LightFrame& light, const CameraFrame& camera, bool showVolume, const RenderTarget& target);
+    // `frozen`: a camera the light was fitted to in place of `camera` (View > Freeze Shadow
+    // Frustum), drawn as its frustum.
+    void render(const LightFrame& light, const CameraFrame& camera, bool showVolume, const RenderTarget& target,
+                const CameraFrame* frozen = nullptr);
 
 private:
     struct LineVertex {
@@ -27,6 +31,8 @@ private:
     };
 
     void addLine(const glm::dvec3& a, const glm::dvec3& b, const glm::vec4& color);
+    // The 12 edges between corners that differ in one bit (clipCorners()' order).
+    void addBox(const std::array<glm::dvec3, 8>& corner, const glm::vec4& color);
 
     GlFunctions* m_gl;
     ShaderProgram m_program;

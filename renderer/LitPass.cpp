@@ -120,9 +120,8 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         defines << QStringLiteral("FOOTPRINT_BIAS");
         // Each tap's growth, unless the pass culls front faces (bias.cull_front, closed casters):
         // a lit surface's own depth is then not in the map, so no far tap can shadow it, and the
-        // growth only lets light leak at contacts (torus, low spot light, 640x360: pcf64 0.240 %
-        // misclassified with it, 0.145 % without). The lookup's own texel keeps its clearance,
-        // which thin parts and terminators still need (hard on the torus: 0.029 % with it, 0.05 % without).
+        // growth only lets light leak at contacts. The lookup's own texel keeps its clearance,
+        // which thin parts and terminators still need (docs/techniques.md#bias measures both).
         if (!settings.bias.cullFront)
             defines << QStringLiteral("FOOTPRINT_TAPS");
     }
@@ -139,7 +138,7 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         defines << QStringLiteral("MEASURE");
     else if (settings.shading.texelDensity && settings.shadow.enabled)
         defines << QStringLiteral("TEXEL_DENSITY");   // a view only: never in what is measured
-    if (!measure && settings.shading.shadowOnly)
+    if (!measure && settings.shading.shadowOnly && settings.shadow.enabled)
         defines << QStringLiteral("SHADOW_ONLY");     // likewise
     return defines;
 }

@@ -329,15 +329,23 @@ std::optional<std::size_t> statedFaceCount(const QString& path)
         }
         return std::nullopt;
     }
-    // OFF: "OFF", then "vertices faces edges" on the first line of numbers.
+    // OFF: "OFF", then "vertices faces edges", on the same line or the first line that is
+    // not a comment; three whole numbers, or no count at all.
     if (head.startsWith("OFF")) {
-        for (const QByteArray& line : head.split('\n').mid(1)) {
-            const QList<QByteArray> words = line.simplified().split(' ');
-            if (line.simplified().isEmpty() || line.startsWith('#'))
+        QList<QByteArray> lines = head.split('\n');
+        lines[0] = lines[0].mid(3);
+        for (const QByteArray& line : std::as_const(lines)) {
+            const QByteArray text = line.simplified();
+            if (text.isEmpty() || text.startsWith('#'))
                 continue;
-            bool ok = false;
-            const qulonglong n = words.value(1).toULongLong(&ok);
-            return ok ? std::optional(std::size_t(n)) : std::nullopt;
+            const QList<QByteArray> words = text.split(' ');
+            bool ok[3] = {false, false, false};
+            if (words.size() >= 3) {
+                words[0].toULongLong(&ok[0]);
+                words[2].toULongLong(&ok[2]);
+            }
+            const qulonglong n = words.value(1).toULongLong(&ok[1]);
+            return ok[0] && ok[1] && ok[2] ? std::optional(std::size_t(n)) : std::nullopt;
         }
         return std::nullopt;
     }

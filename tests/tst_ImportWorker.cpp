@@ -365,6 +365,8 @@ void tst_ImportWorker::headerCountsAreCheckedBeforeReading()
     QCOMPARE(statedFaceCount(off), std::optional<std::size_t>(20000000));
     QCOMPARE(statedFaceCount(small), std::optional<std::size_t>(1));
     QCOMPARE(statedFaceCount(writeFile(dir, "any.obj", "v 0 0 0\n")), std::optional<std::size_t>());
+    QCOMPARE(statedFaceCount(writeFile(dir, "inline.off", "OFF 8 6 0\n0 0 0\n")), std::optional<std::size_t>(6));
+    QCOMPARE(statedFaceCount(writeFile(dir, "vertex.off", "OFF\n  # indented\n1.5 20000000 3\n")), std::optional<std::size_t>());
     for (const QString& path : {ply, off}) {
         QElapsedTimer clock;
         clock.start();

@@ -22,6 +22,7 @@
 #include "ShadowTechnique.h"
 #include "SettingsSummary.h"
 #include "SliderSpinBox.h"
+#include "TestPictures.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -151,6 +152,8 @@ private slots:
     void captionsSayWhatTheMapIs();
     void compareCaptionsLeadWithWhatDiffers();
     void loupeMagnifiesThePixelsUnderThePointer();
+    void wipeShowsBothSidesOverTheSamePixels();
+    void frozenFrustumKeepsTheFitWhileTheCameraMoves();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
@@ -737,8 +740,90 @@ void tst_MainWindow::loupeMagnifiesThePixelsUnderThePointer()
                  QColor(view->loupeFrame().pixel(centre)).rgb());
     }
     QCOMPARE(view->frameCount(), frames);
+    keepPicture(m_window.get(), QStringLiteral("loupe"));
     m_window->action(QStringLiteral("loupeAction"))->trigger();
     QVERIFY(!view->loupe() && view->loupeFrame().isNull());
+}
+
+// View > Wipe A | B: one view, side A left of a divider and side B right of it over the same
+// pixels; dragging the divider moves it (not the camera); a click on B's part selects B.
+void tst_MainWindow::wipeShowsBothSidesOverTheSamePixels()
+{
+    SceneView* view = m_window->sceneView(Side::A);
+    m_window->setCompareMode(true);
+    Settings b = m_window->settings(Side::A);
+    applySetting(b, "shading.shadow_only", "true");     // B's pixels unlike A's everywhere
+    m_window->setSettings(Side::B, b);
+    m_window->action(QStringLiteral("wipeAction"))->trigger();
+    QVERIFY(m_window->wiping() && view->wiping());
+    QVERIFY(!m_window->sceneView(Side::B)->isVisible());
+    QVERIFY(settle(*m_window));
+    keepPicture(m_window.get(), QStringLiteral("wipe"));
+    const QImage wiped = view->grabFramebuffer();
+    Settings a = m_window->settings(Side::A);
+    m_window->setWipe(false);
+    m_window->setCompareMode(false);
+    QVERIFY(settle(*m_window));
+    // A alone at the wiped view's size: the left of the wipe is A's, the right is not.
+    view->resize(wiped.deviceIndependentSize().toSize());
+    const QImage alone = view->grabFramebuffer();
+    QCOMPARE(alone.size(), wiped.size());
+    const int divider = wiped.width() / 2;
+    int leftDiffers = 0, rightDiffers = 0;
+    for (int y = 40; y < wiped.height(); y += 3) {       // below the side labels
+        for (int x = 0; x < wiped.width(); x += 3) {
+            if (std::abs(x - divider) <= 12)
+                continue;                                // the divider and its handle
+            const bool differs = wiped.pixel(x, y) != alone.pixel(x, y);
+            (x < divider ? leftDiffers : rightDiffers) += differs;
+        }
+    }
+    QVERIFY2(leftDiffers == 0 && rightDiffers > 100, qPrintable(QStringLiteral("left %1, right %2").arg(leftDiffers).arg(rightDiffers)));
+
+    // The divider drags, the camera stays; a click right of it selects side B.
+    m_window->setCompareMode(true);
+    m_window->setWipe(true);
+    QVERIFY(settle(*m_window));
+    const CameraSettings camera = m_window->settings(Side::A).camera;
+    const QPoint on(int(view->wipePosition() * view->width()), view->height() / 3);
+    QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, on);
+    QMouseEvent move(QEvent::MouseMove, QPointF(view->width() / 4, on.y()), view->mapToGlobal(QPointF(view->width() / 4, on.y())),
+                     Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, QPoint(view->width() / 4, on.y()));
+    QVERIFY2(std::abs(view->wipePosition() - 0.25) < 0.02, qPrintable(QString::number(view->wipePosition())));
+    QVERIFY(m_window->settings(Side::A).camera == camera);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, QPoint(view->width() * 3 / 4, view->height() / 3));
+    QCOMPARE(m_window->selectedSide(), Side::B);
+    m_window->setCompareMode(false);
+    QVERIFY(!m_window->wiping() && !view->wiping());
+    QVERIFY(a == m_window->settings(Side::A));
+}
+
+// View > Freeze Shadow Frustum: the light stays fitted to the camera of that moment while the
+// camera moves away to look at the fit from outside; unfrozen, it follows the camera again.
+void tst_MainWindow::frozenFrustumKeepsTheFitWhileTheCameraMoves()
+{
+    Settings s = presetSettings(QStringLiteral("city"));
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    SceneView* view = m_window->sceneView(Side::A);
+    const glm::dmat4 fitted = view->renderer()->lightFrame().viewProjection;
+    m_window->action(QStringLiteral("freezeAction"))->trigger();
+    QVERIFY(view->frozenCamera().has_value());
+    keepPicture(m_window.get(), QStringLiteral("frozen-before"));
+    // Back and up, looking down at the street the fit was made for.
+    CameraSettings away = s.camera;
+    away.position = s.camera.target + (s.camera.position - s.camera.target) * 4.0 + glm::dvec3(0.0, 60.0, 0.0);
+    s.camera = away;
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    keepPicture(m_window.get(), QStringLiteral("frozen-away"));
+    QVERIFY(view->renderer()->lightFrame().viewProjection == fitted);
+    m_window->action(QStringLiteral("freezeAction"))->trigger();
+    QVERIFY(!view->frozenCamera());
+    QVERIFY(settle(*m_window));
+    QVERIFY(view->renderer()->lightFrame().viewProjection != fitted);     // fitted to the camera now
 }
 
 // A new user read "ortho light" over a virtual map's pool: each caption names the map it shows,
@@ -760,13 +845,13 @@ void tst_MainWindow::captionsSayWhatTheMapIs()
     for (const QLabel* label : m_window->findChildren<QLabel*>())
         shown = shown || label->toolTip() == depthPane;
     QVERIFY2(shown, qPrintable(depthPane));
-    // The picture's own label says how several views lie: a point light's six faces in 2 rows
-    // of 3, four cascades in 2 of 2 (not "side by side").
+    // The picture's own label says how several views lie: a point light's six faces in a 3 × 2
+    // grid, four cascades in a 2 × 2 one (not "side by side").
     const DepthMapFacts facts = depthMapFacts(*m_window->sceneView(Side::A)->renderer(), std::nullopt);
     if (settings.light.type == LightType::Point)
-        QVERIFY2(volumeTexts(facts).front().startsWith("6 views in 2 rows of 3"), qPrintable(volumeTexts(facts).front()));
+        QVERIFY2(volumeTexts(facts).front().startsWith("6 views in a 3 × 2 grid"), qPrintable(volumeTexts(facts).front()));
     else if (settings.shadow.cascades == 4)
-        QVERIFY2(volumeTexts(facts).front().startsWith("4 views in 2 rows of 2"), qPrintable(volumeTexts(facts).front()));
+        QVERIFY2(volumeTexts(facts).front().startsWith("4 views in a 2 × 2 grid"), qPrintable(volumeTexts(facts).front()));
 }
 
 void tst_MainWindow::accuracyDockOverlaysErrorsAndAppliesSweepPoints()
@@ -951,14 +1036,15 @@ void tst_MainWindow::fieldsTheSettingsIgnoreAreGreyedWithTheReason()
     auto* receiverPlane = dock->findChild<QWidget*>(QStringLiteral("bias.receiver_plane"));
     QVERIFY(pool && receiverPlane);
     QVERIFY(!pool->isEnabled());
-    QVERIFY2(pool->toolTip().contains("shadow.virtual"), qPrintable(pool->toolTip()));
+    QVERIFY2(pool->toolTip().contains("Virtual maps are off: turn on shadow.virtual"), qPrintable(pool->toolTip()));
+    QVERIFY2(pool->toolTip().startsWith("<p><b>shadow.virtual_pool</b>"), qPrintable(pool->toolTip()));    // its key first, still
     QVERIFY(!receiverPlane->isEnabled());
     QVERIFY2(receiverPlane->toolTip().contains("one lookup"), qPrintable(receiverPlane->toolTip()));
     applySetting(s, "shadow.virtual", "true");
     applySetting(s, "filter.mode", "pcf");
     m_window->setSettings(Side::A, s);
     QVERIFY(pool->isEnabled() && receiverPlane->isEnabled());
-    QVERIFY2(!pool->toolTip().contains("Virtual maps are off"), qPrintable(pool->toolTip()));
+    QVERIFY2(!pool->toolTip().contains("Virtual maps are off") && !pool->toolTip().contains("Not read now"), qPrintable(pool->toolTip()));
     QVERIFY(pool->toolTip().contains(PropertyFields::toolTip("shadow.virtual_pool").left(30)));
 }
 

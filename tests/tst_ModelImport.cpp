@@ -594,7 +594,12 @@ private Q_SLOTS:
         QVERIFY(button && button->isVisibleTo(&window));
         QCOMPARE(button->text(), QString::number(warnings.size()));
         QCOMPARE(button->menu()->actions().size(), warnings.size());
-        // A clean file next: its own warnings, none, replace them.
+        // Undone, another scene is shown: the file's warnings go with it.
+        window.undoStack(MainWindow::Side::A)->undo();
+        QTRY_VERIFY(!window.warnings().join(" ").contains("AnotherMissing.png"));
+        // A clean file next: its own warnings, none, replace any.
+        QCOMPARE(window.openScene(scene), QString());
+        QVERIFY(window.warnings().join(" ").contains("AnotherMissing.png"));
         QCOMPARE(window.openScene(model("OBJ/spider.obj")), QString());
         QTRY_VERIFY(!window.warnings().join(" ").contains("AnotherMissing.png"));
     }

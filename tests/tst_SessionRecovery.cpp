@@ -14,6 +14,7 @@
 #include "SettingsKeys.h"
 #include "StopSignals.h"
 #include "TestFiles.h"
+#include "TestPictures.h"
 
 #include <QDir>
 #include <QLabel>
@@ -41,14 +42,6 @@ QString storedSettings(const QString& side)
     QSettings store;
     store.sync();   // read what is on disk now
     return store.value(QStringLiteral("settings/") + side).toString();
-}
-
-// With SHADOWLAB_TEST_PICTURES set to a folder, what the user sees at each step is saved there.
-void keepPicture(QWidget* widget, const QString& name)
-{
-    const QString folder = qEnvironmentVariable("SHADOWLAB_TEST_PICTURES");
-    if (!folder.isEmpty() && widget)
-        widget->grab().save(QDir(folder).filePath(name + QStringLiteral(".png")));
 }
 
 QMessageBox* box(const MainWindow& window, const QString& name)

@@ -36,7 +36,14 @@ private Q_SLOTS:
         QVERIFY(ignoredBecause(s, "filter.kernel").isEmpty());
         applySetting(s, "shadow.virtual", "true");
         QVERIFY(ignoredBecause(s, "shadow.virtual_pool").isEmpty());
+        QVERIFY(ignoredBecause(s, "shadow.cascades").contains("replaces cascades"));
+        QVERIFY(ignoredBecause(s, "map.slices").contains("virtual"));
+        applySetting(s, "shadow.virtual", "false");
+        applySetting(s, "filter.mode", "dpcf");
+        QVERIFY(ignoredBecause(s, "filter.early_out").isEmpty());       // dpcf skips its taps outside penumbrae too
+        applySetting(s, "filter.mode", "pcf");
         applySetting(s, "shadow.cascades", "3");
+        QVERIFY(ignoredBecause(s, "map.slices").contains("cascades"));
         applySetting(s, "shadow.split", "uniform");
         QVERIFY(ignoredBecause(s, "shadow.split").isEmpty());
         QVERIFY(ignoredBecause(s, "shadow.split_lambda").contains("practical"));

@@ -101,7 +101,8 @@ void printRecommendations(const std::vector<ReportRow>& rows)
         out() << "\nWhat to pick" << (lights.size() > 1 ? QStringLiteral(" under the %1").arg(light) : QString()) << ":\n";
         const std::vector<Recommendation> picks = recommend(rows, light);
         if (picks.empty())
-            out() << "  nothing: every configuration's picture is visibly wrong at this size (listed above as left out)\n";
+            out() << (visiblyWrongRows(rows, light).empty() ? "  nothing: no configuration under this light had a pixel facing the light in view\n"
+                                                            : "  nothing: every configuration's picture is visibly wrong at this size (listed above as left out)\n");
         for (const Recommendation& pick : picks)
             out() << "  " << pick.title() << ": " << pick.row->label << "\n    " << pick.reason() << '\n';
         if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty() && !picks.empty())

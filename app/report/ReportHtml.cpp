@@ -181,6 +181,8 @@ ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
     ChartScale c;
     double xLow = 0.0, xHigh = 0.0, yLow = 0.0, yHigh = 0.0;
     for (const ReportRow& r : rows) {
+        if (!std::isfinite(r.frame.p10) || !std::isfinite(r.frame.p90))
+            continue;   // never drawn; the table says what it is
         if (r.frame.p10 > 0.0)
             xLow = xLow > 0.0 ? std::min(xLow, r.frame.p10) : r.frame.p10;
         xHigh = std::max(xHigh, r.frame.p90);
@@ -618,9 +620,13 @@ QString recommendationSection(const std::vector<ReportRow>& rows, const QStringL
             section += QStringLiteral("<h3>Under the %1</h3>").arg(html(light));
         const std::vector<Recommendation> picks = recommend(rows, light);
         if (picks.empty()) {
-            section += QStringLiteral("<p class=\"wrong\">Nothing: every configuration's picture is visibly wrong at this size (DSSIM over %1 "
-                                      "against both references). A larger image, a finer map or a tighter light volume may help.</p>")
-                           .arg(kVisibleDssim);
+            section += visiblyWrongRows(rows, light).empty()
+                           ? QStringLiteral("<p>Nothing: no configuration under this light has a pixel facing the light in view, so none "
+                                            "was measured.</p>")
+                           : QStringLiteral("<p class=\"wrong\">Nothing: every configuration's picture is visibly wrong at this size "
+                                            "(DSSIM over %1 against both references). A larger image, a finer map or a tighter light "
+                                            "volume may help.</p>")
+                                 .arg(kVisibleDssim);
             continue;
         }
         section += QStringLiteral("<dl class=\"picks\">");
@@ -638,7 +644,8 @@ QString recommendationSection(const std::vector<ReportRow>& rows, const QStringL
         }
     }
     return section + QStringLiteral("<p class=\"facts\">Two rows tie when neither is clearly better: times whose p10–p90 overlap, "
-                                    "errors whose noise bands overlap (below). Of tied rows the faster is picked.</p>");
+                                    "errors whose noise bands overlap (below). Of rows tied in error the faster is picked; of rows tied "
+                                    "in time, for the cheapest, the more accurate.</p>");
 }
 
 // Both charts and what their dots, lines and bars mean; a pair per light projection where the

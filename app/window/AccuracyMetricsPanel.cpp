@@ -90,6 +90,11 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
     m_overlayCheck->setToolTip(tr("Grey the scene view and paint false shadow magenta and false light cyan "
                                   "(against the hard-shadow reference)"));
     overlayRow->addWidget(m_overlayCheck);
+    overlayRow->addStretch(1);
+    layout->addLayout(overlayRow);
+    // What the overlay shows, on a line of its own under the check box: the dock is narrow.
+    auto* kindRow = new QHBoxLayout;
+    kindRow->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);
     m_overlayKind = new QComboBox;
     m_overlayKind->setObjectName(QStringLiteral("overlayKind"));
     m_overlayKind->addItem(tr("wrong pixels"));
@@ -97,9 +102,9 @@ AccuracyMetricsPanel::AccuracyMetricsPanel(QWidget* parent) : QWidget(parent)
     m_overlayKind->setToolTip(tr("Wrong pixels: those wrong by more than half, as false shadow or false light. Heat: every pixel's "
                                  "difference from the reference, so partial shadow that is wrong by less (a filter's moiré over a lit "
                                  "floor, a soft edge too wide) shows too."));
-    overlayRow->addWidget(m_overlayKind);
-    overlayRow->addStretch(1);
-    layout->addLayout(overlayRow);
+    kindRow->addWidget(m_overlayKind);
+    kindRow->addStretch(1);
+    layout->addLayout(kindRow);
     // The colours of errorImage(), or errorHeatImage()'s ramp.
     auto* legend = noteLabel(QStringLiteral("overlayLegend"));
     legend->setContentsMargins(m_overlayCheck->style()->pixelMetric(QStyle::PM_IndicatorWidth) + 6, 0, 0, 0);

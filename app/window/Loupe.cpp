@@ -68,7 +68,7 @@ void Loupe::paintEvent(QPaintEvent*)
     const QColor c = m_region.pixelColor(kRadius, kRadius);
     painter.setPen(QColor(225, 228, 235));
     painter.drawText(QRect(4, kSide + 2, kSide - 6, kCaption), Qt::AlignVCenter | Qt::AlignLeft,
-                     tr("%1, %2 · rgb %3 %4 %5").arg(m_centre.x()).arg(m_centre.y()).arg(c.red()).arg(c.green()).arg(c.blue()));
+                     tr("%1, %2  %3").arg(m_centre.x()).arg(m_centre.y()).arg(c.name()));
 }
 
 } // namespace shadowlab

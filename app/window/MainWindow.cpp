@@ -80,6 +80,7 @@ void MainWindow::createViews()
             turnLight(azimuth, elevation);
         });
         connect(m_views[i], &SceneView::activated, this, [this, side] { selectSide(side); });
+        connect(m_views[i], &SceneView::wipeSideActivated, this, [this] { selectSide(Side::B); });
         connect(m_views[i], &SceneView::frameRendered, this, [this, side] { frameRendered(side); });
         connect(m_views[i], &SceneView::renderFailed, this, [this, side](const QString& key, const QString& message) {
             if (side == selectedSide())
@@ -113,10 +114,8 @@ void MainWindow::createControllers()
     m_timing = new TimingController(m_sides, m_views, this);
     connect(m_timing, &TimingController::frameRecorded, this, &MainWindow::showFrameTimes);
     connect(m_timing, &TimingController::message, this, &MainWindow::showStatusMessage);
-    m_import = new ImportController(this, m_sides, [this](Settings settings, const QString& undoText) {
-        // Framed for the view it is shown in, whatever its shape.
-        settings.camera = presetCamera(settings.scene, viewAspect());
-        setSettings(selectedSide(), settings, undoText);
+    m_import = new ImportController(this, m_sides, [this](const Settings& settings, const QString& undoText) {
+        setSettings(selectedSide(), framedForView(settings), undoText);
     });
     m_session = new PersistenceController(*this, m_sides, *m_import, m_persistence == Persistence::Restore);
     connect(m_import, &ImportController::restoredSidesChanged, this, &MainWindow::showSides);
@@ -147,7 +146,11 @@ void MainWindow::createDocks()
     tabifyDockWidget(m_dock, m_accuracyDock);
     m_dock->raise();
     connect(m_accuracyDock, &AccuracyDock::errorOverlayChanged, this,
-            [this](int side, const QImage& image) { m_views[std::size_t(side)]->setErrorOverlay(image); });
+            [this](int side, const QImage& image) {
+                m_views[std::size_t(side)]->setErrorOverlay(image);
+                if (side == 1)
+                    m_views[0]->setWipeOverlay(image);     // shown while wiping, right of the divider
+            });
     connect(m_accuracyDock, &AccuracyDock::applySettingsRequested, this, [this](const Settings& settings) {
         try {
             setSettings(selectedSide(), settings, tr("Apply measured configuration"));
@@ -190,6 +193,10 @@ void MainWindow::frameRendered(Side side)
         // The dock's sliders follow the size of the scene now drawn.
         if (const Scene* scene = renderer->scene(); scene && scene->name != m_sizedScene) {
             m_sizedScene = scene->name;
+            // A frozen frustum belongs to the scene it was frozen in.
+            if (m_freezeAction && m_freezeAction->isChecked())
+                m_freezeAction->setChecked(false);
+
             const Bounds models = scene->modelBounds();
             m_dock->setSceneSize(models.center(), glm::length(models.max - models.min) * 0.5);
         }
@@ -214,6 +221,13 @@ void MainWindow::createActions()
     m_compareAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
     m_compareAction->setToolTip(tr("Split the scene into sides A and B with their own settings and one camera (Ctrl+D)"));
     connect(m_compareAction, &QAction::toggled, this, &MainWindow::setCompareMode);
+    m_wipeAction = new QAction(tr("&Wipe A | B"), this);
+    m_wipeAction->setObjectName(QStringLiteral("wipeAction"));
+    m_wipeAction->setCheckable(true);
+    m_wipeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D));
+    m_wipeAction->setToolTip(tr("Compare mode over the same pixels: side A left of a divider and side B right of it, in one view; drag "
+                                "the divider across (Ctrl+Shift+D)"));
+    connect(m_wipeAction, &QAction::toggled, this, &MainWindow::setWipe);
 
     m_copyAction = new QAction(tr("Copy A → B"), this);
     m_copyAction->setObjectName(QStringLiteral("copyAction"));
@@ -300,6 +314,7 @@ void MainWindow::createViewMenu()
 {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_compareAction);
+    view->addAction(m_wipeAction);
     view->addSeparator();
     view->addAction(m_volumeAction);
     view->addAction(m_animateAction);
@@ -324,6 +339,7 @@ void MainWindow::createViewMenu()
     view->addAction(m_densityAction);
     view->addAction(m_shadowOnlyAction);
     view->addAction(m_loupeAction);
+    view->addAction(m_freezeAction);
     view->addAction(m_measureAction);
     view->addSeparator();
     view->addAction(m_dock->toggleViewAction());
@@ -364,6 +380,16 @@ void MainWindow::createMeasureActions()
         for (SceneView* view : m_views)
             view->setLoupe(on);
     });
+    m_freezeAction = new QAction(tr("&Freeze Shadow Frustum"), this);
+    m_freezeAction->setObjectName(QStringLiteral("freezeAction"));
+    m_freezeAction->setCheckable(true);
+    m_freezeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
+    m_freezeAction->setToolTip(tr("Keep the light fitted to the camera as it is now (its culling, cascades and fitted volume) while "
+                                  "you move the camera away to look at them from outside; the frozen camera is drawn (Ctrl+F)"));
+    connect(m_freezeAction, &QAction::toggled, this, [this](bool on) {
+        for (SceneView* view : m_views)
+            view->setFrozenCamera(on ? std::optional(m_sides.selectedSettings().camera) : std::nullopt);
+    });
     m_measureAction = m_timing->createMeasureAction(this);
 }
 
@@ -393,7 +419,10 @@ void MainWindow::createStatusBar()
     m_status = new WindowStatusBar(m_import->createProgressBox());
     m_status->setTiming({}, m_timing->toolTip());
     setStatusBar(m_status);
-    connect(m_import, &ImportController::warningsFound, this, [this](const QStringList& warnings) { m_status->setWarnings(QStringLiteral("import"), warnings); });
+    connect(m_import, &ImportController::warningsFound, this, [this](const QStringList& warnings) {
+        m_warnedScene = m_sides.selectedSettings().scene;
+        m_status->setWarnings(QStringLiteral("import"), warnings);
+    });
 }
 
 QAction* MainWindow::action(const QString& objectName) const
@@ -419,8 +448,24 @@ void MainWindow::setSettings(Side side, const Settings& settings, const QString&
     recordChange(before, side, undoText);
 }
 
-void MainWindow::applyEdit(const Settings& settings)
+Settings MainWindow::framedForView(Settings settings) const
 {
+    // A scene opened or chosen, with the camera it comes with: framed for the view it is shown
+    // in, whatever its shape (a camera the user set stays as it is).
+    if (settings.scene != m_sides.selectedSettings().scene) {
+        try {
+            if (settings.camera == presetSettings(settings.scene).camera)
+                settings.camera = presetCamera(settings.scene, viewAspect());
+        } catch (const SettingsError&) {
+            // The scene's own error is said where it is applied.
+        }
+    }
+    return settings;
+}
+
+void MainWindow::applyEdit(const Settings& requested)
+{
+    const Settings settings = framedForView(requested);
     const SettingsChange::Sides before = m_sides.set(m_sides.selected(), settings);
     pushSettings();
     recordChange(before, selectedSide(), UndoController::editText(before, settings, m_sides.selected()), true);
@@ -459,7 +504,7 @@ QStringList MainWindow::warnings() const
 double MainWindow::viewAspect() const
 {
     const SceneView* view = m_views[std::size_t(selectedSide())];
-    return view != nullptr && view->height() > 0 ? double(view->width()) / view->height() : 16.0 / 9.0;
+    return view != nullptr ? view->aspect() : 16.0 / 9.0;
 }
 
 void MainWindow::setCamera(const CameraSettings& camera)
@@ -481,6 +526,13 @@ void MainWindow::pushSettings()
     }
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_sides.settings(i));
+    // A file's warnings are the file's: another scene shown (a preset, an undo) takes them off.
+    if (!m_warnedScene.isEmpty() && m_sides.settings(0).scene != m_warnedScene && m_sides.settings(1).scene != m_warnedScene) {
+        m_warnedScene.clear();
+        m_status->setWarnings(QStringLiteral("import"), {});
+    }
+    if (wiping())
+        m_views[0]->setWipe(m_sides.settings(1));
     m_accuracyDock->setSides(m_sides.settings(0), compareMode() ? std::optional(m_sides.settings(1)) : std::nullopt, int(m_sides.selected()));
     updateCaptions();
     m_session->changed();
@@ -499,6 +551,9 @@ void MainWindow::updateCaptions()
         m_scenePanes[i]->setCaption(compareMode() ? tr("Side %1").arg(QLatin1String(kSideNames[i])) : tr("Scene"),
                                     compareMode() ? comparedSummary(m_sides.settings(i), m_sides.settings(1 - i)) : settingsSummary(m_sides.settings(i)));
     }
+    // Wiping, one pane holds both sides: its caption says what differs, B's side of it.
+    if (wiping())
+        m_scenePanes[0]->setCaption(tr("A | B wipe"), tr("B: %1").arg(comparedSummary(m_sides.settings(1), m_sides.settings(0))));
     const Settings& shown = m_sides.selectedSettings();
     m_depthPane->setCaption(compareMode() ? tr("Shadow map of %1").arg(QLatin1String(kSideNames[m_sides.selected()])) : tr("Shadow map"),
                             shadowMapSummary(shown));
@@ -516,6 +571,29 @@ void MainWindow::updateStatus()
     m_status->showMap(renderer->lastFrame(), *view->renderedSettings());
 }
 
+void MainWindow::setWipe(bool on)
+{
+    if (on == wiping())
+        return;
+    if (on && !compareMode())
+        setCompareMode(true);
+    {
+        const QSignalBlocker block(m_wipeAction);
+        m_wipeAction->setChecked(on);
+    }
+    // One view holds both sides; B's own view rests meanwhile.
+    m_scenePanes[1]->setVisible(compareMode() && !on);
+    m_views[0]->setWipe(on ? std::optional(m_sides.settings(1)) : std::nullopt);
+    if (on)
+        m_views[0]->setWipeOverlay(m_views[1]->errorOverlay());
+    updateCaptions();
+}
+
+bool MainWindow::wiping() const
+{
+    return m_views[0]->wiping();
+}
+
 void MainWindow::setCompareMode(bool on)
 {
     if (on == compareMode())
@@ -527,7 +605,9 @@ void MainWindow::setCompareMode(bool on)
     }
     m_copyAction->setEnabled(on);
     m_swapAction->setEnabled(on);
-    m_scenePanes[1]->setVisible(on);
+    if (!on)
+        setWipe(false);
+    m_scenePanes[1]->setVisible(on && !wiping());
     // Two scene views need the room more than the depth map does.
     const int total = m_mainSplitter->width();
     m_mainSplitter->setSizes(on ? QList<int>{total * 3 / 4, total / 4} : QList<int>{total * 3 / 5, total * 2 / 5});

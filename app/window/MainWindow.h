@@ -54,6 +54,9 @@ public:
     void setSettings(Side side, const Settings& settings, const QString& undoText = {});
 
     bool compareMode() const { return m_sides.isOn(); }
+    // Compare mode in one view: A left of a divider, B right of it, over the same pixels.
+    void setWipe(bool on);
+    bool wiping() const;
     void setCompareMode(bool on);
     Side selectedSide() const { return Side(m_sides.selected()); }
     void selectSide(Side side);
@@ -132,6 +135,8 @@ private:
     void setCamera(const CameraSettings& camera);
     // The selected side's scene view's width over its height: what a model's camera is framed for.
     double viewAspect() const;
+    // `settings` with the camera of a newly shown scene framed for viewAspect().
+    Settings framedForView(Settings settings) const;
     void pushSettings();
     // The sides shown as they now are: the views, and the dock on the selected one.
     void showSides();
@@ -173,10 +178,13 @@ private:
     QAction* m_densityAction = nullptr;
     QAction* m_shadowOnlyAction = nullptr;
     QAction* m_loupeAction = nullptr;
+    QAction* m_wipeAction = nullptr;
+    QAction* m_freezeAction = nullptr;
     QAction* m_measureAction = nullptr;
     QToolBar* m_toolBar = nullptr;
     QString m_lastFitWarning;   // said once in the status bar, not on every frame
     QString m_sizedScene;       // the scene the dock's slider spans were last fitted to
+    QString m_warnedScene;      // the scene whose file the import warnings are of
 };
 
 } // namespace shadowlab

@@ -458,17 +458,22 @@ void PropertiesDock::updateDependentRows()
             continue;
         const QString why = ignoredBecause(m_pending, info.key);
         for (QWidget* w : m_fields->row(info.key)) {
-            // The field's own tooltip is kept aside while the reason shows, and comes back after.
-            const QVariant own = w->property("ownToolTip");
+            // The reason goes after the field's own tooltip (which names its key first), and
+            // comes off again. A field that rewrote its tooltip since (a filter's help on a load)
+            // has lost the reason: what it holds now is its own.
+            const QString shown = w->property("shownToolTip").toString();
+            const QString own = !shown.isEmpty() && w->toolTip() == shown ? w->property("ownToolTip").toString() : w->toolTip();
             if (!why.isEmpty()) {
-                if (!own.isValid())
-                    w->setProperty("ownToolTip", w->toolTip());
+                const QString tip = QStringLiteral("%1<p><b>Not read now:</b> %2</p>").arg(own, why.toHtmlEscaped());
                 w->setEnabled(false);
-                w->setToolTip(QStringLiteral("<b>%1</b><br>%2").arg(why.toHtmlEscaped(), own.isValid() ? own.toString() : w->property("ownToolTip").toString()));
-            } else if (own.isValid()) {
+                w->setToolTip(tip);
+                w->setProperty("ownToolTip", own);
+                w->setProperty("shownToolTip", tip);
+            } else if (!shown.isEmpty()) {
                 w->setEnabled(true);
-                w->setToolTip(own.toString());
+                w->setToolTip(own);
                 w->setProperty("ownToolTip", QVariant());
+                w->setProperty("shownToolTip", QVariant());
             }
         }
     }

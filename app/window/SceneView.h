@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 
+class QOpenGLFramebufferObject;
+
 namespace shadowlab {
 
 class LightGizmoPass;
@@ -42,6 +44,21 @@ public:
     bool loupe() const { return m_loupe != nullptr; }
     // The last frame as read back for the loupe (null while it is off).
     const QImage& loupeFrame() const { return m_loupeFrame; }
+    // The wipe: `other` (compare mode's side B) drawn over the same pixels right of a divider
+    // that a drag moves, this view's own settings left of it; nullopt ends it. `other` is drawn
+    // by a second renderer on this view's context, with caches of its own.
+    void setWipe(const std::optional<Settings>& other);
+    bool wiping() const { return m_wipe.has_value(); }
+    // Where the divider stands, as a share of the width from the left.
+    double wipePosition() const { return m_wipePosition; }
+    void setWipePosition(double position);
+    // The other side's error overlay, shown right of the divider while wiping.
+    void setWipeOverlay(const QImage& image);
+    // Freeze the shadow frustum: the light stays fitted to `camera` (culling, cascades, the fit)
+    // while the view's own camera moves, so fitting and culling can be looked at from outside;
+    // the frozen camera's frustum is drawn. nullopt follows the view's camera again.
+    void setFrozenCamera(const std::optional<CameraSettings>& camera);
+    const std::optional<CameraSettings>& frozenCamera() const { return m_frozenCamera; }
 
     // Null until the first initializeGL() and after the context goes away.
     const Renderer* renderer() const { return m_renderer.get(); }
@@ -54,6 +71,9 @@ public:
     void redrawForMeasurement();
     double lastFrameMs() const { return m_lastFrameMs; }
 
+    // Its width over its height, what a model's camera is framed for (16:9 before it has a size).
+    double aspect() const { return width() > 0 && height() > 0 ? double(width()) / height() : 16.0 / 9.0; }
+
     QSize minimumSizeHint() const override { return {0, 0}; }
     QSize sizeHint() const override { return {640, 480}; }
 
@@ -64,6 +84,7 @@ signals:
     // Ctrl+drag: turn the light by these degrees of azimuth and elevation around its target.
     void lightTurned(double azimuthDegrees, double elevationDegrees);
     void activated();   // pressed: the window selects this view's side
+    void wipeSideActivated();   // pressed right of the wipe's divider: the other side's pixels
 
 protected:
     void initializeGL() override;
@@ -73,10 +94,14 @@ protected:
     void wheelEvent(QWheelEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
 
 private:
     void cleanup();
     void renderFrame(const Settings& settings);
+    void drawWipe();
+    void paintWipeDivider();
+    bool nearWipeDivider(const QPoint& position) const;
 
     Settings m_settings;
     std::optional<Settings> m_rendered;
@@ -86,6 +111,13 @@ private:
     QImage m_errorOverlay;
     Loupe* m_loupe = nullptr;
     QImage m_loupeFrame;
+    std::optional<CameraSettings> m_frozenCamera;
+    std::optional<Settings> m_wipe;
+    QImage m_wipeOverlay;
+    std::unique_ptr<Renderer> m_wipeRenderer;
+    std::unique_ptr<QOpenGLFramebufferObject> m_wipeTarget;
+    double m_wipePosition = 0.5;
+    bool m_draggingWipe = false;
     QPoint m_lastMouse;
     int m_frameCount = 0;
     double m_lastFrameMs = 0.0;

@@ -119,19 +119,19 @@ void SliderSpinBox::setSliderSpan(double low, double high, Scale scale)
 
 void SliderSpinBox::fitSpanTo(double value)
 {
-    // The span as set, widened where a value set from outside (a model's bias, a scene's
-    // light) lies at or past one of its ends: that value then sits in the slider's middle, with
-    // room both ways, the spin box's range permitting.
+    // The span as set, or, for a value past one of its ends (a model's bias, a scene's light),
+    // one widened round it so that the value sits in the middle with room both ways, the spin
+    // box's range permitting.
     double low = m_baseLow, high = m_baseHigh;
-    if (m_scale == Scale::Logarithmic) {
-        if (value > 0.0 && value >= std::pow(high, 0.9) * std::pow(low, 0.1))
-            high = std::max(high, value * std::sqrt(high / low));
-        if (value > 0.0 && value < low)
-            low = value / std::sqrt(high / low);
-    } else {
-        if (value >= low + 0.9 * (high - low))
-            high = std::max(high, low + 2.0 * (value - low));
-        if (value < low)
+    if (m_scale == Scale::Logarithmic && value > 0.0 && low > 0.0) {
+        if (value > high)
+            high = value * value / low;
+        else if (value < low)
+            low = value * value / high;
+    } else if (m_scale == Scale::Linear) {
+        if (value > high)
+            high = value + (value - low);
+        else if (value < low)
             low = value - (high - value);
     }
     m_spanLow = std::max(low, m_spinBox->minimum());
@@ -175,14 +175,16 @@ void SliderSpinBox::setValue(double value)
     m_settingValue = true;
     m_spinBox->setValue(value);
     m_settingValue = false;
-    // Not under a dragging hand: the thumb would jump away from it.
-    if (!m_slider->isSliderDown()) {
-        const double low = m_spanLow, high = m_spanHigh;
-        fitSpanTo(m_spinBox->value());
-        if (low != m_spanLow || high != m_spanHigh) {
-            updateSliderRange();
-            return;
-        }
+    // The span follows a value that left it, and returns to the span as set once the value is
+    // back inside that; a value that only moved within it leaves it be, so the user's own keys
+    // and clicks never make the thumb jump. Never under a dragging hand.
+    const double v = m_spinBox->value();
+    const bool left = v < m_spanLow || v > m_spanHigh;
+    const bool back = (m_spanLow != m_baseLow || m_spanHigh != m_baseHigh) && v >= m_baseLow && v <= m_baseHigh;
+    if (!m_slider->isSliderDown() && (left || back)) {
+        fitSpanTo(v);
+        updateSliderRange();
+        return;
     }
     const QSignalBlocker block(m_slider);
     m_slider->setValue(sliderPosition(value));

@@ -20,8 +20,8 @@ public:
     SliderSpinBox(double minimum, double maximum, int decimals, QWidget* parent = nullptr);
 
     // The part of the range the slider covers; values outside it still fit in the spin box. A
-    // value set at or past one of its ends (setValue()) widens it so the value has room both
-    // ways; it narrows back to this span when the value returns inside.
+    // value set past one of its ends (setValue()) widens it so the value has room both ways; it
+    // narrows back to this span when a value set returns inside.
     void setSliderSpan(double low, double high, Scale scale = Scale::Linear);
     // The span the slider covers now.
     double sliderLow() const { return m_spanLow; }
