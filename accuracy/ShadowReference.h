@@ -40,6 +40,7 @@ struct ReferenceKey {
     double coneFov = 0.0;           // a spot light's cone
     double lightRadius = 0.0;
     int samplesPerAxis = 0;
+    ObjectSwitches objects;         // casters and receivers switched off change what is traced
 
     bool operator==(const ReferenceKey&) const = default;
 };

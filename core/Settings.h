@@ -3,6 +3,7 @@
 #include <glm/vec3.hpp>
 
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -203,8 +204,19 @@ struct ReferenceSettings {
     bool operator==(const ReferenceSettings&) const = default;
 };
 
+// Objects of the scene switched off as casters or receivers, by name, or "#i" for the object at
+// index i (a name that is empty, shared or holds a comma): how much of a shadow one object
+// casts, or whether a surface needs to receive at all, seen by switching it.
+struct ObjectSwitches {
+    QStringList noCast;                     // cast no shadow (not in the map, nor to the reference's rays)
+    QStringList noReceive;                  // always lit, and out of what is measured
+
+    bool operator==(const ObjectSwitches&) const = default;
+};
+
 struct Settings {
     QString scene = QStringLiteral("seed"); // one of sceneNames() (SceneNames.h), or a model or scene file's absolute path
+    ObjectSwitches objects;                 // of `scene`
     LightSettings light;
     MapSettings map;
     BiasSettings bias;

@@ -75,6 +75,35 @@ Entry sceneKey(const SettingPresentation& look)
             }};
 }
 
+// A list of the scene's objects (ObjectSwitches): names, or #i, separated by commas. Whether
+// they are in the scene is checked where the scene is built (it is not known here).
+Entry objectSwitchKey(const char* key, const char* help, const QString& label, QStringList ObjectSwitches::*list)
+{
+    const QString k = QString::fromLatin1(key);
+    const KeySpec spec{.key = key, .help = help, .look = {.label = label, .group = kScene}};
+    return {describe(spec, "objects", QStringLiteral("names or #i, comma-separated; empty: none"), 0.0, 0.0),
+            [list](const Settings& s) { return (s.objects.*list).join(QLatin1Char(',')); },
+            [list, k](Settings& s, const QString& v) {
+                QStringList names;
+                for (const QString& part : v.split(QLatin1Char(','))) {
+                    const QString name = part.trimmed();
+                    if (name.isEmpty())
+                        continue;
+                    if (name.startsWith(u'#')) {
+                        bool ok = false;
+                        const int i = name.mid(1).toInt(&ok);
+                        if (!ok || i < 0)
+                            throw SettingsError(k, QStringLiteral("'%1': #i must name an object by its index, a whole number from 0, e.g. #3")
+                                                       .arg(displayText(name)));
+                    }
+                    if (!names.contains(name))
+                        names << name;
+                }
+                s.objects.*list = names;
+            },
+            noCheck};
+}
+
 // light.type and light.projection keep each other consistent: a file that names only the
 // projection (as older files do) gets the type it meant.
 Entry lightTypeKey(const SettingPresentation& look)
@@ -486,6 +515,12 @@ std::vector<Entry> makeEntries()
 {
     std::vector<Entry> e;
     e.push_back(sceneKey({.label = QStringLiteral("Preset"), .group = kScene}));
+    e.push_back(objectSwitchKey("objects.no_cast", "Objects of the scene that cast no shadow, by name (or #i for the i-th object), "
+                                "separated by commas: what one caster's shadow costs and hides, seen by switching it off; the "
+                                "reference leaves it out too", QStringLiteral("Casts a shadow"), &ObjectSwitches::noCast));
+    e.push_back(objectSwitchKey("objects.no_receive", "Objects of the scene that receive no shadow, always lit and left out of "
+                                "what is measured, by name (or #i), separated by commas",
+                                QStringLiteral("Receives shadows"), &ObjectSwitches::noReceive));
     lightPlacementKeys(e);
     lightFitKeys(e);
     mapKeys(e);

@@ -112,8 +112,11 @@ void Renderer::ensureMap(const Settings& settings, ShadowStorage& storage, Shado
 
 void Renderer::ensureScene(const Settings& settings)
 {
-    if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene)) {
-        m_scene = std::make_unique<GpuScene>(m_gl, m_customScene ? *m_customScene : buildScene(settings.scene));
+    if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene) || m_objectSwitches != settings.objects) {
+        Scene scene = m_customScene ? *m_customScene : buildScene(settings.scene);
+        applyObjectSwitches(scene, settings.objects);    // throws for an object the scene has not: the last scene stays
+        m_scene = std::make_unique<GpuScene>(m_gl, std::move(scene));
+        m_objectSwitches = settings.objects;
         m_sceneChanged = false;
         ++m_sceneGeneration;
     }

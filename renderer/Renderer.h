@@ -179,6 +179,7 @@ private:
     std::optional<Scene> m_customScene;
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
+    ObjectSwitches m_objectSwitches;    // applied to m_scene
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
     bool m_skipsOutOfReach = true;

@@ -211,6 +211,45 @@ Settings presetSettings(const QString& name)
     return s;
 }
 
+QStringList objectTokens(const Scene& scene)
+{
+    QStringList tokens;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const QString& name = scene.objects[i].name;
+        const bool own = !name.isEmpty() && !name.contains(u',') && !name.startsWith(u'#')
+                         && std::count_if(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) { return o.name == name; }) == 1;
+        tokens << (own ? name.trimmed() : QStringLiteral("#%1").arg(i));
+    }
+    return tokens;
+}
+
+void applyObjectSwitches(Scene& scene, const ObjectSwitches& switches)
+{
+    if (switches.noCast.isEmpty() && switches.noReceive.isEmpty())
+        return;
+    const QStringList tokens = objectTokens(scene);
+    const auto apply = [&](const QStringList& names, const char* key, bool SceneObject::*flag) {
+        for (const QString& name : names) {
+            qsizetype i = tokens.indexOf(name);
+            bool index = false;
+            if (i < 0 && name.startsWith(u'#')) {
+                i = name.mid(1).toLongLong(&index);     // any object by its index, named or not
+                if (!index || i >= qsizetype(scene.objects.size()))
+                    i = -1;
+            }
+            if (i < 0) {
+                const QStringList shown = tokens.mid(0, 12);
+                throw SettingsError(QString::fromLatin1(key), QStringLiteral("'%1' is no object of this scene; its objects are %2%3")
+                                                                  .arg(displayText(name), shown.join(QStringLiteral(", ")),
+                                                                       tokens.size() > shown.size() ? QStringLiteral(", …") : QString()));
+            }
+            scene.objects[std::size_t(i)].*flag = false;
+        }
+    };
+    apply(switches.noCast, "objects.no_cast", &SceneObject::castsShadow);
+    apply(switches.noReceive, "objects.no_receive", &SceneObject::receivesShadow);
+}
+
 CameraSettings presetCamera(const QString& name, double aspect)
 {
     CameraSettings camera = presetSettings(name).camera;
@@ -238,6 +277,7 @@ Settings movedToScene(const Settings& side, const Settings& scene)
     moved.scene = scene.scene;
     moved.light = scene.light;
     moved.camera = scene.camera;
+    moved.objects = scene.objects;
     moved.reference = scene.reference;
     moved.shadow.distance = scene.shadow.distance;
     moved.bias.cullFront = scene.bias.cullFront;

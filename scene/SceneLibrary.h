@@ -18,6 +18,14 @@ Scene buildScene(const QString& name);
 // for a model or scene file (derived from its bounds, then the file's own keys).
 Settings presetSettings(const QString& name);
 
+// How ObjectSwitches names each of `scene`'s objects: its name where that is its own (not
+// empty, held by no other object, without a comma), else "#i" by its index.
+QStringList objectTokens(const Scene& scene);
+// `scene` with `switches` applied: the objects named stop casting or receiving. Throws a
+// SettingsError naming objects.no_cast or objects.no_receive for a name or index the scene does
+// not have, with the names it has.
+void applyObjectSwitches(Scene& scene, const ObjectSwitches& switches);
+
 // The camera the scene `name` opens with in a view of `aspect` (width / height): a preset's own;
 // a model's or scene file's moved back along its line of sight, where needed, until the models'
 // bounding sphere fits the narrower of the view's two angles, so a view taller than it is wide
@@ -26,7 +34,7 @@ CameraSettings presetCamera(const QString& name, double aspect);
 
 // `side`'s settings on the scene whose settings are `scene` (its presetSettings(), or another
 // side already on it): what belongs to the scene comes from there (the scene, its light and
-// camera, and the lengths in its world units: world-space bias, cascade distance, reference
+// camera, its objects' switches, and the lengths in its world units: world-space bias, cascade distance, reference
 // light size, and whether its meshes are closed enough to cull front faces); the techniques
 // being compared stay. This is how a scene is shared by both sides of compare mode.
 Settings movedToScene(const Settings& side, const Settings& scene);

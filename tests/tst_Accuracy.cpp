@@ -6,6 +6,7 @@
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
 #include "SceneLibrary.h"
+#include "SettingsError.h"
 #include "SettingsKeys.h"
 
 #include <QtTest>
@@ -145,6 +146,18 @@ private Q_SLOTS:
         qInfo("SSIM against the frame shaded with the reference: defaults %.5f, no bias %.5f", defaults.ssim, acne.ssim);
         QVERIFY(defaults.ssim > 0.95 && defaults.ssim < 1.0);
         QVERIFY(1.0 - acne.ssim > 10.0 * (1.0 - defaults.ssim));
+        // An object switched off as a caster: its shadow goes from the frame and from the
+        // reference alike, so they still agree; one the scene does not have is refused by name.
+        const AccuracyResult noCaster = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"objects.no_cast=high cube"}), size);
+        QVERIFY2(noCaster.hard.misclassified <= defaults.hard.misclassified + 0.0005, qPrintable(QString::number(noCaster.hard.misclassified)));
+        QVERIFY(headless.renderScene(presetWith("seed", {"objects.no_cast=high cube"}), size) != headless.renderScene(presetSettings("seed"), size));
+        try {
+            measureAccuracy(meter, headless.renderer(), presetWith("seed", {"objects.no_cast=high cub"}), size);
+            QFAIL("an object the scene has not");
+        } catch (const SettingsError& e) {
+            QCOMPARE(e.key(), QStringLiteral("objects.no_cast"));
+            QVERIFY2(QString::fromUtf8(e.what()).contains("its objects are ground, high cube"), e.what());
+        }
         // The window's views (shadow only, texel density) change what is shown, never what is measured.
         const AccuracyResult shadowOnly = measureAccuracy(meter, headless.renderer(), presetWith("seed", {"shading.shadow_only=true"}), size);
         QCOMPARE(shadowOnly.hard.misclassified, defaults.hard.misclassified);

@@ -28,6 +28,8 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QListWidget>
+#include <QUndoStack>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -154,6 +156,7 @@ private slots:
     void loupeMagnifiesThePixelsUnderThePointer();
     void wipeShowsBothSidesOverTheSamePixels();
     void frozenFrustumKeepsTheFitWhileTheCameraMoves();
+    void objectsCastAndReceiveFromTheDock();
     void accuracyDockOverlaysErrorsAndAppliesSweepPoints();
     void compareModeMeasuresBothSidesWithTheirCost();
     void presetButtonShowsTheArtifactAndTheFix_data();
@@ -824,6 +827,34 @@ void tst_MainWindow::frozenFrustumKeepsTheFitWhileTheCameraMoves()
     QVERIFY(!view->frozenCamera());
     QVERIFY(settle(*m_window));
     QVERIFY(view->renderer()->lightFrame().viewProjection != fitted);     // fitted to the camera now
+}
+
+// The scene's objects listed in the dock: unchecking one in "Casts a shadow" takes its shadow
+// away, as one undo step; "Receives shadows" keeps an object lit.
+void tst_MainWindow::objectsCastAndReceiveFromTheDock()
+{
+    m_window->setSettings(Side::A, presetSettings(QStringLiteral("seed")));
+    QVERIFY(settle(*m_window));
+    auto* casts = m_window->propertiesDock()->findChild<QListWidget*>(QStringLiteral("objects.no_cast"));
+    auto* receives = m_window->propertiesDock()->findChild<QListWidget*>(QStringLiteral("objects.no_receive"));
+    QVERIFY(casts && receives);
+    QTRY_COMPARE(casts->count(), 4);
+    const QList<QListWidgetItem*> high = casts->findItems(QStringLiteral("high cube"), Qt::MatchExactly);
+    QCOMPARE(high.size(), 1);
+    QCOMPARE(high.front()->checkState(), Qt::Checked);
+    const QImage before = m_window->sceneView(Side::A)->grabFramebuffer();
+    const int steps = m_window->undoStack(Side::A)->count();
+    high.front()->setCheckState(Qt::Unchecked);
+    QCOMPARE(m_window->settings(Side::A).objects.noCast, QStringList{QStringLiteral("high cube")});
+    QCOMPARE(m_window->undoStack(Side::A)->count(), steps + 1);
+    QVERIFY(settle(*m_window));
+    QVERIFY(m_window->sceneView(Side::A)->grabFramebuffer() != before);
+    receives->findItems(QStringLiteral("ground"), Qt::MatchExactly).front()->setCheckState(Qt::Unchecked);
+    QCOMPARE(m_window->settings(Side::A).objects.noReceive, QStringList{QStringLiteral("ground")});
+    m_window->undoStack(Side::A)->undo();
+    m_window->undoStack(Side::A)->undo();
+    QVERIFY(m_window->settings(Side::A).objects.noCast.isEmpty());
+    QCOMPARE(casts->findItems(QStringLiteral("high cube"), Qt::MatchExactly).front()->checkState(), Qt::Checked);
 }
 
 // A new user read "ortho light" over a virtual map's pool: each caption names the map it shows,

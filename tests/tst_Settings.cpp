@@ -18,6 +18,28 @@ class TestSettings : public QObject {
 private Q_SLOTS:
     // A field the current settings do not read says so, and what would make it count; the
     // same field counts again once that is set.
+    // Objects switched off by name or index: trimmed, each once, an index a whole number.
+    void objectSwitchesParse()
+    {
+        Settings s;
+        applySetting(s, "objects.no_cast", " high cube , #2,high cube,, ");
+        QCOMPARE(s.objects.noCast, (QStringList{"high cube", "#2"}));
+        QCOMPARE(settingValue(s, "objects.no_cast"), QStringLiteral("high cube,#2"));
+        applySetting(s, "objects.no_receive", "");
+        QVERIFY(s.objects.noReceive.isEmpty());
+        for (const char* bad : {"#-1", "#x", "#"}) {
+            try {
+                applySetting(s, "objects.no_receive", bad);
+                QFAIL(bad);
+            } catch (const SettingsError& e) {
+                QVERIFY2(QString::fromUtf8(e.what()).contains("whole number from 0"), e.what());
+            }
+        }
+        // A new scene brings its own objects: the switches of the last one do not follow it.
+        Settings moved = movedToScene(s, presetSettings("torus"));
+        QVERIFY(moved.objects.noCast.isEmpty());
+    }
+
     void ignoredSettingsSayWhy()
     {
         Settings s;     // hw-bilinear, a directional light, one map, no virtual map, no contact shadows

@@ -199,6 +199,13 @@ void MainWindow::frameRendered(Side side)
 
             const Bounds models = scene->modelBounds();
             m_dock->setSceneSize(models.center(), glm::length(models.max - models.min) * 0.5);
+            const QStringList tokens = objectTokens(*scene);
+            QStringList labels;
+            for (qsizetype i = 0; i < tokens.size(); ++i) {
+                const QString& name = scene->objects[std::size_t(i)].name;
+                labels << (!tokens[i].startsWith(u'#') ? name : name.isEmpty() ? tr("object %1").arg(i) : QStringLiteral("%1 (%2)").arg(name, tokens[i]));
+            }
+            m_dock->setSceneObjects(tokens, labels);
         }
         const FittedLight& fit = renderer->lastFit();
         m_dock->showFit(fit, view->renderedSettings()->light);

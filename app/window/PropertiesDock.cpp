@@ -75,6 +75,8 @@ PropertiesDock::PropertiesDock(QWidget* parent) : QDockWidget(tr("Properties"), 
             m_fields->addChoice(grid, info.key);
         else if (info.type == u"bool")
             m_fields->addBool(grid, info.key, PropertyFields::look(info.key).label);
+        else if (info.type == u"objects")
+            m_fields->addObjects(grid, info.key);
         else
             m_fields->addNumber(grid, info.key);
     }
@@ -477,6 +479,11 @@ void PropertiesDock::updateDependentRows()
             }
         }
     }
+}
+
+void PropertiesDock::setSceneObjects(const QStringList& tokens, const QStringList& labels)
+{
+    m_fields->setObjects(tokens, labels);
 }
 
 void PropertiesDock::setSceneSize(const glm::dvec3& centre, double radius)

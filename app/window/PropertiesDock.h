@@ -58,6 +58,8 @@ public:
     // what fits it (a city's light sits hundreds of units out, a small model's a few), centred
     // on it; the spin boxes still take any allowed value.
     void setSceneSize(const glm::dvec3& centre, double radius);
+    // The objects of the scene shown, for the lists that switch their casting and receiving.
+    void setSceneObjects(const QStringList& tokens, const QStringList& labels);
 
     // Shows the light animation state without emitting animationChanged().
     void setAnimation(bool animate, double degreesPerSecond);

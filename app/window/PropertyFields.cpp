@@ -12,6 +12,7 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QLabel>
+#include <QListWidget>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -314,6 +315,48 @@ void PropertyFields::addBool(QGridLayout* grid, const QString& key, const QStrin
     grid->addWidget(field.error, row + 1, 0, 1, 2);
     m_rows[key] = {check};
     m_fields.insert(key, std::move(field));
+}
+
+void PropertyFields::addObjects(QGridLayout* grid, const QString& key)
+{
+    const SettingKey& info = keyInfo(key);
+    auto* list = new QListWidget;
+    list->setObjectName(key);
+    list->setToolTip(tooltipFor(info));
+    list->setSelectionMode(QAbstractItemView::NoSelection);
+    list->setUniformItemSizes(true);        // a city's thousands of objects stay quick
+    list->setMaximumHeight(list->fontMetrics().height() * 7);
+    connect(list, &QListWidget::itemChanged, this, [this, list, key] {
+        QStringList off;
+        for (int i = 0; i < list->count(); ++i) {
+            if (list->item(i)->checkState() != Qt::Checked)
+                off << list->item(i)->data(Qt::UserRole).toString();
+        }
+        emit edited(key, off.join(QLatin1Char(',')));
+    });
+    Field field{key, nullptr, {list}, [list, key](const Settings& s) {
+                    const QSignalBlocker block(list);
+                    const QStringList off = settingValue(s, key).split(QLatin1Char(','), Qt::SkipEmptyParts);
+                    for (int i = 0; i < list->count(); ++i)
+                        list->item(i)->setCheckState(off.contains(list->item(i)->data(Qt::UserRole).toString()) ? Qt::Unchecked : Qt::Checked);
+                }};
+    addRow(grid, presentation(key).label, QString(), list, std::move(field));
+    m_objectKeys.push_back(key);
+}
+
+void PropertyFields::setObjects(const QStringList& tokens, const QStringList& labels)
+{
+    for (const QString& key : m_objectKeys) {
+        auto* list = qobject_cast<QListWidget*>(m_fields.value(key).markable.front());
+        const QSignalBlocker block(list);
+        list->clear();
+        for (qsizetype i = 0; i < tokens.size(); ++i) {
+            auto* item = new QListWidgetItem(labels.value(i, tokens[i]), list);
+            item->setData(Qt::UserRole, tokens[i]);
+            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+        }
+        m_fields.value(key).load(m_pending);
+    }
 }
 
 void PropertyFields::clearErrors()

@@ -47,6 +47,11 @@ public:
     void addDirection(QGridLayout* grid);
     void addChoice(QGridLayout* grid, const QString& key);
     void addBool(QGridLayout* grid, const QString& key, const QString& text);
+    // A list of the scene's objects, each checked while it is not in the key's list of names
+    // (objects.no_cast: it casts). setObjects() fills it.
+    void addObjects(QGridLayout* grid, const QString& key);
+    // The objects of the scene shown: their tokens (objectTokens()) and what each list shows.
+    void setObjects(const QStringList& tokens, const QStringList& labels);
 
     void loadAll(const Settings& settings);
     // Shows `key`'s value from `settings`; false when there is no such field.
@@ -74,6 +79,7 @@ private:
     void addRow(QGridLayout* grid, const QString& label, const QString& rangeText, QWidget* editor, Field field);
 
     const Settings& m_pending;
+    std::vector<QString> m_objectKeys;              // keys shown by addObjects()
     QHash<QString, Field> m_fields;
     QHash<QString, std::vector<QWidget*>> m_rows;   // label and editor of a key, to hide/disable
     double m_lastAzimuth = 0.0;     // kept while the light stands straight above its target
