@@ -947,6 +947,13 @@ void tst_MainWindow::compareModeMeasuresBothSidesWithTheirCost()
     const int b = falseShadow(m_window->sceneView(Side::B)->errorOverlay());
     QVERIFY2(b > 10 * (a + 1), qPrintable(QStringLiteral("false-shadow pixels: A %1, B %2").arg(a).arg(b)));
     QVERIFY2(text("misclassifiedDelta").startsWith(QLatin1Char('+')), qPrintable(text("misclassifiedDelta")));
+    keepPicture(m_window.get(), QStringLiteral("compare-errors"));
+    // The heat map of |V - V_ref| in their place, over both views.
+    auto* kind = dock->findChild<QComboBox*>(QStringLiteral("overlayKind"));
+    kind->setCurrentIndex(1);
+    QVERIFY(settle(*m_window));
+    keepPicture(m_window.get(), QStringLiteral("compare-heat"));
+    kind->setCurrentIndex(0);
     // The window's screenshot shows B's errors too (a grab redirects widget painters).
     QVERIFY(settle(*m_window));
     SceneView* viewB = m_window->sceneView(Side::B);

@@ -64,17 +64,22 @@ int runSettings(const QStringList& arguments)
             out() << QJsonDocument(keys).toJson(QJsonDocument::Indented);
             return kExitOk;
         }
-        // Columns as wide as their widest entry; the help wrapped under the key's column.
+        // Columns as wide as their widest entry; the help wrapped under the key's column. An
+        // empty default (no objects switched off) reads "none", so the columns stay columns.
+        const auto shownDefault = [&](const QString& key) {
+            const QString value = settingValue(defaults, key);
+            return value.isEmpty() ? QStringLiteral("none") : value;
+        };
         qsizetype keyWidth = 3, defaultWidth = 7;
         for (const SettingKey& k : settingKeys()) {
             keyWidth = std::max(keyWidth, k.key.size());
-            defaultWidth = std::max(defaultWidth, settingValue(defaults, k.key).size());
+            defaultWidth = std::max(defaultWidth, shownDefault(k.key).size());
         }
         const int keyColumn = -int(keyWidth), defaultColumn = -int(defaultWidth);
         out() << QStringLiteral("%1  %2  %3\n").arg(QStringLiteral("key"), keyColumn).arg(QStringLiteral("default"), defaultColumn).arg(QStringLiteral("range"));
         const QString indent(keyWidth + 2, QLatin1Char(' '));
         for (const SettingKey& k : settingKeys()) {
-            out() << QStringLiteral("%1  %2  %3\n").arg(k.key, keyColumn).arg(settingValue(defaults, k.key), defaultColumn).arg(k.range);
+            out() << QStringLiteral("%1  %2  %3\n").arg(k.key, keyColumn).arg(shownDefault(k.key), defaultColumn).arg(k.range);
             for (const QString& line : wrapWords(k.help, std::max<qsizetype>(100 - indent.size(), 40)))
                 out() << indent << line << '\n';
         }
