@@ -8,6 +8,8 @@
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
+#include <glm/vec3.hpp>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -106,9 +108,35 @@ QStringList tutorialAssignments()
 
 namespace {
 
+// A light placed `offset` (x,y,z in the seed's units; null: the scene's own light) from the
+// scene's target: on a preset as written, around the origin; on a model scaled to its size
+// (sceneScale()) around its own target, so "(-2, 4, -1)" sits above a 250-unit spider as above
+// the seed, not inside it.
+QStringList placedLight(const Settings& base, const char* offset)
+{
+    if (!offset)
+        return {};
+    const QStringList parts = QString::fromLatin1(offset).split(QLatin1Char(','));
+    const glm::dvec3 d(parts.value(0).toDouble(), parts.value(1).toDouble(), parts.value(2).toDouble());
+    const bool preset = isPresetName(base.scene);
+    const double scale = preset ? 1.0 : sceneScale(base.scene);
+    const glm::dvec3 target = preset ? glm::dvec3(0.0) : base.light.target;
+    const glm::dvec3 position = target + d * scale;
+    return {QStringLiteral("light.position=%1,%2,%3").arg(position.x, 0, 'g', 10).arg(position.y, 0, 'g', 10).arg(position.z, 0, 'g', 10),
+            QStringLiteral("light.target=%1,%2,%3").arg(target.x, 0, 'g', 10).arg(target.y, 0, 'g', 10).arg(target.z, 0, 'g', 10)};
+}
+
+// A placement's name, with the scale its offsets take on a model ("(3, 2, 4) × 54.2").
+QString placementName(const Settings& base, const char* name)
+{
+    const double scale = isPresetName(base.scene) ? 1.0 : sceneScale(base.scene);
+    return scale == 1.0 || qstrcmp(name, "preset") == 0 ? QString::fromLatin1(name)
+                                                          : QStringLiteral("%1 × %2").arg(QLatin1String(name)).arg(scale, 0, 'g', 3);
+}
+
 // Light placements around the preset's target, from overhead to grazing and from near to very
 // far, each with the defaults and with the tutorial configuration.
-std::vector<SweepEntry> lightsSweep()
+std::vector<SweepEntry> lightsSweep(const Settings& base)
 {
     std::vector<SweepEntry> s;
     const struct {
@@ -125,11 +153,9 @@ std::vector<SweepEntry> lightsSweep()
                       {"(-6, 1.2, -2), grazing", "-6,1.2,-2"},
                       {"(5, 0.4, -3), 4 deg", "5,0.4,-3"}};
     for (const auto& p : placements) {
-        QStringList at;
-        if (p.position)
-            at << QStringLiteral("light.position=%1").arg(QLatin1String(p.position)) << QStringLiteral("light.target=0,0,0");
-        s.push_back({QStringLiteral("defaults @ %1").arg(QLatin1String(p.name)), at});
-        s.push_back({QStringLiteral("tutorial @ %1").arg(QLatin1String(p.name)), tutorialAssignments() + at});
+        const QStringList at = placedLight(base, p.position);
+        s.push_back({QStringLiteral("defaults @ %1").arg(placementName(base, p.name)), at});
+        s.push_back({QStringLiteral("tutorial @ %1").arg(placementName(base, p.name)), tutorialAssignments() + at});
     }
     return s;
 }
@@ -181,7 +207,7 @@ std::vector<SweepEntry> cascadesSweep()
 
 // LiSPSM against no warp at the same texels: at the preset's light, straight above (where the
 // camera looking down sees along it) and grazing; its strength; and with cascades.
-std::vector<SweepEntry> warpSweep()
+std::vector<SweepEntry> warpSweep(const Settings& base)
 {
     std::vector<SweepEntry> s;
     const struct {
@@ -189,11 +215,9 @@ std::vector<SweepEntry> warpSweep()
         const char* position;   // relative to the target
     } placements[] = {{"preset", nullptr}, {"(0, 6, 0), straight above", "0,6,0"}, {"(-6, 1.2, -2), grazing", "-6,1.2,-2"}};
     for (const auto& p : placements) {
-        QStringList at;
-        if (p.position)
-            at << QStringLiteral("light.position=%1").arg(QLatin1String(p.position)) << QStringLiteral("light.target=0,0,0");
-        s.push_back({QStringLiteral("no warp @ %1").arg(QLatin1String(p.name)), at + QStringList{QStringLiteral("light.warp=none")}});
-        s.push_back({QStringLiteral("lispsm @ %1").arg(QLatin1String(p.name)), at + QStringList{QStringLiteral("light.warp=lispsm")}});
+        const QStringList at = placedLight(base, p.position);
+        s.push_back({QStringLiteral("no warp @ %1").arg(placementName(base, p.name)), at + QStringList{QStringLiteral("light.warp=none")}});
+        s.push_back({QStringLiteral("lispsm @ %1").arg(placementName(base, p.name)), at + QStringList{QStringLiteral("light.warp=lispsm")}});
     }
     for (const char* scale : {"0.3", "3"})
         s.push_back({QStringLiteral("lispsm, warp scale %1").arg(QLatin1String(scale)),
@@ -365,13 +389,13 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& bas
     if (nameOrFile == u"bias")
         return biasSweep();
     if (nameOrFile == u"lights")
-        return lightsSweep();
+        return lightsSweep(base);
     if (nameOrFile == u"penumbra")
         return penumbraSweep();
     if (nameOrFile == u"cascades")
         return cascadesSweep();
     if (nameOrFile == u"warp")
-        return warpSweep();
+        return warpSweep(base);
     if (nameOrFile == u"virtual")
         return virtualSweep();
     if (nameOrFile == u"filterable")

@@ -211,6 +211,14 @@ Settings presetSettings(const QString& name)
     return s;
 }
 
+double sceneScale(const QString& name)
+{
+    if (isPresetName(name))
+        return 1.0;
+    const Bounds models = loadSceneFile(name)->modelBounds();
+    return sceneLengthScale(std::max(glm::length(models.max - models.min) * 0.5, 1e-6));
+}
+
 QStringList objectTokens(const Scene& scene)
 {
     QStringList tokens;

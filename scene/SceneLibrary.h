@@ -18,6 +18,10 @@ Scene buildScene(const QString& name);
 // for a model or scene file (derived from its bounds, then the file's own keys).
 Settings presetSettings(const QString& name);
 
+// The seed's lengths times this fit the scene `name`: 1 for a preset (each is in the seed's
+// units), sceneLengthScale() of its models for a model or scene file. Throws like buildScene().
+double sceneScale(const QString& name);
+
 // How ObjectSwitches names each of `scene`'s objects: its name where that is its own (not
 // empty, held by no other object, without a comma), else "#i" by its index.
 QStringList objectTokens(const Scene& scene);

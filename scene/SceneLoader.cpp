@@ -28,6 +28,15 @@ namespace {
 constexpr qint64 kMaxSceneFileBytes = 1 << 20;      // a scene file is a short list, not data
 constexpr double kSeedObjectRadius = 2.5;           // the seed preset's objects, whose defaults the bias was tuned on
 
+} // namespace
+
+double sceneLengthScale(double modelRadius)
+{
+    return modelRadius / kSeedObjectRadius;
+}
+
+namespace {
+
 struct Loaded {
     std::shared_ptr<const Scene> scene;     // what is drawn, with its ground (a model's is its last mesh and object)
     QJsonObject settings;                   // a scene file's keys of `shadowlab settings`
@@ -231,7 +240,7 @@ Settings sceneFileSettings(const QString& path)
     s.light.nearPlane = radius * 0.5;
     s.light.farPlane = radius * 8.0;
     // World-space lengths tuned on the seed preset scale with the model.
-    const double scale = radius / kSeedObjectRadius;
+    const double scale = sceneLengthScale(radius);
     s.bias.slope = std::min(s.bias.slope * scale, 100.0);
     s.bias.min = std::min(s.bias.min * scale, 100.0);
     s.reference.lightRadius = std::min(s.reference.lightRadius * scale, 100.0);

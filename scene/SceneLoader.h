@@ -29,4 +29,9 @@ std::shared_ptr<const Scene> loadSceneFile(const QString& path, const ImportCont
 // radius derived from its bounds, then the scene file's own keys. Throws like loadSceneFile().
 Settings sceneFileSettings(const QString& path);
 
+// How many of the seed's world units one of a model's is worth: its models' bounding radius over
+// the seed's objects' (2.5). The lengths tuned on the seed (bias, the reference light, sweeps'
+// light placements) are scaled by it for a model or scene file.
+double sceneLengthScale(double modelRadius);
+
 } // namespace shadowlab

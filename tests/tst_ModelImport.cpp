@@ -13,6 +13,7 @@
 #include "SliderSpinBox.h"
 #include "PropertiesDock.h"
 #include "RayTracer.h"
+#include "ReportSweep.h"
 #include "Renderer.h"
 #include "SceneFileError.h"
 #include "SceneLibrary.h"
@@ -314,6 +315,31 @@ private Q_SLOTS:
         QVERIFY2(scene.warnings.join(" ").contains("CesiumLogoFlat.png"), qPrintable(scene.warnings.join(" ")));
         for (const SceneObject& o : scene.objects)
             QVERIFY(o.texture == TextureKind::Flat);
+    }
+
+    // A sweep means the same on a 250-unit spider as on the seed: its lights are placed at the
+    // model's scale around its target (not inside it), its bias grid is in texels.
+    void sweepsFollowTheModelsSize()
+    {
+        const QString spider = model("OBJ/spider.obj");
+        const Settings base = presetSettings(spider);
+        const Bounds models = loadSceneFile(spider)->modelBounds();
+        const double radius = glm::length(models.max - models.min) * 0.5;
+        int placed = 0;
+        for (const SweepEntry& entry : loadSweep(QStringLiteral("lights"), base)) {
+            const Settings s = applySweepEntry(base, entry);
+            if (entry.label.startsWith("defaults @ (-2, 4, -1)")) {
+                QVERIFY2(glm::length(s.light.position - models.center()) > radius, qPrintable(entry.label));
+                QVERIFY2(entry.label.contains(QChar(0x00D7)), qPrintable(entry.label));     // "× 54.3": the scale is said
+                ++placed;
+            }
+        }
+        QCOMPARE(placed, 1);
+        for (const SweepEntry& entry : loadSweep(QStringLiteral("bias"), base)) {
+            if (entry.label.endsWith("texels"))
+                QVERIFY(applySweepEntry(base, entry).bias.space == BiasSpace::Texel);
+            QVERIFY2(!entry.label.contains(" wu"), qPrintable(entry.label));
+        }
     }
 
     void largeMeshesAreSplitForCulling()
