@@ -214,8 +214,24 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
         if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && visiblyWrong(r).isEmpty())
             clean.push_back(&r);
     }
-    if (clean.empty())
-        return {};
+    if (clean.empty()) {
+        // Every picture visibly wrong (one map over a whole city at a small size): still an
+        // answer, the least wrong, said as such.
+        const ReportRow* least = nullptr;
+        const auto pictureError = [](const ReportRow& r) {
+            return std::min(dssim(r), r.accuracy.areaSsim ? 1.0 - *r.accuracy.areaSsim : dssim(r));
+        };
+        for (const ReportRow& r : rows) {
+            if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && (!least || pictureError(r) < pictureError(*least)))
+                least = &r;
+        }
+        if (!least)
+            return {};
+        Recommendation pick;
+        pick.kind = Recommendation::Kind::LeastWrong;
+        pick.row = least;
+        return {pick};
+    }
     if (clean.size() == 1) {
         Recommendation only;
         only.kind = Recommendation::Kind::Only;
@@ -273,6 +289,8 @@ QString Recommendation::title() const
         return QStringLiteral("Closest to the area light");
     case Kind::Only:
         return QStringLiteral("The one configuration with nothing visibly wrong");
+    case Kind::LeastWrong:
+        return QStringLiteral("Least wrong, as every picture here is visibly wrong");
     }
     return {};
 }
@@ -303,6 +321,13 @@ QString Recommendation::reason() const
         break;
     case Kind::Only:
         text = QStringLiteral("%1 a frame, %2; nothing to choose between under this light").arg(msText(row->frame.median), errorText(*row, axis));
+        break;
+    case Kind::LeastWrong:
+        text = QStringLiteral("DSSIM %1 against the hard light's picture%2, the least of all; %3 a frame, %4. A larger image, a finer "
+                              "map for what the camera sees (cascades, a virtual map) or a tighter light volume may give a clean one")
+                   .arg(dssim(*row), 0, 'f', 4)
+                   .arg(row->accuracy.areaSsim ? QStringLiteral(" and %1 against the area light's").arg(1.0 - *row->accuracy.areaSsim, 0, 'f', 4) : QString())
+                   .arg(msText(row->frame.median), errorText(*row, axis));
         break;
     }
     if (!ties.empty()) {

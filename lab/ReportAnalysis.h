@@ -97,6 +97,7 @@ struct Recommendation {
         MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's time
         ClosestToArea,  // the smallest MAE against the area light, at any cost
         Only,           // the one row under its light whose picture is not visibly wrong
+        LeastWrong,     // every row's picture is visibly wrong: the one least unlike a reference's
     };
     Kind kind = Kind::Cheapest;
     const ReportRow* row = nullptr;
@@ -111,8 +112,8 @@ struct Recommendation {
 // row's median frame time.
 inline constexpr double kRecommendationBudget = 2.0;
 
-// The picks for the group `light` (lightsOf()): none where every row is visibly wrong or none
-// was measured; ClosestToArea only where the area light was traced.
+// The picks for the group `light` (lightsOf()): none where no row was measured; LeastWrong alone
+// where every row is visibly wrong; ClosestToArea only where the area light was traced.
 std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const QString& light);
 // The rows of `light` that no pick may be, for their picture (visiblyWrong()).
 std::vector<const ReportRow*> visiblyWrongRows(const std::vector<ReportRow>& rows, const QString& light);

@@ -151,10 +151,15 @@ private slots:
         QCOMPARE(recommended[0].toObject().value("label").toString(), QStringLiteral("hard"));
         QCOMPARE(recommended[0].toObject().value("ties").toArray().first().toString(), QStringLiteral("hw"));
 
-        // Every row visibly wrong: nothing is picked, and the page says so.
+        // Every row visibly wrong: the least wrong picture is the one answer, said as such.
         for (ReportRow& r : rows)
             r.accuracy.areaSsim = r.accuracy.ssim = 0.9;
-        QVERIFY(recommend(rows, rows[0].light).empty());
+        rows[4].accuracy.areaSsim = 0.95;
+        const std::vector<Recommendation> least = recommend(rows, rows[0].light);
+        QCOMPARE(least.size(), std::size_t(1));
+        QCOMPARE(least.front().kind, Recommendation::Kind::LeastWrong);
+        QCOMPARE(least.front().row->label, QStringLiteral("poisson"));
+        QVERIFY2(least.front().reason().contains("0.0500 against the area light's"), qPrintable(least.front().reason()));
         // One row left clean: it is the one pick, said as such.
         rows[3].accuracy.ssim = 0.999;
         const std::vector<Recommendation> only = recommend(rows, rows[0].light);

@@ -101,11 +101,10 @@ void printRecommendations(const std::vector<ReportRow>& rows)
         out() << "\nWhat to pick" << (lights.size() > 1 ? QStringLiteral(" under the %1").arg(light) : QString()) << ":\n";
         const std::vector<Recommendation> picks = recommend(rows, light);
         if (picks.empty())
-            out() << (visiblyWrongRows(rows, light).empty() ? "  nothing: no configuration under this light had a pixel facing the light in view\n"
-                                                            : "  nothing: every configuration's picture is visibly wrong at this size (listed above as left out)\n");
+            out() << "  nothing: no configuration under this light had a pixel facing the light in view\n";
         for (const Recommendation& pick : picks)
             out() << "  " << pick.title() << ": " << pick.row->label << "\n    " << pick.reason() << '\n';
-        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty() && !picks.empty())
+        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty() && !picks.empty() && picks.front().kind != Recommendation::Kind::LeastWrong)
             out() << "  never picked, visibly wrong: " << wrong.size() << " configuration" << (wrong.size() == 1 ? "" : "s") << " (listed above as left out)\n";
     }
 }

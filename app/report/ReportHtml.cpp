@@ -620,20 +620,15 @@ QString recommendationSection(const std::vector<ReportRow>& rows, const QStringL
             section += QStringLiteral("<h3>Under the %1</h3>").arg(html(light));
         const std::vector<Recommendation> picks = recommend(rows, light);
         if (picks.empty()) {
-            section += visiblyWrongRows(rows, light).empty()
-                           ? QStringLiteral("<p>Nothing: no configuration under this light has a pixel facing the light in view, so none "
-                                            "was measured.</p>")
-                           : QStringLiteral("<p class=\"wrong\">Nothing: every configuration's picture is visibly wrong at this size "
-                                            "(DSSIM over %1 against both references). A larger image, a finer map or a tighter light "
-                                            "volume may help.</p>")
-                                 .arg(kVisibleDssim);
+            section += QStringLiteral("<p>Nothing: no configuration under this light has a pixel facing the light in view, so none was "
+                                      "measured.</p>");
             continue;
         }
         section += QStringLiteral("<dl class=\"picks\">");
         for (const Recommendation& pick : picks)
             section += QStringLiteral("<dt>%1: <b>%2</b></dt><dd>%3</dd>").arg(html(pick.title()), html(pick.row->label), html(pick.reason()));
         section += QStringLiteral("</dl>");
-        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty()) {
+        if (const auto wrong = visiblyWrongRows(rows, light); !wrong.empty() && picks.front().kind != Recommendation::Kind::LeastWrong) {
             QStringList names;
             for (const ReportRow* r : wrong)
                 names << QStringLiteral("<span title=\"%1\">%2</span>").arg(html(visiblyWrong(*r)), html(r->label));
