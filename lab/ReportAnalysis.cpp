@@ -227,9 +227,16 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
         }
         if (!least)
             return {};
+        // Pictures within a twentieth of the least wrong one look as wrong: of those, the fastest.
+        const double within = pictureError(*least) + std::max(0.0005, 0.05 * pictureError(*least));
         Recommendation pick;
         pick.kind = Recommendation::Kind::LeastWrong;
         pick.row = least;
+        for (const ReportRow& r : rows) {
+            if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && pictureError(r) <= within
+                && r.frame.median < pick.row->frame.median)
+                pick.row = &r;
+        }
         return {pick};
     }
     if (clean.size() == 1) {
@@ -239,12 +246,12 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
         return {only};
     }
     std::vector<Recommendation> picks;
-    // The cheapest: of the rows as fast as the fastest within the noise, the most accurate;
-    // its ties are as fast and as accurate.
-    const ReportRow* fastest = *std::min_element(clean.begin(), clean.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    // The cheapest: of the rows no other is clearly faster than, the most accurate; its ties
+    // are as fast and as accurate. (Ties in time are not transitive: a row tied with the
+    // fastest may still be clearly slower than a third.)
     std::vector<const ReportRow*> asFast;
     for (const ReportRow* r : clean) {
-        if (!clearlyFaster(fastest->frame, r->frame))
+        if (std::none_of(clean.begin(), clean.end(), [&](const ReportRow* q) { return clearlyFaster(q->frame, r->frame); }))
             asFast.push_back(r);
     }
     Recommendation cheapest = mostAccurate(asFast, ErrorAxis::Misclassified, Recommendation::Kind::Cheapest);
@@ -320,11 +327,12 @@ QString Recommendation::reason() const
         text = QStringLiteral("%1, the smallest at any cost; %2 a frame").arg(errorText(*row, axis), msText(row->frame.median));
         break;
     case Kind::Only:
-        text = QStringLiteral("%1 a frame, %2; nothing to choose between under this light").arg(msText(row->frame.median), errorText(*row, axis));
+        text = QStringLiteral("%1 a frame, %2; the others under this light are visibly wrong, or there are none").arg(msText(row->frame.median), errorText(*row, axis));
         break;
     case Kind::LeastWrong:
-        text = QStringLiteral("DSSIM %1 against the hard light's picture%2, the least of all; %3 a frame, %4. A larger image, a finer "
-                              "map for what the camera sees (cascades, a virtual map) or a tighter light volume may give a clean one")
+        text = QStringLiteral("DSSIM %1 against the hard light's picture%2, the least of all within a twentieth, and of those the "
+                              "fastest; %3 a frame, %4. A map's texel is larger than a pixel here (the table's \"texels ≤ 1 px\"): "
+                              "a larger image, cascades or a virtual map (--sweep cascades, --sweep virtual) may give a clean one")
                    .arg(dssim(*row), 0, 'f', 4)
                    .arg(row->accuracy.areaSsim ? QStringLiteral(" and %1 against the area light's").arg(1.0 - *row->accuracy.areaSsim, 0, 'f', 4) : QString())
                    .arg(msText(row->frame.median), errorText(*row, axis));

@@ -133,7 +133,7 @@ void main()
     // The shadow term alone: grey levels show a filter's partial shadow (a moiré over a lit
     // floor) that lighting and textures hide; surfaces facing away from the light are unlit by
     // their facing, not by a shadow, and say so in their own colour.
-    fragColor = vec4(dot(normal, toLight) > 0.0 ? vec3(visibility) : vec3(0.10, 0.12, 0.24), 1.0);
+    fragColor = vec4(dot(normal, toLight) > 0.0 ? vec3(visibility) : vec3(0.16, 0.25, 0.55), 1.0);
 #endif
 #ifdef TEXEL_DENSITY
 #ifdef VIRTUAL_MAP

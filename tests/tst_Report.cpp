@@ -136,6 +136,20 @@ private slots:
         QCOMPARE(picks[2].row->label, QStringLiteral("pcss"));
         QCOMPARE(visiblyWrongRows(rows, rows[0].light).size(), std::size_t(1));
 
+        // Ties in time are not transitive: a row tied with the fastest can be clearly slower than
+        // a third, and is then not the cheapest however accurate (the spider's map sizes).
+        {
+            std::vector<ReportRow> maps{row("map 256", 0.25, 2.37, 0.1), row("map 512", 0.17, 2.61, 0.1), row("map 1024", 0.062, 3.40, 0.1)};
+            maps[0].frame.p90 = 3.3;
+            maps[1].frame.p10 = 2.54;
+            maps[1].frame.p90 = 2.81;
+            maps[2].frame.p10 = 3.26;
+            maps[2].frame.p90 = 3.68;
+            for (ReportRow& r : maps)
+                r.accuracy.ssim = 0.999;
+            QCOMPARE(recommend(maps, maps[0].light).front().row->label, QStringLiteral("map 512"));
+        }
+
         // The report leads with the answer, the JSON carries it, the moiré is named as never picked.
         QTemporaryDir dir;
         writeReport(dir.path(), rows, seedFacts());

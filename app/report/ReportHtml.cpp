@@ -327,17 +327,26 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, 
     return svg;
 }
 
-// The rows that get a label: the two reference configurations first, then the front.
+// The rows that get a label: the recommended ones first, then the two reference
+// configurations, then the front.
 std::vector<const ReportRow*> labelledRows(const std::vector<ReportRow>& rows, ErrorAxis axis)
 {
     std::vector<const ReportRow*> labelled;
-    for (const ReportRow& r : rows) {
-        if (r.defaults || r.tutorial)
-            labelled.push_back(&r);
+    const auto add = [&](const ReportRow* r) {
+        if (std::find(labelled.begin(), labelled.end(), r) == labelled.end())
+            labelled.push_back(r);
+    };
+    for (const QString& light : lightsOf(rows)) {
+        for (const Recommendation& pick : recommend(rows, light))
+            add(pick.row);
     }
     for (const ReportRow& r : rows) {
-        if (onFront(r, axis) && !r.defaults && !r.tutorial)
-            labelled.push_back(&r);
+        if (r.defaults || r.tutorial)
+            add(&r);
+    }
+    for (const ReportRow& r : rows) {
+        if (onFront(r, axis))
+            add(&r);
     }
     return labelled;
 }
@@ -557,7 +566,7 @@ td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}.wr
 </style></head><body>
 <h1>Shadow error against run time: %1</h1>
 <p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
-Renderer: %6<br>Machine: %7<br>
+Renderer: %6%15<br>Machine: %7<br>
 Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of radius %9 (area; %10);
 %11 Mrays/s; traced %12 for %13 configurations. Whole run: %14 s.</p>
 )")
@@ -575,7 +584,12 @@ Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of r
         .arg(number(facts.raysPerSecond * 1e-6, 2))
         .arg(facts.tracedText())
         .arg(rows.size())
-        .arg(number(facts.seconds, 1));
+        .arg(number(facts.seconds, 1))
+        .arg(facts.renderer.contains(QStringLiteral("llvmpipe")) || facts.renderer.contains(QStringLiteral("softpipe"))
+                 ? QStringLiteral(" — <b>a software rasteriser: its times are CPU time, and a GPU ranks costs differently</b> (a "
+                                  "moment filter's blur or a wide kernel costs far less there); measure on the GPU and put the reports "
+                                  "side by side with <code>report --merge</code>")
+                 : QString());
 }
 
 // Whether this report is one share of a sweep, or several reports put together.

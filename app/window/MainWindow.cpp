@@ -354,49 +354,50 @@ void MainWindow::createViewMenu()
     view->addAction(m_toolBar->toggleViewAction());
 }
 
+QAction* MainWindow::toggleAction(const QString& text, const QString& name, const QKeySequence& shortcut, const QString& toolTip,
+                                  const std::function<void(bool)>& toggled)
+{
+    auto* action = new QAction(text, this);
+    action->setObjectName(name);
+    action->setCheckable(true);
+    action->setShortcut(shortcut);
+    action->setToolTip(toolTip);
+    connect(action, &QAction::toggled, this, toggled);
+    return action;
+}
+
 void MainWindow::createMeasureActions()
 {
-    m_densityAction = new QAction(tr("&Texel Density Overlay"), this);
-    m_densityAction->setObjectName(QStringLiteral("texelDensityAction"));
-    m_densityAction->setCheckable(true);
-    m_densityAction->setToolTip(tr("Tint the scene by screen pixels per shadow texel: blue under 1, green 1–2, yellow 4, red 8 and up (blocky); "
-                                   "the setting shading.texel_density"));
-    connect(m_densityAction, &QAction::toggled, this, [this](bool on) {
-        for (Settings& s : m_sides.sides())
-            s.shading.texelDensity = on;
-        showSides();
-    });
-    m_shadowOnlyAction = new QAction(tr("&Shadow Only"), this);
-    m_shadowOnlyAction->setObjectName(QStringLiteral("shadowOnlyAction"));
-    m_shadowOnlyAction->setCheckable(true);
-    m_shadowOnlyAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_J));
-    m_shadowOnlyAction->setToolTip(tr("The shadow term alone: white lit, black shadowed, grey partial (a filter's moiré shows here), dark blue "
-                                      "facing away from the light; no textures or lighting (Ctrl+J; the setting shading.shadow_only)"));
-    connect(m_shadowOnlyAction, &QAction::toggled, this, [this](bool on) {
-        for (Settings& s : m_sides.sides())
-            s.shading.shadowOnly = on;
-        showSides();
-    });
-    m_loupeAction = new QAction(tr("&Loupe"), this);
-    m_loupeAction->setObjectName(QStringLiteral("loupeAction"));
-    m_loupeAction->setCheckable(true);
-    m_loupeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
-    m_loupeAction->setToolTip(tr("Magnify the pixels under the pointer %1 times beside it, with the colour of the one in the middle: "
-                                 "acne, moiré and a filter's steps at their own size (Ctrl+M)").arg(Loupe::kZoom));
-    connect(m_loupeAction, &QAction::toggled, this, [this](bool on) {
-        for (SceneView* view : m_views)
-            view->setLoupe(on);
-    });
-    m_freezeAction = new QAction(tr("&Freeze Shadow Frustum"), this);
-    m_freezeAction->setObjectName(QStringLiteral("freezeAction"));
-    m_freezeAction->setCheckable(true);
-    m_freezeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
-    m_freezeAction->setToolTip(tr("Keep the light fitted to the camera as it is now (its culling, cascades and fitted volume) while "
-                                  "you move the camera away to look at them from outside; the frozen camera is drawn (Ctrl+F)"));
-    connect(m_freezeAction, &QAction::toggled, this, [this](bool on) {
-        for (SceneView* view : m_views)
-            view->setFrozenCamera(on ? std::optional(m_sides.selectedSettings().camera) : std::nullopt);
-    });
+    // The views' own settings (both sides): what is shown, never what is measured.
+    const auto forBothSides = [this](void (*set)(Settings&, bool)) {
+        return [this, set](bool on) {
+            for (Settings& s : m_sides.sides())
+                set(s, on);
+            showSides();
+        };
+    };
+    m_densityAction = toggleAction(tr("&Texel Density Overlay"), QStringLiteral("texelDensityAction"), {},
+                                   tr("Tint the scene by screen pixels per shadow texel: blue under 1, green 1–2, yellow 4, red 8 and up "
+                                      "(blocky); the setting shading.texel_density"),
+                                   forBothSides([](Settings& s, bool on) { s.shading.texelDensity = on; }));
+    m_shadowOnlyAction = toggleAction(tr("&Shadow Only"), QStringLiteral("shadowOnlyAction"), QKeySequence(Qt::CTRL | Qt::Key_J),
+                                      tr("The shadow term alone: white lit, black shadowed, grey partial (a filter's moiré shows here), dark "
+                                         "blue facing away from the light; no textures or lighting (Ctrl+J; the setting shading.shadow_only)"),
+                                      forBothSides([](Settings& s, bool on) { s.shading.shadowOnly = on; }));
+    m_loupeAction = toggleAction(tr("&Loupe"), QStringLiteral("loupeAction"), QKeySequence(Qt::CTRL | Qt::Key_M),
+                                 tr("Magnify the pixels under the pointer %1 times beside it, with the colour of the one in the middle: "
+                                    "acne, moiré and a filter's steps at their own size (Ctrl+M)").arg(Loupe::kZoom),
+                                 [this](bool on) {
+                                     for (SceneView* view : m_views)
+                                         view->setLoupe(on);
+                                 });
+    m_freezeAction = toggleAction(tr("&Freeze Shadow Frustum"), QStringLiteral("freezeAction"), QKeySequence(Qt::CTRL | Qt::Key_F),
+                                  tr("Keep the light fitted to the camera as it is now (its culling, cascades and fitted volume) while you "
+                                     "move the camera away to look at them from outside; the frozen camera is drawn (Ctrl+F)"),
+                                  [this](bool on) {
+                                      for (SceneView* view : m_views)
+                                          view->setFrozenCamera(on ? std::optional(m_sides.selectedSettings().camera) : std::nullopt);
+                                  });
     m_measureAction = m_timing->createMeasureAction(this);
 }
 

@@ -9,9 +9,11 @@
 #include "UndoController.h"
 #include "WindowStatusBar.h"
 
+#include <QKeySequence>
 #include <QMainWindow>
 
 #include <array>
+#include <functional>
 
 class QAction;
 class QSplitter;
@@ -133,6 +135,9 @@ private:
     void showStatusMessage(const QString& text, int timeoutMs) { m_status->setMessage(text, timeoutMs); }
     void showUndoState(const SettingsChange::Sides& target, const SettingsChange::Sides& from);
     void setCamera(const CameraSettings& camera);
+    // A checkable action of the View menu calling `toggled` with its state.
+    QAction* toggleAction(const QString& text, const QString& name, const QKeySequence& shortcut, const QString& toolTip,
+                          const std::function<void(bool)>& toggled);
     // The selected side's scene view's width over its height: what a model's camera is framed for.
     double viewAspect() const;
     // `settings` with the camera of a newly shown scene framed for viewAspect().
