@@ -310,8 +310,8 @@ QString Recommendation::reason() const
     QString text;
     switch (kind) {
     case Kind::Cheapest:
-        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms): of the rows whose picture is not visibly wrong, as fast as the fastest within "
-                              "the timing noise, and of those the most accurate; %4")
+        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms): of the rows whose picture is not visibly wrong and that no such row "
+                              "is clearly faster than, the most accurate; %4")
                    .arg(msText(row->frame.median))
                    .arg(row->frame.p10, 0, 'f', row->frame.p10 < 10.0 ? 2 : 1)
                    .arg(row->frame.p90, 0, 'f', row->frame.p90 < 10.0 ? 2 : 1)

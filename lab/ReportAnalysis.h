@@ -93,7 +93,7 @@ double areaNoisePercent(const ReportRow& row);
 // ties, and of tied rows the faster (or, tied in time, the more accurate) is the pick.
 struct Recommendation {
     enum class Kind {
-        Cheapest,       // of the rows with nothing visibly wrong as fast as the fastest (timing noise), the most accurate
+        Cheapest,       // of the rows with nothing visibly wrong that none such is clearly faster than, the most accurate
         MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's time
         ClosestToArea,  // the smallest MAE against the area light, at any cost
         Only,           // the one row under its light whose picture is not visibly wrong
