@@ -8,6 +8,7 @@
 #include "SettingsError.h"
 
 #include <QFile>
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -221,11 +222,14 @@ double sceneScale(const QString& name)
 
 QStringList objectTokens(const Scene& scene)
 {
+    // Counted once: a city has thousands of objects.
+    QHash<QString, int> uses;
+    for (const SceneObject& o : scene.objects)
+        ++uses[o.name];
     QStringList tokens;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const QString& name = scene.objects[i].name;
-        const bool own = !name.isEmpty() && !name.contains(u',') && !name.startsWith(u'#')
-                         && std::count_if(scene.objects.begin(), scene.objects.end(), [&](const SceneObject& o) { return o.name == name; }) == 1;
+        const bool own = !name.isEmpty() && !name.contains(u',') && !name.startsWith(u'#') && uses.value(name) == 1;
         tokens << (own ? name.trimmed() : QStringLiteral("#%1").arg(i));
     }
     return tokens;
