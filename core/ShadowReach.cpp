@@ -85,17 +85,6 @@ std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> points)
     return hull.size() >= 3 ? hull : std::vector<glm::dvec2>{};
 }
 
-// Whether the light of `view` sees only front faces of the object's culled plane, so that the
-// shadow pass draws none of it.
-bool culledFrom(const ReachObject& object, const LightFrame& view)
-{
-    if (!object.frontFacesCulled || !object.plane)
-        return false;
-    const glm::dvec3& n = object.plane->normal;
-    const double scale = glm::length(object.bounds.max - object.bounds.min) + glm::length(view.position - object.plane->point);
-    return view.perspective ? glm::dot(n, view.position - object.plane->point) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
-}
-
 // The map depth (conventional, [0, 1] from near to far) of a point `distance` along a
 // perspective view's axis.
 double perspectiveDepthAt(const LightFrame& view, double distance)
@@ -119,6 +108,15 @@ bool finite(const glm::dvec3& v)
 }
 
 } // namespace
+
+bool culledFrom(const ReachObject& object, const LightFrame& view)
+{
+    if (!object.frontFacesCulled || !object.plane)
+        return false;
+    const glm::dvec3& n = object.plane->normal;
+    const double scale = glm::length(object.bounds.max - object.bounds.min) + glm::length(view.position - object.plane->point);
+    return view.perspective ? glm::dot(n, view.position - object.plane->point) > 1e-9 * scale : glm::dot(n, -view.direction) > 1e-9;
+}
 
 std::optional<double> tapReachTexels(const Settings& settings)
 {

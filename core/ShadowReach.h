@@ -92,6 +92,10 @@ struct ReachObject {
     bool frontFacesCulled = false;
 };
 
+// Whether the light of `view` sees only front faces of the object's culled plane, so that the
+// shadow pass draws none of it.
+bool culledFrom(const ReachObject& object, const LightFrame& view);
+
 // The reach of a light with the views `views` (one frame per view; their shadowMatrix), over
 // maps of `mapSize` texels a side, of the objects in `casters` (those that cast), and where
 // each of `receivers` (those that receive) lies against it, seen by `camera`. The two lists

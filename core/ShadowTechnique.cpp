@@ -69,6 +69,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/vsm.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 2,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -85,6 +86,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/evsm2.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 2,
         .parameters = {bleeding, bias, positive},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -100,6 +102,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/evsm4.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 4,
         .parameters = {bleeding, bias, positive, negative},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -123,6 +126,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/msm.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 4,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -139,6 +143,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/msm-hausdorff.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 4,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -155,6 +160,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .shaderFile = QStringLiteral("shadow/esm.glsl"),
         .map = ShadowMapKind::Moments,
         .samplers = {ShadowSampler::Moments},
+        .momentChannels = 1,
         .parameters = {positive},
         .defines = momentDefines,
         .uniforms = momentUniforms,
@@ -200,6 +206,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
             {QStringLiteral("pcf 7x7"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}}},
         .penumbraOnly = true,
         .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double((f.kernel - 1) / 2); },
+        .taps = [](const FilterSettings& f) { return f.kernel * f.kernel; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -221,6 +228,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
         .penumbraOnly = true,
         // Each bilinear tap reads the 2 x 2 texels around it (tapReachTexels adds that).
         .tapReach = [](const FilterSettings& f) -> std::optional<double> { return double(optimizedPcfKernel(f) - 1) / 2.0 + 0.5; },
+        .taps = [](const FilterSettings& f) { return (optimizedPcfKernel(f) + 1) / 2 * ((optimizedPcfKernel(f) + 1) / 2); },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
 }
@@ -242,6 +250,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .describe = plainLabel("pcf-dither4"),
         .sweep = {{QStringLiteral("pcf-dither4"), {QStringLiteral("filter.mode=pcf-dither4")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 2.5; },
+        .taps = [](const FilterSettings&) { return 4; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -258,6 +267,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .describe = plainLabel("pcf64"),
         .sweep = {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 3.5; },
+        .taps = [](const FilterSettings&) { return 64; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -300,6 +310,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
             QStringLiteral("filter.radius=5")}}},
         .penumbraOnly = true,
         .tapReach = [](const FilterSettings& f) -> std::optional<double> { return f.radius; },
+        .taps = [](const FilterSettings& f) { return f.taps; },
     });
     t.push_back({
         .mode = FilterMode::Pcss,
@@ -317,6 +328,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
+        .taps = [](const FilterSettings& f) { return 16 + f.taps; },
     });
     t.push_back({
         .mode = FilterMode::Dpcf,
@@ -334,6 +346,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("dpcf 16"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("dpcf 32"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
+        .taps = [](const FilterSettings& f) { return f.taps; },
     });
 }
 

@@ -68,6 +68,9 @@ struct ShadowTechnique {
     QString shaderFile;             // under shaders/: defines float filterShadow(vec2 uv, float reference)
     ShadowMapKind map = ShadowMapKind::DepthCompare;   // the renderer refuses kinds it does not build
     std::vector<ShadowSampler> samplers;    // in texture-unit order
+    // Moments it stores (1, 2 or 4): the moments map's channels (R, RG or RGBA), so that a
+    // technique of fewer writes, blurs and reads no more. 0 for depth maps.
+    int momentChannels = 0;
     QStringList parameters;         // keys of techniqueParameters() it reads
     // Extra #defines of the lit pass's variant (compile-time parameters such as a kernel width).
     std::function<QStringList(const Settings&)> defines;
@@ -87,6 +90,10 @@ struct ShadowTechnique {
     std::function<std::optional<double>(const FilterSettings&)> tapReach = [](const FilterSettings&) -> std::optional<double> {
         return std::nullopt;
     };
+    // Texture reads of one lookup, at most (a bilinear or a hardware-compared read counts once;
+    // an early-out where the footprint is uniform reads fewer): the same on any GPU, so the
+    // cost it puts beside times (FrameCounts).
+    std::function<int(const FilterSettings&)> taps = [](const FilterSettings&) { return 1; };
     // Whether every tap compares against the receiver's own depth (biased), never a depth grown
     // away from the light along the receiver's plane or with the tap's distance.
     std::function<bool(const Settings&)> referencesStayNearer = [](const Settings&) { return false; };

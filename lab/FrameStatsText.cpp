@@ -34,4 +34,58 @@ QString virtualMapStatusText(const FrameStats& stats)
     return text;
 }
 
+QString countText(std::int64_t count)
+{
+    if (count < 0)
+        return QStringLiteral("n/a");
+    const double c = double(count);
+    if (count < 1000)
+        return QString::number(count);
+    if (c < 1e6)
+        return QStringLiteral("%1 k").arg(c / 1e3, 0, 'f', c < 1e4 ? 2 : 1);
+    if (c < 1e9)
+        return QStringLiteral("%1 M").arg(c / 1e6, 0, 'f', c < 1e7 ? 2 : 1);
+    return QStringLiteral("%1 G").arg(c / 1e9, 0, 'f', 2);
+}
+
+QString bytesText(std::int64_t bytes)
+{
+    const double mib = double(bytes) / double(1 << 20);
+    return mib >= 10.0 ? QStringLiteral("%1 MiB").arg(mib, 0, 'f', 0) : QStringLiteral("%1 MiB").arg(mib, 0, 'f', 1);
+}
+
+QStringList countsLines(const FrameCounts& c)
+{
+    const auto tr = [](const char* text) { return QCoreApplication::translate("FrameStats", text); };
+    QStringList lines;
+    lines << tr("shadow pass: %1 draws, %2 triangles, %3 samples, %4 texels cleared, map %5")
+                 .arg(c.shadow.draws)
+                 .arg(countText(c.shadow.primitives), countText(c.shadow.samples), countText(c.clearedTexels), bytesText(c.mapBytes));
+    if (c.blurTexels > 0)
+        lines << tr("  of which blur: %1 texels written, %2 read and written").arg(countText(c.blurTexels), bytesText(c.blurBytes));
+    QString lit = tr("lit pass: %1 draws, %2 triangles, %3 samples").arg(c.lit.draws).arg(countText(c.lit.primitives), countText(c.lit.samples));
+    if (c.tapsPerLookup > 0)
+        lit += c.tapsPerLookup == 1 ? tr(", %1 lookups of 1 tap").arg(countText(c.lookupFragments))
+                                    : tr(", %1 lookups of %2 taps = %3 taps").arg(countText(c.lookupFragments)).arg(c.tapsPerLookup).arg(countText(c.taps()));
+    lines << lit;
+    return lines;
+}
+
+QJsonObject countsJson(const FrameCounts& c)
+{
+    const auto counted = [](std::int64_t n) { return n < 0 ? QJsonValue() : QJsonValue(double(n)); };
+    const auto pass = [&](const PassCounts& p) {
+        return QJsonObject{{QStringLiteral("draws"), p.draws}, {QStringLiteral("primitives"), counted(p.primitives)}, {QStringLiteral("samples"), counted(p.samples)}};
+    };
+    return {{QStringLiteral("shadow_pass"), pass(c.shadow)},
+            {QStringLiteral("lit_pass"), pass(c.lit)},
+            {QStringLiteral("cleared_texels"), double(c.clearedTexels)},
+            {QStringLiteral("blur_texels"), double(c.blurTexels)},
+            {QStringLiteral("blur_bytes"), double(c.blurBytes)},
+            {QStringLiteral("map_bytes"), double(c.mapBytes)},
+            {QStringLiteral("taps_per_lookup"), c.tapsPerLookup},
+            {QStringLiteral("lookup_fragments"), counted(c.lookupFragments)},
+            {QStringLiteral("taps"), counted(c.taps())}};
+}
+
 } // namespace shadowlab

@@ -2,7 +2,9 @@
 
 #include "FrameStats.h"
 
+#include <QJsonObject>
 #include <QString>
+#include <QStringList>
 
 namespace shadowlab {
 
@@ -13,5 +15,16 @@ QString warpStatusText(const FrameStats& stats);
 // resident of 900, 12 drawn"), with a warning where the pool coarsened requests; empty where
 // shadow.virtual is off.
 QString virtualMapStatusText(const FrameStats& stats);
+
+// A count for people: "812", "12.4 k", "4.19 M", "1.07 G"; "n/a" for a count not taken (-1).
+QString countText(std::int64_t count);
+// Bytes for people: "16 MiB".
+QString bytesText(std::int64_t bytes);
+// What a frame asked of any GPU (FrameCounts), one line per pass: "shadow pass: 3 draws, 1.2 k
+// triangles, 2.10 M samples, 4.19 M texels cleared, map 16 MiB" and "lit pass: 4 draws, ...,
+// 0.92 M lookups of 9 taps = 8.29 M taps"; with a blur line for a moments map.
+QStringList countsLines(const FrameCounts& counts);
+// The same for machines: every count by its name, null where not taken.
+QJsonObject countsJson(const FrameCounts& counts);
 
 } // namespace shadowlab

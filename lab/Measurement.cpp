@@ -22,7 +22,41 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
     return meter.measure(buffer, *renderer.scene(), renderer.lightFrame(), settings, progress);
 }
 
+FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size)
+{
+    Renderer& renderer = headless.renderer();
+    renderer.setCounting(true);
+    // A map drawn into slices (map.slices) is cleared once in that many passes: its clears are
+    // counted over a whole cycle, the rest in the last pass.
+    const int passes = std::max(1, ShadowMap::slicesFor(settings));
+    FrameCounts counts;
+    std::int64_t cleared = 0;
+    try {
+        for (int i = 0; i < passes; ++i) {
+            renderer.invalidateShadowMap();
+            headless.renderFrame(settings, size, TimingMode::Finish);
+            counts = renderer.lastFrame().counts;
+            cleared += counts.clearedTexels;
+        }
+    } catch (...) {
+        renderer.setCounting(false);
+        throw;
+    }
+    renderer.setCounting(false);
+    counts.clearedTexels = cleared / passes;
+    return counts;
+}
+
 namespace {
+
+// The counts of `run`'s configuration, from its camera path's first camera.
+void countRun(TimedRun& run, QSize size)
+{
+    Settings settings = run.settings;
+    if (!run.cameraPath.empty())
+        settings.camera = run.cameraPath.front();
+    run.samples.counts = countFrames(*run.headless, settings, size);
+}
 
 // One frame of `run`, the `index`th of its camera path.
 void renderRunFrame(TimedRun& run, QSize size, int index)
@@ -87,6 +121,8 @@ void timeInterleaved(std::vector<TimedRun>& runs, QSize size, int warmup, int fr
         if (progress)
             progress(double(i + 1) / double(warmup + frames));
     }
+    for (TimedRun& run : runs)
+        countRun(run, size);
 }
 
 namespace {
@@ -130,6 +166,8 @@ void timeUntilSteady(std::vector<TimedRun>& runs, QSize size, int warmup, const 
                 recordFrame(run.samples, run.headless->renderer().lastFrame());
             }
             steady[r] = timingIsSteady(run.samples.wall, rule);
+            if (steady[r])
+                countRun(run, size);
         }
         if (progress) {
             double done = 0.0;

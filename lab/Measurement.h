@@ -34,7 +34,15 @@ struct FrameSamples {
     std::vector<std::vector<double>> viewWall;
     std::vector<int> viewPassesRun;
     std::vector<int> viewDraws;         // casters drawn the last time each view was drawn
+    // What one shadow pass and one lit pass of the configuration ask of any GPU, counted in a
+    // frame of their own after the timed ones (countFrames()).
+    FrameCounts counts;
 };
+
+// What a frame of `settings` at `size` asks of any GPU, its shadow pass drawn (FrameCounts):
+// counted in frames of their own, since the counting queries slow a software rasteriser's
+// frame. A map drawn into slices is counted over a whole cycle of them. Throws like render().
+FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size);
 
 // One configuration to time: where it renders, what, and whether the light "moves" (the
 // shadow map is redrawn every frame) or stands still (the cached map is reused).

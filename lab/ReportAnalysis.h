@@ -26,6 +26,7 @@ struct ReportRow {
     AccuracyResult accuracy;
     FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
     TexelDensity density;       // screen pixels per shadow texel over the measured receivers
+    FrameCounts counts;         // what one shadow and one lit pass ask of any GPU (FrameStats.h)
     bool paretoFront = false;   // on its light's front of frame time against misclassified pixels
     bool areaFront = false;     // ... against the MAE of the area light (never when it was not traced)
     bool defaults = false;      // the base settings; its error image is shown

@@ -8,30 +8,48 @@ DepthPass::DepthPass(GlFunctions* gl) : m_gl(gl), m_draw(gl, true), m_reversedDe
 
 void DepthPass::clear(ShadowMap& map, bool reversedDepth)
 {
-    map.cleared(QRect(0, 0, map.width(), map.height()));
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
-    PassState state;
-    state.viewport = QRect(0, 0, map.width(), map.height());
-    applyPassState(m_gl, state);
-    m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
-    m_gl->glClear(GL_DEPTH_BUFFER_BIT);
-    m_gl->glClearDepth(1.0);
+    // Each tile where draws since its clear wrote: the rest reads cleared already. A map of one
+    // view is cleared whole (the fast clear).
+    const QRect whole(0, 0, map.width(), map.height());
+    if (map.rows() * map.columns() == 1) {
+        if (!map.written().written(whole).isEmpty())
+            clearTileOnly(map, reversedDepth, whole);
+        map.cleared(whole);
+        return;
+    }
+    for (int row = 0; row < map.rows(); ++row) {
+        for (int column = 0; column < map.columns(); ++column) {
+            const QRect written = map.written().written(QRect(column * map.size(), row * map.size(), map.size(), map.size()));
+            if (!written.isEmpty())
+                clearTileOnly(map, reversedDepth, written);
+        }
+    }
+    map.cleared(whole);
 }
 
 void DepthPass::clearTile(ShadowMap& map, bool reversedDepth, const QRect& tile)
 {
-    map.cleared(tile);
-    clearTileOnly(map, reversedDepth, tile);
+    const QRect written = map.written().written(tile);
+    if (written.isEmpty())
+        return;
+    clearTileOnly(map, reversedDepth, written);
+    map.cleared(written);
 }
 
 void DepthPass::clearTileOnly(const ShadowMap& map, bool reversedDepth, const QRect& tile)
 {
+    m_clearedTexels += qint64(tile.width()) * tile.height();
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
     state.viewport = tile;
     applyPassState(m_gl, state);
-    m_gl->glEnable(GL_SCISSOR_TEST);
-    m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
+    // A clear of the whole map goes without a scissor: rasterisers clear a whole surface
+    // fastest (llvmpipe: 2.4 ms for 2048², against 6 ms scissored to nearly all of it).
+    const bool whole = tile == QRect(0, 0, map.width(), map.height());
+    if (!whole) {
+        m_gl->glEnable(GL_SCISSOR_TEST);
+        m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
+    }
     m_gl->glClearDepth(reversedDepth ? 0.0 : 1.0);
     m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     m_gl->glClearDepth(1.0);
@@ -40,16 +58,26 @@ void DepthPass::clearTileOnly(const ShadowMap& map, bool reversedDepth, const QR
 
 int DepthPass::render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, bool cutouts, int slices)
 {
-    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()), cutouts, slices);
+    return renderTile(scene, light, bias, map, QRect(0, 0, map.width(), map.height()), std::nullopt, cutouts, slices);
 }
 
 int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
-                          bool cutouts, int slices)
+                          const std::optional<QRect>& drawn, bool cutouts, int slices)
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
     const ShadowMap::Draw slice = map.beginDraw(tile, slices);
-    if (slice.clear)
-        clearTileOnly(map, reversed, tile);
+    // A sliced draw keeps what earlier slices left; any other clears what was written and what
+    // it draws, and draws only where its casters are.
+    const bool sliced = slice.slice.scale < 1.0;
+    const QRect area = sliced ? tile : drawn.value_or(tile) & tile;
+    // A map of one view is cleared whole, which is the fast clear of any rasteriser; a tile of
+    // several only where it was or will be written.
+    const bool oneView = tile == QRect(0, 0, map.width(), map.height());
+    const QRect clear = sliced || oneView ? tile : map.written().toClear(tile, area);
+    if (slice.clear && !clear.isEmpty()) {
+        clearTileOnly(map, reversed, clear);
+        map.written().cleared(clear);
+    }
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
     state.depthRangeNear = slice.slice.offset;
@@ -72,9 +100,10 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     // to push by the same depth (the factor's slope term follows the range on its own).
     state.polygonOffsetUnits = sign * float(bias.polygonUnits * slice.slice.scale);
     applyPassState(m_gl, state);
-    // Nothing outside the tile, whatever the rasteriser's guard band does.
+    // Nothing outside the area, whatever the rasteriser's guard band does.
     m_gl->glEnable(GL_SCISSOR_TEST);
-    m_gl->glScissor(tile.x(), tile.y(), tile.width(), tile.height());
+    m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+    map.written().drew(area);
 
     const int draws = m_draw.draw(scene, {.viewProjection = light.depthViewProjection, .culling = light.viewProjection, .clampDepth = clampDepth,
                                           .castersOnly = true, .light = bias.skipFloors ? &light : nullptr, .cutouts = cutouts});

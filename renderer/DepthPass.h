@@ -6,6 +6,9 @@
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
+#include <optional>
+#include <utility>
+
 namespace shadowlab {
 
 // Shadow pass: renders the casters' depth from the light into the shadow map. Casters
@@ -22,16 +25,22 @@ public:
     // Whether render() accepts frames with LightFrame::reversedDepth.
     bool supportsReversedDepth() const { return m_reversedDepth; }
 
-    // Clears the map to the far depth: every lookup compares lit.
+    // Clears the map to the far depth: every lookup compares lit. Only what draws since the
+    // last clear wrote (ShadowMap::written) is cleared again.
     void clear(ShadowMap& map, bool reversedDepth);
     // Clears, then draws the casters; with `slices` > 1 (map.slices) a whole 24-bit map is
     // cleared once in that many draws and drawn into its next depth slice between
     // (ShadowMap::beginDraw). Returns the number of draw calls issued.
     int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, bool cutouts = true, int slices = 1);
-    // The same for one tile of a map of several views (`tile` in texels): clears the tile only.
+    // The same for one tile of a map of several views (`tile` in texels), where the casters
+    // cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): clears what earlier draws
+    // wrote there and `drawn`, and draws within `drawn` only.
     int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
-                   bool cutouts = true, int slices = 1);
+                   const std::optional<QRect>& drawn, bool cutouts = true, int slices = 1);
     void clearTile(ShadowMap& map, bool reversedDepth, const QRect& tile);
+
+    // Texels cleared since the last call.
+    qint64 takeClearedTexels() { return std::exchange(m_clearedTexels, 0); }
 
     // Whether the cut-out variant has been compiled (a scene with cut-outs was drawn).
     bool hasCutoutVariant() const { return m_draw.hasCutoutVariant(); }
@@ -42,6 +51,7 @@ private:
     GlFunctions* m_gl;
     DepthOnlyDraw m_draw;
     bool m_reversedDepth = false;
+    qint64 m_clearedTexels = 0;
 };
 
 } // namespace shadowlab

@@ -37,9 +37,18 @@ public:
             m_pass.clearTile(m_map, light.reversedDepth, tile);
     }
 
-    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double*) override
+    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels, double*) override
     {
-        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, settings.shadow.cutouts, ShadowMap::slicesFor(settings));
+        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, inTile(texels, &CasterTexels::drawn, tile), settings.shadow.cutouts,
+                                 ShadowMap::slicesFor(settings));
+    }
+
+    Counts takeCounts() override { return {.clearedTexels = m_pass.takeClearedTexels()}; }
+
+    qint64 bytes() const override
+    {
+        // 24-bit depth is stored in 32 bits.
+        return qint64(m_map.width()) * m_map.height() * 4;
     }
 
 private:

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 namespace shadowlab {
@@ -16,6 +17,29 @@ struct VirtualMapStats {
     int finestLevel = -1;       // the finest level that serves one of the requests; -1 none
     int requestDraws = 0;       // draw calls of the request pass (0 when the requests were kept)
     bool requestsPending = false;   // asynchronous requests (the window) still on their way back
+};
+
+// Costs that are the same on any GPU, unlike times: what a frame asked of the rasteriser.
+// Query counts are -1 unless the frame was counted (Renderer::setCounting: their queries cost a
+// software rasteriser a wait, so a timed frame is never a counted one).
+struct PassCounts {
+    int draws = 0;                      // draw calls
+    std::int64_t primitives = -1;       // GL_PRIMITIVES_GENERATED
+    std::int64_t samples = -1;          // GL_SAMPLES_PASSED: fragments that passed the depth test
+};
+
+struct FrameCounts {
+    PassCounts shadow;                  // the shadow pass: casters, and a moments map's far-plane fill and blur
+    PassCounts lit;
+    std::int64_t clearedTexels = 0;     // shadow-map texels cleared (or filled with the far plane's moments)
+    std::int64_t blurTexels = 0;        // texels the moments blur wrote, both axes
+    std::int64_t blurBytes = 0;         // bytes it read and wrote
+    std::int64_t mapBytes = 0;          // the shadow storage's memory (page pool and table for a virtual map)
+    int tapsPerLookup = 0;              // the technique's texture reads per lookup, at most (ShadowTechnique::taps)
+    std::int64_t lookupFragments = -1;  // lit fragments that looked the shadow up (counted frames)
+    // Shadow texture reads of the frame: taps per lookup times the fragments that looked up.
+    std::int64_t taps() const { return lookupFragments < 0 ? -1 : lookupFragments * tapsPerLookup; }
+    bool counted() const { return shadow.samples >= 0 || lit.samples >= 0; }
 };
 
 // What one frame cost and did. GPU times come from GL_TIME_ELAPSED (0 on a software renderer,
@@ -53,10 +77,13 @@ struct FrameStats {
     double warpGain = 0.0;
     enum class WarpDeclined { No, AlongLight, NoGain } warpDeclined = WarpDeclined::No;
     // Lights with several views (cascades, cube faces): per view, whether it was drawn this
-    // frame, its casters drawn and (TimingMode::Finish) its wall time; empty for one map.
+    // frame (one without casters is not: at most cleared where it was written), its casters drawn and (TimingMode::Finish) its wall time; empty for one map.
     std::vector<bool> viewRendered;
     std::vector<int> viewDraws;
     std::vector<double> viewWallMs;
+    // What transfers to any GPU (see FrameCounts); shadow.* of a frame that drew no shadow
+    // pass are zero.
+    FrameCounts counts;
     // shadow.virtual: what the frame's pages did (all 0 otherwise).
     bool virtualMap = false;
     VirtualMapStats virtualPages;

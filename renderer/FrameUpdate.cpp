@@ -22,8 +22,7 @@ std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
 
 } // namespace
 
-ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
-                       bool cullsFrontFaces, bool floorsLeftOut, const CameraFrame& camera)
+std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut)
 {
     std::vector<ReachObject> casters;
     casters.reserve(scene.objects.size());
@@ -34,6 +33,12 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
         casters.push_back({.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
                            .frontFacesCulled = (cullsFrontFaces || (floorsLeftOut && layout.isFloor(i))) && plane});
     }
+    return casters;
+}
+
+ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
+                       const CameraFrame& camera)
+{
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : layout.drawItems()) {
         const std::optional<WorldPlane> plane = item.batch ? std::nullopt : layout.objectPlane(item.objects.front());
@@ -91,7 +96,14 @@ void FrameUpdate::fit(const Frame& frame, const Scene& scene, const SceneLayout&
     ++m_fitCount;
     // Where lookups can find a caster follows the fit, and so is kept with it.
     const int generation = m_reach.generation + 1;
-    m_reach = settings.shadow.enabled ? sceneReach(settings, m_views.frames, scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, frame.camera) : ShadowReach{};
+    m_reach = ShadowReach{};
+    m_casterTexels.clear();
+    if (settings.shadow.enabled) {
+        const std::vector<ReachObject> casters = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut);
+        m_reach = sceneReach(settings, m_views.frames, casters, layout, frame.camera);
+        for (const LightFrame& view : m_views.frames)
+            m_casterTexels.push_back(shadowlab::casterTexels(view, settings.map.size, casters));
+    }
     m_reach.generation = generation;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CasterTexels.h"
 #include "FrameStats.h"
 #include "LightFitting.h"
 #include "LightMath.h"
@@ -59,6 +60,8 @@ public:
     const ShadowViewFrames& views() const { return m_views; }
     const FittedLight& fitted() const { return m_fit; }
     const ShadowReach& reach() const { return m_reach; }
+    // Per view, the texels its shadow pass can write (empty without shadows).
+    const std::vector<CasterTexels>& casterTexels() const { return m_casterTexels; }
     // How many times the views were fitted.
     int fitCount() const { return m_fitCount; }
     // The fit's half of the frame's statistics: texel sizes before and after, and the warp.
@@ -69,12 +72,15 @@ private:
     ShadowViewFrames m_views;
     FittedLight m_fit;
     ShadowReach m_reach;
+    std::vector<CasterTexels> m_casterTexels;
     int m_fitCount = 0;
 };
 
-// Where the lookups of `views` can find a caster: casters one by one (a flat one-sided one whose
-// front faces the pass culls as its plane), receivers as drawn.
-ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const Scene& scene, const SceneLayout& layout,
-                       bool cullsFrontFaces, bool floorsLeftOut, const CameraFrame& camera);
+// The scene's objects as casters, one by one: a flat one-sided one whose front faces the pass
+// culls (bias.cull_front), or a floor it leaves out (bias.skip_floors), with its plane.
+std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut);
+// Where the lookups of `views` can find `casters`, with the receivers as drawn.
+ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
+                       const CameraFrame& camera);
 
 } // namespace shadowlab

@@ -64,7 +64,7 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
     return it->second;
 }
 
-LitPass::LitPass(GlFunctions* gl) : m_gl(gl) {}
+LitPass::LitPass(GlFunctions* gl) : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED) {}
 
 int LitPass::compiledCutoutVariantCount() const
 {
@@ -600,7 +600,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
         }
+        if (m_counting)
+            m_lookupSamples.begin();
         drawMaskedOrder(lookup, scene, camera, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &lookupRects);
+        if (m_counting)
+            m_lookupSamples.end();
     }
     if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
         variant.outOfReach = true;
@@ -609,8 +613,13 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
             if (p)
                 setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
         }
+        if (m_counting)
+            m_plainSamples.begin();
         drawMaskedOrder(plain, scene, camera, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
+        if (m_counting)
+            m_plainSamples.end();
     }
+    m_fragments = {.lookup = std::max<std::int64_t>(m_lookupSamples.result(), 0), .plain = std::max<std::int64_t>(m_plainSamples.result(), 0)};
     const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());
 
     m_gl->glBindVertexArray(0);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "DepthRangePass.h"
+#include "CountQuery.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "MomentsMap.h"
@@ -87,6 +88,15 @@ public:
         bool masked = false;
     };
     const ReachUse& lastReachUse() const { return m_reachUse; }
+    // Whether render() counts the fragments of its draws that look the shadow up and of those
+    // that do not (GL_SAMPLES_PASSED; Renderer::setCounting).
+    void setCounting(bool counting) { m_counting = counting; }
+    struct Fragments {
+        std::int64_t lookup = 0;
+        std::int64_t plain = 0;
+    };
+    // The last counted render()'s (zero where it was not counted).
+    Fragments lastFragments() const { return m_fragments; }
 
 private:
     struct Program {
@@ -136,6 +146,10 @@ private:
                          const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors);
 
     GlFunctions* m_gl;
+    bool m_counting = false;
+    CountQuery m_lookupSamples;
+    CountQuery m_plainSamples;
+    Fragments m_fragments;
     std::map<QString, std::unique_ptr<Program>> m_programs;
     std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
     // The same split by what the reach says: looked up everywhere, looked up inside the mask,

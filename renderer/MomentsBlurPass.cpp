@@ -56,41 +56,52 @@ std::vector<float> MomentsBlurPass::weights(int width)
     return w;
 }
 
-int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile)
+int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile, const std::optional<QRect>& drawn)
 {
     int draws = 0;
     const std::vector<float> w = weights(width);
-    if (w.size() > 1) {
+    const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
+    const int radius = int(w.size()) - 1;
+    // Where the blur changes anything: within its radius of what was drawn. The first axis also
+    // covers the rows the second reads.
+    const auto grown = [&](const QRect& r, int dx, int dy) { return r.isEmpty() ? r : r.adjusted(-dx, -dy, dx, dy) & whole; };
+    const QRect second = grown(drawn.value_or(whole) & whole, radius, radius);
+    const QRect first = grown(second, 0, radius);
+    m_lastTexels = radius > 0 ? qint64(first.width()) * first.height() + qint64(second.width()) * second.height() : 0;
+    if (radius > 0 && !second.isEmpty()) {
         float padded[kMaxWeights] = {};
         std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxWeights), padded);
         PassState state;
-        state.viewport = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
+        state.viewport = whole;
         applyPassState(m_gl, state);
-        const int radius = int(w.size()) - 1;
         std::unique_ptr<Program>& p = m_programs[radius];
         if (!p)
             p = std::make_unique<Program>(m_gl, radius);
         p->program.bind();
         p->program.set(p->source, 0);
         m_gl->glUniform1fv(p->weights, kMaxWeights, padded);
-        m_gl->glUniform2i(p->tileMin, state.viewport.left(), state.viewport.top());
-        m_gl->glUniform2i(p->tileMax, state.viewport.right(), state.viewport.bottom());
+        m_gl->glUniform2i(p->tileMin, whole.left(), whole.top());
+        m_gl->glUniform2i(p->tileMax, whole.right(), whole.bottom());
         m_gl->glActiveTexture(GL_TEXTURE0);
         m_gl->glBindSampler(0, m_sampler.id());
         m_gl->glBindVertexArray(m_emptyVertexArray.id());
+        m_gl->glEnable(GL_SCISSOR_TEST);
         // Horizontal into the scratch texture, vertical back into level 0 of the map.
         const struct {
             GLuint framebuffer;
             GLuint source;
             GLint step[2];
-        } axes[2] = {{map.scratchFramebuffer(), map.texture(), {1, 0}}, {map.framebuffer(), map.scratchTexture(), {0, 1}}};
+            QRect area;
+        } axes[2] = {{map.scratchFramebuffer(), map.texture(), {1, 0}, first}, {map.framebuffer(), map.scratchTexture(), {0, 1}, second}};
         for (const auto& axis : axes) {
             m_gl->glBindFramebuffer(GL_FRAMEBUFFER, axis.framebuffer);
+            m_gl->glScissor(axis.area.x(), axis.area.y(), axis.area.width(), axis.area.height());
             m_gl->glBindTexture(GL_TEXTURE_2D, axis.source);
             m_gl->glUniform2iv(p->step, 1, axis.step);
             m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
             ++draws;
         }
+        m_gl->glDisable(GL_SCISSOR_TEST);
         m_gl->glBindVertexArray(0);
         m_gl->glBindSampler(0, 0);
         m_gl->glBindTexture(GL_TEXTURE_2D, 0);

@@ -7,6 +7,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -17,9 +18,13 @@ class MomentsBlurPass {
 public:
     explicit MomentsBlurPass(GlFunctions* gl);
 
-    // `width` taps (0 or 1: no blur, only the mips). Returns the number of full-map draws.
+    // `width` taps (0 or 1: no blur, only the mips). Returns the number of draws.
     // Within `tile` (texels; empty: the whole map): a view's taps never reach its neighbours.
-    int render(const MomentsMap& map, int width, const QRect& tile = QRect());
+    // Only within its radius of `drawn` (core/CasterTexels.h; nullopt: the whole tile): outside,
+    // the map holds the far plane's moments, a constant the blur leaves as it is.
+    int render(const MomentsMap& map, int width, const QRect& tile = QRect(), const std::optional<QRect>& drawn = std::nullopt);
+    // Texels the last render() wrote over both axes.
+    qint64 lastTexels() const { return m_lastTexels; }
 
     // The weights of a `width`-tap kernel, centre first then one side (pure; for tests): a
     // Gaussian of sigma width / 4, normalised so both sides and the centre sum to 1.
@@ -37,6 +42,7 @@ private:
     std::map<int, std::unique_ptr<Program>> m_programs;
     GlVertexArray m_emptyVertexArray;
     GlSampler m_sampler;
+    qint64 m_lastTexels = 0;
 };
 
 } // namespace shadowlab

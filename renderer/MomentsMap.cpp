@@ -17,9 +17,20 @@ namespace {
 constexpr GLenum kTextureMaxAnisotropy = 0x84FE;
 constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
 
-GLenum internalFormat(MomentFormat format)
+// One, two or four channels, as the technique stores (ShadowTechnique::momentChannels).
+GLenum internalFormat(MomentFormat format, int channels)
 {
-    return format == MomentFormat::Rgba16F ? GL_RGBA16F : GL_RGBA32F;
+    const bool half = format == MomentFormat::Rgba16F;
+    if (channels == 1)
+        return half ? GL_R16F : GL_R32F;
+    if (channels == 2)
+        return half ? GL_RG16F : GL_RG32F;
+    return half ? GL_RGBA16F : GL_RGBA32F;
+}
+
+QString formatName(MomentFormat format, int channels)
+{
+    return QStringLiteral("%1%2F").arg(channels == 1 ? QStringLiteral("R") : channels == 2 ? QStringLiteral("RG") : QStringLiteral("RGBA")).arg(toString(format));
 }
 
 int mipLevels(int size)
@@ -54,17 +65,18 @@ void MomentsMap::configureSampler(bool mipmaps, float anisotropy)
     m_anisotropy = anisotropy;
 }
 
-void MomentsMap::ensureTiles(int size, int columns, int rows, MomentFormat format, bool mipmaps, int anisotropy)
+void MomentsMap::ensureTiles(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps, int anisotropy)
 {
-    if (!m_texture || size != m_size || columns != m_columns || rows != m_rows || format != m_format || mipmaps != m_mipmaps)
-        allocate(size, columns, rows, format, mipmaps);
+    channels = channels == 1 || channels == 2 ? channels : 4;
+    if (!m_texture || size != m_size || columns != m_columns || rows != m_rows || format != m_format || channels != m_channels || mipmaps != m_mipmaps)
+        allocate(size, columns, rows, format, channels, mipmaps);
     const float wanted = std::min(float(anisotropy), m_maxAnisotropy);
     if (wanted != m_anisotropy || mipmaps != m_mipmaps)
         configureSampler(mipmaps, wanted);
     m_mipmaps = mipmaps;
 }
 
-void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, bool mipmaps)
+void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps)
 {
     GLint maxSize = 0;
     m_gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -74,7 +86,7 @@ void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, 
                             columns * rows > 1 ? QStringLiteral("%1 is out of range for %2 x %3 tiles; this driver allows [16, %4]")
                                                      .arg(size).arg(columns).arg(rows).arg(maxSize / std::max(columns, rows))
                                                : QStringLiteral("%1 is out of range; this driver allows [16, %2]").arg(size).arg(maxSize));
-    const QString what = QStringLiteral("%1 x %2 RGBA%3F moments map").arg(width).arg(height).arg(toString(format));
+    const QString what = QStringLiteral("%1 x %2 %3 moments map").arg(width).arg(height).arg(formatName(format, channels));
 
     while (m_gl->glGetError() != GL_NO_ERROR) {
     }
@@ -82,7 +94,7 @@ void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, 
         GlTexture texture = makeTexture(m_gl);
         m_gl->glBindTexture(GL_TEXTURE_2D, texture.id());
         for (int level = 0, w = width, h = height; level < levels; ++level, w = std::max(1, w / 2), h = std::max(1, h / 2))
-            m_gl->glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat(format)), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
+            m_gl->glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat(format, channels)), w, h, 0, GL_RGBA, GL_FLOAT, nullptr);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -135,6 +147,18 @@ void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, 
     m_columns = columns;
     m_rows = rows;
     m_format = format;
+    m_channels = channels;
+    m_written.reset(size, columns, rows);
+}
+
+qint64 MomentsMap::bytes() const
+{
+    const qint64 texel = qint64(m_channels) * (m_format == MomentFormat::Rgba16F ? 2 : 4);
+    qint64 colour = qint64(width()) * height() * texel;
+    if (m_mipmaps)
+        colour += colour / 3;
+    // The blur's scratch texture and the pass's 24-bit depth (stored in 32 bits).
+    return colour + qint64(width()) * height() * (texel + 4);
 }
 
 } // namespace shadowlab

@@ -2,11 +2,12 @@
 
 #include "GlObject.h"
 #include "Settings.h"
+#include "WrittenTexels.h"
 
 namespace shadowlab {
 
 // The moments texture of the moment techniques (vsm, evsm, msm, esm) and what renders into it:
-// an RGBA16F or RGBA32F colour texture with a depth texture for the moments pass, a second
+// a colour texture of the technique's one, two or four channels (R, RG or RGBA), 16- or 32-bit float, with a depth texture for the moments pass, a second
 // colour texture of the same format for the blur's first axis, and the filtered sampler the lit
 // pass reads it through (bilinear; trilinear with mipmaps; anisotropic where asked and offered).
 class MomentsMap {
@@ -18,8 +19,11 @@ public:
     // (cascades, cube faces), as ShadowMap's tiles do. Throws SettingsError when the texture
     // would exceed GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate or render
     // to it; the previous map is kept then.
-    void ensure(int size, MomentFormat format, bool mipmaps, int anisotropy) { ensureTiles(size, 1, 1, format, mipmaps, anisotropy); }
-    void ensureTiles(int size, int columns, int rows, MomentFormat format, bool mipmaps, int anisotropy);
+    void ensure(int size, MomentFormat format, int channels, bool mipmaps, int anisotropy)
+    {
+        ensureTiles(size, 1, 1, format, channels, mipmaps, anisotropy);
+    }
+    void ensureTiles(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps, int anisotropy);
 
     int size() const { return m_size; }             // texels per side of one tile
     int width() const { return m_size * m_columns; }
@@ -27,6 +31,11 @@ public:
     int columns() const { return m_columns; }
     int rows() const { return m_rows; }
     MomentFormat format() const { return m_format; }
+    int channels() const { return m_channels; }
+    // Its memory in bytes: the moments with their mips, the blur's scratch and the pass's depth.
+    qint64 bytes() const;
+    // Which texels draws since their clear may have written (the far plane's moments elsewhere).
+    WrittenTexels& written() { return m_written; }
     bool mipmaps() const { return m_mipmaps; }
     // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
     // the extension).
@@ -39,7 +48,7 @@ public:
     GLuint sampler() const { return m_sampler.id(); }
 
 private:
-    void allocate(int size, int columns, int rows, MomentFormat format, bool mipmaps);
+    void allocate(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps);
     void configureSampler(bool mipmaps, float anisotropy);
 
     GlFunctions* m_gl;
@@ -53,6 +62,8 @@ private:
     int m_columns = 1;
     int m_rows = 1;
     MomentFormat m_format = MomentFormat::Rgba32F;
+    int m_channels = 4;
+    WrittenTexels m_written;
     bool m_mipmaps = false;
     float m_anisotropy = 1.0f;
     float m_maxAnisotropy = 1.0f;   // the driver's; 1 without anisotropic filtering

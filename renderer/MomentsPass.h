@@ -8,8 +8,11 @@
 
 #include <QRect>
 
+#include <array>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace shadowlab {
 
@@ -24,10 +27,17 @@ public:
     explicit MomentsPass(GlFunctions* gl);
 
     // Returns the number of caster draw calls. `settings.filter.mode` must be a moment technique.
-    // Into `tile` of the map (texels; empty: the whole map), for one view of several.
-    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile = QRect());
-    // Fills the map with the far plane's moments only: every lookup reads lit.
-    void clear(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile = QRect());
+    // Into `tile` of the map (texels; empty: the whole map), for one view of several, where the
+    // casters cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): what earlier draws
+    // wrote there and `drawn` get the far plane's moments first, and the casters are drawn
+    // within `drawn` only.
+    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect(),
+               const std::optional<QRect>& drawn = std::nullopt);
+    // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
+    void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
+
+    // Texels cleared and filled with the far plane's moments since the last call.
+    qint64 takeClearedTexels() { return std::exchange(m_clearedTexels, 0); }
 
     // The #defines of the variant for `settings` (exposed for tests).
     static QStringList variantDefines(const Settings& settings, bool perspective);
@@ -44,11 +54,15 @@ private:
     Program& program(const LightFrame& light, const Settings& settings, bool cutout);
     // The light's uniforms every variant drawing this map reads.
     void setLightUniforms(Program& p, const LightFrame& light, const Settings& settings);
-    Program& begin(const LightFrame& light, const Settings& settings, const MomentsMap& map, const QRect& tile);
+    // Clears the depth and writes the far plane's moments within `clear`.
+    Program& begin(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& clear);
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // for the far-plane triangle
     std::map<QString, std::unique_ptr<Program>> m_programs;
+    qint64 m_clearedTexels = 0;
+    // The far plane's moments per variant and exponents, as its encoding drew them.
+    std::map<QString, std::array<GLfloat, 4>> m_farMoments;
 };
 
 } // namespace shadowlab

@@ -4,8 +4,11 @@
 #include "MomentsBlurPass.h"
 #include "MomentsMap.h"
 #include "MomentsPass.h"
+#include "ShadowTechnique.h"
 
 #include <QElapsedTimer>
+
+#include <utility>
 
 namespace shadowlab {
 
@@ -20,8 +23,8 @@ public:
 
     void ensure(const Settings& settings, ShadowTileGrid grid) override
     {
-        m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, settings.moments.mipmaps,
-                          settings.moments.anisotropy);
+        m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format,
+                          shadowTechnique(settings.filter.mode).momentChannels, settings.moments.mipmaps, settings.moments.anisotropy);
     }
 
     ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
@@ -48,9 +51,10 @@ public:
         m_blur.render(m_map, 0, tile);     // no blur: only the mips, which would keep what was cleared
     }
 
-    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double* blurWallMs) override
+    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels,
+             double* blurWallMs) override
     {
-        const int draws = m_pass.render(scene, light, settings, m_map, tile);
+        const int draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, &CasterTexels::drawn, tile));
         // The view's moments blurred within its tile, and the mips of a map of one view (those
         // of several would mix the views, which settings refuse).
         QElapsedTimer blur;
@@ -58,7 +62,8 @@ public:
             m_gl->glFinish();
             blur.start();
         }
-        m_blur.render(m_map, settings.moments.blur, tile);
+        m_blur.render(m_map, settings.moments.blur, tile, inTile(texels, &CasterTexels::drawn, tile));
+        countBlur(settings.moments.blur);
         if (blurWallMs) {
             m_gl->glFinish();
             *blurWallMs += double(blur.nsecsElapsed()) * 1e-6;
@@ -68,8 +73,27 @@ public:
 
     const MomentsMap* momentsMap() const override { return &m_map; }
 
+    Counts takeCounts() override
+    {
+        Counts counts = std::exchange(m_counts, Counts{});
+        counts.clearedTexels = m_pass.takeClearedTexels();
+        return counts;
+    }
+
+    qint64 bytes() const override { return m_map.bytes(); }
+
 private:
+    void countBlur(int width)
+    {
+        const qint64 texels = m_blur.lastTexels();
+        const qint64 texel = qint64(m_map.channels()) * (m_map.format() == MomentFormat::Rgba16F ? 2 : 4);
+        const int taps = std::max(1, width | 1);
+        m_counts.blurTexels += texels;
+        m_counts.blurBytes += texels * texel * (taps + 1);
+    }
+
     GlFunctions* m_gl;
+    Counts m_counts;
     MomentsMap m_map;
     MomentsPass m_pass;
     MomentsBlurPass m_blur;

@@ -17,7 +17,8 @@ namespace shadowlab {
 
 Renderer::Renderer(GlFunctions* gl)
     : m_gl(gl), m_shadowMap(gl), m_depthPass(gl), m_depthStorage(makeDepthStorage(m_shadowMap, m_depthPass)), m_litPass(gl),
-      m_shadowTimer(gl), m_litTimer(gl)
+      m_shadowTimer(gl), m_litTimer(gl), m_shadowPrimitives(gl, GL_PRIMITIVES_GENERATED), m_shadowSamples(gl, GL_SAMPLES_PASSED),
+      m_litPrimitives(gl, GL_PRIMITIVES_GENERATED)
 {
     // A software rasteriser's timer queries measure nothing (its rasterisation is deferred past
     // them) and cost the pass after a shadow pass a sixth of its time: wall times stand there.
@@ -80,10 +81,16 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         m_shadowMap.restartSlices();    // a draw this frame, for whatever reason, clears first
     }
     // Render: the shadow pass where its inputs changed, then what it feeds.
+    if (m_counting) {
+        m_shadowPrimitives.begin();
+        m_shadowSamples.begin();
+    }
+    storage.takeCounts();   // what a pass did before this frame is not its
     if (virtualMap)
         renderPages(settings, storage, grid, size, timing, stats);
     else if (settings.shadow.enabled)
         renderViews(settings, storage, grid, timing, stats);
+    countShadowPass(settings, storage, stats);
     buildDepthRange(settings, timing, stats);
     m_light = m_update.views().frames.front();
     m_viewSettings = settings;
@@ -201,10 +208,13 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
     const int size = m_shadowMap.size();
     const int clearsBefore = m_shadowMap.clearCount();
-    // Nothing to shadow: the tile reads lit, and stays so until the view has something.
-    const auto wantedVolume = [this](std::size_t i) {
+    // Nothing to shadow, or no caster in the view: the tile reads lit, and stays so until the
+    // view has something.
+    const std::vector<CasterTexels>& texels = m_update.casterTexels();
+    const auto wantedVolume = [&](std::size_t i) {
         const FittedLight& fit = m_update.views().set.views[i].fit;
-        return fit.anythingToShadow ? std::optional<LightVolume>(fit.volume) : std::nullopt;
+        const bool casters = i >= texels.size() || !texels[i].drawn.isEmpty();
+        return fit.anythingToShadow && casters ? std::optional<LightVolume>(fit.volume) : std::nullopt;
     };
     bool any = fresh, draws = false;
     for (std::size_t i = 0; i < count; ++i) {
@@ -241,7 +251,8 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         wall.start();
         int viewDraws = 0;
         if (wanted)
-            viewDraws = storage.draw(*m_scene, m_update.views().frames[i], settings, tile, timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
+            viewDraws = storage.draw(*m_scene, m_update.views().frames[i], settings, tile, i < texels.size() ? &texels[i] : nullptr,
+                                     timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
         else
             storage.clear(m_update.views().frames[i], settings, tile);
         if (timing == TimingMode::Finish && perView) {
@@ -249,7 +260,8 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
             stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
         }
         if (perView) {
-            stats.viewRendered[i] = true;
+            // A view without casters is cleared where it was written, not drawn.
+            stats.viewRendered[i] = wanted.has_value();
             stats.viewDraws[i] = viewDraws;
         }
         m_viewVolumes[i] = wanted;
@@ -338,8 +350,31 @@ void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
     stats.litPassMs = m_lastLitMs;
 }
 
+void Renderer::countShadowPass(const Settings& settings, ShadowStorage& storage, FrameStats& stats)
+{
+    FrameCounts& counts = stats.counts;
+    const ShadowStorage::Counts done = storage.takeCounts();
+    counts.shadow.draws = stats.shadowDraws;
+    counts.clearedTexels = done.clearedTexels;
+    counts.blurTexels = done.blurTexels;
+    counts.blurBytes = done.blurBytes;
+    counts.mapBytes = !settings.shadow.enabled ? 0
+        : settings.shadow.virtualMap && m_virtual ? std::int64_t(m_shadowMap.width()) * m_shadowMap.height() * 4 + m_virtual->pageTableBytes()
+                                                  : storage.bytes();
+    counts.tapsPerLookup = settings.shadow.enabled ? shadowTechnique(settings.filter.mode).taps(settings.filter) : 0;
+    if (m_counting) {
+        m_shadowPrimitives.end();
+        m_shadowSamples.end();
+        counts.shadow.primitives = m_shadowPrimitives.result();
+        counts.shadow.samples = m_shadowSamples.result();
+    }
+}
+
 void Renderer::drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats)
 {
+    if (m_counting)
+        m_litPrimitives.begin();
+    m_litPass.setCounting(m_counting);
     m_litTimer.begin();
     // Contact shadows march over the casters' depth as this camera sees them: part of the lit
     // pass's cost, drawn again only when the scene, the camera or the size changed.
@@ -360,6 +395,14 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
+    stats.counts.lit.draws = stats.litDraws;
+    if (m_counting) {
+        m_litPrimitives.end();
+        stats.counts.lit.primitives = m_litPrimitives.result();
+        const LitPass::Fragments fragments = m_litPass.lastFragments();
+        stats.counts.lit.samples = fragments.lookup + fragments.plain;
+        stats.counts.lookupFragments = settings.shadow.enabled ? fragments.lookup : 0;
+    }
 }
 
 void Renderer::render(const Settings& settings, const RenderTarget& target, TimingMode timing)

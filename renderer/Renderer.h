@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CameraDepthPass.h"
+#include "CountQuery.h"
 #include "VisibleDepthPass.h"
 #include "DepthPass.h"
 #include "DepthRangePass.h"
@@ -115,6 +116,11 @@ public:
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
+    // Whether frames count what transfers to any GPU (FrameCounts' query counts: primitives,
+    // samples, lookup fragments). Off by default: the queries cost a software rasteriser a wait,
+    // so benchmarks count in a frame of their own, never in a timed one.
+    void setCounting(bool counting) { m_counting = counting; }
+
     QString rendererString() const;
     int maxTextureSize() const;
 
@@ -137,6 +143,8 @@ private:
     void finishTiming(TimingMode timing, FrameStats& stats);
     // The lit pass into `target` (with its camera depth prepass for contact shadows), timed.
     void drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats);
+    // The shadow pass's half of stats.counts, after it ran (or did not).
+    void countShadowPass(const Settings& settings, ShadowStorage& storage, FrameStats& stats);
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
     void renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats);
@@ -171,6 +179,10 @@ private:
     std::unique_ptr<MeasureTarget> m_measureTarget;   // built on first measurement
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
+    bool m_counting = false;
+    CountQuery m_shadowPrimitives;
+    CountQuery m_shadowSamples;
+    CountQuery m_litPrimitives;
     std::optional<ShadowStorageKey> m_shadowKey;
     // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
     // m_shadowKey holds what all views share.

@@ -52,6 +52,7 @@ void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format,
         configureSampler(m_gl, m_compareLinear.id(), GL_LINEAR, true, reversedDepth);
         configureSampler(m_gl, m_raw.id(), GL_NEAREST, false, reversedDepth);
         m_reversedDepth = reversedDepth;
+        m_written.reset(m_size, m_columns, m_rows);    // its far depth is now near
         m_drawsSinceClear = kUnknown;
         m_slice = {};
     }
@@ -92,6 +93,7 @@ ShadowMap::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
 void ShadowMap::cleared(const QRect& tile)
 {
     m_drawsSinceClear = tile == QRect(0, 0, width(), height()) ? 0 : kUnknown;
+    m_written.cleared(tile);
     m_slice = {};
     m_restart = false;
     ++m_clearCount;
@@ -168,6 +170,7 @@ void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
     m_columns = columns;
     m_rows = rows;
     m_format = format;
+    m_written.reset(size, columns, rows);
     m_drawsSinceClear = kUnknown;
     m_slice = {};
 }

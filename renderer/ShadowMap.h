@@ -3,6 +3,7 @@
 #include "GlObject.h"
 #include "Settings.h"
 #include "ShadowTechnique.h"
+#include "WrittenTexels.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -95,8 +96,10 @@ public:
     static constexpr double kSlicedCoverage = 0.85;
     // Tests: slice whatever the coverage (1), or at the default.
     void setSlicedCoverageLimit(double limit) { m_slicedCoverageLimit = limit; }
-    // After a clear of `tile`.
+    // After a clear of `tile` (a whole tile, or the part of one WrittenTexels names).
     void cleared(const QRect& tile);
+    // Which texels draws since their clear may have written.
+    WrittenTexels& written() { return m_written; }
     // Where the last draw wrote: how lookups read the map now, and which slice since the last
     // clear that is (0: the first, or not sliced).
     DepthSlice slice() const { return m_slice; }
@@ -135,6 +138,7 @@ private:
     double m_slicedCoverageLimit = kSlicedCoverage;
     int m_clearCount = 0;
     DepthSlice m_slice;
+    WrittenTexels m_written;
 };
 
 } // namespace shadowlab

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CasterTexels.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "Settings.h"
@@ -8,6 +9,7 @@
 #include <QRect>
 
 #include <memory>
+#include <optional>
 
 namespace shadowlab {
 
@@ -43,6 +45,12 @@ struct ShadowStorageKey {
     bool operator==(const ShadowStorageKey&) const = default;
 };
 
+// `texels`' rectangle `rect` moved into `tile`, or nullopt without texels.
+inline std::optional<QRect> inTile(const CasterTexels* texels, QRect CasterTexels::*rect, const QRect& tile)
+{
+    return texels ? std::optional<QRect>((texels->*rect).translated(tile.topLeft())) : std::nullopt;
+}
+
 // What every storage's key holds: the scene, the depth convention, the map's size, format and tiles.
 inline ShadowStorageKey commonStorageKey(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid)
 {
@@ -77,9 +85,20 @@ public:
     virtual bool leavesOutFloors(const Settings& settings) const = 0;
     // The whole map read lit (every tile), or one view's `tile` of it.
     virtual void clear(const LightFrame& light, const Settings& settings, const QRect& tile = QRect()) = 0;
-    // Draws one view into its tile; returns the casters drawn. `blurWallMs`, when given, gets
-    // the wall time of a prefilter pass added (glFinish around it).
-    virtual int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, double* blurWallMs) = 0;
+    // Draws one view into its tile; returns the casters drawn. `texels`: where in the tile
+    // (its own texels) the casters lie (core/CasterTexels.h); null: anywhere. `blurWallMs`,
+    // when given, gets the wall time of a prefilter pass added (glFinish around it).
+    virtual int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels,
+                     double* blurWallMs) = 0;
+    // What its clears and prefilter did since the last call (and starts counting again).
+    struct Counts {
+        qint64 clearedTexels = 0;   // texels cleared (depth) or filled with the far plane's moments
+        qint64 blurTexels = 0;      // texels the blur wrote, both axes
+        qint64 blurBytes = 0;       // bytes the blur read and wrote
+    };
+    virtual Counts takeCounts() = 0;
+    // Bytes of the textures a lookup or a pass of this storage uses.
+    virtual qint64 bytes() const = 0;
     // The moments the lit pass reads; null for a storage of depth alone.
     virtual const MomentsMap* momentsMap() const { return nullptr; }
 };

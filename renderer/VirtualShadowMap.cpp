@@ -372,7 +372,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
     int draws = 0;
     for (const auto& [page, slot] : placed.draw) {
         const QRect tile((slot % m_poolSide) * kVirtualSlotTexels, (slot / m_poolSide) * kVirtualSlotTexels, kVirtualSlotTexels, kVirtualSlotTexels);
-        draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), settings, tile, nullptr);
+        draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), settings, tile, nullptr, nullptr);
     }
     stats.drawn = int(placed.draw.size());
     stats.resident = m_cache.resident();

@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <cstdint>
 #include <vector>
 
 namespace shadowlab {
@@ -39,6 +40,8 @@ struct VirtualMapUniforms {
 // the integer page table the lit pass reads.
 class VirtualShadowMap {
 public:
+    // Bytes of the page table (the pool is the renderer's shadow map).
+    std::int64_t pageTableBytes() const { return std::int64_t(kVirtualLevelPages) * kVirtualLevelPages * m_pageTableLevels * 2; }
     explicit VirtualShadowMap(GlFunctions* gl);
     ~VirtualShadowMap();
 

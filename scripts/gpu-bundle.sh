@@ -135,11 +135,12 @@ cat > "$out/run.sh" <<'RUN'
 # this bundle on a GPU machine with no display (Qt's headless platform, EGL). Keeps going after a
 # failure; writes under ${OUT_DIR:-./results}: summary.txt (PASS/FAIL/TIMEOUT per step, GPU,
 # renderer), env.txt, tst_*.log + tst_*.junit.xml, render-<scene>.png + -depth.png + .log,
-# bench-<scene>.json + .log. Exit status 0 when every step passed.
+# bench-<scene>.json + .log, bench-seed-<variant>.json + .log. Exit status 0 when every step passed.
 #   ./run.sh                     everything
 #   ./run.sh exec CMD [ARG...]   CMD in the same environment (bin/ first on PATH)
 # Knobs: OUT_DIR=./results  RUN_TESTS="<all bundled>" ("" runs none)  TEST_TIMEOUT=300
 #   SCENES="seed city" ("" skips renders and benches)  SIZE=1920x1080  STEP_TIMEOUT=300 (each render/bench)
+#   VARIANTS="point:light.type=point vsm:filter.mode=vsm spot:light.type=spot" (seed, light moving; "" skips)
 #   SHADOWLAB_EGL_PLATFORM=device (surfaceless: Mesa's software EGL; empty: surfaceless, then device)
 #   BUNDLE_UNPACK_DIR: where payload.tar.xz is unpacked
 set -uo pipefail
@@ -247,6 +248,15 @@ for scene in ${SCENES-seed city}; do
     [ "$rc" != 0 ] || head -c 1 "$json" | grep -q '{' || rc=1
     renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$json" | head -n 1)
     record "bench $scene" "$rc" "$secs" "${renderer:+renderer: $renderer}"
+done
+# The point light and a moment technique with the light moving: their times beside the counts
+# (draws, primitives, samples, texels cleared, blur bytes, taps) that bench --json gives for any GPU.
+for variant in ${VARIANTS-point:light.type=point vsm:filter.mode=vsm spot:light.type=spot}; do
+    json=$results/bench-seed-${variant%%:*}.json
+    step "${STEP_TIMEOUT:-300}" "$json" "$results/bench-seed-${variant%%:*}.log" "$root/bin/shadowlab" bench --json \
+        --scene seed --phase moving-light --size "${SIZE:-1920x1080}" --set "${variant#*:}"
+    [ "$rc" != 0 ] || head -c 1 "$json" | grep -q '{' || rc=1
+    record "bench seed ${variant#*:}" "$rc" "$secs" "bench-seed-${variant%%:*}.json (times and counts)"
 done
 for t in $tests; do [ "$t" = tst_HeadlessPlatform ] || run_test "$t"; done
 say "overall: $failures step(s) failed; results in $results"

@@ -6,6 +6,7 @@
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "Measurement.h"
+#include "MomentMath.h"
 #include "ReferenceAgreement.h"
 #include "SceneLibrary.h"
 #include "SceneNames.h"
@@ -222,6 +223,57 @@ private Q_SLOTS:
         }
         QVERIFY(drawn > 1000);
         QCOMPARE(unusedWritten, 0);
+    }
+
+    // A shadow pass clears and draws only where casters are (core/CasterTexels.h) and leaves a
+    // view without casters alone: as the light moves, every frame is still, byte for byte, the
+    // frame a fresh map gives. The counts say what was left out.
+    void movingLightDrawsOnlyWhereCastersAre_data()
+    {
+        QTest::addColumn<QStringList>("light");
+        QTest::newRow("point") << QStringList{"light.type=point"};
+        QTest::newRow("point, vsm") << QStringList{"light.type=point", "filter.mode=vsm", "moments.blur=5"};
+        QTest::newRow("4 cascades, pcf") << QStringList{"shadow.cascades=4", "filter.mode=pcf"};
+        QTest::newRow("spot, msm") << QStringList{"light.type=spot", "filter.mode=msm"};
+        QTest::newRow("directional, esm") << QStringList{"filter.mode=esm"};
+    }
+
+    void movingLightDrawsOnlyWhereCastersAre()
+    {
+        QFETCH(QStringList, light);
+        m_headless->renderer().setScene(std::nullopt);
+        HeadlessRenderer fresh;
+        const QSize size(160, 90);
+        Settings s = presetSettings("seed");
+        s.map.size = 256;
+        for (const QString& assignment : light)
+            applySetting(s, assignment.section('=', 0, 0), assignment.section('=', 1));
+        const glm::dvec3 start = s.light.position;
+        for (int step = 0; step < 6; ++step) {
+            const double a = 0.35 * step;
+            s.light.position = start + glm::dvec3(std::cos(a) - 1.0, 0.2 * std::sin(a), std::sin(a));
+            const QImage moving = m_headless->renderScene(s, size);
+            Settings other = s;
+            other.map.size = 272;       // a new map, then this one again: cleared whole
+            fresh.renderFrame(other, size);
+            const QImage reference = fresh.renderScene(s, size);
+            QVERIFY2(moving == reference, qPrintable(QString("step %1: the frame differs from a fresh map's").arg(step)));
+        }
+        // A counted pass: what it cleared is no more than its views' tiles, and a point light
+        // over the seed's casters clears at most the two faces that see them.
+        const FrameCounts counts = countFrames(*m_headless, s, size);
+        const int views = int(m_headless->renderer().shadowViews().set.views.size());
+        const std::int64_t tile = std::int64_t(s.map.size) * s.map.size;
+        QVERIFY2(counts.clearedTexels <= views * tile, qPrintable(QString::number(counts.clearedTexels)));
+        if (s.light.type == LightType::Point)
+            QVERIFY2(counts.clearedTexels <= 2 * tile, qPrintable(QString::number(counts.clearedTexels)));
+        QVERIFY(counts.shadow.samples > 0 && counts.shadow.primitives > 0);
+        QVERIFY(counts.lit.samples > 0 && counts.lookupFragments > 0 && counts.lookupFragments <= counts.lit.samples);
+        QVERIFY(counts.mapBytes >= views * tile * 4);
+        // The blur (two axes) covers the views with casters, no more: two faces of a point light.
+        const int drawnViews = s.light.type == LightType::Point ? 2 : views;
+        if (isMomentTechnique(s.filter.mode) && s.moments.blur > 1)
+            QVERIFY2(counts.blurTexels > 0 && counts.blurTexels <= 2 * drawnViews * tile, qPrintable(QString::number(counts.blurTexels)));
     }
 
     // Cascades cover the whole shadow distance: the pixels within it agree with the reference,

@@ -1,5 +1,6 @@
 #include "CliSupport.h"
 #include "Commands.h"
+#include "FrameStatsText.h"
 #include "FrameTimeHistory.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
@@ -44,6 +45,7 @@ struct Phase {
     std::vector<std::vector<double>> viewWall;  // cascades or cube faces: wall ms of the frames that drew each
     std::vector<int> viewPassesRun;
     std::vector<int> viewDraws;
+    FrameCounts counts;     // one shadow and one lit pass, counted apart from the timed frames
     bool anchor = false;    // the tutorial's own program (TutorialAnchor), not ShadowLab: frame times only
 };
 
@@ -122,6 +124,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
         p.viewWall = std::move(s.viewWall);
         p.viewPassesRun = std::move(s.viewPassesRun);
         p.viewDraws = std::move(s.viewDraws);
+        p.counts = s.counts;
     }
 }
 
@@ -330,7 +333,8 @@ QJsonObject phaseJson(const Phase& r, int frames, bool gpuTimed)
             {QStringLiteral("lit_pass_wall"), statsJson(summarize(r.litWall))},
             {QStringLiteral("blur_wall"), statsJson(summarize(r.blurWall))},
             {QStringLiteral("frame_wall"), statsJson(summarize(r.wall))},
-            {QStringLiteral("views"), viewsJson(r)}};
+            {QStringLiteral("views"), viewsJson(r)},
+            {QStringLiteral("counts"), countsJson(r.counts)}};
 }
 
 // Each round's frame of `r` over the same round's frame of `reference`. The loop times one
@@ -450,6 +454,9 @@ void printPhase(const Phase& r, const BenchRequest& request, bool software)
     }
     if (shadows)
         out() << "  " << formatTexelLine(r.last) << '\n';
+    // Counts, the same on any GPU: what a reader choosing for one can compare.
+    for (const QString& line : countsLines(r.counts))
+        out() << "  " << line << '\n';
     for (std::size_t v = 0; v < r.viewWall.size(); ++v) {
         const bool cube = r.settings.light.type == LightType::Point;
         out() << statsRow(QStringLiteral("  %1 %2 (wall)").arg(cube ? QStringLiteral("face") : QStringLiteral("cascade")).arg(v),

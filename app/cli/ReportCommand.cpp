@@ -302,6 +302,7 @@ void timeAll(const ReportRequest& request, HeadlessRenderer& headless, ProgressB
         rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
         rows[c].litPass = summarize(runs[c].samples.litWall);
         rows[c].frame = summarize(runs[c].samples.wall);
+        rows[c].counts = runs[c].samples.counts;
     }
 }
 

@@ -16,6 +16,15 @@ QString csvField(QString text)
     return text;
 }
 
+// The counts' columns; a count not taken is empty.
+QStringList countFields(const FrameCounts& c)
+{
+    const auto count = [](std::int64_t n) { return n < 0 ? QString() : QString::number(n); };
+    return {QString::number(c.shadow.draws), count(c.shadow.primitives), count(c.shadow.samples), count(c.clearedTexels), count(c.blurTexels),
+            count(c.blurBytes), count(c.mapBytes), QString::number(c.lit.draws), count(c.lit.primitives), count(c.lit.samples),
+            QString::number(c.tapsPerLookup), count(c.lookupFragments), count(c.taps())};
+}
+
 } // namespace
 
 QByteArray reportCsv(const std::vector<ReportRow>& rows)
@@ -28,12 +37,13 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
     QString csv = QStringLiteral("label,settings,shadow_ms,shadow_p10_ms,shadow_p90_ms,lit_ms,lit_p10_ms,lit_p90_ms,frame_ms,frame_p10_ms,frame_p90_ms,"
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
                                  "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct,"
-                                 "renderer,machine\n");
+                                 "shadow_draws,shadow_primitives,shadow_samples,cleared_texels,blur_texels,blur_bytes,map_bytes,"
+                                 "lit_draws,lit_primitives,lit_samples,taps_per_lookup,lookup_fragments,taps,renderer,machine\n");
     for (const ReportRow& r : rows) {
         const bool flickerMeasured = r.flicker.measured();
         const ErrorMetrics& h = r.accuracy.hard;
         const ErrorMetrics& a = r.accuracy.area;
-        csv += QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median),
+        csv += (QStringList{csvField(r.label), csvField(r.assignments.join(QLatin1Char(' '))), number(r.shadowPass.median),
                            number(r.shadowPass.p10), number(r.shadowPass.p90), number(r.litPass.median), number(r.litPass.p10), number(r.litPass.p90),
                            number(r.frame.median), number(r.frame.p10), number(r.frame.p90), number(100 * h.misclassified, 4),
                            number(100 * h.falseShadow, 4), number(100 * h.falseLight, 4), number(100 * h.mae, 4), number(100 * h.rmse, 4),
@@ -42,7 +52,8 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                            flickerMeasured ? number(100 * r.flicker.meanChange, 4) : QString(),
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
                            r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6),
-                           number(100 * r.density.fineShare(), 3), csvField(r.renderer), csvField(r.machine)}
+                           number(100 * r.density.fineShare(), 3)}
+                   + countFields(r.counts) + QStringList{csvField(r.renderer), csvField(r.machine)})
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
     }

@@ -1,6 +1,7 @@
 #include "ReportWriter.h"
 
 #include "ErrorNoise.h"
+#include "FrameStatsText.h"
 #include "MessageText.h"
 #include "ReportFormat.h"
 
@@ -474,7 +475,8 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
         table += QStringLiteral("<th>area MAE %</th>");
     for (const Column* c : shown)
         table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
-    table += QStringLiteral("<th>DSSIM</th><th>texels ≤ 1 px %</th></tr>");
+    table += QStringLiteral("<th>DSSIM</th><th>texels ≤ 1 px %</th><th title=\"the technique's texture reads per lookup times the fragments "
+                            "that looked up\">shadow taps</th><th>shadow-pass samples</th><th>texels cleared</th><th>map</th></tr>");
     for (const ReportRow& r : rows) {
         QStringList fronts;
         if (r.paretoFront)
@@ -499,14 +501,22 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
             table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
         for (const Column* c : shown)
             table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
-        table += QStringLiteral("<td>%1</td><td>%2</td></tr>").arg(number(dssim(r), 5), number(100 * r.density.fineShare(), 1));
+        table += QStringLiteral("<td>%1</td><td>%2</td>").arg(number(dssim(r), 5), number(100 * r.density.fineShare(), 1));
+        const FrameCounts& n = r.counts;
+        table += QStringLiteral("<td title=\"%1 lookups of %2 taps\">%3</td><td>%4</td><td>%5</td><td>%6</td></tr>")
+                     .arg(countText(n.lookupFragments))
+                     .arg(n.tapsPerLookup)
+                     .arg(countText(n.taps()), countText(n.shadow.samples), countText(n.clearedTexels), html(bytesText(n.mapBytes)));
     }
     table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
                             "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
                             "picture. A row over %1 against both the hard and the area reference's picture is visibly wrong (acne, or a "
                             "moiré of partial shadow that misclassified pixels miss): it is left off the fronts and beats no other row. "
                             "Texels ≤ 1 px: the share of the measured receivers inside the light's map whose shadow texel "
-                            "covers at most one screen pixel (blue in the texel density view).</p>")
+                            "covers at most one screen pixel (blue in the texel density view). "
+                            "The last four columns are counts of one shadow pass and one frame, the same on any GPU, unlike the "
+                            "times: shadow taps, the shadow pass's samples passed (GL_SAMPLES_PASSED), the shadow-map texels it "
+                            "cleared, and the shadow storage's memory.</p>")
                  .arg(kVisibleDssim);
     if (!zero.isEmpty())
         table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));

@@ -1,6 +1,7 @@
 #include "ReportWriter.h"
 
 #include "ErrorNoise.h"
+#include "FrameStatsText.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -61,6 +62,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("lit_pass_wall"), statsJson(r.litPass)},
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
                                     {QStringLiteral("frames"), r.frame.count},
+                                    {QStringLiteral("counts"), countsJson(r.counts)},
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
                                     {QStringLiteral("pareto_front"), r.paretoFront},

@@ -63,6 +63,16 @@ public:
             fail(key, QStringLiteral("is not a percentage from 0 to 100"));
         return v / 100;
     }
+    // A large count (texels, bytes), or -1 where it was not taken (null).
+    std::int64_t bigCount(const QJsonObject& object, const QString& key) const
+    {
+        if (value(object, key).isNull())
+            return -1;
+        const double v = number(object, key);
+        if (v < 0 || v > 1e18 || v != std::floor(v))
+            fail(key, QStringLiteral("is not a count"));
+        return std::int64_t(v);
+    }
     int count(const QJsonObject& object, const QString& key) const
     {
         const double v = number(object, key);
@@ -123,6 +133,26 @@ ErrorMetrics readMetrics(const JsonReader& json, const QJsonObject& object)
     return m;
 }
 
+FrameCounts readCounts(const JsonReader& json, const QJsonObject& object)
+{
+    FrameCounts c;
+    const auto pass = [&](const QString& key) {
+        const JsonReader p = json.within(key);
+        const QJsonObject o = json.object(object, key);
+        return PassCounts{.draws = p.count(o, QStringLiteral("draws")), .primitives = p.bigCount(o, QStringLiteral("primitives")),
+                          .samples = p.bigCount(o, QStringLiteral("samples"))};
+    };
+    c.shadow = pass(QStringLiteral("shadow_pass"));
+    c.lit = pass(QStringLiteral("lit_pass"));
+    c.clearedTexels = json.bigCount(object, QStringLiteral("cleared_texels"));
+    c.blurTexels = json.bigCount(object, QStringLiteral("blur_texels"));
+    c.blurBytes = json.bigCount(object, QStringLiteral("blur_bytes"));
+    c.mapBytes = json.bigCount(object, QStringLiteral("map_bytes"));
+    c.tapsPerLookup = json.count(object, QStringLiteral("taps_per_lookup"));
+    c.lookupFragments = json.bigCount(object, QStringLiteral("lookup_fragments"));
+    return c;
+}
+
 ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir& dir)
 {
     ReportRow r;
@@ -143,6 +173,7 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.shadowPass = readStats(json.within(QStringLiteral("shadow_pass_wall")), json.object(object, QStringLiteral("shadow_pass_wall")));
     r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
     r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
+    r.counts = readCounts(json.within(QStringLiteral("counts")), json.object(object, QStringLiteral("counts")));
     r.accuracy.hard = readMetrics(json.within(QStringLiteral("hard_reference")), json.object(object, QStringLiteral("hard_reference")));
     r.accuracy.area = readMetrics(json.within(QStringLiteral("area_reference")), json.object(object, QStringLiteral("area_reference")));
     r.accuracy.ssim = json.number(object, QStringLiteral("mean_ssim"));

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "LightMath.h"
+#include "ShadowReach.h"
+
+#include <QRect>
+
+#include <vector>
+
+namespace shadowlab {
+
+// Which texels of one view's map its shadow pass can write: the casters' images, each the
+// projection of its box clipped to the view's sides, in whole texels with one of margin for
+// the rasteriser's rounding. Everything outside keeps what a clear wrote, so a pass need clear
+// and draw no more (renderer/WrittenTexels.h), and a view whose rectangle is empty needs no
+// pass at all: its lookups read the cleared far depth, lit. On any rasteriser the clear is
+// then the size of the casters, not of the map.
+struct CasterTexels {
+    // Every caster the pass draws (those `casters` says cast and culledFrom() keeps), in texels
+    // of the view's own square [0, mapSize)²; empty: nothing. Outside it a moments map holds
+    // the far plane's moments, a constant its blur leaves as it is.
+    QRect drawn;
+};
+
+CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
+
+// `rect` grown by `texels` on every side, within the square [0, mapSize)²; empty stays empty.
+QRect grownWithin(const QRect& rect, int texels, int mapSize);
+
+} // namespace shadowlab
