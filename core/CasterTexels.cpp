@@ -82,11 +82,4 @@ CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector
     return result;
 }
 
-QRect grownWithin(const QRect& rect, int texels, int mapSize)
-{
-    if (rect.isEmpty())
-        return rect;
-    return rect.adjusted(-texels, -texels, texels, texels) & QRect(0, 0, mapSize, mapSize);
-}
-
 } // namespace shadowlab

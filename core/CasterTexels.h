@@ -24,7 +24,4 @@ struct CasterTexels {
 
 CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
 
-// `rect` grown by `texels` on every side, within the square [0, mapSize)²; empty stays empty.
-QRect grownWithin(const QRect& rect, int texels, int mapSize);
-
 } // namespace shadowlab

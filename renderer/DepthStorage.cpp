@@ -39,7 +39,7 @@ public:
 
     int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels, double*) override
     {
-        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, inTile(texels, &CasterTexels::drawn, tile), settings.shadow.cutouts,
+        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, inTile(texels, tile), settings.shadow.cutouts,
                                  ShadowMap::slicesFor(settings));
     }
 

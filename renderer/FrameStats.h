@@ -29,7 +29,9 @@ struct PassCounts {
 };
 
 struct FrameCounts {
-    PassCounts shadow;                  // the shadow pass: casters, and a moments map's far-plane fill and blur
+    // The shadow pass: casters, and a moments map's far-plane fill and blur; a virtual map's
+    // request pass (the camera's pixels asking for pages) too.
+    PassCounts shadow;
     PassCounts lit;
     std::int64_t clearedTexels = 0;     // shadow-map texels cleared (or filled with the far plane's moments)
     std::int64_t blurTexels = 0;        // texels the moments blur wrote, both axes
@@ -77,7 +79,8 @@ struct FrameStats {
     double warpGain = 0.0;
     enum class WarpDeclined { No, AlongLight, NoGain } warpDeclined = WarpDeclined::No;
     // Lights with several views (cascades, cube faces): per view, whether it was drawn this
-    // frame (one without casters is not: at most cleared where it was written), its casters drawn and (TimingMode::Finish) its wall time; empty for one map.
+    // frame (one without casters is not: at most cleared where it was written), its casters
+    // drawn and (TimingMode::Finish) its wall time; empty for one map.
     std::vector<bool> viewRendered;
     std::vector<int> viewDraws;
     std::vector<double> viewWallMs;

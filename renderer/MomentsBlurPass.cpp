@@ -68,6 +68,7 @@ int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile,
     const QRect second = grown(drawn.value_or(whole) & whole, radius, radius);
     const QRect first = grown(second, 0, radius);
     m_lastTexels = radius > 0 ? qint64(first.width()) * first.height() + qint64(second.width()) * second.height() : 0;
+    m_lastWritten = radius > 0 ? second : QRect();
     if (radius > 0 && !second.isEmpty()) {
         float padded[kMaxWeights] = {};
         std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxWeights), padded);

@@ -23,8 +23,10 @@ public:
     // Only within its radius of `drawn` (core/CasterTexels.h; nullopt: the whole tile): outside,
     // the map holds the far plane's moments, a constant the blur leaves as it is.
     int render(const MomentsMap& map, int width, const QRect& tile = QRect(), const std::optional<QRect>& drawn = std::nullopt);
-    // Texels the last render() wrote over both axes.
+    // Texels the last render() wrote over both axes, and where it wrote the map (its second
+    // axis: the casters grown by the radius).
     qint64 lastTexels() const { return m_lastTexels; }
+    QRect lastWritten() const { return m_lastWritten; }
 
     // The weights of a `width`-tap kernel, centre first then one side (pure; for tests): a
     // Gaussian of sigma width / 4, normalised so both sides and the centre sum to 1.
@@ -43,6 +45,7 @@ private:
     GlVertexArray m_emptyVertexArray;
     GlSampler m_sampler;
     qint64 m_lastTexels = 0;
+    QRect m_lastWritten;
 };
 
 } // namespace shadowlab

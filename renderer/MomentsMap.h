@@ -4,12 +4,15 @@
 #include "Settings.h"
 #include "WrittenTexels.h"
 
+#include <QString>
+
 namespace shadowlab {
 
 // The moments texture of the moment techniques (vsm, evsm, msm, esm) and what renders into it:
-// a colour texture of the technique's one, two or four channels (R, RG or RGBA), 16- or 32-bit float, with a depth texture for the moments pass, a second
-// colour texture of the same format for the blur's first axis, and the filtered sampler the lit
-// pass reads it through (bilinear; trilinear with mipmaps; anisotropic where asked and offered).
+// a colour texture of the technique's one, two or four channels (R, RG or RGBA), 16- or 32-bit
+// float, with a depth texture for the moments pass, a second colour texture of the same format
+// for the blur's first axis, and the filtered sampler the lit pass reads it through (bilinear;
+// trilinear with mipmaps; anisotropic where asked and offered).
 class MomentsMap {
 public:
     explicit MomentsMap(GlFunctions* gl);
@@ -36,6 +39,15 @@ public:
     qint64 bytes() const;
     // Which texels draws since their clear may have written (the far plane's moments elsewhere).
     WrittenTexels& written() { return m_written; }
+    // What the far plane's moments are, named by the encoding that made them (the technique,
+    // format and exponents: MomentsPass). Another name: every texel counts as written, since
+    // the old far plane reads wrong in the new encoding (vsm's (1, 1) is shadow to evsm2).
+    void encodedBy(const QString& encoding)
+    {
+        if (encoding != m_encoding)
+            m_written.reset(m_size, m_columns, m_rows);
+        m_encoding = encoding;
+    }
     bool mipmaps() const { return m_mipmaps; }
     // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
     // the extension).
@@ -64,6 +76,7 @@ private:
     MomentFormat m_format = MomentFormat::Rgba32F;
     int m_channels = 4;
     WrittenTexels m_written;
+    QString m_encoding;
     bool m_mipmaps = false;
     float m_anisotropy = 1.0f;
     float m_maxAnisotropy = 1.0f;   // the driver's; 1 without anisotropic filtering

@@ -2,6 +2,7 @@
 
 #include "MomentMath.h"
 #include "PassState.h"
+#include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
 namespace shadowlab {
@@ -54,6 +55,13 @@ void MomentsPass::setLightUniforms(Program& p, const LightFrame& light, const Se
     p.program.set(p.farPlane, 0);
 }
 
+QString MomentsPass::encoding(const LightFrame& light, const Settings& settings)
+{
+    const MomentWarp warp = momentWarp(settings);
+    return variantDefines(settings, light.perspective).join(QLatin1Char(';'))
+        + QStringLiteral(";%1;%2;%3").arg(toString(settings.moments.format)).arg(warp.positive, 0, 'g', 17).arg(warp.negative, 0, 'g', 17);
+}
+
 MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& clear)
 {
     Program* p = &program(light, settings, false);
@@ -69,8 +77,7 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     // cleared, or, over a whole map, cleared to the value that drawing gave last time (a
     // rasteriser clears a whole surface fastest; llvmpipe fills a 2048² RG32F map in 2 ms
     // this way against 8 ms drawn).
-    const MomentWarp warp = momentWarp(settings);
-    const QString key = variantDefines(settings, light.perspective).join(QLatin1Char(';')) + QStringLiteral(";%1;%2").arg(warp.positive).arg(warp.negative);
+    const QString key = encoding(light, settings);
     const bool whole = clear == QRect(0, 0, map.width(), map.height());
     const auto known = m_farMoments.find(key);
     m_gl->glClearDepth(1.0);
@@ -99,6 +106,7 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
 
 void MomentsPass::clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile)
 {
+    map.encodedBy(encoding(light, settings));
     const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
     // Each tile's written texels; the rest holds the far plane's moments already.
     for (int row = 0; row < map.rows(); ++row) {
@@ -120,6 +128,7 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
     // for acne, would leave the far plane behind receivers, and the exponential warps read
     // that gap as light).
+    map.encodedBy(encoding(light, settings));
     const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
     const QRect area = drawn.value_or(whole) & whole;
     // A map of one view is cleared whole (the fast clear), a tile of several only where it was

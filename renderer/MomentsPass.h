@@ -54,6 +54,9 @@ private:
     Program& program(const LightFrame& light, const Settings& settings, bool cutout);
     // The light's uniforms every variant drawing this map reads.
     void setLightUniforms(Program& p, const LightFrame& light, const Settings& settings);
+    // What names the far plane's moments of `settings` (MomentsMap::encodedBy, and the cache of
+    // their values): the variant, the format and the exponents.
+    static QString encoding(const LightFrame& light, const Settings& settings);
     // Clears the depth and writes the far plane's moments within `clear`.
     Program& begin(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& clear);
 

@@ -54,7 +54,7 @@ public:
     int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels,
              double* blurWallMs) override
     {
-        const int draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, &CasterTexels::drawn, tile));
+        const int draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile));
         // The view's moments blurred within its tile, and the mips of a map of one view (those
         // of several would mix the views, which settings refuse).
         QElapsedTimer blur;
@@ -62,7 +62,8 @@ public:
             m_gl->glFinish();
             blur.start();
         }
-        m_blur.render(m_map, settings.moments.blur, tile, inTile(texels, &CasterTexels::drawn, tile));
+        m_blur.render(m_map, settings.moments.blur, tile, inTile(texels, tile));
+        m_map.written().drew(m_blur.lastWritten());     // the blur spreads the casters by its radius
         countBlur(settings.moments.blur);
         if (blurWallMs) {
             m_gl->glFinish();

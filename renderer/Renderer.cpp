@@ -86,10 +86,19 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         m_shadowSamples.begin();
     }
     storage.takeCounts();   // what a pass did before this frame is not its
-    if (virtualMap)
-        renderPages(settings, storage, grid, size, timing, stats);
-    else if (settings.shadow.enabled)
-        renderViews(settings, storage, grid, timing, stats);
+    try {
+        if (virtualMap)
+            renderPages(settings, storage, grid, size, timing, stats);
+        else if (settings.shadow.enabled)
+            renderViews(settings, storage, grid, timing, stats);
+    } catch (...) {
+        // A query left running would refuse every later one.
+        if (m_counting) {
+            m_shadowPrimitives.end();
+            m_shadowSamples.end();
+        }
+        throw;
+    }
     countShadowPass(settings, storage, stats);
     buildDepthRange(settings, timing, stats);
     m_light = m_update.views().frames.front();
@@ -390,8 +399,14 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
     m_litPass.setShadowViews(&m_update.views());
     m_litPass.setVirtualMap(settings.shadow.enabled && settings.shadow.virtualMap ? &m_virtualUniforms : nullptr);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_update.reach() : nullptr);
-    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
-                                      m_depthRange.get(), storageFor(settings).momentsMap());
+    try {
+        stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
+                                          m_depthRange.get(), storageFor(settings).momentsMap());
+    } catch (...) {
+        if (m_counting)
+            m_litPrimitives.end();    // a query left running would refuse every later one
+        throw;
+    }
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();

@@ -45,10 +45,10 @@ struct ShadowStorageKey {
     bool operator==(const ShadowStorageKey&) const = default;
 };
 
-// `texels`' rectangle `rect` moved into `tile`, or nullopt without texels.
-inline std::optional<QRect> inTile(const CasterTexels* texels, QRect CasterTexels::*rect, const QRect& tile)
+// Where `texels` says the casters lie, moved into `tile`; nullopt without texels (anywhere).
+inline std::optional<QRect> inTile(const CasterTexels* texels, const QRect& tile)
 {
-    return texels ? std::optional<QRect>((texels->*rect).translated(tile.topLeft())) : std::nullopt;
+    return texels ? std::optional<QRect>(texels->drawn.translated(tile.topLeft())) : std::nullopt;
 }
 
 // What every storage's key holds: the scene, the depth convention, the map's size, format and tiles.

@@ -11,10 +11,10 @@
 
 #include <QSize>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
-#include <cstdint>
 #include <vector>
 
 namespace shadowlab {
@@ -40,10 +40,11 @@ struct VirtualMapUniforms {
 // the integer page table the lit pass reads.
 class VirtualShadowMap {
 public:
-    // Bytes of the page table (the pool is the renderer's shadow map).
-    std::int64_t pageTableBytes() const { return std::int64_t(kVirtualLevelPages) * kVirtualLevelPages * m_pageTableLevels * 2; }
     explicit VirtualShadowMap(GlFunctions* gl);
     ~VirtualShadowMap();
+
+    // Bytes of the page table (the pool is the renderer's shadow map).
+    std::int64_t pageTableBytes() const { return std::int64_t(kVirtualLevelPages) * kVirtualLevelPages * m_pageTableLevels * 2; }
 
     // Where the request pass's pixels become a set of pages: reduced on the GPU to a flag per
     // page and read back as such (vsm_reduce.vert), or read back whole and deduplicated here.

@@ -174,6 +174,12 @@ private Q_SLOTS:
         QVERIFY2(qAbs(worse.mid(1).section(QLatin1Char(' '), 0, 0).toDouble() - (fb - fa)) < 0.011, qPrintable(worse));
         QVERIFY(label("falseShadowDelta")->styleSheet().contains(QStringLiteral("#c0392b")));
         QVERIFY2(label("referenceInfo")->text().contains(QStringLiteral("same pixels")), qPrintable(label("referenceInfo")->text()));
+        // Counts beside the times: B draws the ground into its map, which A leaves out; the
+        // same map memory on both sides.
+        QVERIFY2(!label("shadowTapsValue")->text().startsWith(QStringLiteral("—")) && label("shadowTapsValue")->text() != QStringLiteral("0"),
+                 qPrintable(label("shadowTapsValue")->text()));
+        QVERIFY2(label("shadowSamplesDelta")->text().startsWith(QLatin1Char('+')), qPrintable(label("shadowSamplesDelta")->text()));
+        QCOMPARE(label("mapMemoryDelta")->text(), QStringLiteral("same"));
 
         // Each side's overlay, of the same pixels; the acne is B's.
         std::array<QImage, 2> last;

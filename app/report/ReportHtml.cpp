@@ -475,8 +475,7 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
         table += QStringLiteral("<th>area MAE %</th>");
     for (const Column* c : shown)
         table += QStringLiteral("<th>%1</th>").arg(html(c->heading));
-    table += QStringLiteral("<th>DSSIM</th><th>texels ≤ 1 px %</th><th title=\"the technique's texture reads per lookup times the fragments "
-                            "that looked up\">shadow taps</th><th>shadow-pass samples</th><th>texels cleared</th><th>map</th></tr>");
+    table += QStringLiteral("<th>DSSIM</th><th>texels ≤ 1 px %</th></tr>");
     for (const ReportRow& r : rows) {
         QStringList fronts;
         if (r.paretoFront)
@@ -501,26 +500,43 @@ QString configurationTable(const std::vector<ReportRow>& rows, const QStringList
             table += QStringLiteral("<td>%1 ± %2</td>").arg(number(100 * r.accuracy.area.mae, 3), number(areaNoisePercent(r), 3));
         for (const Column* c : shown)
             table += QStringLiteral("<td>%1</td>").arg(number(c->percent(r), 3));
-        table += QStringLiteral("<td>%1</td><td>%2</td>").arg(number(dssim(r), 5), number(100 * r.density.fineShare(), 1));
-        const FrameCounts& n = r.counts;
-        table += QStringLiteral("<td title=\"%1 lookups of %2 taps\">%3</td><td>%4</td><td>%5</td><td>%6</td></tr>")
-                     .arg(countText(n.lookupFragments))
-                     .arg(n.tapsPerLookup)
-                     .arg(countText(n.taps()), countText(n.shadow.samples), countText(n.clearedTexels), html(bytesText(n.mapBytes)));
+        table += QStringLiteral("<td>%1</td><td>%2</td></tr>").arg(number(dssim(r), 5), number(100 * r.density.fineShare(), 1));
     }
     table += QStringLiteral("</table><p>DSSIM: 1 − the mean SSIM (Wang et al. 2004: 11 × 11 Gaussian window, σ 1.5) of the frame's luma "
                             "against the same frame shaded with the hard reference's visibility; 0 when a reader would see the same "
                             "picture. A row over %1 against both the hard and the area reference's picture is visibly wrong (acne, or a "
                             "moiré of partial shadow that misclassified pixels miss): it is left off the fronts and beats no other row. "
                             "Texels ≤ 1 px: the share of the measured receivers inside the light's map whose shadow texel "
-                            "covers at most one screen pixel (blue in the texel density view). "
-                            "The last four columns are counts of one shadow pass and one frame, the same on any GPU, unlike the "
-                            "times: shadow taps, the shadow pass's samples passed (GL_SAMPLES_PASSED), the shadow-map texels it "
-                            "cleared, and the shadow storage's memory.</p>")
+                            "covers at most one screen pixel (blue in the texel density view).</p>")
                  .arg(kVisibleDssim);
     if (!zero.isEmpty())
         table += QStringLiteral("<p>Every configuration has %1 below 0.0005 %: left out of the table.</p>").arg(html(zero.join(QStringLiteral(", "))));
     return table;
+}
+
+// What each configuration asks of any GPU: counts, unlike the times, the same on every one.
+QString countsTable(const std::vector<ReportRow>& rows)
+{
+    QString table = QStringLiteral("<h2>Counts</h2><p>What one shadow pass and one frame ask of the GPU, counted, the same on any GPU "
+                                   "where the times above are this machine's: the draws and samples passed (GL_SAMPLES_PASSED) of each "
+                                   "pass, the shadow-map texels a pass cleared, the texels a moments blur wrote, the shadow storage's "
+                                   "memory, and the shadow taps: the technique's texture reads per lookup times the fragments that "
+                                   "looked up.</p><table><tr><th>configuration</th><th>shadow draws</th><th>shadow-pass samples</th>"
+                                   "<th>texels cleared</th><th>blur texels</th><th>map</th><th>lit draws</th><th>lit samples</th>"
+                                   "<th>taps per lookup</th><th>shadow taps</th></tr>");
+    for (const ReportRow& r : rows) {
+        const FrameCounts& n = r.counts;
+        table += QStringLiteral("<tr><td title=\"%1\">%2</td><td>%3</td><td>%4</td><td>%5</td><td>%6</td><td>%7</td>")
+                     .arg(html(r.assignments.join(QLatin1Char(' '))), html(r.label))
+                     .arg(n.shadow.draws)
+                     .arg(countText(n.shadow.samples), countText(n.clearedTexels), countText(n.blurTexels), html(bytesText(n.mapBytes)));
+        table += QStringLiteral("<td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
+                     .arg(n.lit.draws)
+                     .arg(countText(n.lit.samples))
+                     .arg(n.tapsPerLookup)
+                     .arg(countText(n.taps()));
+    }
+    return table + QStringLiteral("</table>");
 }
 
 // The configurations whose shadow flickers; one sentence when none does.
@@ -741,6 +757,7 @@ QByteArray reportHtml(const std::vector<ReportRow>& rows, const ReportFacts& fac
     page += recommendationSection(rows, lights);
     page += chartsSection(rows, lights);
     page += configurationTable(rows, lights);
+    page += countsTable(rows);
     page += flickerSection(rows);
     page += errorImages(rows);
     page += QStringLiteral("</body></html>\n");

@@ -238,8 +238,9 @@ void AccuracyController::startMeasurement(bool thenSweep)
             const Settings& s = m_sides[side];
             ensureValid(s);
             Renderer& renderer = headless().renderer();
-            Capture capture{side, s, referenceKeyFor(s, size, m_areaSamplesPerAxis), nullptr, {}, nullptr, {}};
+            Capture capture{side, s, referenceKeyFor(s, size, m_areaSamplesPerAxis), nullptr, {}, {}, nullptr, {}};
             capture.flicker = measureFlicker(renderer, s, subTexelPath(renderer, s, size, kFlickerFrames, kFlickerStepTexels), size);
+            capture.counts = countFrames(headless(), s, size);
             capture.buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(s, size));
             // A trace needs the scene and light as they were: copied, unless an earlier capture
             // traces the same reference or the cache holds it.
@@ -355,6 +356,7 @@ void AccuracyController::measure(const Capture& capture, const ReferenceVisibili
     m.errors = result.hardErrors;
     m.heat = result.hardHeat;
     m.flicker = capture.flicker;
+    m.counts = capture.counts;
     if (capture.side < m_measurements.size())
         m_measurements[capture.side] = std::move(m);
     const bool nothing = result.hard.pixels == 0;

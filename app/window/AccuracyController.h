@@ -2,6 +2,7 @@
 
 #include "BiasTuner.h"
 #include "Flicker.h"
+#include "FrameStats.h"
 #include "LightMath.h"
 #include "Scene.h"
 
@@ -45,6 +46,7 @@ public:
         QImage errors;              // false shadow / false light over the measured frame
         QImage heat;                // |V - V_ref| over it
         FlickerResult flicker;      // over a sub-texel camera walk (Measurement.h)
+        FrameCounts counts;         // what a shadow and a lit pass ask of any GPU, at the measured size
     };
 
     struct SweepPoint {
@@ -130,6 +132,7 @@ private:
         ReferenceKey key;
         std::shared_ptr<const VisibilityBuffer> buffer;
         FlickerResult flicker;      // taken with the capture, over a sub-texel camera walk
+        FrameCounts counts;         // ... and the counts of one frame (countFrames())
         // What the trace needs when the reference is not cached: copies, as the renderer may
         // load another scene while it traces.
         std::shared_ptr<const Scene> scene;

@@ -2,6 +2,7 @@
 
 #include "AccuracyController.h"
 #include "ErrorNoise.h"
+#include "FrameStatsText.h"
 #include "NoteLabel.h"
 #include "ReportAnalysis.h"
 #include "ShadowMetrics.h"
@@ -192,6 +193,21 @@ QGroupBox* AccuracyMetricsPanel::createCostGroup()
     m_frame = addRow(costGrid, QStringLiteral("frameTime"), tr("Frame"), tr("Median wall time of a whole frame."), Kind::Milliseconds);
     m_shadowPass = addRow(costGrid, QStringLiteral("shadowPassTime"), tr("Shadow pass"),
                           tr("Median wall time of the frames' shadow pass, over the frames that ran it."), Kind::Milliseconds);
+    // Counts of the measured frame: what a GPU is asked for, unlike the times a software
+    // rasteriser's CPU takes.
+    m_taps = addRow(costGrid, QStringLiteral("shadowTaps"), tr("Shadow taps"),
+                    tr("Texture reads of the shadow lookups in one frame at the measured size: the technique's taps per lookup "
+                       "times the fragments that looked up. The same on any GPU."),
+                    Kind::Count);
+    m_shadowSamples = addRow(costGrid, QStringLiteral("shadowSamples"), tr("Shadow-pass samples"),
+                             tr("Fragments the shadow pass wrote (GL_SAMPLES_PASSED): the casters, and for a moments map its far-plane "
+                                "fill and blur. The same on any GPU."),
+                             Kind::Count);
+    m_cleared = addRow(costGrid, QStringLiteral("texelsCleared"), tr("Texels cleared"),
+                       tr("Shadow-map texels one shadow pass cleared: a view without casters is not cleared, a tile of several only "
+                          "where it was or will be drawn."),
+                       Kind::Count);
+    m_mapMemory = addRow(costGrid, QStringLiteral("mapMemory"), tr("Map memory"), tr("Memory of the shadow map and its storage."), Kind::Bytes);
     m_costInfo = noteLabel(QStringLiteral("costInfo"));
     costGrid->addWidget(m_costInfo, costGrid->rowCount(), 0, 1, 4);
     return cost;
@@ -243,6 +259,8 @@ void AccuracyMetricsPanel::put(Row& row, const std::array<std::optional<double>,
         case Kind::Share: return percentText(v);
         case Kind::Error: return errorText(v);
         case Kind::Milliseconds: return QStringLiteral("%1 ms").arg(v, 0, 'f', 1);
+        case Kind::Count: return countText(std::int64_t(v));
+        case Kind::Bytes: return bytesText(std::int64_t(v));
         }
         return QString();
     };
@@ -279,6 +297,8 @@ void AccuracyMetricsPanel::put(Row& row, const std::array<std::optional<double>,
     }
     case Kind::Error: delta->setText(sign + errorText(a)); break;
     case Kind::Milliseconds: delta->setText(QStringLiteral("%1%2 ms").arg(sign).arg(a, 0, 'f', 1)); break;
+    case Kind::Count: delta->setText(sign + countText(std::int64_t(a))); break;
+    case Kind::Bytes: delta->setText(sign + bytesText(std::int64_t(a))); break;
     }
     // Every number here is an error or a cost: less is better.
     delta->setStyleSheet(d < 0.0 ? QStringLiteral("color: #2e8b3e;") : QStringLiteral("color: #c0392b;"));
@@ -333,6 +353,12 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
         put(*row, shown, stale, noise);
     }
     put(*m_dssim, values([](const M& x) { return std::optional(x.dssim); }), stale, 5e-5);
+    // Counts are exact: any difference is one. Not taken (-1): no value.
+    const auto counted = [](std::int64_t n) { return n >= 0 ? std::optional(double(n)) : std::nullopt; };
+    put(*m_taps, values([&](const M& x) { return counted(x.counts.taps()); }), stale, 0.0);
+    put(*m_shadowSamples, values([&](const M& x) { return counted(x.counts.shadow.samples); }), stale, 0.0);
+    put(*m_cleared, values([&](const M& x) { return counted(x.counts.clearedTexels); }), stale, 0.0);
+    put(*m_mapMemory, values([&](const M& x) { return counted(x.counts.mapBytes); }), stale, 0.0);
     put(*m_hardRmse, values([](const M& x) { return std::optional(x.hard.rmse); }), stale, 5e-5);
     put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale,
         countNoise([](const M& x) { return x.flicker.flicker; }, [](const M& x) { return double(x.flicker.frames > 1 ? x.flicker.pixels : 0); }));

@@ -50,7 +50,7 @@ private:
     QGroupBox* createHardGroup();
     QGroupBox* createAreaGroup();
     QGroupBox* createCostGroup();
-    enum class Kind { Share, Error, Milliseconds };
+    enum class Kind { Share, Error, Milliseconds, Count, Bytes };
     // A metric's name and its three values: A (or the only side), B, B − A.
     struct Row {
         Kind kind;
@@ -80,6 +80,10 @@ private:
     Row* m_noiseFloor = nullptr;
     Row* m_frame = nullptr;
     Row* m_shadowPass = nullptr;
+    Row* m_taps = nullptr;              // counts of the measured frame, the same on any GPU
+    Row* m_shadowSamples = nullptr;
+    Row* m_cleared = nullptr;
+    Row* m_mapMemory = nullptr;
     std::vector<std::unique_ptr<Row>> m_rows;
     QLabel* m_referenceInfo = nullptr;
     QLabel* m_costInfo = nullptr;
