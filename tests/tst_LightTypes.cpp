@@ -282,6 +282,51 @@ private Q_SLOTS:
             QVERIFY2(counts.blurTexels > 0 && counts.blurTexels <= 2 * drawnViews * tile, qPrintable(QString::number(counts.blurTexels)));
     }
 
+    // A moments map keeps the far plane's moments where nothing was drawn; another technique of
+    // as many channels reads them in its own encoding (vsm's (1, 1) is shadow to evsm2), so a
+    // switch between them, or of an exponent, gives the frame a fresh map gives, where casters
+    // moved away from a tile as well.
+    void switchingTheMomentEncodingKeepsFramesRight_data()
+    {
+        QTest::addColumn<QStringList>("first");
+        QTest::addColumn<QStringList>("then");
+        QTest::newRow("point: vsm, then evsm2") << QStringList{"light.type=point", "filter.mode=vsm"}
+                                                << QStringList{"light.type=point", "filter.mode=evsm2"};
+        QTest::newRow("cascades: msm, then evsm4") << QStringList{"shadow.cascades=4", "filter.mode=msm"}
+                                                   << QStringList{"shadow.cascades=4", "filter.mode=evsm4"};
+        QTest::newRow("cascades: esm c40, then c20") << QStringList{"shadow.cascades=4", "filter.mode=esm", "filter.exponent_positive=40"}
+                                                     << QStringList{"shadow.cascades=4", "filter.mode=esm", "filter.exponent_positive=20"};
+    }
+
+    void switchingTheMomentEncodingKeepsFramesRight()
+    {
+        QFETCH(QStringList, first);
+        QFETCH(QStringList, then);
+        m_headless->renderer().setScene(std::nullopt);
+        auto fresh = std::make_unique<HeadlessRenderer>();
+        const auto restore = qScopeGuard([&] {
+            fresh.reset();
+            m_headless->makeCurrent();
+        });
+        const QSize size(160, 90);
+        const auto settings = [](const QStringList& assignments, const glm::dvec3& light) {
+            Settings s = presetSettings("seed");
+            s.map.size = 128;
+            for (const QString& assignment : assignments)
+                applySetting(s, assignment.section('=', 0, 0), assignment.section('=', 1));
+            s.light.position = light;
+            return s;
+        };
+        // The first technique with the light at one place, the second with it elsewhere, so
+        // tiles the first drew are empty for the second.
+        const glm::dvec3 start = presetSettings("seed").light.position;
+        m_headless->renderFrame(settings(first, start), size);
+        const Settings second = settings(then, start + glm::dvec3(1.5, 0.5, 1.0));
+        const QImage switched = m_headless->renderScene(second, size);
+        const QImage reference = fresh->renderScene(second, size);
+        QVERIFY(switched == reference);
+    }
+
     // Cascades cover the whole shadow distance: the pixels within it agree with the reference,
     // and so do those next to each seam (within 5 % of a split), blended or not, stabilised
     // or not; pixels beyond the distance are lit, as the setting says.
