@@ -1,6 +1,7 @@
 #include "ReportAnalysis.h"
 
 #include "ErrorNoise.h"
+#include "FrameStatsText.h"
 #include "SettingsKeys.h"
 
 #include <embree3/rtcore_config.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -22,6 +24,11 @@ const ErrorMetrics& metrics(const ReportRow& row, ErrorAxis axis)
     return axis == ErrorAxis::Misclassified ? row.accuracy.hard : row.accuracy.area;
 }
 
+QString msText(double ms)
+{
+    return QStringLiteral("%1 ms").arg(ms, 0, 'f', ms < 10.0 ? 2 : 1);
+}
+
 bool clearlyFaster(const SampleStats& a, const SampleStats& b)
 {
     return a.p90 < b.p10;
@@ -29,7 +36,7 @@ bool clearlyFaster(const SampleStats& a, const SampleStats& b)
 
 bool beats(const ReportRow& b, const ReportRow& a, ErrorAxis axis)
 {
-    return comparable(a, b) && clearlyFaster(b.frame, a.frame) && clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
+    return comparable(a, b) && clearlyFaster(costOf(b), costOf(a)) && clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
 }
 
 void markFront(std::vector<ReportRow>& rows, ErrorAxis axis, bool ReportRow::*flag)
@@ -70,6 +77,63 @@ void markParetoFronts(std::vector<ReportRow>& rows)
     markFront(rows, ErrorAxis::AreaMae, &ReportRow::areaFront);
 }
 
+SampleStats costOf(const ReportRow& row)
+{
+    if (isTime(row.costAxis))
+        return row.frame;
+    const std::int64_t count = row.costAxis == CostAxis::Taps ? row.counts.taps() : row.counts.shadow.samples;
+    SampleStats s;
+    if (count < 0) {
+        // Not counted (a report of an older version merged in): nowhere on the axis.
+        s.median = s.p10 = s.p90 = s.mean = std::numeric_limits<double>::quiet_NaN();
+        return s;
+    }
+    s.count = 1;
+    s.median = s.mean = double(count);
+    s.p10 = double(count) * (1.0 - kCountBand);
+    s.p90 = double(count) * (1.0 + kCountBand);
+    return s;
+}
+
+QString costText(const ReportRow& row, double cost)
+{
+    switch (row.costAxis) {
+    case CostAxis::Time: return msText(cost);
+    case CostAxis::Taps: return countText(std::int64_t(std::llround(cost))) + QStringLiteral(" taps");
+    case CostAxis::ShadowSamples: return countText(std::int64_t(std::llround(cost))) + QStringLiteral(" shadow-pass samples");
+    }
+    return {};
+}
+
+QString costAxisTitle(CostAxis axis)
+{
+    switch (axis) {
+    case CostAxis::Time: return QStringLiteral("frame time, shadow pass every frame (ms, log scale; median, bar p10–p90)");
+    case CostAxis::Taps: return QStringLiteral("shadow taps a frame, the same on any GPU (log scale)");
+    case CostAxis::ShadowSamples: return QStringLiteral("shadow-pass samples a pass, the same on any GPU (log scale)");
+    }
+    return {};
+}
+
+QString costAxisKey(CostAxis axis)
+{
+    switch (axis) {
+    case CostAxis::Time: return QStringLiteral("time");
+    case CostAxis::Taps: return QStringLiteral("taps");
+    case CostAxis::ShadowSamples: return QStringLiteral("samples");
+    }
+    return {};
+}
+
+std::optional<CostAxis> costAxisFromKey(const QString& key)
+{
+    for (CostAxis axis : {CostAxis::Time, CostAxis::Taps, CostAxis::ShadowSamples}) {
+        if (costAxisKey(axis) == key)
+            return axis;
+    }
+    return std::nullopt;
+}
+
 QString timedOn(const ReportRow& row)
 {
     // What decides a frame's time: the renderer, and the CPU and its cores (a software
@@ -82,7 +146,8 @@ QString timedOn(const ReportRow& row)
 
 bool comparable(const ReportRow& a, const ReportRow& b)
 {
-    return a.light == b.light && timedOn(a) == timedOn(b);
+    // Counts are the same on any GPU: only times stay with their machine.
+    return a.light == b.light && (!isTime(a.costAxis) || timedOn(a) == timedOn(b));
 }
 
 bool severalMachines(const std::vector<ReportRow>& rows)
@@ -112,7 +177,7 @@ std::vector<const ReportRow*> frontOf(const std::vector<ReportRow>& rows, const 
         if (lightOf(r, rows) == light && (axis == ErrorAxis::Misclassified ? r.paretoFront : r.areaFront))
             front.push_back(&r);
     }
-    std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return costOf(*a).median < costOf(*b).median; });
     return front;
 }
 
@@ -145,7 +210,7 @@ namespace {
 
 bool tiedInTime(const ReportRow& a, const ReportRow& b)
 {
-    return !clearlyFaster(a.frame, b.frame) && !clearlyFaster(b.frame, a.frame);
+    return !clearlyFaster(costOf(a), costOf(b)) && !clearlyFaster(costOf(b), costOf(a));
 }
 
 bool tiedInError(const ReportRow& a, const ReportRow& b, ErrorAxis axis)
@@ -153,10 +218,6 @@ bool tiedInError(const ReportRow& a, const ReportRow& b, ErrorAxis axis)
     return !clearlyFewer(errorPixels(a, axis), errorPixels(b, axis)) && !clearlyFewer(errorPixels(b, axis), errorPixels(a, axis));
 }
 
-QString msText(double ms)
-{
-    return QStringLiteral("%1 ms").arg(ms, 0, 'f', ms < 10.0 ? 2 : 1);
-}
 
 // A share in percent with the digits its size needs: 0.0031 %, 0.052 %, 1.4 %.
 QString shareText(double fraction)
@@ -189,7 +250,7 @@ Recommendation mostAccurate(std::vector<const ReportRow*> candidates, ErrorAxis 
         if (tiedInError(*r, *best, axis))
             tied.push_back(r);
     }
-    std::stable_sort(tied.begin(), tied.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+    std::stable_sort(tied.begin(), tied.end(), [](const ReportRow* a, const ReportRow* b) { return costOf(*a).median < costOf(*b).median; });
     pick.row = tied.front();
     pick.ties.assign(tied.begin() + 1, tied.end());
     return pick;
@@ -234,7 +295,7 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
         pick.row = least;
         for (const ReportRow& r : rows) {
             if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && pictureError(r) <= within
-                && r.frame.median < pick.row->frame.median)
+                && costOf(r).median < costOf(*pick.row).median)
                 pick.row = &r;
         }
         return {pick};
@@ -251,21 +312,21 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
     // fastest may still be clearly slower than a third.)
     std::vector<const ReportRow*> asFast;
     for (const ReportRow* r : clean) {
-        if (std::none_of(clean.begin(), clean.end(), [&](const ReportRow* q) { return clearlyFaster(q->frame, r->frame); }))
+        if (std::none_of(clean.begin(), clean.end(), [&](const ReportRow* q) { return clearlyFaster(costOf(*q), costOf(*r)); }))
             asFast.push_back(r);
     }
     Recommendation cheapest = mostAccurate(asFast, ErrorAxis::Misclassified, Recommendation::Kind::Cheapest);
     std::erase_if(cheapest.ties, [&](const ReportRow* r) { return !tiedInTime(*r, *cheapest.row); });
     picks.push_back(cheapest);
     // The most accurate within the budget.
-    const double budget = kRecommendationBudget * cheapest.row->frame.median;
+    const double budget = kRecommendationBudget * costOf(*cheapest.row).median;
     std::vector<const ReportRow*> affordable;
     for (const ReportRow* r : clean) {
-        if (r->frame.median <= budget)
+        if (costOf(*r).median <= budget)
             affordable.push_back(r);
     }
     Recommendation accurate = mostAccurate(affordable, ErrorAxis::Misclassified, Recommendation::Kind::MostAccurate);
-    accurate.budgetMs = budget;
+    accurate.budget = budget;
     // Nothing affordable clearly more accurate than the cheapest: the cheapest it is (ties are
     // not transitive, so the best's tie set may hold another row as good as the cheapest).
     if (!clearlyFewer(errorPixels(*accurate.row, ErrorAxis::Misclassified), errorPixels(*cheapest.row, ErrorAxis::Misclassified))) {
@@ -291,7 +352,7 @@ QString Recommendation::title() const
     case Kind::Cheapest:
         return QStringLiteral("Cheapest with nothing visibly wrong");
     case Kind::MostAccurate:
-        return QStringLiteral("Most accurate within %1 (%2× the cheapest)").arg(msText(budgetMs)).arg(kRecommendationBudget);
+        return QStringLiteral("Most accurate within %1 (%2× the cheapest)").arg(costText(*row, budget)).arg(kRecommendationBudget);
     case Kind::ClosestToArea:
         return QStringLiteral("Closest to the area light");
     case Kind::Only:
@@ -310,32 +371,37 @@ QString Recommendation::reason() const
     QString text;
     switch (kind) {
     case Kind::Cheapest:
-        text = QStringLiteral("%1 a frame (p10–p90 %2–%3 ms): of the rows whose picture is not visibly wrong and that no such row "
-                              "is clearly faster than, the most accurate; %4")
-                   .arg(msText(row->frame.median))
-                   .arg(row->frame.p10, 0, 'f', row->frame.p10 < 10.0 ? 2 : 1)
-                   .arg(row->frame.p90, 0, 'f', row->frame.p90 < 10.0 ? 2 : 1)
+        text = QStringLiteral("%1 a frame%2: of the rows whose picture is not visibly wrong and that no such row is clearly %3 than, "
+                              "the most accurate; %4")
+                   .arg(costText(*row, costOf(*row).median))
+                   .arg(isTime(row->costAxis) ? QStringLiteral(" (p10–p90 %1–%2 ms)")
+                                                    .arg(row->frame.p10, 0, 'f', row->frame.p10 < 10.0 ? 2 : 1)
+                                                    .arg(row->frame.p90, 0, 'f', row->frame.p90 < 10.0 ? 2 : 1)
+                                              : QString())
+                   .arg(isTime(row->costAxis) ? QStringLiteral("faster") : QStringLiteral("cheaper"))
                    .arg(errorText(*row, axis));
         break;
     case Kind::MostAccurate:
         text = sameAsCheapest ? QStringLiteral("the cheapest again: no row within %1 a frame is clearly more accurate (%2)")
-                                    .arg(msText(budgetMs), errorText(*row, axis))
+                                    .arg(costText(*row, budget), errorText(*row, axis))
                               : QStringLiteral("%1, the fewest of the rows that take at most %2 a frame; %3 a frame")
-                                    .arg(errorText(*row, axis), msText(budgetMs), msText(row->frame.median));
+                                    .arg(errorText(*row, axis), costText(*row, budget), costText(*row, costOf(*row).median));
         break;
     case Kind::ClosestToArea:
-        text = QStringLiteral("%1, the smallest at any cost; %2 a frame").arg(errorText(*row, axis), msText(row->frame.median));
+        text = QStringLiteral("%1, the smallest at any cost; %2 a frame").arg(errorText(*row, axis), costText(*row, costOf(*row).median));
         break;
     case Kind::Only:
-        text = QStringLiteral("%1 a frame, %2; the others under this light are visibly wrong, or there are none").arg(msText(row->frame.median), errorText(*row, axis));
+        text = QStringLiteral("%1 a frame, %2; the others under this light are visibly wrong, or there are none")
+                   .arg(costText(*row, costOf(*row).median), errorText(*row, axis));
         break;
     case Kind::LeastWrong:
         text = QStringLiteral("DSSIM %1 against the hard light's picture%2, the least of all within a twentieth, and of those the "
-                              "fastest; %3 a frame, %4. A map's texel is larger than a pixel here (the table's \"texels ≤ 1 px\"): "
+                              "%5; %3 a frame, %4. A map's texel is larger than a pixel here (the table's \"texels ≤ 1 px\"): "
                               "a larger image, cascades or a virtual map (--sweep cascades, --sweep virtual) may give a clean one")
                    .arg(dssim(*row), 0, 'f', 4)
                    .arg(row->accuracy.areaSsim ? QStringLiteral(" and %1 against the area light's").arg(1.0 - *row->accuracy.areaSsim, 0, 'f', 4) : QString())
-                   .arg(msText(row->frame.median), errorText(*row, axis));
+                   .arg(costText(*row, costOf(*row).median), errorText(*row, axis))
+                   .arg(isTime(row->costAxis) ? QStringLiteral("fastest") : QStringLiteral("cheapest"));
         break;
     }
     if (!ties.empty()) {
@@ -343,10 +409,11 @@ QString Recommendation::reason() const
         constexpr std::size_t kNamed = 4;
         QStringList names;
         for (std::size_t i = 0; i < std::min(ties.size(), kNamed); ++i)
-            names << QStringLiteral("%1 (%2, %3)").arg(ties[i]->label, msText(ties[i]->frame.median), errorText(*ties[i], axis));
+            names << QStringLiteral("%1 (%2, %3)").arg(ties[i]->label, costText(*ties[i], costOf(*ties[i]).median), errorText(*ties[i], axis));
         if (ties.size() > kNamed)
-            names << QStringLiteral("and %1 more, each slower").arg(ties.size() - kNamed);
-        text += (kind == Kind::Cheapest ? QStringLiteral(". Ties, as fast and as accurate within their noise: ")
+            names << QStringLiteral("and %1 more, each %2").arg(ties.size() - kNamed).arg(isTime(row->costAxis) ? QStringLiteral("slower") : QStringLiteral("dearer"));
+        text += (kind == Kind::Cheapest ? (isTime(row->costAxis) ? QStringLiteral(". Ties, as fast and as accurate within their noise: ")
+                                                                 : QStringLiteral(". Ties, as cheap and as accurate within their noise: "))
                                         : QStringLiteral(". Ties, as accurate within their noise: "))
               + names.join(QStringLiteral("; "));
     }

@@ -16,6 +16,11 @@
 
 namespace shadowlab {
 
+// What a row costs on the fronts, the picks and the charts (report --cost): its frame's wall
+// time on the machine that measured it, or a count that is the same on any GPU (FrameCounts):
+// the shadow lookups' taps, or the samples the shadow pass wrote.
+enum class CostAxis { Time, Taps, ShadowSamples };
+
 struct ReportRow {
     QString label;              // labels of identical configurations joined with " = "
     QStringList assignments;
@@ -27,6 +32,7 @@ struct ReportRow {
     FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
     TexelDensity density;       // screen pixels per shadow texel over the measured receivers
     FrameCounts counts;         // what one shadow and one lit pass ask of any GPU (FrameStats.h)
+    CostAxis costAxis = CostAxis::Time;     // what costOf() weighs
     bool paretoFront = false;   // on its light's front of frame time against misclassified pixels
     bool areaFront = false;     // ... against the MAE of the area light (never when it was not traced)
     bool defaults = false;      // the base settings; its error image is shown
@@ -35,6 +41,20 @@ struct ReportRow {
     QString renderer;           // GL_RENDERER of the machine that measured it
     QString machine;            // machineFacts() of that machine
 };
+
+// The row's cost on its axis: its frame time (median, p10–p90), or its count with a band of
+// kCountBand either way, so counts within about twice that of each other tie.
+SampleStats costOf(const ReportRow& row);
+inline constexpr double kCountBand = 0.01;
+// A cost in the row's unit: "12.3 ms", "4.19 M taps", "2.10 M shadow-pass samples".
+QString costText(const ReportRow& row, double cost);
+// The axis as a chart's title names it, and as --cost and report.json name it ("time", "taps",
+// "samples"); nullopt for a name that is none.
+QString costAxisTitle(CostAxis axis);
+QString costAxisKey(CostAxis axis);
+std::optional<CostAxis> costAxisFromKey(const QString& key);
+// Whether costs on `axis` are times of the machine that measured them (compared only there).
+inline bool isTime(CostAxis axis) { return axis == CostAxis::Time; }
 
 // What `row`'s times were taken on: its renderer, CPU and cores ("llvmpipe (...) (AMD EPYC 7B13,
 // 2 cores)"). Rows are compared (on a front, a chart) only with rows of the same light timed on
@@ -95,7 +115,7 @@ double areaNoisePercent(const ReportRow& row);
 struct Recommendation {
     enum class Kind {
         Cheapest,       // of the rows with nothing visibly wrong that none such is clearly faster than, the most accurate
-        MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's time
+        MostAccurate,   // the fewest misclassified pixels within kRecommendationBudget x the cheapest's cost
         ClosestToArea,  // the smallest MAE against the area light, at any cost
         Only,           // the one row under its light whose picture is not visibly wrong
         LeastWrong,     // every row's picture is visibly wrong: the one least unlike a reference's
@@ -103,14 +123,14 @@ struct Recommendation {
     Kind kind = Kind::Cheapest;
     const ReportRow* row = nullptr;
     std::vector<const ReportRow*> ties;
-    double budgetMs = 0.0;          // MostAccurate: the frame time it was chosen within
+    double budget = 0.0;            // MostAccurate: the cost it was chosen within (costOf())
     bool sameAsCheapest = false;    // MostAccurate: nothing within the budget is clearly more accurate
     QString title() const;          // "Cheapest with nothing visibly wrong", ...
     QString reason() const;         // why this row, in figures, and its ties
 };
 
 // The cost a row may take to be "most accurate within a cost": this times the cheapest clean
-// row's median frame time.
+// row's (its median frame time, or its count).
 inline constexpr double kRecommendationBudget = 2.0;
 
 // The picks for the group `light` (lightsOf()): none where no row was measured; LeastWrong alone

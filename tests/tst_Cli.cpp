@@ -649,6 +649,30 @@ private Q_SLOTS:
         QVERIFY(QFile::exists(m_dir.filePath("compared/errors/002.png")) && !QFile::exists(m_dir.filePath("compared/errors/003.png")));
     }
 
+    // --cost taps draws the fronts on a count, the same on any GPU, and says so; a cost that is
+    // none is refused before any work.
+    void reportFrontOnACount()
+    {
+        const QString dir = m_dir.filePath("taps-report");
+        const QString sweep = m_dir.filePath("taps-sweep.json");
+        QVERIFY(writeFile(sweep, R"([{"label": "hard", "set": {"filter.mode": "hard"}}, {"label": "pcf 5x5", "set": {"filter.mode": "pcf", "filter.kernel": 5}}])"));
+        const Run r = shadowlab({"report", "--scene", "seed", "--size", "160x90", "--sweep", sweep, "--frames", "1",
+                                 "--warmup", "0", "--area-samples", "1", "--flicker-frames", "0", "--cost", "taps", "--out", dir});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("on a count's cost, the same on any GPU") && r.out.contains(" taps a frame"), qPrintable(r.out));
+        QFile html(dir + "/report.html");
+        QVERIFY(html.open(QIODevice::ReadOnly));
+        QVERIFY(QString::fromUtf8(html.readAll()).contains("shadow taps a frame, the same on any GPU (log scale)"));
+        QFile json(dir + "/report.json");
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        for (const QJsonValue row : QJsonDocument::fromJson(json.readAll()).object().value("rows").toArray())
+            QCOMPARE(row.toObject().value("cost_axis").toString(), QStringLiteral("taps"));
+        const Run bad = shadowlab({"report", "--cost", "ms", "--out", m_dir.filePath("never")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--cost") && bad.err.contains("time, taps or samples"), qPrintable(bad.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never")));
+    }
+
     void reportRejectsABadSweep()
     {
         const QString sweep = m_dir.filePath("bad-sweep.json");

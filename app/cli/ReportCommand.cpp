@@ -58,9 +58,12 @@ void printFronts(const std::vector<ReportRow>& rows)
     const QStringList lights = lightsOf(rows);
     const bool area = std::any_of(rows.begin(), rows.end(), [](const ReportRow& r) { return measuredPixels(r, ErrorAxis::AreaMae) > 0; });
     for (const QString& light : lights) {
+        const bool time = rows.empty() || isTime(rows.front().costAxis);
         out() << "\nPareto front" << (lights.size() > 1 ? QStringLiteral(" of the %1").arg(light) : QString())
-              << " (off it only when another is clearly faster and clearly more accurate):\n"
-              << "  " << QStringLiteral("configuration").leftJustified(kLabelWidth) << QStringLiteral("frame ms (p10-p90)").rightJustified(24)
+              << (time ? " (off it only when another is clearly faster and clearly more accurate):\n"
+                       : " on a count's cost, the same on any GPU (off it only when another is clearly cheaper and clearly more accurate):\n")
+              << "  " << QStringLiteral("configuration").leftJustified(kLabelWidth)
+              << (time ? QStringLiteral("frame ms (p10-p90)") : QStringLiteral("cost a frame")).rightJustified(24)
               << QStringLiteral("misclassified % (px)").rightJustified(26) << (area ? QStringLiteral("area MAE %").rightJustified(18) : QString())
               << "  front\n";
         std::vector<const ReportRow*> front;
@@ -68,7 +71,7 @@ void printFronts(const std::vector<ReportRow>& rows)
             if (lightOf(r, rows) == light && (r.paretoFront || r.areaFront))
                 front.push_back(&r);
         }
-        std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return a->frame.median < b->frame.median; });
+        std::stable_sort(front.begin(), front.end(), [](const ReportRow* a, const ReportRow* b) { return costOf(*a).median < costOf(*b).median; });
         for (const ReportRow* r : front) {
             const double pixels = errorPixels(*r, ErrorAxis::Misclassified);
             const double areaPixels = std::max(1, measuredPixels(*r, ErrorAxis::AreaMae));
@@ -78,7 +81,9 @@ void printFronts(const std::vector<ReportRow>& rows)
             if (r->areaFront)
                 which << QStringLiteral("area");
             out() << "  " << r->label.leftJustified(kLabelWidth, QLatin1Char(' '), true)
-                  << QStringLiteral("%1 (%2-%3)").arg(r->frame.median, 0, 'f', 2).arg(r->frame.p10, 0, 'f', 2).arg(r->frame.p90, 0, 'f', 2).rightJustified(24)
+                  << (time ? QStringLiteral("%1 (%2-%3)").arg(r->frame.median, 0, 'f', 2).arg(r->frame.p10, 0, 'f', 2).arg(r->frame.p90, 0, 'f', 2)
+                           : costText(*r, costOf(*r).median))
+                         .rightJustified(24)
                   << QStringLiteral("%1 (%2 ± %3)").arg(100 * r->accuracy.hard.misclassified, 0, 'f', 4).arg(pixels, 0, 'f', 0)
                          .arg(errorNoisePixels(pixels), 0, 'f', 0).rightJustified(26)
                   << (area ? QStringLiteral("%1 ± %2").arg(100 * r->accuracy.area.mae, 0, 'f', 3)
@@ -134,6 +139,11 @@ void addReportOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("flicker-frames"),
                       QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
                       QStringLiteral("n"), QString::number(kFlickerFrames)});
+    parser.addOption({QStringLiteral("cost"),
+                      QStringLiteral("What the fronts, the picks and the charts weigh a configuration's cost by: time (its frame's wall "
+                                     "time on this machine, the default), taps (the shadow lookups' texture reads a frame) or samples "
+                                     "(the fragments a shadow pass writes); counts are the same on any GPU."),
+                      QStringLiteral("axis"), QStringLiteral("time")});
     parser.addOption({QStringLiteral("shard"),
                       QStringLiteral("Measure share K of N of the sweep (every Nth configuration from the Kth), for another process, "
                                      "machine or scheduler job to measure the rest; put the shares together with --merge."),
@@ -175,6 +185,7 @@ struct ReportRequest {
     int configurations = 0;                     // in the whole sweep
     int shard = 1, shards = 1;
     QString fingerprint;                        // of the whole sweep and how it is measured
+    CostAxis cost = CostAxis::Time;             // what the fronts weigh (--cost)
 };
 
 // What a report measures, whoever measures it: the size, the timing and reference options and
@@ -212,6 +223,10 @@ ReportRequest readReportRequest(const QCommandLineParser& parser)
     r.sweep = distinctConfigurations(r.base, loadSweep(parser.value(QStringLiteral("sweep")), r.base));
     r.tutorial = applySweepEntry(r.base, {QStringLiteral("tutorial"), tutorialAssignments()});
     r.flickerFrames = parseCount(parser.value(QStringLiteral("flicker-frames")), QStringLiteral("flicker-frames"), 0, 1000);
+    const std::optional<CostAxis> cost = costAxisFromKey(parser.value(QStringLiteral("cost")));
+    if (!cost)
+        throw UsageError(QStringLiteral("--cost: '%1' is not a cost axis; choose time, taps or samples").arg(displayText(parser.value(QStringLiteral("cost")))));
+    r.cost = *cost;
     r.configurations = int(r.sweep.size());
     r.fingerprint = sweepFingerprint(r);
     if (parser.isSet(QStringLiteral("shard")))
@@ -409,6 +424,8 @@ int runReport(const QStringList& arguments)
         AccuracyPass accuracy = measureAllAccuracy(request, headless, meter, progress);
         timeAll(request, headless, progress, accuracy.rows);
         progress.done();
+        for (ReportRow& row : accuracy.rows)
+            row.costAxis = request.cost;
         markParetoFronts(accuracy.rows);
 
         const ReportFacts facts = reportFacts(request, headless.renderer(), meter, accuracy, total);

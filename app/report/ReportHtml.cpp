@@ -182,11 +182,12 @@ ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
     ChartScale c;
     double xLow = 0.0, xHigh = 0.0, yLow = 0.0, yHigh = 0.0;
     for (const ReportRow& r : rows) {
-        if (!std::isfinite(r.frame.p10) || !std::isfinite(r.frame.p90))
+        const SampleStats cost = costOf(r);
+        if (!std::isfinite(cost.p10) || !std::isfinite(cost.p90))
             continue;   // never drawn; the table says what it is
-        if (r.frame.p10 > 0.0)
-            xLow = xLow > 0.0 ? std::min(xLow, r.frame.p10) : r.frame.p10;
-        xHigh = std::max(xHigh, r.frame.p90);
+        if (cost.p10 > 0.0)
+            xLow = xLow > 0.0 ? std::min(xLow, cost.p10) : cost.p10;
+        xHigh = std::max(xHigh, cost.p90);
         const double v = errorPercent(r, axis);
         if (v > 0.0) {
             yLow = yLow > 0.0 ? std::min(yLow, v) : v;
@@ -206,9 +207,9 @@ ChartScale chartScale(const std::vector<ReportRow>& rows, ErrorAxis axis)
     return c;
 }
 
-// The time axis's ticks: every 1-2-5 step between its ends, or only 1 and 5 of each decade,
+// The cost axis's ticks: every 1-2-5 step between its ends, or only 1 and 5 of each decade,
 // or the decades alone, as many as fit with room between their numbers.
-std::vector<double> timeTicks(const ChartScale& c)
+std::vector<double> costTicks(const ChartScale& c)
 {
     std::vector<double> all;
     for (double d = std::pow(10.0, std::floor(std::log10(c.xMin))); d <= c.xMax * 1.0001; d *= 10.0) {
@@ -234,13 +235,14 @@ std::vector<double> timeTicks(const ChartScale& c)
 }
 
 // The grid, its ticks and the two axis titles.
-QString chartAxes(const ChartScale& c, const QString& yTitle)
+QString chartAxes(const ChartScale& c, const QString& yTitle, CostAxis cost)
 {
     const double w = c.w, h = c.h, left = c.left, right = c.right, top = c.top, bottom = c.bottom;
     QString svg;
-    for (double x : timeTicks(c)) {
+    for (double x : costTicks(c)) {
+        const QString tick = isTime(cost) ? percentText(x) : countText(std::int64_t(std::llround(x)));
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"grid\"/>").arg(c.px(x)).arg(top).arg(h - bottom);
-        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(c.px(x)).arg(h - bottom + 18).arg(percentText(x));
+        svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"middle\">%3</text>").arg(c.px(x)).arg(h - bottom + 18).arg(tick);
     }
     if (c.anyZero) {
         svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"grid\"/>").arg(left).arg(c.py(0.0)).arg(w - right);
@@ -255,9 +257,10 @@ QString chartAxes(const ChartScale& c, const QString& yTitle)
                    .arg(decade ? QStringLiteral("grid") : QStringLiteral("grid minor"));
         svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"tick\" text-anchor=\"end\">%3 %</text>").arg(left - 6).arg(c.py(y) + 4).arg(percentText(y));
     }
-    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">frame time, shadow pass every frame (ms, log scale; median, bar p10–p90)</text>")
+    svg += QStringLiteral("<text x=\"%1\" y=\"%2\" class=\"axis\" text-anchor=\"middle\">%3</text>")
                .arg((left + w - right) / 2)
-               .arg(h - 10);
+               .arg(h - 10)
+               .arg(html(costAxisTitle(cost)));
     svg += QStringLiteral("<text x=\"16\" y=\"%1\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 16 %1)\">%2 (log scale)</text>")
                .arg((top + h - bottom) / 2)
                .arg(html(yTitle));
@@ -284,7 +287,7 @@ QString frontLines(const std::vector<ReportRow>& rows, const Colour& colour, Err
         const auto line = [&](const std::vector<const ReportRow*>& points) {
             QString text;
             for (const ReportRow* r : points)
-                text += QStringLiteral("%1,%2 ").arg(c.px(r->frame.median)).arg(c.py(errorPercent(*r, axis)));
+                text += QStringLiteral("%1,%2 ").arg(c.px(costOf(*r).median)).arg(c.py(errorPercent(*r, axis)));
             return text.trimmed();
         };
         if (all.size() > steps.size())
@@ -301,12 +304,15 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, 
 {
     QString svg;
     for (const ReportRow& r : rows) {
-        const double x = c.px(r.frame.median), y = c.py(errorPercent(r, axis));
-        svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
-                   .arg(c.px(r.frame.p10))
-                   .arg(y)
-                   .arg(c.px(r.frame.p90))
-                   .arg(colour(r));
+        const SampleStats cost = costOf(r);
+        const double x = c.px(cost.median), y = c.py(errorPercent(r, axis));
+        if (isTime(r.costAxis)) {
+            svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
+                       .arg(c.px(cost.p10))
+                       .arg(y)
+                       .arg(c.px(cost.p90))
+                       .arg(colour(r));
+        }
         if (measuredPixels(r, axis) > 0) {
             const auto [low, high] = noiseBand(r, axis);
             svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%1\" y2=\"%3\" class=\"spread noise\" stroke=\"%4\"/>")
@@ -318,12 +324,15 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, 
         taken.push_back({x - 6, y - 6, x + 6, y + 6});
     }
     for (const ReportRow& r : rows) {
-        svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7 ms (p10 %8, p90 %9), %10 %</title></circle>")
-                   .arg(c.px(r.frame.median))
+        const QString cost = isTime(r.costAxis)
+            ? QStringLiteral("%1 ms (p10 %2, p90 %3)").arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2))
+            : costText(r, costOf(r).median) + QStringLiteral(" (%1 ms)").arg(number(r.frame.median, 2));
+        svg += QStringLiteral("<circle cx=\"%1\" cy=\"%2\" r=\"%3\" fill=\"%4\" class=\"%5\"><title>%6: %7, %8 %</title></circle>")
+                   .arg(c.px(costOf(r).median))
                    .arg(c.py(errorPercent(r, axis)))
                    .arg(onFront(r, axis) ? 6 : 4)
                    .arg(colour(r), onFront(r, axis) ? QStringLiteral("pt onfront") : QStringLiteral("pt"), html(r.label))
-                   .arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2), percentText(errorPercent(r, axis)));
+                   .arg(html(cost), percentText(errorPercent(r, axis)));
     }
     return svg;
 }
@@ -389,7 +398,7 @@ QString pointLabels(const std::vector<ReportRow>& rows, ErrorAxis axis, const Ch
     QString svg;
     for (const ReportRow* r : labelledRows(rows, axis)) {
         const QString text = chartLabel(r->label);
-        const double x = c.px(r->frame.median), y = c.py(errorPercent(*r, axis));
+        const double x = c.px(costOf(*r).median), y = c.py(errorPercent(*r, axis));
         for (const Box& b : labelPlaces(x, y, labelWidth(text))) {
             const bool inside = b.x0 >= c.left + 2 && b.x1 <= c.w - c.right && b.y0 >= c.top && b.y1 <= c.h - c.bottom;
             const Box clear{b.x0 - kLabelGap, b.y0 - 1.0, b.x1 + kLabelGap, b.y1 + 1.0};
@@ -420,7 +429,7 @@ QString chart(const std::vector<ReportRow>& rows, const Colour& colour, const QS
     const ChartScale c = chartScale(rows, axis);
     std::vector<Box> taken;
     QString svg = QStringLiteral("<svg viewBox=\"0 0 %1 %2\" class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\">").arg(c.w).arg(c.h);
-    svg += chartAxes(c, yTitle);
+    svg += chartAxes(c, yTitle, rows.empty() ? CostAxis::Time : rows.front().costAxis);
     svg += frontLines(rows, colour, axis, c);
     svg += pointsAndBars(rows, colour, axis, c, taken);
     svg += pointLabels(rows, axis, c, taken);

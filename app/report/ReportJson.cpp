@@ -63,6 +63,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
                                     {QStringLiteral("frames"), r.frame.count},
                                     {QStringLiteral("counts"), countsJson(r.counts)},
+                                    {QStringLiteral("cost_axis"), costAxisKey(r.costAxis)},
                                     {QStringLiteral("hard_reference"), metricsJson(h)},
                                     {QStringLiteral("area_reference"), metricsJson(a)},
                                     {QStringLiteral("pareto_front"), r.paretoFront},

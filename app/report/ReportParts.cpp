@@ -174,6 +174,10 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
     r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
     r.counts = readCounts(json.within(QStringLiteral("counts")), json.object(object, QStringLiteral("counts")));
+    const std::optional<CostAxis> cost = costAxisFromKey(json.text(object, QStringLiteral("cost_axis")));
+    if (!cost)
+        json.fail(QStringLiteral("cost_axis"), QStringLiteral("is not time, taps or samples"));
+    r.costAxis = *cost;
     r.accuracy.hard = readMetrics(json.within(QStringLiteral("hard_reference")), json.object(object, QStringLiteral("hard_reference")));
     r.accuracy.area = readMetrics(json.within(QStringLiteral("area_reference")), json.object(object, QStringLiteral("area_reference")));
     r.accuracy.ssim = json.number(object, QStringLiteral("mean_ssim"));
