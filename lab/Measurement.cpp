@@ -26,24 +26,20 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
 {
     Renderer& renderer = headless.renderer();
     renderer.setCounting(true);
-    // A map drawn into slices (map.slices) is cleared once in that many passes: its clears are
-    // counted over a whole cycle, the rest in the last pass.
-    const int passes = std::max(1, ShadowMap::slicesFor(settings));
-    FrameCounts counts;
-    std::int64_t cleared = 0;
+    renderer.invalidateShadowMap();
     try {
-        for (int i = 0; i < passes; ++i) {
-            renderer.invalidateShadowMap();
-            headless.renderFrame(settings, size, TimingMode::Finish);
-            counts = renderer.lastFrame().counts;
-            cleared += counts.clearedTexels;
-        }
+        headless.renderFrame(settings, size, TimingMode::Finish);
     } catch (...) {
         renderer.setCounting(false);
         throw;
     }
     renderer.setCounting(false);
-    counts.clearedTexels = cleared / passes;
+    FrameCounts counts = renderer.lastFrame().counts;
+    // A map drawn into slices (map.slices) is cleared whole once in that many passes: a pass
+    // clears that share of it, whichever of the cycle this one was.
+    const ShadowMap& map = renderer.shadowMap();
+    if (settings.shadow.enabled && map.slice().scale < 1.0)
+        counts.clearedTexels = std::int64_t(map.width()) * map.height() / std::max(1, ShadowMap::slicesFor(settings));
     return counts;
 }
 

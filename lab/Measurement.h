@@ -40,8 +40,8 @@ struct FrameSamples {
 };
 
 // What a frame of `settings` at `size` asks of any GPU, its shadow pass drawn (FrameCounts):
-// counted in frames of their own, since the counting queries slow a software rasteriser's
-// frame. A map drawn into slices is counted over a whole cycle of them. Throws like render().
+// counted in a frame of its own, since the counting queries slow a software rasteriser's
+// frame. A map drawn into slices clears its share of the cycle's one clear. Throws like render().
 FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size);
 
 // One configuration to time: where it renders, what, and whether the light "moves" (the

@@ -86,8 +86,9 @@ int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile,
         m_gl->glActiveTexture(GL_TEXTURE0);
         m_gl->glBindSampler(0, m_sampler.id());
         m_gl->glBindVertexArray(m_emptyVertexArray.id());
-        m_gl->glEnable(GL_SCISSOR_TEST);
-        // Horizontal into the scratch texture, vertical back into level 0 of the map.
+        // Horizontal into the scratch texture, vertical back into level 0 of the map; scissored
+        // only to less than the whole map, as a scissor slows llvmpipe even where it cuts nothing.
+        const QRect map0(0, 0, map.width(), map.height());
         const struct {
             GLuint framebuffer;
             GLuint source;
@@ -96,7 +97,12 @@ int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile,
         } axes[2] = {{map.scratchFramebuffer(), map.texture(), {1, 0}, first}, {map.framebuffer(), map.scratchTexture(), {0, 1}, second}};
         for (const auto& axis : axes) {
             m_gl->glBindFramebuffer(GL_FRAMEBUFFER, axis.framebuffer);
-            m_gl->glScissor(axis.area.x(), axis.area.y(), axis.area.width(), axis.area.height());
+            if (axis.area != map0) {
+                m_gl->glEnable(GL_SCISSOR_TEST);
+                m_gl->glScissor(axis.area.x(), axis.area.y(), axis.area.width(), axis.area.height());
+            } else {
+                m_gl->glDisable(GL_SCISSOR_TEST);
+            }
             m_gl->glBindTexture(GL_TEXTURE_2D, axis.source);
             m_gl->glUniform2iv(p->step, 1, axis.step);
             m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -140,8 +140,10 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     state.depthTest = true;
     state.depthClamp = true;    // casters before the fitted near plane still cast, as in the depth pass
     applyPassState(m_gl, state);
-    m_gl->glEnable(GL_SCISSOR_TEST);
-    m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+    if (!oneView || area != whole) {
+        m_gl->glEnable(GL_SCISSOR_TEST);
+        m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+    }
     map.written().drew(area);
     Program* cutoutProgram = nullptr;    // set up on the first cut-out caster
     Program* bound = &plain;

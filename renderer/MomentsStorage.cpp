@@ -19,12 +19,13 @@ namespace {
 // map's cures for acne, which moments do not need.
 class MomentsStorage final : public ShadowStorage {
 public:
-    explicit MomentsStorage(GlFunctions* gl) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl) {}
+    MomentsStorage(GlFunctions* gl, bool wideTwoChannels) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl), m_wideTwoChannels(wideTwoChannels) {}
 
     void ensure(const Settings& settings, ShadowTileGrid grid) override
     {
-        m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format,
-                          shadowTechnique(settings.filter.mode).momentChannels, settings.moments.mipmaps, settings.moments.anisotropy);
+        const int channels = shadowTechnique(settings.filter.mode).momentChannels;
+        m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, channels == 2 && m_wideTwoChannels ? 4 : channels,
+                          settings.moments.mipmaps, settings.moments.anisotropy);
     }
 
     ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
@@ -98,13 +99,14 @@ private:
     MomentsMap m_map;
     MomentsPass m_pass;
     MomentsBlurPass m_blur;
+    bool m_wideTwoChannels;     // two moments in RGBA (Renderer::setWideTwoChannelMoments)
 };
 
 } // namespace
 
-std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl)
+std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl, bool wideTwoChannels)
 {
-    return std::make_unique<MomentsStorage>(gl);
+    return std::make_unique<MomentsStorage>(gl, wideTwoChannels);
 }
 
 } // namespace shadowlab

@@ -186,7 +186,7 @@ ShadowStorage& Renderer::storageFor(const Settings& settings) const
 {
     if (isMomentTechnique(settings.filter.mode)) {
         if (!m_momentsStorage)
-            m_momentsStorage = makeMomentsStorage(m_gl);
+            m_momentsStorage = makeMomentsStorage(m_gl, m_wideTwoChannelMoments.value_or(isSoftwareRenderer(rendererString())));
         return *m_momentsStorage;
     }
     return *m_depthStorage;

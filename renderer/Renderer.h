@@ -116,6 +116,13 @@ public:
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
 
+    // Whether two moments (vsm, evsm2) are stored in RGBA rather than RG: a software rasteriser's
+    // optimisation, on by default there only (nullopt). llvmpipe blurs a 2048² RG32F map in
+    // 100 ms and an RGBA32F one in 75, while a GPU reads half the bytes from RG; one channel (esm)
+    // is faster than four on both. Frames are the same either way. Takes effect before the first
+    // frame of a moment technique.
+    void setWideTwoChannelMoments(std::optional<bool> wide) { m_wideTwoChannelMoments = wide; }
+
     // Whether frames count what transfers to any GPU (FrameCounts' query counts: primitives,
     // samples, lookup fragments). Off by default: the queries cost a software rasteriser a wait,
     // so benchmarks count in a frame of their own, never in a timed one.
@@ -180,6 +187,7 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     bool m_counting = false;
+    std::optional<bool> m_wideTwoChannelMoments;
     CountQuery m_shadowPrimitives;
     CountQuery m_shadowSamples;
     CountQuery m_litPrimitives;

@@ -106,6 +106,8 @@ public:
 // The storage of each kind, built on first use: depth draws into the renderer's `map` with its
 // `pass`; moments own their map and passes.
 std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass);
-std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl);
+// `wideTwoChannels`: two moments (vsm, evsm2) stored in RGBA rather than RG, for a software
+// rasteriser (Renderer::setWideTwoChannelMoments).
+std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl, bool wideTwoChannels);
 
 } // namespace shadowlab

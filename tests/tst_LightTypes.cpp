@@ -327,6 +327,26 @@ private Q_SLOTS:
         QVERIFY(switched == reference);
     }
 
+    // Two moments stored in RGBA (a software rasteriser's choice, Renderer::setWideTwoChannelMoments)
+    // or in RG read the same: the frames are byte for byte alike.
+    void twoMomentsReadTheSameWideOrNarrow()
+    {
+        const auto restore = qScopeGuard([&] { m_headless->makeCurrent(); });   // the renderers' contexts go with them
+        for (const char* mode : {"vsm", "evsm2"}) {
+            std::array<QImage, 2> frames;
+            for (const bool wide : {true, false}) {
+                HeadlessRenderer own;
+                own.renderer().setWideTwoChannelMoments(wide);
+                Settings s = presetSettings("torus");
+                s.map.size = 256;
+                applySetting(s, "filter.mode", mode);
+                frames[wide ? 0 : 1] = own.renderScene(s, QSize(160, 90));
+                QCOMPARE(own.renderer().momentsMap()->channels(), wide ? 4 : 2);
+            }
+            QVERIFY2(frames[0] == frames[1], mode);
+        }
+    }
+
     // Cascades cover the whole shadow distance: the pixels within it agree with the reference,
     // and so do those next to each seam (within 5 % of a split), blended or not, stabilised
     // or not; pixels beyond the distance are lit, as the setting says.
