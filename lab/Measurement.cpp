@@ -38,7 +38,8 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     // A map drawn into slices (map.slices) is cleared whole once in that many passes: a pass
     // clears that share of it, whichever of the cycle this one was.
     const ShadowMap& map = renderer.shadowMap();
-    if (settings.shadow.enabled && map.slice().scale < 1.0)
+    const bool depthMap = settings.shadow.enabled && !settings.shadow.virtualMap && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments;
+    if (depthMap && renderer.lastFrame().shadowPassRendered && map.slice().scale < 1.0)
         counts.clearedTexels = std::int64_t(map.width()) * map.height() / std::max(1, ShadowMap::slicesFor(settings));
     return counts;
 }

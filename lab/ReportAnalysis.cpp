@@ -44,12 +44,16 @@ void markFront(std::vector<ReportRow>& rows, ErrorAxis axis, bool ReportRow::*fl
     std::vector<bool> wrong;
     for (const ReportRow& r : rows)
         wrong.push_back(!visiblyWrong(r).isEmpty());
+    // A row without a cost on the axis (a count not taken) is nowhere on it.
+    std::vector<bool> costed;
+    for (const ReportRow& r : rows)
+        costed.push_back(std::isfinite(costOf(r).median));
     for (std::size_t i = 0; i < rows.size(); ++i) {
         ReportRow& a = rows[i];
         bool beaten = false;
         for (std::size_t j = 0; j < rows.size() && !beaten; ++j)
-            beaten = !wrong[j] && beats(rows[j], a, axis);
-        a.*flag = measuredPixels(a, axis) > 0 && !wrong[i] && !beaten;
+            beaten = !wrong[j] && costed[j] && beats(rows[j], a, axis);
+        a.*flag = measuredPixels(a, axis) > 0 && !wrong[i] && costed[i] && !beaten;
     }
 }
 
@@ -97,6 +101,8 @@ SampleStats costOf(const ReportRow& row)
 
 QString costText(const ReportRow& row, double cost)
 {
+    if (!std::isfinite(cost))
+        return QStringLiteral("n/a");
     switch (row.costAxis) {
     case CostAxis::Time: return msText(cost);
     case CostAxis::Taps: return countText(std::int64_t(std::llround(cost))) + QStringLiteral(" taps");
@@ -157,7 +163,8 @@ bool severalMachines(const std::vector<ReportRow>& rows)
 
 QString lightOf(const ReportRow& row, const std::vector<ReportRow>& rows)
 {
-    return severalMachines(rows) ? QStringLiteral("%1, on %2").arg(row.light, timedOn(row)) : row.light;
+    // Times stay with their machine; counts, the same on any GPU, do not (comparable()).
+    return isTime(row.costAxis) && severalMachines(rows) ? QStringLiteral("%1, on %2").arg(row.light, timedOn(row)) : row.light;
 }
 
 QStringList lightsOf(const std::vector<ReportRow>& rows)
@@ -272,7 +279,7 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
 {
     std::vector<const ReportRow*> clean;
     for (const ReportRow& r : rows) {
-        if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && visiblyWrong(r).isEmpty())
+        if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && visiblyWrong(r).isEmpty() && std::isfinite(costOf(r).median))
             clean.push_back(&r);
     }
     if (clean.empty()) {
@@ -283,7 +290,8 @@ std::vector<Recommendation> recommend(const std::vector<ReportRow>& rows, const 
             return std::min(dssim(r), r.accuracy.areaSsim ? 1.0 - *r.accuracy.areaSsim : dssim(r));
         };
         for (const ReportRow& r : rows) {
-            if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && (!least || pictureError(r) < pictureError(*least)))
+            if (lightOf(r, rows) == light && measuredPixels(r, ErrorAxis::Misclassified) > 0 && std::isfinite(costOf(r).median)
+                && (!least || pictureError(r) < pictureError(*least)))
                 least = &r;
         }
         if (!least)

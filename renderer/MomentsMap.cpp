@@ -151,9 +151,9 @@ void MomentsMap::allocate(int size, int columns, int rows, MomentFormat format, 
     m_written.reset(size, columns, rows);
 }
 
-qint64 MomentsMap::bytes() const
+qint64 MomentsMap::bytes(int channels) const
 {
-    const qint64 texel = qint64(m_channels) * (m_format == MomentFormat::Rgba16F ? 2 : 4);
+    const qint64 texel = qint64(channels) * (m_format == MomentFormat::Rgba16F ? 2 : 4);
     qint64 colour = qint64(width()) * height() * texel;
     if (m_mipmaps)
         colour += colour / 3;

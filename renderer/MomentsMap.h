@@ -35,8 +35,9 @@ public:
     int rows() const { return m_rows; }
     MomentFormat format() const { return m_format; }
     int channels() const { return m_channels; }
-    // Its memory in bytes: the moments with their mips, the blur's scratch and the pass's depth.
-    qint64 bytes() const;
+    // Its memory in bytes with `channels` a texel: the moments with their mips, the blur's
+    // scratch and the pass's depth.
+    qint64 bytes(int channels) const;
     // Which texels draws since their clear may have written (the far plane's moments elsewhere).
     WrittenTexels& written() { return m_written; }
     // What the far plane's moments are, named by the encoding that made them (the technique,

@@ -24,6 +24,7 @@ public:
     void ensure(const Settings& settings, ShadowTileGrid grid) override
     {
         const int channels = shadowTechnique(settings.filter.mode).momentChannels;
+        m_channels = channels;
         m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, channels == 2 && m_wideTwoChannels ? 4 : channels,
                           settings.moments.mipmaps, settings.moments.anisotropy);
     }
@@ -82,13 +83,14 @@ public:
         return counts;
     }
 
-    qint64 bytes() const override { return m_map.bytes(); }
+    // As a GPU stores them: the technique's channels, whatever a software rasteriser widens.
+    qint64 bytes() const override { return m_map.bytes(m_channels); }
 
 private:
     void countBlur(int width)
     {
         const qint64 texels = m_blur.lastTexels();
-        const qint64 texel = qint64(m_map.channels()) * (m_map.format() == MomentFormat::Rgba16F ? 2 : 4);
+        const qint64 texel = qint64(m_channels) * (m_map.format() == MomentFormat::Rgba16F ? 2 : 4);
         const int taps = std::max(1, width | 1);
         m_counts.blurTexels += texels;
         m_counts.blurBytes += texels * texel * (taps + 1);
@@ -100,6 +102,7 @@ private:
     MomentsPass m_pass;
     MomentsBlurPass m_blur;
     bool m_wideTwoChannels;     // two moments in RGBA (Renderer::setWideTwoChannelMoments)
+    int m_channels = 4;         // the technique's, which the counts use
 };
 
 } // namespace

@@ -305,6 +305,8 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, 
     QString svg;
     for (const ReportRow& r : rows) {
         const SampleStats cost = costOf(r);
+        if (!std::isfinite(cost.median))
+            continue;   // no count on this axis: the table says why
         const double x = c.px(cost.median), y = c.py(errorPercent(r, axis));
         if (isTime(r.costAxis)) {
             svg += QStringLiteral("<line x1=\"%1\" y1=\"%2\" x2=\"%3\" y2=\"%2\" class=\"spread\" stroke=\"%4\"/>")
@@ -324,6 +326,8 @@ QString pointsAndBars(const std::vector<ReportRow>& rows, const Colour& colour, 
         taken.push_back({x - 6, y - 6, x + 6, y + 6});
     }
     for (const ReportRow& r : rows) {
+        if (!std::isfinite(costOf(r).median))
+            continue;
         const QString cost = isTime(r.costAxis)
             ? QStringLiteral("%1 ms (p10 %2, p90 %3)").arg(number(r.frame.median, 2), number(r.frame.p10, 2), number(r.frame.p90, 2))
             : costText(r, costOf(r).median) + QStringLiteral(" (%1 ms)").arg(number(r.frame.median, 2));
@@ -599,7 +603,7 @@ td:first-child,th:first-child{text-align:left}tr.front td{background:#fff4e8}.wr
 .picks dt{margin-top:.5em}.picks dd{margin-left:1.5em;color:#444}
 .key span{display:inline-block;width:12px;height:12px;margin:0 4px 0 12px;vertical-align:middle}
 </style></head><body>
-<h1>Shadow error against run time: %1</h1>
+<h1>Shadow error against %16: %1</h1>
 <p class="facts">%2x%3 pixels, %4 timed frames per configuration after %5 warm-up, shadow pass every frame.<br>
 Renderer: %6%15<br>Machine: %7<br>
 Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of radius %9 (area; %10);
@@ -624,7 +628,10 @@ Reference: one shadow ray per pixel (hard) and %8 per pixel of a disk light of r
                  ? QStringLiteral(" — <b>a software rasteriser: its times are CPU time, and a GPU ranks costs differently</b> (a "
                                   "moment filter's blur or a wide kernel costs far less there); measure on the GPU and put the reports "
                                   "side by side with <code>report --merge</code>")
-                 : QString());
+                 : QString())
+        .arg(rows.empty() || isTime(rows.front().costAxis) ? QStringLiteral("run time")
+             : rows.front().costAxis == CostAxis::Taps   ? QStringLiteral("shadow taps, the same on any GPU")
+                                                          : QStringLiteral("shadow-pass samples, the same on any GPU"));
 }
 
 // Whether this report is one share of a sweep, or several reports put together.
@@ -641,9 +648,12 @@ QString partsNote(const std::vector<ReportRow>& rows, const ReportFacts& facts)
         return QStringLiteral("<p class=\"facts\">Put together from %1 reports (<code>report --merge</code>); the whole run is their times "
                               "added.%2</p>")
             .arg(facts.parts)
-            .arg(severalMachines(rows) ? QStringLiteral(" Measured on several machines: a row's times are compared only with rows of its own "
-                                                        "machine, and each machine has its own front.")
-                                       : QString());
+            .arg(!severalMachines(rows) ? QString()
+                 : rows.empty() || isTime(rows.front().costAxis)
+                     ? QStringLiteral(" Measured on several machines: a row's times are compared only with rows of its own machine, and each "
+                                      "machine has its own front.")
+                     : QStringLiteral(" Measured on several machines: the fronts weigh counts, the same on any GPU, so rows of every machine "
+                                      "are compared."));
     return QString();
 }
 
@@ -653,7 +663,7 @@ QString lightsLegend(const QStringList& lights)
     if (lights.size() <= 1)
         return QString();
     QString legend = QStringLiteral("<p class=\"lights\">Lights (each has its own front; errors under different lights are not comparable, "
-                                    "nor times taken on different machines):");
+                                    "nor times taken on different machines, where the front weighs time):");
     for (qsizetype i = 0; i < lights.size(); ++i)
         legend += QStringLiteral("<br><span style=\"background:%1\"></span>%2").arg(QLatin1String(kLightColours[std::size_t(i) % std::size(kLightColours)]), html(lights[i]));
     return legend + QStringLiteral("</p>");
@@ -687,9 +697,9 @@ QString recommendationSection(const std::vector<ReportRow>& rows, const QStringL
                            .arg(names.join(QStringLiteral(", ")));
         }
     }
-    return section + QStringLiteral("<p class=\"facts\">Two rows tie when neither is clearly better: times whose p10–p90 overlap, "
-                                    "errors whose noise bands overlap (below). Of rows tied in error the faster is picked; of rows tied "
-                                    "in time, for the cheapest, the more accurate.</p>");
+    return section + QStringLiteral("<p class=\"facts\">Two rows tie when neither is clearly better: costs whose bands overlap (times' "
+                                    "p10–p90; counts within about 2 %), errors whose noise bands overlap (below). Of rows tied in error the "
+                                    "cheaper is picked; of rows tied in cost, for the cheapest, the more accurate.</p>");
 }
 
 // Both charts and what their dots, lines and bars mean; a pair per light projection where the
@@ -715,16 +725,20 @@ QString chartsSection(const std::vector<ReportRow>& rows, const QStringList& lig
         section += QStringLiteral("<h2>Mean absolute error against the area light%1</h2>").arg(of);
         section += chart(group, colour, QStringLiteral("MAE of visibility, %"), ErrorAxis::AreaMae);
     }
+    const bool time = rows.empty() || isTime(rows.front().costAxis);
     section += QStringLiteral("<p>Large dots: the Pareto front of each light, on each chart its own; the line steps through those that "
-                              "are more accurate than every faster one. A configuration leaves "
-                              "the front only when another is better on both axes beyond their noise: clearly faster (its p90 below the "
-                              "other's p10; the bars across) and clearly more accurate (their error bands apart; the bars up and down). "
+                              "are more accurate than every %2 one. A configuration leaves the front only when another is "
+                              "better on both axes beyond their noise: %3 and clearly more accurate (their error bands apart; the "
+                              "bars up and down). "
                               "Configurations that tie on either axis stay on the front together. An error is a count of pixels (MAE "
                               "times the pixels measured, as fully wrong pixels), and a count n is known to n ± max(3, 2√n): a sub-texel "
                               "move of camera or light slides the pixels along every shadow edge in or out of error, scattering a count "
                               "by about √n, and fewer than a few pixels are not resolved at all (%1). Identical configurations are "
                               "measured once, their names joined with “=”.</p>")
-                   .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)));
+                   .arg(html(smallestBandText(rows, ErrorAxis::Misclassified)))
+                   .arg(time ? QStringLiteral("faster") : QStringLiteral("cheaper"))
+                   .arg(time ? QStringLiteral("clearly faster (its p90 below the other's p10; the bars across)")
+                             : QStringLiteral("clearly cheaper (a count more than about 2 % below the other's)"));
     return section;
 }
 

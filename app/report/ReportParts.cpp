@@ -174,7 +174,9 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
     r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
     r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
     r.counts = readCounts(json.within(QStringLiteral("counts")), json.object(object, QStringLiteral("counts")));
-    const std::optional<CostAxis> cost = costAxisFromKey(json.text(object, QStringLiteral("cost_axis")));
+    // A report of the version before --cost weighed time.
+    const std::optional<CostAxis> cost = object.contains(QStringLiteral("cost_axis")) ? costAxisFromKey(json.text(object, QStringLiteral("cost_axis")))
+                                                                                       : std::optional(CostAxis::Time);
     if (!cost)
         json.fail(QStringLiteral("cost_axis"), QStringLiteral("is not time, taps or samples"));
     r.costAxis = *cost;
@@ -412,6 +414,11 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
     f.renderer = renderers.join(QStringLiteral("; "));
     f.machine = machines.join(QStringLiteral("; "));
     std::stable_sort(merged.rows.begin(), merged.rows.end(), [](const ReportRow& a, const ReportRow& b) { return a.sweepIndex < b.sweepIndex; });
+    for (const ReportRow& r : merged.rows) {
+        if (r.costAxis != merged.rows.front().costAxis)
+            throw ReportMergeError(QStringLiteral("the reports weigh cost differently (%1 and %2): measure them with the same --cost")
+                                       .arg(costAxisKey(merged.rows.front().costAxis), costAxisKey(r.costAxis)));
+    }
     markParetoFronts(merged.rows);
 
     if (severalMachines(merged.rows)) {
