@@ -18,7 +18,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-#include <QScopeGuard>
 #include <QtTest>
 
 #include <cmath>
@@ -57,6 +56,23 @@ Scene roomScene()
     }
     return s;
 }
+
+// A renderer with maps of its own beside the test's: when it goes, its context goes with it, and
+// the test's renderer's is made current again, whatever the test's outcome.
+class FreshRenderer {
+public:
+    explicit FreshRenderer(HeadlessRenderer& test) : m_test(test) {}
+    ~FreshRenderer()
+    {
+        m_own.reset();
+        m_test.makeCurrent();
+    }
+    HeadlessRenderer* operator->() { return m_own.get(); }
+
+private:
+    HeadlessRenderer& m_test;
+    std::unique_ptr<HeadlessRenderer> m_own = std::make_unique<HeadlessRenderer>();
+};
 
 } // namespace
 
@@ -243,12 +259,7 @@ private Q_SLOTS:
     {
         QFETCH(QStringList, light);
         m_headless->renderer().setScene(std::nullopt);
-        auto fresh = std::make_unique<HeadlessRenderer>();
-        // Its context goes with it, whatever the test's outcome: this one's is then made current.
-        const auto restore = qScopeGuard([&] {
-            fresh.reset();
-            m_headless->makeCurrent();
-        });
+        FreshRenderer fresh(*m_headless);
         const QSize size(160, 90);
         Settings s = presetSettings("seed");
         s.map.size = 256;
@@ -303,11 +314,7 @@ private Q_SLOTS:
         QFETCH(QStringList, first);
         QFETCH(QStringList, then);
         m_headless->renderer().setScene(std::nullopt);
-        auto fresh = std::make_unique<HeadlessRenderer>();
-        const auto restore = qScopeGuard([&] {
-            fresh.reset();
-            m_headless->makeCurrent();
-        });
+        FreshRenderer fresh(*m_headless);
         const QSize size(160, 90);
         const auto settings = [](const QStringList& assignments, const glm::dvec3& light) {
             Settings s = presetSettings("seed");
@@ -331,17 +338,16 @@ private Q_SLOTS:
     // or in RG read the same: the frames are byte for byte alike.
     void twoMomentsReadTheSameWideOrNarrow()
     {
-        const auto restore = qScopeGuard([&] { m_headless->makeCurrent(); });   // the renderers' contexts go with them
         for (const char* mode : {"vsm", "evsm2"}) {
             std::array<QImage, 2> frames;
             for (const bool wide : {true, false}) {
-                HeadlessRenderer own;
-                own.renderer().setWideTwoChannelMoments(wide);
+                FreshRenderer own(*m_headless);
+                own->renderer().setWideTwoChannelMoments(wide);
                 Settings s = presetSettings("torus");
                 s.map.size = 256;
                 applySetting(s, "filter.mode", mode);
-                frames[wide ? 0 : 1] = own.renderScene(s, QSize(160, 90));
-                QCOMPARE(own.renderer().momentsMap()->channels(), wide ? 4 : 2);
+                frames[wide ? 0 : 1] = own->renderScene(s, QSize(160, 90));
+                QCOMPARE(own->renderer().momentsMap()->channels(), wide ? 4 : 2);
             }
             QVERIFY2(frames[0] == frames[1], mode);
         }
