@@ -7,12 +7,14 @@ void CountQuery::begin()
     if (!m_query)
         m_query = makeGlObject<GlQuery, &GlFunctions::glGenQueries>(m_gl);
     m_gl->glBeginQuery(m_target, m_query.id());
+    m_running = true;
     m_ended = false;
 }
 
 void CountQuery::end()
 {
     m_gl->glEndQuery(m_target);
+    m_running = false;
     m_ended = true;
 }
 

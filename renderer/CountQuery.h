@@ -3,6 +3,8 @@
 #include "GlObject.h"
 
 #include <cstdint>
+#include <initializer_list>
+#include <vector>
 
 namespace shadowlab {
 
@@ -19,11 +21,40 @@ public:
     // The count of the last begin()/end(), waiting for it; -1 when none ran.
     std::int64_t result();
 
+    bool running() const { return m_running; }
+
 private:
     GlFunctions* m_gl;
     GLenum m_target;
     GlQuery m_query;
+    bool m_running = false;
     bool m_ended = false;
+};
+
+// Begins `queries` when `on`, and ends whichever still run when it goes: a query left running,
+// as an exception out of a pass would leave it, refuses every later one of its target.
+class CountingScope {
+public:
+    CountingScope(bool on, std::initializer_list<CountQuery*> queries) : m_queries(queries)
+    {
+        if (!on)
+            m_queries.clear();
+        for (CountQuery* q : m_queries)
+            q->begin();
+    }
+    ~CountingScope() { end(); }
+    CountingScope(const CountingScope&) = delete;
+    CountingScope& operator=(const CountingScope&) = delete;
+    void end()
+    {
+        for (CountQuery* q : m_queries) {
+            if (q->running())
+                q->end();
+        }
+    }
+
+private:
+    std::vector<CountQuery*> m_queries;
 };
 
 } // namespace shadowlab

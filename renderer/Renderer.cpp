@@ -81,23 +81,13 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         m_shadowMap.restartSlices();    // a draw this frame, for whatever reason, clears first
     }
     // Render: the shadow pass where its inputs changed, then what it feeds.
-    if (m_counting) {
-        m_shadowPrimitives.begin();
-        m_shadowSamples.begin();
-    }
     storage.takeCounts();   // what a pass did before this frame is not its
-    try {
+    {
+        CountingScope counting(m_counting, {&m_shadowPrimitives, &m_shadowSamples});
         if (virtualMap)
             renderPages(settings, storage, grid, size, timing, stats);
         else if (settings.shadow.enabled)
             renderViews(settings, storage, grid, timing, stats);
-    } catch (...) {
-        // A query left running would refuse every later one.
-        if (m_counting) {
-            m_shadowPrimitives.end();
-            m_shadowSamples.end();
-        }
-        throw;
     }
     countShadowPass(settings, storage, stats);
     buildDepthRange(settings, timing, stats);
@@ -372,8 +362,6 @@ void Renderer::countShadowPass(const Settings& settings, ShadowStorage& storage,
                                                   : storage.bytes();
     counts.tapsPerLookup = settings.shadow.enabled ? shadowTechnique(settings.filter.mode).taps(settings.filter) : 0;
     if (m_counting) {
-        m_shadowPrimitives.end();
-        m_shadowSamples.end();
         counts.shadow.primitives = m_shadowPrimitives.result();
         counts.shadow.samples = m_shadowSamples.result();
     }
@@ -381,8 +369,7 @@ void Renderer::countShadowPass(const Settings& settings, ShadowStorage& storage,
 
 void Renderer::drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats)
 {
-    if (m_counting)
-        m_litPrimitives.begin();
+    CountingScope counting(m_counting, {&m_litPrimitives});
     m_litPass.setCounting(m_counting);
     m_litTimer.begin();
     // Contact shadows march over the casters' depth as this camera sees them: part of the lit
@@ -399,20 +386,14 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
     m_litPass.setShadowViews(&m_update.views());
     m_litPass.setVirtualMap(settings.shadow.enabled && settings.shadow.virtualMap ? &m_virtualUniforms : nullptr);
     m_litPass.setShadowReach(m_skipsOutOfReach ? &m_update.reach() : nullptr);
-    try {
-        stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
-                                          m_depthRange.get(), storageFor(settings).momentsMap());
-    } catch (...) {
-        if (m_counting)
-            m_litPrimitives.end();    // a query left running would refuse every later one
-        throw;
-    }
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
+                                      m_depthRange.get(), storageFor(settings).momentsMap());
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
     stats.counts.lit.draws = stats.litDraws;
     if (m_counting) {
-        m_litPrimitives.end();
+        counting.end();
         stats.counts.lit.primitives = m_litPrimitives.result();
         const LitPass::Fragments fragments = m_litPass.lastFragments();
         stats.counts.lit.samples = fragments.lookup + fragments.plain;
