@@ -54,6 +54,21 @@ AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const Refere
     return result;
 }
 
+const RayTracer& AccuracyMeter::tracerFor(const Scene& scene, const glm::dvec3& origin)
+{
+    TracedScene traced{scene.name, scene.identity, origin, {}};
+    for (const SceneObject& object : scene.objects)
+        traced.casts.push_back(object.castsShadow);
+    if (m_tracer && m_traced == traced && scene.moves()) {
+        m_tracer->pose(scene);
+        return *m_tracer;
+    }
+    m_tracer.reset();   // one Embree scene at a time
+    m_tracer = std::make_unique<RayTracer>(scene, origin);
+    m_traced = std::move(traced);
+    return *m_tracer;
+}
+
 AccuracyResult AccuracyMeter::measure(const VisibilityBuffer& buffer, const Scene& scene, const LightFrame& light,
                                       const Settings& settings, const std::function<void(double)>& progress)
 {
@@ -68,7 +83,7 @@ AccuracyResult AccuracyMeter::measure(const VisibilityBuffer& buffer, const Scen
     } else {
         ReferenceOptions options = m_options;
         options.lightRadius = settings.reference.lightRadius;
-        const RayTracer tracer(scene, buffer.cameraPosition);
+        const RayTracer& tracer = tracerFor(scene, buffer.cameraPosition);
         m_references.insert(m_references.begin(), {key, traceReference(tracer, buffer, light, options, progress)});
         if (m_references.size() > kCachedReferences)
             m_references.pop_back();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "RayTracer.h"
 #include "Scene.h"
 #include "ShadowMetrics.h"
 #include "ShadowReference.h"
@@ -66,8 +67,21 @@ private:
     // and perspective, say) must not trace each again on every switch.
     static constexpr std::size_t kCachedReferences = 4;
 
+    // The tracer of the last scene traced, kept for the next instant of the same scene: its
+    // moving casters are moved (RayTracer::pose), not built again.
+    const RayTracer& tracerFor(const Scene& scene, const glm::dvec3& origin);
+
     ReferenceOptions m_options;
     std::vector<std::pair<ReferenceKey, ReferenceVisibility>> m_references;
+    struct TracedScene {
+        QString name;
+        QByteArray identity;
+        glm::dvec3 origin{0.0};
+        std::vector<bool> casts;
+        bool operator==(const TracedScene&) const = default;
+    };
+    TracedScene m_traced;
+    std::unique_ptr<RayTracer> m_tracer;
     int m_referenceComputations = 0;
 };
 

@@ -3,6 +3,7 @@
 #include "TraceError.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -88,8 +89,12 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
         RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
         auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                      3 * sizeof(float), mesh.vertices.size()));
+        // A moving caster is its mesh in its own space, instanced where it is (pose() moves the
+        // instance); a still one is baked into the scene in world space around the origin.
+        const bool moving = object.motion.has_value();
+        const glm::dmat4 toSpace = moving ? glm::dmat4(1.0) : glm::translate(glm::dmat4(1.0), -m_origin) * object.model;
         for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-            const glm::dvec3 world = glm::dvec3(object.model * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0)) - m_origin;
+            const glm::dvec3 world = glm::dvec3(toSpace * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0));
             vertices[3 * i + 0] = float(world.x);
             vertices[3 * i + 1] = float(world.y);
             vertices[3 * i + 2] = float(world.z);
@@ -119,13 +124,46 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
             m_masks.push_back(std::move(mask));
         }
         rtcCommitGeometry(geometry);
-        rtcAttachGeometry(m_scene, geometry);
+        if (moving) {
+            RTCScene own = rtcNewScene(m_device);
+            rtcSetSceneFlags(own, RTC_SCENE_FLAG_ROBUST);
+            rtcSetSceneBuildQuality(own, RTC_BUILD_QUALITY_HIGH);
+            rtcAttachGeometry(own, geometry);
+            rtcCommitScene(own);
+            RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(instance, own);
+            rtcReleaseScene(own);   // the instance holds it
+            m_instances.push_back({std::size_t(&object - scene.objects.data()), instance});
+            place(m_instances.back(), object.model);
+            rtcAttachGeometry(m_scene, instance);
+            rtcReleaseGeometry(instance);   // the scene holds it
+        } else {
+            rtcAttachGeometry(m_scene, geometry);
+        }
         rtcReleaseGeometry(geometry);
         m_triangles += int(mesh.indices.size() / 3);
     }
     rtcCommitScene(m_scene);
     if (const RTCError error = rtcGetDeviceError(m_device); error != RTC_ERROR_NONE)
         throw TraceError(QStringLiteral("Embree could not build the scene (error %1)").arg(int(error)));
+}
+
+void RayTracer::place(const Instance& instance, const glm::dmat4& model) const
+{
+    const glm::mat4 transform(glm::translate(glm::dmat4(1.0), -m_origin) * model);
+    rtcSetGeometryTransform(instance.geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
+    rtcCommitGeometry(instance.geometry);
+}
+
+void RayTracer::pose(const Scene& scene)
+{
+    if (m_instances.empty())
+        return;
+    for (const Instance& instance : m_instances)
+        place(instance, scene.objects.at(instance.object).model);
+    rtcCommitScene(m_scene);
+    if (const RTCError error = rtcGetDeviceError(m_device); error != RTC_ERROR_NONE)
+        throw TraceError(QStringLiteral("Embree could not move the scene's objects (error %1)").arg(int(error)));
 }
 
 RayTracer::~RayTracer()

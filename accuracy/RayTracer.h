@@ -16,6 +16,8 @@ namespace shadowlab {
 // Embree occlusion queries against a Scene's shadow casters, in world space. Geometry is
 // stored relative to `origin` (pick the camera position) so float precision holds near what
 // is measured even when the scene sits far from the world origin. Queries are thread-safe.
+// Moving casters (SceneObject::motion) are instances of their meshes: pose() moves them to
+// another instant and commits the scene again, without building it anew.
 // Cut-out casters (SceneObject::alphaCutoff) are traced through their holes: an occlusion filter
 // reads the texture's alpha at the hit, bilinear at full resolution as the shadow pass reads it.
 class RayTracer {
@@ -31,6 +33,12 @@ public:
     // occluded() for each, traced 16 at a time, as rays from one point toward one light share
     // most of their way through the scene.
     int occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const;
+
+    // The moving casters placed as `scene`'s models say (the scene this tracer was made from,
+    // posed at another time: Scene::poseAt). Not thread-safe against queries.
+    void pose(const Scene& scene);
+    // How many casters move (are instanced).
+    int movingCasterCount() const { return int(m_instances.size()); }
 
     const glm::dvec3& origin() const { return m_origin; }
     int triangleCount() const { return m_triangles; }
@@ -55,7 +63,14 @@ public:
     };
 
 private:
+    struct Instance {
+        std::size_t object = 0;     // index into the scene's objects
+        RTCGeometry geometry = nullptr;     // owned by the scene it is attached to
+    };
+    void place(const Instance& instance, const glm::dmat4& model) const;
+
     glm::dvec3 m_origin;
+    std::vector<Instance> m_instances;
     RTCDevice m_device = nullptr;
     RTCScene m_scene = nullptr;
     int m_triangles = 0;

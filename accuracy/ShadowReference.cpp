@@ -143,7 +143,8 @@ ReferenceKey referenceKeyFor(const Settings& settings, QSize size, int samplesPe
     return {sceneIdentity(settings.scene), settings.camera, size,
             settings.light.position, settings.light.target,  settings.light.projection,
             settings.light.type, settings.light.type == LightType::Spot ? settings.light.fov : 0.0,
-            settings.reference.lightRadius, samplesPerAxis, settings.objects};
+            settings.reference.lightRadius, samplesPerAxis, settings.objects,
+            sceneMoves(settings.scene) ? settings.animation.time : 0.0};
 }
 
 ReferenceVisibility traceReference(const RayTracer& tracer, const VisibilityBuffer& buffer, const LightFrame& light,

@@ -41,6 +41,7 @@ struct ReferenceKey {
     double lightRadius = 0.0;
     int samplesPerAxis = 0;
     ObjectSwitches objects;         // casters and receivers switched off change what is traced
+    double time = 0.0;              // scene.time where the scene moves (0 where it is still)
 
     bool operator==(const ReferenceKey&) const = default;
 };

@@ -34,13 +34,29 @@ const QStringList& sceneNames()
 
 int cityBuildingCount(const QString& name)
 {
-    if (name == u"city")
+    const QString buildings = name.section(u'+', 0, 0);
+    if (!buildings.startsWith(QStringLiteral("city")))
+        return 0;
+    if (cityVehicleCount(name) < 0)
+        return -1;
+    if (buildings == u"city")
         return kCityBuildings;
-    if (!name.startsWith(QStringLiteral("city:")))
+    if (!buildings.startsWith(QStringLiteral("city:")))
         return 0;
     bool ok = false;
-    const int count = name.mid(5).toInt(&ok);
+    const int count = buildings.mid(5).toInt(&ok);
     return ok && count >= 1 && count <= kMaxCityBuildings ? count : -1;
+}
+
+int cityVehicleCount(const QString& name)
+{
+    if (!name.startsWith(QStringLiteral("city")))
+        return -1;
+    if (!name.contains(u'+'))
+        return 0;
+    bool ok = false;
+    const int count = name.section(u'+', 1).toInt(&ok);
+    return ok && count >= 0 && count <= kMaxCityVehicles && !name.section(u'+', 1).startsWith(u'+') ? count : -1;
 }
 
 bool isPresetName(const QString& name)

@@ -12,11 +12,15 @@ inline constexpr const char* kScenePresetFolder = ":/scenes";
 const QStringList& sceneNames();
 
 // The city preset takes its building count in its name: "city" (kCityBuildings) or "city:N"
-// with N in [1, kMaxCityBuildings].
+// with N in [1, kMaxCityBuildings]; and its traffic after a plus: "city+V" or "city:N+V", V
+// vehicles in [0, kMaxCityVehicles] driving its streets.
 inline constexpr int kCityBuildings = 2000;
 inline constexpr int kMaxCityBuildings = 20000;
-// The buildings of a city name, 0 for any other name (-1: "city:" with a bad count).
+inline constexpr int kMaxCityVehicles = 5000;
+// The buildings of a city name, 0 for any other name (-1: a city name with a bad count).
 int cityBuildingCount(const QString& name);
+// The vehicles of a city name (0 without a plus; -1 for a bad count or not a city).
+int cityVehicleCount(const QString& name);
 // A preset's name: one of sceneNames() or a city with a building count.
 bool isPresetName(const QString& name);
 

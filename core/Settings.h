@@ -214,9 +214,20 @@ struct ObjectSwitches {
     bool operator==(const ObjectSwitches&) const = default;
 };
 
+// The scene's clock: where its moving objects are. A frame is a pure function of its settings,
+// time included; a still scene ignores it.
+struct AnimationSettings {
+    double time = 0.0;                      // seconds since the scene's start, [0, 1e6]
+    bool play = false;                      // the window's clock runs (time advances with the wall clock)
+    double speed = 1.0;                     // scene seconds per wall second while playing, [0.01, 100]
+
+    bool operator==(const AnimationSettings&) const = default;
+};
+
 struct Settings {
     QString scene = QStringLiteral("seed"); // one of sceneNames() (SceneNames.h), or a model or scene file's absolute path
     ObjectSwitches objects;                 // of `scene`
+    AnimationSettings animation;
     LightSettings light;
     MapSettings map;
     BiasSettings bias;

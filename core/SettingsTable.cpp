@@ -44,7 +44,8 @@ constexpr QLatin1String kLight("Light"), kShadowMap("Shadow map"), kBias("Bias")
 Entry sceneKey(const SettingPresentation& look)
 {
     const QStringList names = sceneNames();
-    const QString rangeText = names.join(QStringLiteral(" | ")) + QStringLiteral(" | city:N (N buildings, 1..%1) | a model or scene file").arg(kMaxCityBuildings);
+    const QString rangeText = names.join(QStringLiteral(" | ")) + QStringLiteral(" | city:N (N buildings, 1..%1) | city+V or city:N+V (V vehicles driving, 0..%2) | a model or scene file")
+                                                                        .arg(kMaxCityBuildings).arg(kMaxCityVehicles);
     const KeySpec spec{.key = "scene",
                        .help = "Built-in scene preset, or the path of a model (glTF, OBJ, PLY, STL, COLLADA, FBX) or scene file (.json); "
                                "choosing one also resets light and camera to the scene's",
@@ -61,8 +62,9 @@ Entry sceneKey(const SettingPresentation& look)
                     return;
                 }
                 if (cityBuildingCount(name) < 0)
-                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': a city's building count must be a whole number in [1, %2], e.g. city:8000")
-                                                                     .arg(displayText(v)).arg(kMaxCityBuildings));
+                    throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': a city's building count must be a whole number in [1, %2] and its "
+                                                                                "vehicles one in [0, %3], e.g. city:8000 or city+50")
+                                                                     .arg(displayText(v)).arg(kMaxCityBuildings).arg(kMaxCityVehicles));
                 const QFileInfo file(v.trimmed());
                 if (!file.isFile())
                     throw SettingsError(QStringLiteral("scene"), QStringLiteral("%1%2; check the path").arg(missing(v), didYouMean(v, names)));
@@ -521,6 +523,21 @@ std::vector<Entry> makeEntries()
     e.push_back(objectSwitchKey("objects.no_receive", "Objects of the scene that receive no shadow, always lit and left out of "
                                 "what is measured, by name (or #i), separated by commas",
                                 QStringLiteral("Receives shadows"), &ObjectSwitches::noReceive));
+    e.push_back(number({.key = "scene.time",
+                        .range = {.lo = 0.0, .hi = 1e6},
+                        .help = "Seconds since the scene's start: where its moving objects (shapes' \"motion\", a model's node animation, "
+                                "a city's vehicles) are; a still scene ignores it",
+                        .look = {.label = QStringLiteral("Time"), .unit = QStringLiteral(" s"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 10.0, .group = kScene}},
+                       [](auto& s) -> auto& { return s.animation.time; }));
+    e.push_back(toggle({.key = "scene.play",
+                        .help = "The window's clock runs: scene.time advances with the wall clock times scene.speed, looping over the clip",
+                        .look = {.label = QStringLiteral("Play"), .group = kScene}},
+                       [](auto& s) -> auto& { return s.animation.play; }));
+    e.push_back(number({.key = "scene.speed",
+                        .range = {.lo = 0.01, .hi = 100.0},
+                        .help = "Scene seconds per wall-clock second while playing: below 1 slow motion",
+                        .look = {.label = QStringLiteral("Speed"), .unit = QStringLiteral("×"), .decimals = 2, .sliderLow = 0.05, .sliderHigh = 4.0, .logarithmic = true, .group = kScene}},
+                       [](auto& s) -> auto& { return s.animation.speed; }));
     lightPlacementKeys(e);
     lightFitKeys(e);
     mapKeys(e);

@@ -26,6 +26,8 @@ void addSettingsOptions(QCommandLineParser& parser)
                       QStringLiteral("Start from an artifact preset (%1): its scene and the settings that show the artifact.")
                           .arg(artifactPresetNames().join(QStringLiteral(", "))),
                       QStringLiteral("name")});
+    parser.addOption({QStringLiteral("time"),
+                      QStringLiteral("Seconds into the scene's animation (scene.time): where its moving objects are."), QStringLiteral("s")});
     addImportOptions(parser);
 }
 
@@ -100,6 +102,15 @@ SettingsFromOptions readSettingsOptions(const QCommandLineParser& parser)
     for (const QString& a : assignments)
         applyAssignment(settings, a);
     settings.scene = probe.scene;
+    if (parser.isSet(QStringLiteral("time"))) {
+        try {
+            applySetting(settings, QStringLiteral("scene.time"), parser.value(QStringLiteral("time")));
+        } catch (const SettingsError& e) {
+            throw SettingsError(QStringLiteral("--time"), QString::fromUtf8(e.what()));
+        }
+        if (!sceneMoves(settings.scene))
+            result.warnings << QStringLiteral("--time: nothing in the scene %1 moves, so its frames are the same at any time").arg(displayText(settings.scene));
+    }
 
     for (const SettingsIssue& issue : validate(settings)) {
         if (issue.severity == SettingsIssue::Severity::Error)

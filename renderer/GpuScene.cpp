@@ -100,6 +100,13 @@ void GpuScene::uploadBatches()
     }
 }
 
+bool GpuScene::pose(double t)
+{
+    const std::vector<std::size_t> moved = m_scene.poseAt(t);
+    m_layout.pose(m_scene, moved);
+    return !moved.empty();
+}
+
 void GpuScene::draw(const DrawItem& item, bool colour) const
 {
     const GpuMesh& mesh = item.batch ? m_batches.at(std::size_t(item.mesh)) : m_meshes.at(std::size_t(item.mesh));

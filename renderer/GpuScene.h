@@ -20,7 +20,11 @@ class GpuScene {
 public:
     GpuScene(GlFunctions* gl, Scene scene);
 
+    // The scene, its moving objects where the last pose() put them.
     const Scene& scene() const { return m_scene; }
+    // Places the moving objects where they are at time `t` seconds: whether any moved. A still
+    // scene does nothing. Only transforms change; nothing is uploaded again.
+    bool pose(double t);
     // The scene's bounds, draw items and planes, computed once at upload.
     const SceneLayout& layout() const { return m_layout; }
     const Bounds& bounds() const { return m_layout.bounds(); }

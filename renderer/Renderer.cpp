@@ -63,9 +63,16 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
                                 .arg(settings.shadow.virtualPool).arg(settings.shadow.virtualPool * kVirtualSlotTexels).arg(maxTextureSize()));
     ensureMap(settings, storage, grid, reversed);
     ensureScene(settings);
+    // Moving objects to where they are at the frame's time: everything that depends on where the
+    // casters are is due again, as for a new scene (its geometry stays uploaded).
+    if (m_scene->pose(settings.animation.time))
+        ++m_sceneGeneration;
 
-    // Update: the cameras, and the fit when one of its inputs changed.
-    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, settings, m_fitCamera, size, reversed}, m_scene->bounds());
+    // Update: the cameras, and the fit when one of its inputs changed (the clock through the
+    // scene's generation: a still scene's time changes nothing).
+    Settings fitted = settings;
+    fitted.animation = {};
+    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, std::move(fitted), m_fitCamera, size, reversed}, m_scene->bounds());
     m_camera = frame.camera;
     if (frame.refit)
         refit(frame, storage, stats);

@@ -48,10 +48,12 @@ SceneLayout::SceneLayout(const Scene& scene)
         m_meshBounds.push_back(local);
     }
     for (const SceneObject& object : scene.objects) {
-        m_objectBounds.push_back(m_meshBounds.at(std::size_t(object.mesh)).transformed(object.model));
+        const Bounds& local = m_meshBounds.at(std::size_t(object.mesh));
+        m_objectBounds.push_back(local.transformed(object.model));
         m_objectModels.push_back(object.model);
         m_objectMeshes.push_back(object.mesh);
-        m_bounds.extend(m_objectBounds.back());
+        m_swept.push_back(object.motion ? std::optional(object.motion->sweptBounds(local)) : std::nullopt);
+        m_bounds.extend(m_swept.back() ? *m_swept.back() : m_objectBounds.back());
     }
     for (const Mesh& mesh : scene.meshes)
         m_meshPlanes.push_back(flatPlane(mesh));
@@ -80,14 +82,14 @@ std::optional<WorldPlane> SceneLayout::objectPlane(std::size_t i) const
 std::optional<WorldPlane> SceneLayout::floorPlane(std::size_t i) const
 {
     std::optional<WorldPlane> plane = objectPlane(i);
-    if (!plane)
+    if (!plane || moves(i))
         return std::nullopt;
     // Every other object's box on the front side, or on the plane within rounding.
     const double tolerance = 1e-6 * std::max(glm::length(m_bounds.max - m_bounds.min), 1e-30);
     for (std::size_t j = 0; j < m_objectBounds.size(); ++j) {
         if (j == i)
             continue;
-        for (const glm::dvec3& c : objectBox(j)) {
+        for (const glm::dvec3& c : m_swept[j] ? m_swept[j]->corners() : objectBox(j)) {
             if (glm::dot(c - plane->point, plane->normal) < -tolerance)
                 return std::nullopt;
         }
@@ -115,6 +117,7 @@ std::array<glm::dvec3, 8> SceneLayout::objectBox(std::size_t i) const
 void SceneLayout::layOutItems(const Scene& scene)
 {
     const auto& objects = scene.objects;
+    m_itemOf.assign(objects.size(), 0);
     // Batches: per cell of a grid over the scene's ground plan and per material and flags.
     // Flat one-sided meshes (grounds) stay alone: the shadow reach knows them by their plane.
     using Key = std::tuple<int, int, int, bool, bool, float>;    // cell, texture kind, image, casts, receives, alpha cut-off
@@ -122,7 +125,9 @@ void SceneLayout::layOutItems(const Scene& scene)
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const SceneObject& object = objects[i];
         const Mesh& mesh = scene.meshes.at(std::size_t(object.mesh));
-        if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh))) {
+        // A moving object draws alone too: its draw item follows it.
+        if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh)) || moves(i)) {
+            m_itemOf[i] = m_items.size();
             m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
             m_items.back().floor = m_objectFloors[i];
             continue;
@@ -136,9 +141,12 @@ void SceneLayout::layOutItems(const Scene& scene)
     }
     for (const auto& [key, members] : groups) {
         if (members.size() == 1) {
+            m_itemOf[members.front()] = m_items.size();
             m_items.push_back(aloneItem(scene, members.front(), m_objectBounds[members.front()]));
             continue;
         }
+        for (std::size_t i : members)
+            m_itemOf[i] = m_items.size();
         DrawItem item;
         item.objects = members;
         for (std::size_t i : members)
@@ -150,6 +158,19 @@ void SceneLayout::layOutItems(const Scene& scene)
         item.batch = true;
         item.mesh = m_batchCount++;
         m_items.push_back(std::move(item));
+    }
+}
+
+void SceneLayout::pose(const Scene& scene, const std::vector<std::size_t>& moved)
+{
+    for (std::size_t i : moved) {
+        const SceneObject& object = scene.objects.at(i);
+        m_objectModels.at(i) = object.model;
+        m_objectBounds.at(i) = m_meshBounds.at(std::size_t(object.mesh)).transformed(object.model);
+        DrawItem& item = m_items.at(m_itemOf.at(i));
+        item.bounds = m_objectBounds[i];
+        item.model = object.model;
+        item.normalMatrix = glm::inverseTranspose(glm::dmat3(object.model));
     }
 }
 

@@ -62,12 +62,19 @@ class SceneLayout {
 public:
     explicit SceneLayout(const Scene& scene);
 
-    // World bounds of scene.objects[i] (culling runs per frame).
+    // Places the objects `moved` (indices) where `scene`'s models now put them: their bounds,
+    // boxes and draw items. `scene` is the one this layout was made from, posed (Scene::poseAt).
+    // A moving object is drawn alone and is never a floor, so nothing else changes.
+    void pose(const Scene& scene, const std::vector<std::size_t>& moved);
+    // Whether scene.objects[i] moves.
+    bool moves(std::size_t i) const { return m_swept.at(i).has_value(); }
+
+    // World bounds of scene.objects[i] as posed (culling runs per frame).
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
     // The corners of scene.objects[i]'s mesh's own box through its model (as Bounds::corners()):
     // tighter than objectBounds where the object turns.
     std::array<glm::dvec3, 8> objectBox(std::size_t i) const;
-    // The scene's bounds: Scene::bounds() visits every vertex.
+    // The scene's bounds, with everywhere its moving objects go: Scene::bounds() visits every vertex.
     const Bounds& bounds() const { return m_bounds; }
     // flatPlane() of scene.meshes[mesh].
     const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
@@ -91,6 +98,8 @@ private:
     std::vector<int> m_objectMeshes;
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
     std::vector<std::optional<WorldPlane>> m_objectFloors;     // each object's plane, where it is a floor
+    std::vector<std::optional<Bounds>> m_swept;                // where each moving object goes
+    std::vector<std::size_t> m_itemOf;                         // each object's draw item
     std::vector<DrawItem> m_items;
     Bounds m_bounds;
     int m_batchCount = 0;

@@ -9,7 +9,38 @@ Bounds Scene::worldBounds(const SceneObject& object) const
     Bounds local;
     for (const Vertex& v : meshes.at(std::size_t(object.mesh)).vertices)
         local.extend(glm::dvec3(v.position));
-    return local.transformed(object.model);
+    return object.motion ? object.motion->sweptBounds(local) : local.transformed(object.model);
+}
+
+bool Scene::moves() const
+{
+    return std::any_of(objects.begin(), objects.end(), [](const SceneObject& o) { return o.motion.has_value(); });
+}
+
+double Scene::clipLength() const
+{
+    double length = 0.0;
+    for (const SceneObject& o : objects) {
+        if (o.motion)
+            length = std::max(length, o.motion->length());
+    }
+    return length;
+}
+
+std::vector<std::size_t> Scene::poseAt(double t)
+{
+    std::vector<std::size_t> moved;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        SceneObject& o = objects[i];
+        if (!o.motion)
+            continue;
+        const glm::dmat4 model = o.motion->at(t);
+        if (model != o.model) {
+            o.model = model;
+            moved.push_back(i);
+        }
+    }
+    return moved;
 }
 
 Bounds Scene::casterBounds() const

@@ -4,6 +4,7 @@
 
 #include "Bounds.h"
 #include "Mesh.h"
+#include "Motion.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -34,6 +35,9 @@ struct SceneObject {
     // eye (leaves, fences). 0: opaque, drawn whole whatever its alpha.
     float alphaCutoff = 0.0f;           // [0, 1]
     float baseAlpha = 1.0f;             // the base colour's alpha, [0, 1]
+    // How it moves: its placement at time t is motion->at(t), and `model` is that at the scene's
+    // time (0 as loaded). None: a static object, which nothing about time touches.
+    std::optional<Motion> motion{};
 };
 
 // Whether the object is a cut-out (a mask drawn and traced through its holes).
@@ -56,6 +60,7 @@ struct Scene {
     QByteArray identity;
     QStringList warnings;               // what the import changed or ignored, said once on load
 
+    // World bounds of the object; of everywhere it goes, for one that moves.
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts
     Bounds bounds() const;              // everything
@@ -63,6 +68,13 @@ struct Scene {
     // Everything but the checkered ground plane a preset or a loaded model stands on: the size
     // cameras, lights and sliders follow (the whole scene when there is nothing else).
     Bounds modelBounds() const;
+    // Whether any object moves.
+    bool moves() const;
+    // The longest cycle of any moving object's motion, in seconds; 0 for a still scene.
+    double clipLength() const;
+    // Every moving object's model set to its placement at time `t` seconds; the indices of those
+    // that moved (none for a still scene, whatever t).
+    std::vector<std::size_t> poseAt(double t);
 };
 
 } // namespace shadowlab

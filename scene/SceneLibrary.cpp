@@ -14,6 +14,7 @@
 #include <QJsonObject>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -49,6 +50,46 @@ constexpr double kCitySide = 1200.0;        // metres: 1.44 km²
 constexpr int kCityBlocks = 12;             // per side
 constexpr double kCityStreet = 20.0;        // street width, metres
 constexpr double kCityPitch = kCitySide / kCityBlocks;
+
+// `count` vehicles driving the city's streets: boxes the size of cars, vans and buses, each up
+// and down one street (a path there and back, its own speed and start), in the lane of its
+// direction. They are the city's moving casters: their shadows cross the streets and the
+// buildings' walls.
+void addVehicles(Scene& s, int count)
+{
+    if (count <= 0)
+        return;
+    s.meshes.push_back(meshes::cube());
+    const int box = int(s.meshes.size() - 1);
+    const std::uint32_t seed = 777u;
+    const double span = kCitySide * 0.5 - kCityStreet;
+    for (int n = 0; n < count; ++n) {
+        const auto u = [&](std::uint32_t k) { return presetRandom(seed, std::uint32_t(8 * n) + k); };
+        const bool alongX = u(0) < 0.5;
+        // The streets run between blocks: kCityBlocks + 1 lines at the pitch.
+        const int street = std::min(int(u(1) * (kCityBlocks + 1)), kCityBlocks);
+        const double across = -kCitySide * 0.5 + street * kCityPitch + (u(2) < 0.5 ? -1.0 : 1.0) * kCityStreet * 0.25;
+        const double length = u(3) < 0.15 ? 12.0 : (u(3) < 0.4 ? 6.0 : 4.5);
+        const double height = length > 10.0 ? 3.2 : (length > 5.0 ? 2.4 : 1.5);
+        const glm::dvec3 half(length * 0.5, height * 0.5, 1.0);
+        const double speed = 8.0 + 8.0 * u(4);                      // m/s
+        const double period = 2.0 * 2.0 * span / speed;             // there and back
+        const auto at = [&](double along) {
+            return alongX ? glm::dvec3(along, half.y, across) : glm::dvec3(across, half.y, along);
+        };
+        Motion motion;
+        motion.kind = Motion::Kind::Path;
+        const glm::dquat heading = glm::angleAxis(alongX ? 0.0 : glm::half_pi<double>(), glm::dvec3(0.0, 1.0, 0.0));
+        motion.keys = {{0.0, at(-span), heading}, {period * 0.5, at(span), heading}, {period, at(-span), heading}};
+        motion.period = period;
+        motion.start = period * u(5);
+        motion.post = glm::scale(glm::dmat4(1.0), half);
+        SceneObject vehicle{QStringLiteral("vehicle %1").arg(n + 1), box, motion.at(0.0), TextureKind::Flat, true, true,
+                            glm::vec3(float(0.3 + 0.6 * u(6)), float(0.3 + 0.4 * u(7)), float(0.35 + 0.5 * u(2)))};
+        vehicle.motion = motion;
+        s.objects.push_back(std::move(vehicle));
+    }
+}
 
 Scene cityScene(const QString& name, int buildings)
 {
@@ -93,6 +134,7 @@ Scene cityScene(const QString& name, int buildings)
         s.objects.push_back({QStringLiteral("building %1").arg(n + 1), cube, model, TextureKind::Wood, true, true,
                              glm::vec3(float(0.55 + 0.35 * r2), float(0.55 + 0.3 * r1), float(0.6 + 0.3 * r4))});
     }
+    addVehicles(s, cityVehicleCount(name));
     return s;
 }
 
@@ -309,6 +351,19 @@ bool sceneHasCutouts(const QString& name)
         return loadSceneFile(name)->hasCutouts();
     } catch (const std::exception&) {
         return false;   // the load's own error is said where the scene is built
+    }
+}
+
+bool sceneMoves(const QString& name)
+{
+    if (cityBuildingCount(name) > 0)
+        return cityVehicleCount(name) > 0;
+    try {
+        if (isPresetName(name))
+            return buildScene(name).moves();
+        return loadSceneFile(name)->moves();
+    } catch (const std::exception&) {
+        return false;
     }
 }
 

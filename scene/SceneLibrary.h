@@ -50,6 +50,9 @@ QString sceneIdentity(const QString& name);
 // Whether the scene `name` (a preset, or a file loaded as buildScene() loads it) has cut-out
 // objects; false for a name that does not load.
 bool sceneHasCutouts(const QString& name);
+// Whether the scene `name` has moving objects (its frames depend on scene.time); false for a
+// name that does not load.
+bool sceneMoves(const QString& name);
 
 // A camera path from `start` (a scene's camera): `frames` cameras, each `step` world units
 // along (sideways and a little forward, the view keeping its direction), for measuring what

@@ -128,6 +128,8 @@ void append(Scene& scene, const Scene& part, const glm::dmat4& placement, bool c
         if (object.image >= 0)
             object.image += imageOffset;
         object.model = placement * object.model;
+        if (object.motion)
+            object.motion->pre = placement * object.motion->pre;
         object.castsShadow = casts;
         object.receivesShadow = receives;
         scene.objects.push_back(std::move(object));

@@ -38,6 +38,7 @@ SettingsChange::Sides CompareController::set(std::size_t side, const Settings& s
     }
     m_sides[i] = settings;
     m_sides[other].camera = settings.camera;
+    m_sides[other].animation = settings.animation;     // one clock for both sides
     return before;
 }
 
@@ -72,9 +73,12 @@ void CompareController::show(const SettingsChange::Sides& target, const Settings
         // camera then goes back with it.
         if (!from[i] || from[i]->scene == s.scene)
             s.camera = m_sides[i].camera;
-        // A light the animation moved since keeps its place unless this step moved it.
+        // A light the animation moved since keeps its place unless this step moved it; so does
+        // the clock, which plays on.
         if (from[i] && from[i]->light.position == s.light.position)
             s.light.position = m_sides[i].light.position;
+        if (from[i] && from[i]->animation.time == s.animation.time)
+            s.animation.time = m_sides[i].animation.time;
         try {
             ensureValid(s);
         } catch (const SettingsError&) {
@@ -84,6 +88,21 @@ void CompareController::show(const SettingsChange::Sides& target, const Settings
     }
     m_sides = next;
     m_sides[0].camera = m_sides[1].camera = next[m_selected].camera;  // one camera for both sides
+    m_sides[0].animation = m_sides[1].animation = next[m_selected].animation;
+}
+
+void CompareController::setTime(double time)
+{
+    for (Settings& settings : m_sides)
+        settings.animation.time = time;
+}
+
+void CompareController::advanceClock(double seconds, double clipLength)
+{
+    if (!(clipLength > 0.0))
+        return;
+    const AnimationSettings& clock = m_sides[m_selected].animation;
+    setTime(std::fmod(clock.time + seconds * clock.speed, clipLength));
 }
 
 void CompareController::turnLights(double radians)

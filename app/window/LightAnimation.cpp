@@ -4,29 +4,9 @@
 
 namespace shadowlab {
 
-namespace {
-
-constexpr int kAnimationIntervalMs = 33;
-
-} // namespace
-
 LightAnimation::LightAnimation(QObject* parent) : QObject(parent)
 {
-    m_timer.setInterval(kAnimationIntervalMs);
-    connect(&m_timer, &QTimer::timeout, this, [this] {
-        const double seconds = double(m_clock.restart()) * 1e-3;
-        emit turned(glm::radians(m_speed * seconds));
-    });
-}
-
-void LightAnimation::setRunning(bool running)
-{
-    if (running && !m_timer.isActive()) {
-        m_clock.start();
-        m_timer.start();
-    } else if (!running) {
-        m_timer.stop();
-    }
+    connect(&m_ticker, &WallTicker::ticked, this, [this](double seconds) { emit turned(glm::radians(m_speed * seconds)); });
 }
 
 } // namespace shadowlab

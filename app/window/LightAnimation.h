@@ -1,22 +1,19 @@
 #pragma once
 
-#include <QElapsedTimer>
-#include <QObject>
-#include <QTimer>
+#include "WallTicker.h"
 
 namespace shadowlab {
 
-// Animate Light: a tick about 30 times a second that says how far the lights turn around the
-// vertical through their targets, by elapsed time, not by tick, so the speed holds when frames
-// are slow.
+// Animate Light: how far the lights turn around the vertical through their targets, tick by
+// tick, at a speed in degrees per second of wall-clock time.
 class LightAnimation : public QObject {
     Q_OBJECT
 
 public:
     explicit LightAnimation(QObject* parent = nullptr);
 
-    void setRunning(bool running);
-    bool isRunning() const { return m_timer.isActive(); }
+    void setRunning(bool running) { m_ticker.setRunning(running); }
+    bool isRunning() const { return m_ticker.isRunning(); }
     double speed() const { return m_speed; }
     void setSpeed(double degreesPerSecond) { m_speed = degreesPerSecond; }
 
@@ -24,8 +21,7 @@ signals:
     void turned(double radians);
 
 private:
-    QTimer m_timer;
-    QElapsedTimer m_clock;
+    WallTicker m_ticker;
     double m_speed = 30.0;     // degrees per second
 };
 

@@ -5,6 +5,7 @@
 #include "ArtifactsHelp.h"
 #include "DepthMapView.h"
 #include "LightAnimation.h"
+#include "TimelineBar.h"
 #include "Loupe.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
@@ -171,6 +172,7 @@ void MainWindow::createDocks()
 
     m_animation = new LightAnimation(this);
     connect(m_animation, &LightAnimation::turned, this, &MainWindow::turnLights);
+    createTimeline();
 
     // Over the docks the wheel scrolls; a field takes it once clicked.
     WheelGuard::guardFields(m_dock);
@@ -180,7 +182,7 @@ void MainWindow::createDocks()
 
 void MainWindow::frameRendered(Side side)
 {
-    m_timing->record(index(side), m_animation->isRunning());
+    m_timing->record(index(side), m_animation->isRunning() || (settings(side).animation.play && m_clipLength > 0.0));
     m_session->drawn(settings(side).scene);
     // Both sides are measured over side A's pixels (one reference serves both).
     if (side == Side::A)
@@ -193,6 +195,8 @@ void MainWindow::frameRendered(Side side)
         // The dock's sliders follow the size of the scene now drawn.
         if (const Scene* scene = renderer->scene(); scene && scene->name != m_sizedScene) {
             m_sizedScene = scene->name;
+            m_clipLength = scene->clipLength();
+            showClock();
             // A frozen frustum belongs to the scene it was frozen in.
             if (m_freezeAction && m_freezeAction->isChecked())
                 m_freezeAction->setChecked(false);
@@ -543,6 +547,7 @@ void MainWindow::pushSettings()
         m_views[0]->setWipe(m_sides.settings(1));
     m_accuracyDock->setSides(m_sides.settings(0), compareMode() ? std::optional(m_sides.settings(1)) : std::nullopt, int(m_sides.selected()));
     updateCaptions();
+    showClock();
     m_session->changed();
 }
 
@@ -668,6 +673,45 @@ void MainWindow::setLightAnimation(bool animate, double degreesPerSecond)
         m_animateAction->setChecked(animate);
     }
     m_animation->setRunning(animate);
+}
+
+void MainWindow::createTimeline()
+{
+    m_timeline = new TimelineBar(this);
+    addToolBar(Qt::BottomToolBarArea, m_timeline);
+    connect(m_timeline, &TimelineBar::playToggled, this, [this](bool play) {
+        Settings s = m_sides.selectedSettings();
+        s.animation.play = play;
+        applyEdit(s);
+    });
+    connect(m_timeline, &TimelineBar::ticked, this, &MainWindow::advanceClock);
+    connect(m_timeline, &TimelineBar::scrubStarted, this, [this] { m_scrubStart = {m_sides.settings(0), m_sides.settings(1)}; });
+    connect(m_timeline, &TimelineBar::scrubbed, this, &MainWindow::scrubTo);
+    connect(m_timeline, &TimelineBar::scrubFinished, this, [this] {
+        if (m_scrubStart[0] && m_scrubStart[0]->animation.time != m_sides.settings(0).animation.time)
+            recordChange(m_scrubStart, selectedSide(), tr("Set scene.time"));
+        m_scrubStart = {};
+    });
+}
+
+void MainWindow::advanceClock(double wallSeconds)
+{
+    m_sides.advanceClock(wallSeconds, m_clipLength);
+    m_dock->updateFrom(m_sides.selectedSettings(), {QStringLiteral("scene.time")});
+    pushSettings();
+}
+
+void MainWindow::scrubTo(double time)
+{
+    m_sides.setTime(time);
+    m_dock->updateFrom(m_sides.selectedSettings(), {QStringLiteral("scene.time")});
+    pushSettings();
+}
+
+void MainWindow::showClock()
+{
+    const AnimationSettings& clock = m_sides.selectedSettings().animation;
+    m_timeline->show(m_clipLength, clock.time, clock.play);
 }
 
 void MainWindow::turnLights(double radians)

@@ -25,6 +25,7 @@ namespace shadowlab {
 class AccuracyDock;
 class DepthMapView;
 class LightAnimation;
+class TimelineBar;
 class PropertiesDock;
 class SceneOpener;
 class SceneView;
@@ -149,6 +150,12 @@ private:
     void updateStatus();
     // The animation's turn of both lights.
     void turnLights(double radians);
+    // The scene's clock: both sides share it, and neither playing nor scrubbing is an undo step
+    // per frame (a scrub is one when it ends; play and pause are one each).
+    void createTimeline();
+    void advanceClock(double wallSeconds);
+    void scrubTo(double time);
+    void showClock();
 
     void saveScreenshotInteractively();
     void showArtifactsHelp();
@@ -173,6 +180,9 @@ private:
 
     WindowStatusBar* m_status = nullptr;
     LightAnimation* m_animation = nullptr;
+    TimelineBar* m_timeline = nullptr;
+    double m_clipLength = 0.0;                  // the shown scene's clip (0: nothing moves)
+    SettingsChange::Sides m_scrubStart;         // both sides when a scrub began: its undo step
 
     QAction* m_compareAction = nullptr;
     QAction* m_copyAction = nullptr;
