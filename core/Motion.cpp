@@ -94,7 +94,7 @@ glm::dmat4 Motion::at(double t) const
     return pre * k * post;
 }
 
-Bounds Motion::sweptBounds(const Bounds& local) const
+Bounds Motion::sweptBounds(const Bounds& local, bool padded) const
 {
     Bounds swept;
     if (local.isEmpty())
@@ -119,8 +119,10 @@ Bounds Motion::sweptBounds(const Bounds& local) const
             last[c] = p;
         }
     }
-    swept.min -= glm::dvec3(0.5 * step);
-    swept.max += glm::dvec3(0.5 * step);
+    if (padded) {
+        swept.min -= glm::dvec3(0.5 * step);
+        swept.max += glm::dvec3(0.5 * step);
+    }
     return swept;
 }
 

@@ -53,8 +53,10 @@ struct Motion {
     // How long one cycle takes: the clip a timeline shows for it.
     double length() const { return period; }
     // Bounds of `local` (object space) under at(t) for every t: a sampled sweep, grown by half
-    // the largest step a corner takes between samples, so it holds between them too.
-    Bounds sweptBounds(const Bounds& local) const;
+    // the largest step a corner takes between samples, so it holds between them too. Unpadded,
+    // the samples alone: what the floor test reads, where half a step below a ground the object
+    // stands on would cost the ground its place out of the map.
+    Bounds sweptBounds(const Bounds& local, bool padded = true) const;
 
     bool operator==(const Motion&) const = default;
 };

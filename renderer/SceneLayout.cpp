@@ -53,6 +53,7 @@ SceneLayout::SceneLayout(const Scene& scene)
         m_objectModels.push_back(object.model);
         m_objectMeshes.push_back(object.mesh);
         m_swept.push_back(object.motion ? std::optional(object.motion->sweptBounds(local)) : std::nullopt);
+        m_sampled.push_back(object.motion ? std::optional(object.motion->sweptBounds(local, false)) : std::nullopt);
         m_bounds.extend(m_swept.back() ? *m_swept.back() : m_objectBounds.back());
     }
     for (const Mesh& mesh : scene.meshes)
@@ -89,7 +90,7 @@ std::optional<WorldPlane> SceneLayout::floorPlane(std::size_t i) const
     for (std::size_t j = 0; j < m_objectBounds.size(); ++j) {
         if (j == i)
             continue;
-        for (const glm::dvec3& c : m_swept[j] ? m_swept[j]->corners() : objectBox(j)) {
+        for (const glm::dvec3& c : m_sampled[j] ? m_sampled[j]->corners() : objectBox(j)) {
             if (glm::dot(c - plane->point, plane->normal) < -tolerance)
                 return std::nullopt;
         }

@@ -99,6 +99,7 @@ private:
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
     std::vector<std::optional<WorldPlane>> m_objectFloors;     // each object's plane, where it is a floor
     std::vector<std::optional<Bounds>> m_swept;                // where each moving object goes
+    std::vector<std::optional<Bounds>> m_sampled;              // ... at the sweep's samples (the floor test)
     std::vector<std::size_t> m_itemOf;                         // each object's draw item
     std::vector<DrawItem> m_items;
     Bounds m_bounds;
