@@ -61,9 +61,11 @@ void renderRunFrame(TimedRun& run, QSize size, int index)
     HeadlessRenderer& h = *run.headless;
     if (run.moving)
         h.renderer().invalidateShadowMap();
-    if (!run.cameraPath.empty()) {
+    if (!run.cameraPath.empty() || run.timeStep > 0.0) {
         Settings moved = run.settings;
-        moved.camera = run.cameraPath[std::size_t(index) % run.cameraPath.size()];
+        if (!run.cameraPath.empty())
+            moved.camera = run.cameraPath[std::size_t(index) % run.cameraPath.size()];
+        moved.animation.time += run.timeStep * index;
         h.renderFrame(moved, size, TimingMode::Finish);
     } else {
         h.renderFrame(run.settings, size, TimingMode::Finish);

@@ -56,6 +56,8 @@ struct TimedRun {
     FrameSamples samples;
     // A moving camera: frame i (warm-up included) uses cameraPath[i % size]; empty: still.
     std::vector<CameraSettings> cameraPath;
+    // The scene playing: frame i is at settings.animation.time + i * timeStep seconds; 0: still.
+    double timeStep = 0.0;
 };
 
 // The one timing loop, used by `bench`, `report` and the accuracy dock: `warmup` untimed then

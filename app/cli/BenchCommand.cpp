@@ -33,6 +33,7 @@ struct Phase {
     Settings settings;
     bool moving = false;    // re-render the shadow map every frame, as with a moving light
     std::vector<CameraSettings> cameraPath;     // a moving camera (empty: still)
+    double timeStep = 0.0;  // the scene playing: seconds of scene.time a frame (0: still)
     std::unique_ptr<HeadlessRenderer> headless;
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     std::vector<double> blurWall;
@@ -82,7 +83,7 @@ void runInterleaved(std::vector<Phase>& phases, QSize size, int warmup, int fram
             anchorPhase = &p;
             continue;
         }
-        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}, p.cameraPath});
+        runs.push_back({p.headless.get(), p.settings, p.moving, false, {}, p.cameraPath, p.timeStep});
         timed.push_back(&p);
     }
     std::unique_ptr<TutorialAnchor> anchor;
@@ -187,7 +188,9 @@ void addBenchOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("warmup"), QStringLiteral("Unmeasured frames first (default 10)."), QStringLiteral("n"),
                       QStringLiteral("10")});
     parser.addOption({QStringLiteral("phase"), QStringLiteral("steady, moving-camera (the scene's camera path, light fitted to it every frame; with and without "
-                                     "shadows), moving-light, both (steady and moving-light) or all (default all)."),
+                                     "shadows), moving-light, moving-casters (the scene playing at 60 frames a second of scene time: "
+                                     "its moving objects' views redrawn), both (steady and moving-light) or all (default all; "
+                                     "moving-casters where the scene moves)."),
                       QStringLiteral("name"), QStringLiteral("all")});
     parser.addOption({QStringLiteral("baseline"),
                       QStringLiteral("Also time a typical tutorial configuration of the same scene (pcf 3x3, 1024 map, shadow pass every frame).")});
@@ -214,11 +217,17 @@ struct BenchRequest {
     bool baseline = false;          // also the tutorial's configuration
     bool anchor = false;            // also the tutorial's own program
     bool withoutShadows = false;    // also the still frame without shadows
+    bool moves = false;             // the scene has moving objects
 };
 
 bool wantsSteady(const BenchRequest& r)
 {
     return r.phase == u"all" || r.phase == u"both" || r.phase == u"steady";
+}
+
+bool wantsMovingCasters(const BenchRequest& r)
+{
+    return r.phase == u"moving-casters" || (r.phase == u"all" && r.moves);
 }
 
 bool wantsMovingCamera(const BenchRequest& r)
@@ -238,12 +247,17 @@ BenchRequest readBenchRequest(const QCommandLineParser& parser)
     for (const SceneObject& object : scene.objects)
         r.triangles += scene.meshes.at(std::size_t(object.mesh)).indices.size() / 3;
     r.objects = scene.objects.size();
+    r.moves = scene.moves();
     r.size = parseSize(parser.value(QStringLiteral("size")), QStringLiteral("size"), kBenchSize);
     r.frames = parseCount(parser.value(QStringLiteral("frames")), QStringLiteral("frames"), 1, 100000);
     r.warmup = parseCount(parser.value(QStringLiteral("warmup")), QStringLiteral("warmup"), 0, 10000);
     r.phase = parser.value(QStringLiteral("phase"));
-    if (r.phase != u"both" && r.phase != u"all" && r.phase != u"steady" && r.phase != u"moving-light" && r.phase != u"moving-camera")
-        throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, both or all").arg(r.phase));
+    if (r.phase != u"both" && r.phase != u"all" && r.phase != u"steady" && r.phase != u"moving-light" && r.phase != u"moving-camera"
+        && r.phase != u"moving-casters")
+        throw UsageError(QStringLiteral("--phase: '%1' is not a phase; choose steady, moving-camera, moving-light, moving-casters, both or all").arg(r.phase));
+    if (r.phase == u"moving-casters" && !r.moves)
+        throw UsageError(QStringLiteral("--phase moving-casters: nothing in the scene %1 moves; choose a scene that does, e.g. --scene swing or "
+                                        "--scene city+50").arg(displayText(r.settings.scene)));
     r.baseline = parser.isSet(QStringLiteral("baseline"));
     r.anchor = parser.isSet(QStringLiteral("anchor"));
     r.withoutShadows = parser.isSet(QStringLiteral("without-shadows"));
@@ -287,6 +301,10 @@ std::vector<Phase> makePhases(const BenchRequest& r)
         withoutShadows.shadow.enabled = false;
         addPhase("moving-camera-no-shadows", "the same camera walk with shadow.enabled=false", withoutShadows, false);
         phases.back().cameraPath = cameraPath(r.settings.camera, 64, 0.05);
+    }
+    if (wantsMovingCasters(r)) {
+        addPhase("moving-casters", "the scene playing, 1/60 s of scene.time a frame: the views its moving objects cross redrawn", r.settings, false);
+        phases.back().timeStep = 1.0 / 60.0;
     }
     if (r.baseline)
         addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
