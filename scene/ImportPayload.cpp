@@ -18,7 +18,7 @@ namespace {
 
 constexpr char kMagic[] = "SLIMPORT";
 constexpr char kTrailer[] = "END.";
-constexpr quint32 kVersion = 2;
+constexpr quint32 kVersion = 3;     // 3: objects carry their motion
 constexpr quint32 kMaxStringBytes = 1 << 16;
 constexpr quint32 kMaxWarnings = 1024;
 constexpr std::size_t kMaxObjects = kMaxModelTriangles;    // one triangle each at the most
@@ -123,6 +123,103 @@ bool finite(const glm::vec3& v)
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+void putVector(Writer& out, const glm::dvec3& v)
+{
+    for (int i = 0; i < 3; ++i)
+        out.put(v[i]);
+}
+
+void putMatrix(Writer& out, const glm::dmat4& m)
+{
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            out.put(m[c][r]);
+    }
+}
+
+void putMotion(Writer& out, const Motion& motion)
+{
+    out.put(quint8(motion.kind));
+    out.put(quint8(motion.smooth));
+    out.put(motion.period);
+    out.put(motion.start);
+    out.put(motion.amplitude);
+    putVector(out, motion.point);
+    putVector(out, motion.axis);
+    putMatrix(out, motion.pre);
+    putMatrix(out, motion.post);
+    out.put(quint32(motion.keys.size()));
+    for (const MotionKey& key : motion.keys) {
+        out.put(key.time);
+        putVector(out, key.position);
+        for (const double q : {key.rotation.w, key.rotation.x, key.rotation.y, key.rotation.z})
+            out.put(q);
+        putVector(out, key.scale);
+    }
+}
+
+glm::dvec3 readVector(Reader& in)
+{
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = in.get<double>();
+    return v;
+}
+
+// A motion's fixed placement: finite, as motionProblem() does not look at it.
+glm::dmat4 readMatrix(Reader& in)
+{
+    glm::dmat4 m;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            m[c][r] = in.get<double>();
+            if (!std::isfinite(m[c][r]))
+                throw Malformed{QStringLiteral("a motion's fixed placement is not finite")};
+        }
+    }
+    return m;
+}
+
+constexpr std::size_t kMotionKeyBytes = 11 * sizeof(double);
+
+// The motion of `object`, checked as a scene file's is (motionProblem()): finite numbers, key
+// times from 0 increasing, unit rotations, at most kMaxMotionKeys keys.
+Motion readMotion(Reader& in, const QString& object)
+{
+    Motion motion;
+    const quint8 kind = in.get<quint8>();
+    if (kind > quint8(Motion::Kind::Path))
+        throw Malformed{QStringLiteral("object '%1' has motion kind %2").arg(object).arg(kind)};
+    motion.kind = Motion::Kind(kind);
+    motion.smooth = in.get<quint8>() != 0;
+    motion.period = in.get<double>();
+    motion.start = in.get<double>();
+    motion.amplitude = in.get<double>();
+    motion.point = readVector(in);
+    motion.axis = readVector(in);
+    motion.pre = readMatrix(in);
+    motion.post = readMatrix(in);
+    const std::size_t keys = in.count(kMaxMotionKeys, kMotionKeyBytes, "motion key");
+    motion.keys.resize(keys);
+    for (MotionKey& key : motion.keys) {
+        key.time = in.get<double>();
+        key.position = readVector(in);
+        key.rotation.w = in.get<double>();
+        key.rotation.x = in.get<double>();
+        key.rotation.y = in.get<double>();
+        key.rotation.z = in.get<double>();
+        key.scale = readVector(in);
+        // Drift that rounding leaves is put right; a rotation of unit length passes as sent (to
+        // the bit, as the worker made it), one further off is refused below.
+        const double drift = std::abs(glm::length(key.rotation) - 1.0);
+        if (drift > 1e-12 && drift <= 1e-4)
+            key.rotation = glm::normalize(key.rotation);
+    }
+    if (const QString problem = motionProblem(motion); !problem.isEmpty())
+        throw Malformed{QStringLiteral("the motion of object '%1': %2").arg(object, problem)};
+    return motion;
+}
+
 Mesh readMesh(Reader& in, std::size_t& triangles)
 {
     Mesh mesh;
@@ -211,6 +308,11 @@ SceneObject readObject(Reader& in, const Scene& scene)
         throw Malformed{QStringLiteral("an object's alpha cut-off or base alpha is outside [0, 1]")};
     object.alphaCutoff = cutoff;
     object.baseAlpha = alpha;
+    if (in.get<quint8>() != 0) {
+        object.motion = readMotion(in, object.name);
+        // Where it is at 0 is the motion's to say, whatever placement came with it.
+        object.model = object.motion->at(0.0);
+    }
     return object;
 }
 
@@ -238,7 +340,7 @@ Scene readScene(Reader& in)
     const std::size_t images = in.count(kMaxWarnings, 12, "texture");
     for (std::size_t i = 0; i < images; ++i)
         scene.images.push_back(readImage(in));
-    const std::size_t objects = in.count(kMaxObjects, 4 + 4 + 128 + 3 + 12 + 4 + 8, "object");
+    const std::size_t objects = in.count(kMaxObjects, 4 + 4 + 128 + 3 + 12 + 4 + 8 + 1, "object");
     scene.objects.reserve(objects);
     for (std::size_t i = 0; i < objects; ++i)
         scene.objects.push_back(readObject(in, scene));
@@ -297,6 +399,9 @@ QByteArray encodeImportedScene(const Scene& scene)
         out.put(qint32(object.image));
         out.put(object.alphaCutoff);
         out.put(object.baseAlpha);
+        out.put(quint8(object.motion.has_value()));
+        if (object.motion)
+            putMotion(out, *object.motion);
     }
     out.raw(kTrailer, 4);
     return out.take();

@@ -1,6 +1,7 @@
 #include "ModelImporter.h"
 
 #include "Limits.h"
+#include "NodeAnimation.h"
 #include "SceneFileError.h"
 
 #include <assimp/DefaultIOSystem.h>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 
 namespace shadowlab {
@@ -103,16 +105,6 @@ public:
     std::set<QString> opened;
 };
 
-glm::dmat4 toGlm(const aiMatrix4x4& a)
-{
-    glm::dmat4 m(1.0);
-    for (int row = 0; row < 4; ++row) {
-        for (int col = 0; col < 4; ++col)
-            m[col][row] = a[unsigned(row)][unsigned(col)];
-    }
-    return m;
-}
-
 bool isFinite(const aiVector3D& v)
 {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -184,6 +176,10 @@ struct Importing {
     std::map<unsigned, int> imageOfMaterial;        // -1: no usable texture
     std::set<QString> extraFiles;                   // textures read, for the identity
     std::set<QString> ignored;                      // material properties not drawn
+    NodeAnimation animation;                        // the file's first animation
+    QStringList stillNodes;                         // animated, but with numbers that do not hold together
+    QString stillProblem;                           // what is wrong with the first of them
+    bool resampled = false;                         // an animation with more key times than kMaxMotionKeys
 };
 
 QString texturePath(const aiMaterial* material, aiTextureType& type)
@@ -357,7 +353,27 @@ void convertMeshes(Importing& in)
     }
 }
 
-void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, int depth)
+// Where the objects of an animated node sit at time 0 and how they move (`object`'s model and
+// motion): a path through the node's placements over the clip. Nothing is applied above the
+// root node (checkPlacedSize() scales afterwards, `pre` included), so pre and post are the
+// identity: the mesh is in node space. A node the animation holds still gets no motion, only
+// its pose; one whose keys do not hold together stays where its node puts it.
+void animate(Importing& in, const aiNode* node, const NodePose& pose, SceneObject& object)
+{
+    in.resampled = in.resampled || pose.resampled;
+    const Motion motion = in.animation.motionOf(pose);
+    if (const QString problem = motionProblem(motion); !problem.isEmpty()) {
+        if (in.stillNodes.isEmpty())
+            in.stillProblem = problem;
+        in.stillNodes << QString::fromUtf8(node->mName.C_Str());
+        return;
+    }
+    object.model = motion.at(0.0);
+    if (!holdsStill(pose))
+        object.motion = motion;
+}
+
+void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, const NodePose* parentPose, int depth)
 {
     if (depth > kMaxNodeDepth)
         throw SceneFileError(in.path, QStringLiteral("its node tree is deeper than %1 levels (a cycle?); flatten the hierarchy").arg(kMaxNodeDepth));
@@ -369,15 +385,19 @@ void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, int de
                                                   .arg(QString::fromUtf8(node->mName.C_Str())));
         }
     }
+    const std::optional<NodePose> pose = in.animation.poseOf(node, parentPose);
+    SceneObject placed;     // what every mesh of the node shares
+    placed.name = QString::fromUtf8(node->mName.C_Str());
+    placed.model = world;
+    placed.texture = TextureKind::Flat;
+    if (pose && node->mNumMeshes > 0)
+        animate(in, node, *pose, placed);
     for (unsigned i = 0; i < node->mNumMeshes; ++i) {
         const unsigned m = node->mMeshes[i];
         if (m >= in.ai->mNumMeshes)
             continue;
         const unsigned materialIndex = in.ai->mMeshes[m]->mMaterialIndex;
-        SceneObject object;
-        object.name = QString::fromUtf8(node->mName.C_Str());
-        object.model = world;
-        object.texture = TextureKind::Flat;
+        SceneObject object = placed;
         if (materialIndex < in.ai->mNumMaterials) {
             const aiMaterial* material = in.ai->mMaterials[materialIndex];
             aiColor4D colour(1.0f, 1.0f, 1.0f, 1.0f);
@@ -402,7 +422,50 @@ void addNode(Importing& in, const aiNode* node, const glm::dmat4& parent, int de
         }
     }
     for (unsigned c = 0; c < node->mNumChildren; ++c)
-        addNode(in, node->mChildren[c], world, depth + 1);
+        addNode(in, node->mChildren[c], world, pose ? &*pose : nullptr, depth + 1);
+}
+
+// What of the file's animations and skins is not played, said before the objects are placed.
+void noteAnimation(Importing& in)
+{
+    const aiScene* ai = in.ai;
+    const auto named = [](const aiAnimation* animation) {
+        return animation->mName.length > 0 ? QStringLiteral("'%1'").arg(QString::fromUtf8(animation->mName.C_Str())) : QStringLiteral("(unnamed)");
+    };
+    if (ai->mNumAnimations > 1) {
+        in.scene.warnings << QStringLiteral("the file has %1 animations; only the first, %2, plays — export the one you want first")
+                                 .arg(ai->mNumAnimations).arg(named(ai->mAnimations[0]));
+    }
+    if (ai->mNumAnimations > 0 && (ai->mAnimations[0]->mNumMorphMeshChannels > 0 || ai->mAnimations[0]->mNumMeshChannels > 0)) {
+        in.scene.warnings << QStringLiteral("animation %1 changes mesh shapes (morph targets or vertex animation), which ShadowLab does "
+                                            "not play; the meshes are drawn in their base shape").arg(named(ai->mAnimations[0]));
+    }
+    std::size_t skinned = 0;
+    for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
+        if (ai->mMeshes[m]->mNumBones > 0 && !in.piecesOfMesh.at(m).empty())
+            ++skinned;
+    }
+    if (skinned > 0) {
+        in.scene.warnings << QStringLiteral("%1 of %2 meshes are skinned (deformed by bones); ShadowLab moves whole nodes but does not "
+                                            "deform skins yet, so they are drawn in their bind pose")
+                                 .arg(skinned).arg(ai->mNumMeshes);
+    }
+}
+
+// What of the animation could not be played, said once after the objects are placed.
+void noteUnplayedKeys(Importing& in)
+{
+    if (in.resampled) {
+        in.scene.warnings << QStringLiteral("the animation has more than %1 key times on a node; it is taken at %1 even times instead, "
+                                            "so the motion between them may be smoothed").arg(kMaxMotionKeys);
+    }
+    if (!in.stillNodes.isEmpty()) {
+        in.stillNodes.removeDuplicates();
+        const QString nodes = in.stillNodes.size() == 1 ? QStringLiteral("node '%1' is").arg(in.stillNodes.first())
+                                                        : QStringLiteral("%1 nodes ('%2' first) are").arg(in.stillNodes.size()).arg(in.stillNodes.first());
+        in.scene.warnings << QStringLiteral("%1 animated with keys that do not hold together (%2); drawn still where the file places "
+                                            "them — export the animation again").arg(nodes, in.stillProblem);
+    }
 }
 
 QString scaledWarning(double size, double factor)
@@ -538,8 +601,14 @@ void checkPlacedSize(Importing& in)
     if (size < kMinModelSize || size > kMaxModelSize) {
         const double factor = kNormalisedModelSize / size;
         const glm::dmat4 scale = glm::scale(glm::dmat4(1.0), glm::dvec3(factor));
-        for (SceneObject& object : in.scene.objects)
-            object.model = scale * object.model;
+        for (SceneObject& object : in.scene.objects) {
+            if (object.motion) {
+                object.motion->pre = scale * object.motion->pre;
+                object.model = object.motion->at(0.0);
+            } else {
+                object.model = scale * object.model;
+            }
+        }
         in.scene.warnings << scaledWarning(size, factor);
     }
 }
@@ -575,7 +644,10 @@ Scene importModel(const QString& path, const std::function<void(double)>& progre
     in.scene.name = info.absoluteFilePath();
     in.scene.warnings = warnings;
     convertMeshes(in);
-    addNode(in, ai->mRootNode, glm::dmat4(1.0), 0);
+    in.animation = NodeAnimation(ai);
+    noteAnimation(in);
+    addNode(in, ai->mRootNode, glm::dmat4(1.0), nullptr, 0);
+    noteUnplayedKeys(in);
     if (in.scene.objects.empty())
         throw SceneFileError(path, QStringLiteral("places no triangle mesh in its scene; export the meshes as part of the scene"));
     checkPlacedSize(in);

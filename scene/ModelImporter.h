@@ -21,10 +21,14 @@ constexpr double kNormalisedModelSize = 10.0;
 // Meshes above this many triangles are split into spatially compact pieces, so the shadow
 // and lit passes can skip the pieces outside the light volume or the view.
 constexpr std::size_t kMeshChunkTriangles = 1 << 16;
+// The most keys a node animation keeps per object: a denser one (motion capture at 120 Hz for
+// minutes) is taken at this many even times instead, with a warning.
+constexpr std::size_t kMaxMotionKeys = 4096;
 
 // Reads a model through Assimp (OBJ, glTF 2, PLY, STL, COLLADA, FBX and whatever else the
 // installed Assimp reads): triangulated, normals generated where missing, node transforms
-// applied as object placements, base colour and base-colour texture kept. Throws
+// applied as object placements, the first animation's node channels as their motions (whole
+// nodes move; skins are drawn in their bind pose), base colour and base-colour texture kept. Throws
 // SceneFileError naming the file, the problem and what to do about it. The result has no
 // ground plane, light or camera; Scene::identity is a hash of the file's bytes. `progress`
 // hears Assimp's progress through the read (0..1).

@@ -113,6 +113,16 @@ int main(int argc, char* argv[])
         write(encodeImportedScene(scene));
         return 0;
     }
+    if (mode == "backward-motion") {
+        Scene scene = cubeScene(path);
+        Motion motion;
+        motion.kind = Motion::Kind::Path;
+        motion.period = 2.0;
+        motion.keys = {MotionKey{.time = 0.0}, MotionKey{.time = 1.5}, MotionKey{.time = 1.0}};
+        scene.objects[0].motion = motion;
+        write(encodeImportedScene(scene));
+        return 0;
+    }
     if (mode == "out-of-memory") {
         write(encodeImportRefusal(ImportReplyKind::OutOfMemory, QStringLiteral("an allocation failed")));
         return 0;

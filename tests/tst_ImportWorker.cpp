@@ -44,6 +44,16 @@ QString refusal(const QString& path, const ImportControl& control)
     return QString();
 }
 
+// A path out along x and back over 2 s.
+Motion outAndBack()
+{
+    Motion motion;
+    motion.kind = Motion::Kind::Path;
+    motion.period = 2.0;
+    motion.keys = {MotionKey{.time = 0.0}, MotionKey{.time = 1.0, .position = {1.0, 0.0, 0.0}}, MotionKey{.time = 2.0}};
+    return motion;
+}
+
 std::size_t triangles(const Scene& scene)
 {
     std::size_t n = 0;
@@ -93,6 +103,8 @@ void tst_ImportWorker::workerMisbehaves_data()
     QTest::newRow("silent") << QByteArray("silent") << QStringLiteral("stopped without an answer") << 1.5;
     QTest::newRow("flood") << QByteArray("flood") << QStringLiteral("more than 16 MiB") << 1.5;
     QTest::newRow("out of memory") << QByteArray("out-of-memory") << QStringLiteral("more memory to read than the import memory limit of 512 MiB") << 1.5;
+    QTest::newRow("motion back in time") << QByteArray("backward-motion") << QStringLiteral("the motion of object 'cube': key 2's time must be after key 1's")
+                                         << 1.5;
 }
 
 void tst_ImportWorker::workerMisbehaves()
@@ -172,6 +184,8 @@ void tst_ImportWorker::realWorkerMatchesInProcess_data()
     QTest::newRow("ply") << kModels + QStringLiteral("PLY/cube.ply");
     QTest::newRow("stl") << kModels + QStringLiteral("STL/Spider_ascii.stl");
     QTest::newRow("dae") << kModels + QStringLiteral("Collada/duck.dae");
+    QTest::newRow("dae, 64 nodes animated") << kModels + QStringLiteral("Collada/anims_with_full_rotations_between_keys.DAE");
+    QTest::newRow("bvh, motion capture of 4096 keys") << kModels + QStringLiteral("BVH/01_03.bvh");
 }
 
 void tst_ImportWorker::realWorkerMatchesInProcess()
@@ -197,6 +211,7 @@ void tst_ImportWorker::realWorkerMatchesInProcess()
         QCOMPARE(isolated.objects[o].mesh, direct.objects[o].mesh);
         QVERIFY(isolated.objects[o].model == direct.objects[o].model);
         QCOMPARE(isolated.objects[o].image, direct.objects[o].image);
+        QVERIFY(isolated.objects[o].motion == direct.objects[o].motion);
     }
     for (std::size_t i = 0; i < direct.images.size(); ++i)
         QCOMPARE(isolated.images[i], direct.images[i].convertToFormat(QImage::Format_RGBA8888));
@@ -286,6 +301,36 @@ void tst_ImportWorker::untrustedAnswer_data()
     QTest::newRow("placed beyond finite") << with([](Scene& s) { s.meshes[0].vertices[0].position.x = 3e38f; s.objects[0].model[0][0] = 1e300; })
                                           << QStringLiteral("beyond finite numbers");
     QTest::newRow("long identity") << with([](Scene& s) { s.identity = QByteArray(4096, 'a'); }) << QStringLiteral("identity is 4096 bytes");
+    // A moving object's motion is checked as a scene file's is (motionProblem()).
+    const auto moving = [&](auto change) {
+        return with([&](Scene& s) {
+            s.objects[0].motion = outAndBack();
+            s.objects[0].model = s.objects[0].motion->at(0.0);
+            change(*s.objects[0].motion);
+        });
+    };
+    QTest::newRow("moving") << moving([](Motion&) {}) << QString();
+    QTest::newRow("moving, placed elsewhere") << with([](Scene& s) { s.objects[0].motion = outAndBack(); s.objects[0].model[3][0] = 5.0; })
+                                              << QString();
+    QTest::newRow("key times not increasing") << moving([](Motion& m) { m.keys[2].time = 1.0; })
+                                              << QStringLiteral("key 2's time must be after key 1's");
+    QTest::newRow("first key after 0") << moving([](Motion& m) { m.keys[0].time = 0.5; }) << QStringLiteral("first key must be at time 0");
+    QTest::newRow("NaN key time") << moving([](Motion& m) { m.keys[1].time = NAN; }) << QStringLiteral("key 1 must hold finite numbers");
+    QTest::newRow("NaN key position") << moving([](Motion& m) { m.keys[1].position.y = NAN; }) << QStringLiteral("key 1 must hold finite numbers");
+    QTest::newRow("infinite key scale") << moving([](Motion& m) { m.keys[2].scale.z = INFINITY; }) << QStringLiteral("key 2 must hold finite numbers");
+    QTest::newRow("rotation not unit") << moving([](Motion& m) { m.keys[1].rotation = glm::dquat(0.5, 0.0, 0.0, 0.0); })
+                                       << QStringLiteral("key 1's rotation must be a unit quaternion");
+    QTest::newRow("rotation drifted by rounding") << moving([](Motion& m) { m.keys[1].rotation = glm::dquat(1.0 + 1e-5, 0.0, 0.0, 0.0); })
+                                                  << QString();
+    QTest::newRow("NaN period") << moving([](Motion& m) { m.period = NAN; }) << QStringLiteral("period must be a number of seconds above 0");
+    QTest::newRow("path with no keys") << moving([](Motion& m) { m.keys.clear(); }) << QStringLiteral("a path needs at least one key");
+    QTest::newRow("infinite fixed placement") << moving([](Motion& m) { m.pre[3][0] = INFINITY; }) << QStringLiteral("fixed placement is not finite");
+    QTest::newRow("too many keys") << moving([](Motion& m) {
+        m.keys.resize(kMaxMotionKeys + 1);
+        for (std::size_t i = 0; i < m.keys.size(); ++i)
+            m.keys[i].time = double(i);
+        m.period = double(m.keys.size());
+    }) << QStringLiteral("motion key count 4097 is over the limit of 4096");
     // A count that promises more than the bytes there are is refused before anything is allocated.
     // The mesh's vertex count: after the header (13 bytes), the name "s" (5), an empty identity
     // (4), no warnings (4), no ground (1), the mesh count (4) and the convex flag (1).
@@ -307,6 +352,10 @@ void tst_ImportWorker::untrustedAnswer()
     try {
         const ImportReply reply = decodeImportReply(answer, QStringLiteral("model.glb"));
         QCOMPARE(reply.scene.meshes.at(0).vertices.size(), std::size_t(24));
+        for (const SceneObject& object : reply.scene.objects) {
+            if (object.motion)
+                QVERIFY(object.model == object.motion->at(0.0));   // where it is at 0 is its motion's to say
+        }
     } catch (const SceneFileError& e) {
         message = QString::fromUtf8(e.what());
     }

@@ -25,6 +25,8 @@
 #include "TestPictures.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -38,6 +40,8 @@
 #include <QMenu>
 #include <QtTest>
 
+#include <algorithm>
+#include <initializer_list>
 #include <memory>
 
 using namespace shadowlab;
@@ -94,6 +98,72 @@ QByteArray squareObj(double size)
         .arg(3.0 * size, 0, 'g', 17)
         .arg(3.1 * size, 0, 'g', 17)
         .toUtf8();
+}
+
+// The largest difference between two placements' entries.
+double difference(const glm::dmat4& a, const glm::dmat4& b)
+{
+    double largest = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            largest = std::max(largest, std::abs(a[c][r] - b[c][r]));
+    }
+    return largest;
+}
+
+// A glTF 2 with one triangle on node "box", a child of node "arm": in the first animation,
+// "Wave", the arm turns 90° about y from 1 s to 3 s while the box slides from (2, 0, 0) to
+// (2, 1, 0) from 0 s to 2 s; a second animation, "Idle", follows. Every length times `unit`;
+// the arm is scaled by `armScaleX` along its x (not keyed: Assimp 5.2 fills a mirrored node's
+// missing rotation key with a turn that undoes its mirror, so the box's own scale is left alone).
+QByteArray armGltf(double unit, double armScaleX)
+{
+    QByteArray buffer;
+    const auto floats = [&buffer](std::initializer_list<double> values) {
+        for (const double v : values) {
+            const float f = float(v);
+            buffer.append(reinterpret_cast<const char*>(&f), sizeof f);
+        }
+    };
+    const double u = unit, half = std::sqrt(0.5);
+    floats({0, 0, 0, u, 0, 0, 0, u, 0});            // at 0: the triangle
+    floats({1, 3});                                 // at 36: the arm's key times
+    floats({0, 0, 0, 1, 0, half, 0, half});         // at 44: its rotations (x, y, z, w)
+    floats({0, 2});                                 // at 76: the box's key times
+    floats({2 * u, 0, 0, 2 * u, u, 0});             // at 84: its translations
+    const QString json = QStringLiteral(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "arm", "scale": [%5, 1, 1], "children": [1]}, {"name": "box", "translation": [%1, 0, 0], "mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "buffers": [{"byteLength": %2, "uri": "data:application/octet-stream;base64,%3"}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8},
+                        {"buffer": 0, "byteOffset": 44, "byteLength": 32}, {"buffer": 0, "byteOffset": 76, "byteLength": 8},
+                        {"buffer": 0, "byteOffset": 84, "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [%4, %4, 0]},
+                      {"bufferView": 1, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [1], "max": [3]},
+                      {"bufferView": 2, "componentType": 5126, "count": 2, "type": "VEC4"},
+                      {"bufferView": 3, "componentType": 5126, "count": 2, "type": "SCALAR", "min": [0], "max": [2]},
+                      {"bufferView": 4, "componentType": 5126, "count": 2, "type": "VEC3"}],
+        "animations": [{"name": "Wave", "samplers": [{"input": 1, "output": 2}, {"input": 3, "output": 4}],
+                        "channels": [{"sampler": 0, "target": {"node": 0, "path": "rotation"}},
+                                     {"sampler": 1, "target": {"node": 1, "path": "translation"}}]},
+                       {"name": "Idle", "samplers": [{"input": 3, "output": 4}],
+                        "channels": [{"sampler": 0, "target": {"node": 1, "path": "translation"}}]}]})")
+                             .arg(2 * u, 0, 'g', 17)
+                             .arg(buffer.size())
+                             .arg(QString::fromLatin1(buffer.toBase64()))
+                             .arg(u, 0, 'g', 17)
+                             .arg(armScaleX, 0, 'g', 17);
+    return json.toUtf8();
+}
+
+// Where armGltf()'s box is at `t` seconds, worked out by hand: the arm's turn times the box's
+// slide, each held before its first key and after its last.
+glm::dmat4 armBoxAt(double t, double unit, double armScaleX)
+{
+    const double turn = glm::radians(90.0) * std::clamp((t - 1.0) / 2.0, 0.0, 1.0);
+    const double rise = unit * std::clamp(t / 2.0, 0.0, 1.0);
+    return glm::rotate(glm::dmat4(1.0), turn, glm::dvec3(0.0, 1.0, 0.0)) * glm::scale(glm::dmat4(1.0), glm::dvec3(armScaleX, 1.0, 1.0))
+           * glm::translate(glm::dmat4(1.0), glm::dvec3(2.0 * unit, rise, 0.0));
 }
 
 using probe::Agreement;
@@ -315,6 +385,148 @@ private Q_SLOTS:
         QVERIFY2(scene.warnings.join(" ").contains("CesiumLogoFlat.png"), qPrintable(scene.warnings.join(" ")));
         for (const SceneObject& o : scene.objects)
             QVERIFY(o.texture == TextureKind::Flat);
+    }
+
+    // Node animations play as whole nodes moving: each moving object is where its model says at 0,
+    // somewhere else later, over a clip as long as the file's.
+    void animatedModelsMove_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("moving");        // objects with a motion
+        QTest::addColumn<double>("clip");       // seconds
+        QTest::addColumn<QString>("says");      // in the warnings, or empty
+        QTest::newRow("LWS slide along x") << model("LWS/move_x.lws") << 1 << 2.0 << QString();
+        QTest::newRow("3DS turning cube, no tick rate (25 a second)") << model("3DS/RotatingCube.3DS") << 1 << 181.0 / 25.0 << QString();
+        QTest::newRow("ASE child of an animated parent") << model("ASE/CameraRollAnimWithChildObject.ase") << 1 << 4.0 << QString();
+        QTest::newRow("ASE motion-capture hierarchy") << model("ASE/MotionCaptureROM.ase") << 26 << 216800.0 / 4800.0 << QString();
+        QTest::newRow("COLLADA full turns between keys") << model("Collada/anims_with_full_rotations_between_keys.DAE") << 64 << 11.9667 << QString();
+        QTest::newRow("BVH over 4096 key times, skinned") << model("BVH/01_03.bvh") << 1 << 4510.0 / 120.0
+                                                         << QStringLiteral("taken at 4096 even times");
+    }
+
+    void animatedModelsMove()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, moving);
+        QFETCH(double, clip);
+        QFETCH(QString, says);
+        const Scene scene = importModel(file);
+        const int count = int(std::count_if(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.motion.has_value(); }));
+        QCOMPARE(count, moving);
+        QVERIFY2(std::abs(scene.clipLength() - clip) < 1e-4 * clip, qPrintable(QString::number(scene.clipLength(), 'g', 10)));
+        QVERIFY2(says.isEmpty() || scene.warnings.join(" ").contains(says), qPrintable(scene.warnings.join("\n")));
+        for (const SceneObject& o : scene.objects) {
+            if (!o.motion)
+                continue;
+            QCOMPARE(motionProblem(*o.motion), QString());
+            QVERIFY(o.motion->keys.size() <= kMaxMotionKeys);
+            QVERIFY(o.model == o.motion->at(0.0));
+            double moved = 0.0;
+            for (int i = 1; i < 64; ++i)
+                moved = std::max(moved, difference(o.motion->at(clip * i / 64.0), o.model));
+            QVERIFY2(moved > 1e-6, qPrintable(o.name));
+        }
+    }
+
+    // The file's own numbers: LightWave's keys at 30 frames a second, x from 0 to 2.069 at frame 20.
+    void keysPlayAtTheirTimes()
+    {
+        const Scene scene = importModel(model("LWS/move_x.lws"));
+        QCOMPARE(scene.objects.size(), std::size_t(1));
+        const Motion& motion = *scene.objects[0].motion;
+        const glm::dvec3 moved = glm::dvec3(motion.at(20.0 / 30.0)[3]) - glm::dvec3(motion.at(0.0)[3]);
+        QVERIFY2(glm::length(moved - glm::dvec3(2.0691125, 0.0, 0.0)) < 1e-5,
+                 qPrintable(QStringLiteral("%1 %2 %3").arg(moved.x).arg(moved.y).arg(moved.z)));
+    }
+
+    // A node under an animated node moves with it: its placement is the product down the
+    // hierarchy, each animated node at its own keys; what the importer puts above the hierarchy
+    // (here a scale into range) is the motion's fixed `pre`. A mirrored, flattened or stretched
+    // parent keeps its child's placement whole through the keys' position, rotation and scale.
+    void nodeAnimationsFollowTheHierarchy_data()
+    {
+        QTest::addColumn<double>("unit");
+        QTest::addColumn<double>("armScaleX");
+        QTest::newRow("1 unit") << 1.0 << 1.0;
+        QTest::newRow("1e6 units, scaled into range") << 1e6 << 1.0;
+        QTest::newRow("arm mirrored") << 1.0 << -1.0;
+        QTest::newRow("arm flattened to nothing along x") << 1.0 << 0.0;
+        QTest::newRow("arm stretched along x") << 1.0 << 3.0;
+    }
+
+    void nodeAnimationsFollowTheHierarchy()
+    {
+        QFETCH(double, unit);
+        QFETCH(double, armScaleX);
+        QTemporaryDir dir;
+        const Scene scene = importModel(writeFile(dir, "arm.gltf", armGltf(unit, armScaleX)));
+        QCOMPARE(scene.objects.size(), std::size_t(1));
+        const SceneObject& box = scene.objects[0];
+        QVERIFY(box.motion);
+        QVERIFY2(scene.warnings.join(" ").contains("only the first, 'Wave', plays"), qPrintable(scene.warnings.join("\n")));
+        QCOMPARE(scene.clipLength(), 3.0);
+        QVERIFY(box.model == box.motion->at(0.0));
+        QCOMPARE(box.motion->pre == glm::dmat4(1.0), unit == 1.0);
+        const glm::dmat4 unscaled = glm::inverse(box.motion->pre);
+        // At every key time of the arm or the box, and before the arm's first (its rest held); the
+        // last key, at the clip's end, is where the cycle starts again, so it is read as a key.
+        for (const double t : {0.0, 0.5, 1.0, 2.0}) {
+            const double off = difference(unscaled * box.motion->at(t), armBoxAt(t, unit, armScaleX));
+            QVERIFY2(off < 1e-6 * unit, qPrintable(QStringLiteral("%1 off by %2 at %3 s").arg(box.name).arg(off).arg(t)));
+        }
+        const MotionKey last = pathKeyAt(*box.motion, 3.0);
+        const glm::dmat4 end = glm::translate(glm::dmat4(1.0), last.position) * glm::mat4_cast(last.rotation) * glm::scale(glm::dmat4(1.0), last.scale);
+        QVERIFY2(difference(end, armBoxAt(3.0, unit, armScaleX)) < 1e-6 * unit, qPrintable(QString::number(difference(end, armBoxAt(3.0, unit, armScaleX)))));
+        QVERIFY(difference(box.motion->at(3.5), box.motion->at(0.5)) < 1e-9 * unit);     // it repeats after the clip
+    }
+
+    // A model nothing moves has no motion; an animation that does not move a mesh's node (a
+    // camera's, a morph, a skeleton's bones) leaves it still, said where something is not played.
+    void stillModelsHaveNoMotion_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("says");      // in the warnings, or empty for no word of animation
+        QTest::newRow("OBJ box") << model("OBJ/box.obj") << QString();
+        QTest::newRow("glTF 2 textured box") << model("glTF2/BoxTextured-glTF/BoxTextured.gltf") << QString();
+        QTest::newRow("3DS camera animation") << model("3DS/CameraRollAnim.3ds") << QString();
+        QTest::newRow("glTF 2 morph animation") << model("glTF2/glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf")
+                                               << QStringLiteral("animation 'Square' changes mesh shapes");
+        QTest::newRow("X, three animations of bones") << model("X/Testwuson.X") << QStringLiteral("3 animations; only the first, 'Wuson_Run', plays");
+    }
+
+    void stillModelsHaveNoMotion()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, says);
+        const Scene scene = importModel(file);
+        QVERIFY(!scene.moves());
+        QCOMPARE(scene.clipLength(), 0.0);
+        const QString warnings = scene.warnings.join("\n");
+        if (says.isEmpty())
+            QVERIFY2(!warnings.contains("animation"), qPrintable(warnings));
+        else
+            QVERIFY2(warnings.contains(says), qPrintable(warnings));
+    }
+
+    // Skins are not deformed: a skinned mesh is drawn in its bind pose, and the warning says so.
+    void skinnedMeshesAreDrawnInTheirBindPose_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("glTF 2 simple skin") << model("glTF2/simple_skin/simple_skin.gltf") << QStringLiteral("1 of 1 meshes are skinned");
+        QTest::newRow("MD5 cube") << model("MD5/SimpleCube.md5mesh") << QStringLiteral("1 of 1 meshes are skinned");
+        QTest::newRow("X, animated bones") << model("X/anim_test.x") << QStringLiteral("1 of 1 meshes are skinned");
+        QTest::newRow("X, three skinned meshes") << model("X/BCN_Epileptic.X") << QStringLiteral("3 of 3 meshes are skinned");
+    }
+
+    void skinnedMeshesAreDrawnInTheirBindPose()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, says);
+        const QStringList warnings = importModel(file).warnings;
+        const QString skins = warnings.filter("skinned").join("\n");
+        QVERIFY2(skins.contains(says) && skins.contains("does not deform skins") && skins.contains("bind pose"), qPrintable(warnings.join("\n")));
+        QCOMPARE(warnings.filter("skinned").size(), 1);
     }
 
     // A sweep means the same on a 250-unit spider as on the seed: its lights are placed at the
