@@ -12,10 +12,21 @@
 #include <QThread>
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <limits>
 
 namespace shadowlab {
+
+std::size_t AnimatedError::worst() const
+{
+    return std::size_t(std::max_element(misclassified.begin(), misclassified.end()) - misclassified.begin());
+}
+
+double mean(const std::vector<double>& values)
+{
+    return values.empty() ? 0.0 : std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+}
 
 namespace {
 

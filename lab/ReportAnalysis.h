@@ -21,6 +21,20 @@ namespace shadowlab {
 // the shadow lookups' taps, or the samples the shadow pass wrote.
 enum class CostAxis { Time, Taps, ShadowSamples };
 
+// A row's error over the instants of an animation (report --times, --animation): one entry an
+// instant, in order of time. Empty for a still measurement.
+struct AnimatedError {
+    std::vector<double> times;              // seconds of scene.time
+    std::vector<double> misclassified;      // share of the measured pixels, 0..1
+    std::vector<double> areaMae;            // 0..1; empty when the area reference was not traced
+    std::vector<double> dssim;
+
+    bool measured() const { return !times.empty(); }
+    // The instant with the most misclassified pixels (its index).
+    std::size_t worst() const;
+};
+double mean(const std::vector<double>& values);
+
 struct ReportRow {
     QString label;              // labels of identical configurations joined with " = "
     QStringList assignments;
@@ -30,6 +44,10 @@ struct ReportRow {
     SampleStats frame;
     AccuracyResult accuracy;
     FlickerResult flicker;      // over a sub-texel camera path (frames 0: not measured)
+    // Over an animation: every instant's error; `accuracy` is then the worst instant's, so the
+    // fronts and the picks weigh a moving scene at its worst, and the frame time is the scene's
+    // playing.
+    AnimatedError animation;
     TexelDensity density;       // screen pixels per shadow texel over the measured receivers
     FrameCounts counts;         // what one shadow and one lit pass ask of any GPU (FrameStats.h)
     CostAxis costAxis = CostAxis::Time;     // what costOf() weighs

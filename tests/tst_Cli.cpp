@@ -673,6 +673,44 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(m_dir.filePath("never")));
     }
 
+    // Over an animation each row is measured at every instant; its error is the worst one's,
+    // with the mean and each instant in report.json. A scene that does not move is refused.
+    void reportOverAnAnimation()
+    {
+        const QString dir = m_dir.filePath("animation-report");
+        const QString sweep = m_dir.filePath("animation-sweep.json");
+        QVERIFY(writeFile(sweep, R"([{"label": "hard", "set": {"filter.mode": "hard"}}, {"label": "pcf 5x5", "set": {"filter.mode": "pcf", "filter.kernel": 5}}])"));
+        const Run r = shadowlab({"report", "--scene", "swing", "--size", "160x90", "--sweep", sweep, "--frames", "2", "--warmup", "0",
+                                 "--area-samples", "1", "--flicker-frames", "0", "--times", "0.2,0.9,1.6", "--out", dir});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("over the animation (3 instants") && r.out.contains("reference traced 3 times"), qPrintable(r.out));
+        QFile json(dir + "/report.json");
+        QVERIFY(json.open(QIODevice::ReadOnly));
+        const QJsonArray rows = QJsonDocument::fromJson(json.readAll()).object().value("rows").toArray();
+        QCOMPARE(rows.size(), 2);
+        for (const QJsonValue value : rows) {
+            const QJsonObject row = value.toObject();
+            const QJsonObject animation = row.value("animation").toObject();
+            QCOMPARE(animation.value("times").toArray().size(), 3);
+            const QJsonObject wrong = animation.value("misclassified_pct").toObject();
+            QCOMPARE(wrong.value("each").toArray().size(), 3);
+            QVERIFY(wrong.value("worst").toDouble() >= wrong.value("mean").toDouble());
+            QCOMPARE(row.value("hard_reference").toObject().value("misclassified_pct").toDouble(), wrong.value("worst").toDouble());
+        }
+        const Run still = shadowlab({"report", "--scene", "seed", "--animation", "4", "--out", m_dir.filePath("never")});
+        QCOMPARE(still.exitCode, 2);
+        QVERIFY2(still.err.contains("--animation") && still.err.contains("nothing in the scene") && still.err.contains("swing"), qPrintable(still.err));
+        const Run bad = shadowlab({"report", "--scene", "swing", "--times", "0,soon", "--out", m_dir.filePath("never")});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("--times: 'soon' is not a time"), qPrintable(bad.err));
+        const Run render = shadowlab({"render", "--scene", "seed", "--time", "2", "--size", "64x36", "--out", m_dir.filePath("still.png")});
+        QVERIFY2(render.exitCode == 0 && render.err.contains("nothing in the scene seed moves"), qPrintable(render.err));
+        const Run late = shadowlab({"render", "--scene", "swing", "--time", "-1", "--out", m_dir.filePath("never.png")});
+        QCOMPARE(late.exitCode, 2);
+        QVERIFY2(late.err.contains("--time"), qPrintable(late.err));
+        QVERIFY(!QFile::exists(m_dir.filePath("never")));
+    }
+
     void reportRejectsABadSweep()
     {
         const QString sweep = m_dir.filePath("bad-sweep.json");

@@ -8,6 +8,7 @@
 #include "ReportParts.h"
 #include "ReportSweep.h"
 #include "ReportWriter.h"
+#include "SceneLibrary.h"
 #include "SettingsKeys.h"
 
 #include <QCryptographicHash>
@@ -51,6 +52,18 @@ void printFlicker(const std::vector<ReportRow>& rows)
 }
 
 constexpr int kLabelWidth = 40;
+
+// Each row's misclassified pixels over the animation's instants: the mean, and the worst with its time.
+void printAnimation(const std::vector<ReportRow>& rows)
+{
+    out() << "over the animation (" << rows.front().animation.times.size() << " instants; misclassified, mean and worst):\n";
+    for (const ReportRow& r : rows) {
+        const AnimatedError& a = r.animation;
+        const std::size_t worst = a.worst();
+        out() << "  " << r.label.leftJustified(kLabelWidth) << QString::number(100 * mean(a.misclassified), 'f', 3).rightJustified(8) << " %"
+              << QString::number(100 * a.misclassified[worst], 'f', 3).rightJustified(8) << " % at " << QString::number(a.times[worst], 'f', 2) << " s\n";
+    }
+}
 
 // Each light's fronts, error and cost, fastest first: the choices the report leaves a reader.
 void printFronts(const std::vector<ReportRow>& rows)
@@ -139,6 +152,13 @@ void addReportOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("flicker-frames"),
                       QStringLiteral("Frames of the sub-texel camera walk flicker is measured over; 0 skips it (default 8)."),
                       QStringLiteral("n"), QString::number(kFlickerFrames)});
+    parser.addOption({QStringLiteral("times"),
+                      QStringLiteral("Measure every configuration at each of these instants of the scene's animation (seconds of "
+                                     "scene.time, comma-separated, e.g. 0,0.5,1.5): each row's error is then its worst instant's, with "
+                                     "the mean and every instant in report.json, and its time that of the scene playing."),
+                      QStringLiteral("t1,t2,...")});
+    parser.addOption({QStringLiteral("animation"),
+                      QStringLiteral("As --times, at N instants spread evenly over the scene's clip."), QStringLiteral("n")});
     parser.addOption({QStringLiteral("cost"),
                       QStringLiteral("What the fronts, the picks and the charts weigh a configuration's cost by: time (its frame's wall "
                                      "time on this machine, the default), taps (the shadow lookups' texture reads a frame) or samples "
@@ -186,7 +206,45 @@ struct ReportRequest {
     int shard = 1, shards = 1;
     QString fingerprint;                        // of the whole sweep and how it is measured
     CostAxis cost = CostAxis::Time;             // what the fronts weigh (--cost)
+    std::vector<double> times;                  // the instants of --times or --animation; empty: base.animation.time alone
 };
+
+// The most instants a report measures each configuration at: each one traces a reference.
+constexpr int kMaxReportInstants = 64;
+
+// --times or --animation, checked against the scene: instants only where something moves.
+std::vector<double> readInstants(const QCommandLineParser& parser, const Settings& base)
+{
+    const bool times = parser.isSet(QStringLiteral("times")), animation = parser.isSet(QStringLiteral("animation"));
+    if (!times && !animation)
+        return {};
+    const QString option = times ? QStringLiteral("times") : QStringLiteral("animation");
+    if (times && animation)
+        throw UsageError(QStringLiteral("--times and --animation both say when to measure; give one of them"));
+    const Scene scene = buildScene(base.scene);
+    if (!scene.moves())
+        throw UsageError(QStringLiteral("--%1: nothing in the scene %2 moves, so every instant is the same; choose a scene that moves, "
+                                        "e.g. --scene swing or --scene city+50").arg(option, displayText(base.scene)));
+    std::vector<double> instants;
+    if (animation) {
+        const int n = parseCount(parser.value(option), option, 1, kMaxReportInstants);
+        for (int i = 0; i < n; ++i)
+            instants.push_back(scene.clipLength() * double(i) / n);
+        return instants;
+    }
+    const QStringList parts = parser.value(option).split(QLatin1Char(','));
+    if (parts.size() > kMaxReportInstants)
+        throw UsageError(QStringLiteral("--times: %1 instants; give at most %2").arg(parts.size()).arg(kMaxReportInstants));
+    for (const QString& part : parts) {
+        bool ok = false;
+        const double t = part.trimmed().toDouble(&ok);
+        if (!ok || !(t >= 0.0 && t <= 1e6))
+            throw UsageError(QStringLiteral("--times: '%1' is not a time; give seconds in [0, 1e6] separated by commas, e.g. --times 0,0.5,1.5")
+                                 .arg(displayText(part)));
+        instants.push_back(t);
+    }
+    return instants;
+}
 
 // What a report measures, whoever measures it: the size, the timing and reference options and
 // every configuration's settings. Shares and reports of other machines merge only when theirs
@@ -202,6 +260,12 @@ QString sweepFingerprint(const ReportRequest& r)
                            {QStringLiteral("warmup"), r.warmup},
                            {QStringLiteral("area_samples"), r.samples},
                            {QStringLiteral("flicker_frames"), r.flickerFrames},
+                           {QStringLiteral("times"), [&] {
+                                QJsonArray times;
+                                for (double t : r.times)
+                                    times.append(t);
+                                return times;
+                            }()},
                            {QStringLiteral("configurations"), configurations}};
     return QString::fromLatin1(QCryptographicHash::hash(QJsonDocument(what).toJson(QJsonDocument::Compact), QCryptographicHash::Sha256).toHex().left(16));
 }
@@ -227,6 +291,7 @@ ReportRequest readReportRequest(const QCommandLineParser& parser)
     if (!cost)
         throw UsageError(QStringLiteral("--cost: '%1' is not a cost axis; choose time, taps or samples").arg(displayText(parser.value(QStringLiteral("cost")))));
     r.cost = *cost;
+    r.times = readInstants(parser, r.base);
     r.configurations = int(r.sweep.size());
     r.fingerprint = sweepFingerprint(r);
     if (parser.isSet(QStringLiteral("shard")))
@@ -264,10 +329,30 @@ ReportRow measureRow(const ReportRequest& request, const SweepConfiguration& con
     row.light = lightDescription(configuration.settings);
     row.defaults = configuration.settings == request.base;
     row.tutorial = configuration.settings == request.tutorial;
-    row.accuracy = measureAccuracy(meter, headless.renderer(), configuration.settings, request.size,
-                                   [&](double f) { progress.show(start + step * f, configuration.label + QStringLiteral(": accuracy")); },
-                                   &row.density);
-    row.accuracy.hardHeat = QImage();   // a view's; a sweep of many rows keeps only what the page shows
+    // Each instant of an animation in turn (the reference traced at each); the row keeps the
+    // worst instant's error, picture and density.
+    const std::vector<double> instants = request.times.empty() ? std::vector<double>{configuration.settings.animation.time} : request.times;
+    for (std::size_t i = 0; i < instants.size(); ++i) {
+        Settings at = configuration.settings;
+        at.animation.time = instants[i];
+        const double from = start + step * double(i) / instants.size(), width = step / instants.size();
+        TexelDensity density;
+        AccuracyResult result = measureAccuracy(meter, headless.renderer(), at, request.size,
+                                                [&](double f) { progress.show(from + width * f, configuration.label + QStringLiteral(": accuracy")); },
+                                                &density);
+        result.hardHeat = QImage();     // a view's; a sweep of many rows keeps only what the page shows
+        if (!request.times.empty()) {
+            row.animation.times.push_back(instants[i]);
+            row.animation.misclassified.push_back(result.hard.misclassified);
+            if (result.area.pixels > 0)
+                row.animation.areaMae.push_back(result.area.mae);
+            row.animation.dssim.push_back(1.0 - result.ssim);
+        }
+        if (i == 0 || result.hard.misclassified > row.accuracy.hard.misclassified) {
+            row.accuracy = std::move(result);
+            row.density = density;
+        }
+    }
     if (request.flickerFrames > 1) {
         progress.show(start + step, configuration.label + QStringLiteral(": flicker"));
         row.flicker = measureFlicker(headless.renderer(), configuration.settings,
@@ -306,8 +391,14 @@ AccuracyPass measureAllAccuracy(const ReportRequest& request, HeadlessRenderer& 
 void timeAll(const ReportRequest& request, HeadlessRenderer& headless, ProgressBar& progress, std::vector<ReportRow>& rows)
 {
     std::vector<TimedRun> runs;
-    for (const SweepConfiguration& configuration : request.sweep)
-        runs.push_back({&headless, configuration.settings, true, true, {}, {}});
+    // Over an animation, the scene plays from the first instant at 60 frames a second of its time.
+    const double timeStep = request.times.empty() ? 0.0 : 1.0 / 60.0;
+    for (const SweepConfiguration& configuration : request.sweep) {
+        Settings settings = configuration.settings;
+        if (!request.times.empty())
+            settings.animation.time = request.times.front();
+        runs.push_back({&headless, settings, true, true, {}, {}, timeStep});
+    }
     SteadyTiming rule;
     rule.minimum = request.minFrames;
     rule.maximum = request.frames;
@@ -351,6 +442,8 @@ void printSummary(const ReportRequest& request, const std::vector<ReportRow>& ro
           << QString::number(facts.raysPerSecond * 1e-6, 'f', 2) << " Mrays/s, " << QString::number(facts.seconds, 'f', 1) << " s in all\n";
     if (request.flickerFrames > 1)
         printFlicker(rows);
+    if (!request.times.empty())
+        printAnimation(rows);
     printFronts(rows);
     printRecommendations(rows);
     out() << "wrote " << QDir(request.directory).absoluteFilePath(QStringLiteral("report.html")) << " (and report.csv, report.json)" << Qt::endl;

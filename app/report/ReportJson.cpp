@@ -7,6 +7,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace shadowlab {
 
 namespace {
@@ -40,6 +42,29 @@ QJsonValue flickerValue(const ReportRow& r, double fraction)
 QString errorImageName(std::size_t position)
 {
     return QStringLiteral("errors/%1.png").arg(position, 3, 10, QLatin1Char('0'));
+}
+
+// Over an animation: each instant's errors, their mean and the worst; null for a still measurement.
+QJsonValue animationJson(const AnimatedError& a)
+{
+    if (!a.measured())
+        return QJsonValue();
+    const auto percents = [](const std::vector<double>& values) {
+        QJsonArray list;
+        for (double v : values)
+            list.append(100 * v);
+        return QJsonObject{{QStringLiteral("each"), list},
+                           {QStringLiteral("mean"), values.empty() ? QJsonValue() : QJsonValue(100 * mean(values))},
+                           {QStringLiteral("worst"), values.empty() ? QJsonValue() : QJsonValue(100 * *std::max_element(values.begin(), values.end()))}};
+    };
+    QJsonArray times;
+    for (double t : a.times)
+        times.append(t);
+    return QJsonObject{{QStringLiteral("times"), times},
+                       {QStringLiteral("worst_time"), a.times[a.worst()]},
+                       {QStringLiteral("misclassified_pct"), percents(a.misclassified)},
+                       {QStringLiteral("area_mae_pct"), percents(a.areaMae)},
+                       {QStringLiteral("dssim_pct"), percents(a.dssim)}};
 }
 
 QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
@@ -79,6 +104,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                                                                   {QStringLiteral("fine"), r.density.fine},
                                                                                   {QStringLiteral("median_pixels_per_texel"), r.density.medianPixelsPerTexel},
                                                                                   {QStringLiteral("pixels"), r.density.counted}}},
+                                    {QStringLiteral("animation"), animationJson(r.animation)},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), flickerValue(r, r.flicker.flicker)},
                                                                             {QStringLiteral("worst_pair_pct"), flickerValue(r, r.flicker.worstPair)},
                                                                             {QStringLiteral("mean_change_pct"), flickerValue(r, r.flicker.meanChange)},
