@@ -56,6 +56,8 @@ struct FrameStats {
                                         // its deferred rasterisation, the wall clock does not)
     double blurPassWallMs = 0.0;        // of shadowPassWallMs, the moments blur and mip build (moment techniques)
     bool shadowPassRendered = false;    // false: the cached map was reused, or shadows are off
+    // Why it was drawn: what changed since the frame before (the first that applies).
+    enum class Redraw { None, Scene, Casters, Light, Camera, Settings } redraw = Redraw::None;
     int shadowDraws = 0;                // casters drawn by the shadow pass (0 when reused)
     bool shadowMapCleared = false;      // the pass cleared the map (map.slices: once in that many passes)
     int litDraws = 0;                   // draw calls (a receiver straddling the shadow reach counts twice)

@@ -65,7 +65,9 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     ensureScene(settings);
     // Moving objects to where they are at the frame's time: everything that depends on where the
     // casters are is due again, as for a new scene (its geometry stays uploaded).
-    if (m_scene->pose(settings.animation.time))
+    const int sceneBefore = m_sceneGeneration;
+    const bool casterMoved = m_scene->pose(settings.animation.time);
+    if (casterMoved)
         ++m_sceneGeneration;
 
     // Update: the cameras, and the fit when one of its inputs changed (the clock through the
@@ -99,7 +101,24 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     countShadowPass(settings, storage, stats);
     buildDepthRange(settings, timing, stats);
     m_light = m_update.views().frames.front();
+    stats.redraw = redrawReason(stats.shadowPassRendered, casterMoved, sceneBefore != m_sceneGeneration, settings);
     m_viewSettings = settings;
+}
+
+FrameStats::Redraw Renderer::redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const
+{
+    using Redraw = FrameStats::Redraw;
+    if (!drawn)
+        return Redraw::None;
+    if (casterMoved)
+        return Redraw::Casters;
+    if (sceneChanged)
+        return Redraw::Scene;
+    if (settings.light != m_viewSettings.light)
+        return Redraw::Light;
+    if (settings.camera != m_viewSettings.camera)
+        return Redraw::Camera;
+    return Redraw::Settings;
 }
 
 bool Renderer::reversedDepth(const Settings& settings, const ShadowStorage& storage)

@@ -143,6 +143,8 @@ private:
     void ensureMap(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, bool reversed);
     // The scene the settings name, uploaded when it changed.
     void ensureScene(const Settings& settings);
+    // Why this frame's shadow pass drew, from what changed since the last frame's settings.
+    FrameStats::Redraw redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const;
     // The fit of `frame`, with what it reads from passes: sdsm's visible depth, the virtual layout.
     void refit(const FrameUpdate::Frame& frame, const ShadowStorage& storage, FrameStats& stats);
     // The min/max depth mip of penumbra-only filtering, when the map changed; timed with the shadow pass.

@@ -170,6 +170,7 @@ private slots:
     void statusBarShowsMediansAndMeasuresFrames();
     void depthPaneFramesTheMapInWhatTheCameraSees_data();
     void depthPaneFramesTheMapInWhatTheCameraSees();
+    void timelinePlaysScrubsAndSharesTheClock();
 
 private:
     SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
@@ -1318,6 +1319,51 @@ void tst_MainWindow::statusBarShowsMediansAndMeasuresFrames()
         QVERIFY2(needed <= m_window->statusBar()->width(), qPrintable(QStringLiteral("%1 px of labels in %2").arg(needed).arg(m_window->statusBar()->width())));
     }
 }
+
+// The timeline: greyed on a still scene; on a moving one, play advances scene.time on both
+// sides with the wall clock and the picture moves; pause stops it; a scrub is one undo step;
+// the status bar says why the map was drawn.
+void tst_MainWindow::timelinePlaysScrubsAndSharesTheClock()
+{
+    auto* play = m_window->findChild<QAction*>(QStringLiteral("timeline.play"));
+    auto* scrubber = m_window->findChild<QSlider*>(QStringLiteral("timeline.scrubber"));
+    QVERIFY(play && scrubber);
+    QVERIFY2(!play->isEnabled() && !scrubber->isEnabled(), "the seed does not move");
+    QVERIFY(scrubber->toolTip().contains(QStringLiteral("Nothing in this scene moves")));
+
+    m_window->setSettings(Side::A, presetSettings(QStringLiteral("swing")));
+    QVERIFY(settle(*m_window));
+    QVERIFY(play->isEnabled() && scrubber->isEnabled());
+    QTest::keyClick(m_window.get(), Qt::Key_D, Qt::ControlModifier);    // compare: both sides share the clock
+    QVERIFY(settle(*m_window));
+    const QImage still = scene();
+    play->trigger();
+    QVERIFY(m_window->settings(Side::A).animation.play);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->settings(Side::A).animation.time > 0.3, 10000);
+    QCOMPARE(m_window->settings(Side::B).animation.time, m_window->settings(Side::A).animation.time);
+    QVERIFY(m_window->findChild<QLabel*>(QStringLiteral("mapLabel"))->text().contains(QStringLiteral("casters moved")));
+    play->trigger();
+    QVERIFY(!m_window->settings(Side::A).animation.play);
+    QVERIFY(settle(*m_window));
+    const double paused = m_window->settings(Side::A).animation.time;
+    QTest::qWait(300);
+    QCOMPARE(m_window->settings(Side::A).animation.time, paused);
+
+    // A click on the scrubber's groove: one undo step back to where it was.
+    QUndoStack* undo = m_window->findChild<QUndoStack*>();
+    QVERIFY(undo);
+    const int steps = undo->count();
+    scrubber->setValue(250);    // a quarter of the swing's 3 s clip: its widest
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A).animation.time, 0.75);
+    QCOMPARE(m_window->settings(Side::B).animation.time, 0.75);
+    QCOMPARE(undo->count(), steps + 1);
+    QVERIFY(differingPixels(scene(), still) > 100);
+    undo->undo();
+    QVERIFY(settle(*m_window));
+    QCOMPARE(m_window->settings(Side::A).animation.time, paused);
+}
+
 
 SHADOWLAB_TEST_MAIN(tst_MainWindow)
 
