@@ -27,4 +27,11 @@ struct FlickerResult {
 // only pixels facing the light in both frames count.
 FlickerResult measureFlicker(const std::vector<VisibilityBuffer>& frames);
 
+// Over an animation, the camera still: flips between consecutive instants at receiver points
+// that did not move, which the hard reference of the same pixels (`references`, one per frame)
+// does not have. A shadow that moves because its caster did is no flicker; one that swims, or
+// steps over the map's texel grid as its caster glides, is. meanChange is the change the
+// reference does not explain.
+FlickerResult measureTimeFlicker(const std::vector<VisibilityBuffer>& frames, const std::vector<std::vector<float>>& references);
+
 } // namespace shadowlab

@@ -1,7 +1,9 @@
 #include "Measurement.h"
 
+#include "RayTracer.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
+#include "ShadowReference.h"
 #include "ShadowTechnique.h"
 
 #include <algorithm>
@@ -247,6 +249,26 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
     FlickerResult result = measureFlicker(frames);
     result.mapMoves = moves;
     return result;
+}
+
+FlickerResult measureTimeFlicker(Renderer& renderer, const Settings& settings, const std::vector<double>& times, QSize size)
+{
+    std::vector<VisibilityBuffer> frames;
+    std::vector<std::vector<float>> references;
+    std::unique_ptr<RayTracer> tracer;
+    ReferenceOptions options;
+    options.area = false;
+    for (double t : times) {
+        Settings at = settings;
+        at.animation.time = t;
+        frames.push_back(renderer.renderVisibility(at, size));
+        if (!tracer)
+            tracer = std::make_unique<RayTracer>(*renderer.scene(), frames.back().cameraPosition);
+        else
+            tracer->pose(*renderer.scene());
+        references.push_back(traceReference(*tracer, frames.back(), renderer.lightFrame(), options).hard);
+    }
+    return measureTimeFlicker(frames, references);
 }
 
 std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels)

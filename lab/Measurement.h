@@ -93,6 +93,11 @@ FlickerResult measureFlicker(Renderer& renderer, const Settings& settings, const
 
 // The scene's camera path in steps of `texels` of the light's finest map (its first cascade),
 // a fraction for sub-texel motion: what flicker is measured over.
+// Flicker over an animation (measureTimeFlicker()): the frames of `settings` at `times`, the camera
+// still, each against a hard reference traced at its instant (one tracer, its moving casters
+// moved from instant to instant).
+FlickerResult measureTimeFlicker(Renderer& renderer, const Settings& settings, const std::vector<double>& times, QSize size);
+
 std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels);
 
 } // namespace shadowlab

@@ -48,6 +48,9 @@ struct ReportRow {
     // fronts and the picks weigh a moving scene at its worst, and the frame time is the scene's
     // playing.
     AnimatedError animation;
+    // Over the animation's first instants at 60 frames a second, the camera still: flips the
+    // reference does not have (measureTimeFlicker()). Not measured for a still scene.
+    FlickerResult timeFlicker;
     TexelDensity density;       // screen pixels per shadow texel over the measured receivers
     FrameCounts counts;         // what one shadow and one lit pass ask of any GPU (FrameStats.h)
     CostAxis costAxis = CostAxis::Time;     // what costOf() weighs

@@ -4,6 +4,7 @@
 // clock; and a tracer moved to another instant traces what a fresh one does.
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
+#include "Measurement.h"
 #include "RayTracer.h"
 #include "ReferenceAgreement.h"
 #include "SceneLibrary.h"
@@ -148,6 +149,36 @@ private Q_SLOTS:
         QVERIFY(!r.lastFrame().shadowPassRendered);
         QCOMPARE(r.fitCount(), fits);
         QCOMPARE(later, first);
+    }
+
+    // A gliding caster's hard shadow steps over the map's texel grid: flips at still receivers
+    // that the reference does not have. A finer map steps less; the shadow's own motion (which
+    // the reference shares) is not counted.
+    void flickerInTimeFallsWithFinerMaps()
+    {
+        Settings s = presetSettings(QStringLiteral("swing"));
+        applyAssignment(s, QStringLiteral("filter.mode=hard"));
+        std::vector<double> times;
+        for (int i = 0; i < 12; ++i)
+            times.push_back(0.2 + i / 60.0);
+        Renderer& r = m_headless->renderer();
+        std::vector<double> flicker;
+        for (const int size : {256, 1024, 4096}) {
+            s.map.size = size;
+            const FlickerResult f = measureTimeFlicker(r, s, times, kSize);
+            qInfo("map %d: flicker in time %.4f %% (worst pair %.4f %%), %d pixels", size, 100 * f.flicker, 100 * f.worstPair, f.pixels);
+            QVERIFY(f.measured());
+            flicker.push_back(f.flicker);
+        }
+        QVERIFY2(flicker[0] > 0.0, "a coarse map's shadow steps as its caster glides");
+        QVERIFY(flicker[0] > flicker[1] && flicker[1] >= flicker[2]);
+        // The shadow itself moves over many pixels a frame; nearly none of that is flicker.
+        std::vector<VisibilityBuffer> frames;
+        for (double t : times) {
+            s.animation.time = t;
+            frames.push_back(r.renderVisibility(s, kSize));
+        }
+        QVERIFY(measureFlicker(frames).flicker > 5 * flicker[2]);
     }
 
     // A tracer whose instances moved to another time answers as one made at that time.

@@ -61,7 +61,10 @@ void printAnimation(const std::vector<ReportRow>& rows)
         const AnimatedError& a = r.animation;
         const std::size_t worst = a.worst();
         out() << "  " << r.label.leftJustified(kLabelWidth) << QString::number(100 * mean(a.misclassified), 'f', 3).rightJustified(8) << " %"
-              << QString::number(100 * a.misclassified[worst], 'f', 3).rightJustified(8) << " % at " << QString::number(a.times[worst], 'f', 2) << " s\n";
+              << QString::number(100 * a.misclassified[worst], 'f', 3).rightJustified(8) << " % at " << QString::number(a.times[worst], 'f', 2) << " s";
+        if (r.timeFlicker.measured())
+            out() << ", flicker in time " << QString::number(100 * r.timeFlicker.flicker, 'f', 3) << " %";
+        out() << '\n';
     }
 }
 
@@ -359,6 +362,12 @@ ReportRow measureRow(const ReportRequest& request, const SweepConfiguration& con
                                      subTexelPath(headless.renderer(), configuration.settings, request.size, request.flickerFrames,
                                                   kFlickerStepTexels),
                                      request.size);
+    }
+    if (request.flickerFrames > 1 && !request.times.empty()) {
+        std::vector<double> walk;
+        for (int i = 0; i < request.flickerFrames; ++i)
+            walk.push_back(request.times.front() + i / 60.0);
+        row.timeFlicker = measureTimeFlicker(headless.renderer(), configuration.settings, walk, request.size);
     }
     printFitWarnings(headless.renderer().lastFit(), configuration.label);
     return row;

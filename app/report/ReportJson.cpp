@@ -105,6 +105,12 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                                                                   {QStringLiteral("median_pixels_per_texel"), r.density.medianPixelsPerTexel},
                                                                                   {QStringLiteral("pixels"), r.density.counted}}},
                                     {QStringLiteral("animation"), animationJson(r.animation)},
+                                    {QStringLiteral("time_flicker"), r.timeFlicker.measured()
+                                         ? QJsonValue(QJsonObject{{QStringLiteral("flips_pct"), 100 * r.timeFlicker.flicker},
+                                                                  {QStringLiteral("worst_pair_pct"), 100 * r.timeFlicker.worstPair},
+                                                                  {QStringLiteral("mean_change_pct"), 100 * r.timeFlicker.meanChange},
+                                                                  {QStringLiteral("frames"), r.timeFlicker.frames}})
+                                         : QJsonValue()},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), flickerValue(r, r.flicker.flicker)},
                                                                             {QStringLiteral("worst_pair_pct"), flickerValue(r, r.flicker.worstPair)},
                                                                             {QStringLiteral("mean_change_pct"), flickerValue(r, r.flicker.meanChange)},

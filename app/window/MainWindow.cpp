@@ -29,6 +29,7 @@
 #include <QSplitter>
 #include <QTimer>
 #include <QToolBar>
+#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -105,7 +106,15 @@ void MainWindow::createViews()
     m_mainSplitter->setStretchFactor(0, 3);
     m_mainSplitter->setStretchFactor(1, 2);
     m_scenePanes[1]->setVisible(false);
-    setCentralWidget(m_mainSplitter);
+    // The timeline under the views (not a window-wide toolbar: the docks keep their height).
+    m_timeline = new TimelineBar;
+    auto* central = new QWidget;
+    auto* column = new QVBoxLayout(central);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    column->addWidget(m_mainSplitter, 1);
+    column->addWidget(m_timeline);
+    setCentralWidget(central);
 }
 
 void MainWindow::createControllers()
@@ -677,8 +686,6 @@ void MainWindow::setLightAnimation(bool animate, double degreesPerSecond)
 
 void MainWindow::createTimeline()
 {
-    m_timeline = new TimelineBar(this);
-    addToolBar(Qt::BottomToolBarArea, m_timeline);
     connect(m_timeline, &TimelineBar::playToggled, this, [this](bool play) {
         Settings s = m_sides.selectedSettings();
         s.animation.play = play;
