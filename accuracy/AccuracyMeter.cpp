@@ -56,10 +56,10 @@ AccuracyResult compareWithReference(const VisibilityBuffer& buffer, const Refere
 
 const RayTracer& AccuracyMeter::tracerFor(const Scene& scene, const glm::dvec3& origin)
 {
-    TracedScene traced{scene.name, scene.identity, origin, {}};
+    TracedScene traced{scene.name, scene.identity, origin, scene.meshes.size(), {}};
     for (const SceneObject& object : scene.objects)
         traced.casts.push_back(object.castsShadow);
-    if (m_tracer && m_traced == traced && scene.moves()) {
+    if (m_tracer && m_traced == traced) {
         m_tracer->pose(scene);
         return *m_tracer;
     }
@@ -83,9 +83,10 @@ AccuracyResult AccuracyMeter::measure(const VisibilityBuffer& buffer, const Scen
     } else {
         ReferenceOptions options = m_options;
         options.lightRadius = settings.reference.lightRadius;
-        const RayTracer& tracer = tracerFor(scene, buffer.cameraPosition);
+        std::optional<RayTracer> still;     // a still scene's, made for this trace alone
+        const RayTracer& tracer = scene.moves() ? tracerFor(scene, buffer.cameraPosition) : still.emplace(scene, buffer.cameraPosition);
         m_references.insert(m_references.begin(), {key, traceReference(tracer, buffer, light, options, progress)});
-        if (m_references.size() > kCachedReferences)
+        if (m_references.size() > m_keep)
             m_references.pop_back();
         ++m_referenceComputations;
         raysPerSecond = m_references.front().second.raysPerSecond();

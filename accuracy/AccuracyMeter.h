@@ -66,9 +66,16 @@ private:
     // A few references, newest first: a sweep that alternates between light placements (ortho
     // and perspective, say) must not trace each again on every switch.
     static constexpr std::size_t kCachedReferences = 4;
+public:
+    // Keeps at least `count` references: a report over N instants of an animation measures each
+    // configuration at all N, and each needs its instant's reference again.
+    void keepReferences(std::size_t count) { m_keep = std::max(count, kCachedReferences); }
 
-    // The tracer of the last scene traced, kept for the next instant of the same scene: its
-    // moving casters are moved (RayTracer::pose), not built again.
+private:
+    std::size_t m_keep = kCachedReferences;
+
+    // The tracer of the last moving scene traced, kept for the next instant of the same scene:
+    // its moving casters are moved (RayTracer::pose), not built again. A still scene's is not kept.
     const RayTracer& tracerFor(const Scene& scene, const glm::dvec3& origin);
 
     ReferenceOptions m_options;
@@ -77,6 +84,7 @@ private:
         QString name;
         QByteArray identity;
         glm::dvec3 origin{0.0};
+        std::size_t meshes = 0;
         std::vector<bool> casts;
         bool operator==(const TracedScene&) const = default;
     };

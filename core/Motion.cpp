@@ -128,14 +128,16 @@ Bounds Motion::sweptBounds(const Bounds& local, bool padded) const
 
 QString motionProblem(const Motion& motion)
 {
-    if (!std::isfinite(motion.period) || !(motion.period > 0.0))
-        return QStringLiteral("its period must be a number of seconds above 0");
+    if (!std::isfinite(motion.period) || !(motion.period > 0.0) || motion.period > kMaxMotionPeriod)
+        return QStringLiteral("its period must be a number of seconds above 0, at most %1").arg(kMaxMotionPeriod);
     if (!finite(motion.point))
         return QStringLiteral("its point must be three finite numbers");
     if (!finite(motion.axis) || std::abs(glm::length(motion.axis) - 1.0) > 1e-6)
-        return QStringLiteral("its axis must be a direction, not [0, 0, 0]");
-    if (!std::isfinite(motion.amplitude) || !std::isfinite(motion.start))
+        return QStringLiteral("its axis must be a unit direction (three finite numbers of length 1)");
+    if (!std::isfinite(motion.amplitude))
         return QStringLiteral("its amplitude must be a finite number");
+    if (!std::isfinite(motion.start))
+        return QStringLiteral("its start must be a finite number of seconds");
     if (motion.kind == Motion::Kind::Path) {
         if (motion.keys.empty())
             return QStringLiteral("a path needs at least one key");

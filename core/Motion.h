@@ -12,6 +12,9 @@
 
 namespace shadowlab {
 
+// The longest cycle a motion may have, in seconds: within scene.time's range.
+inline constexpr double kMaxMotionPeriod = 1e6;
+
 // One key of a path: where an object is at `time` seconds, turned and scaled.
 struct MotionKey {
     double time = 0.0;

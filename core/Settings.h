@@ -214,6 +214,9 @@ struct ObjectSwitches {
     bool operator==(const ObjectSwitches&) const = default;
 };
 
+// The latest scene.time there is, in seconds.
+inline constexpr double kMaxSceneTime = 1e6;
+
 // The scene's clock: where its moving objects are. A frame is a pure function of its settings,
 // time included; a still scene ignores it.
 struct AnimationSettings {

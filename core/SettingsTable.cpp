@@ -61,7 +61,7 @@ Entry sceneKey(const SettingPresentation& look)
                     s.scene = name;
                     return;
                 }
-                if (cityBuildingCount(name) < 0)
+                if (cityBuildingCount(name) < 0 && !QFileInfo(v.trimmed()).isFile())
                     throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1': a city's building count must be a whole number in [1, %2] and its "
                                                                                 "vehicles one in [0, %3], e.g. city:8000 or city+50")
                                                                      .arg(displayText(v)).arg(kMaxCityBuildings).arg(kMaxCityVehicles));
@@ -524,7 +524,7 @@ std::vector<Entry> makeEntries()
                                 "what is measured, by name (or #i), separated by commas",
                                 QStringLiteral("Receives shadows"), &ObjectSwitches::noReceive));
     e.push_back(number({.key = "scene.time",
-                        .range = {.lo = 0.0, .hi = 1e6},
+                        .range = {.lo = 0.0, .hi = kMaxSceneTime},
                         .help = "Seconds since the scene's start: where its moving objects (shapes' \"motion\", a model's node animation, "
                                 "a city's vehicles) are; a still scene ignores it",
                         .look = {.label = QStringLiteral("Time"), .unit = QStringLiteral(" s"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 10.0, .group = kScene}},

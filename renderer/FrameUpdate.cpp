@@ -8,14 +8,14 @@ namespace shadowlab {
 
 namespace {
 
-// Receivers and casters as the scene's objects say.
+// Receivers and casters as the scene's objects say, moving ones where they go.
 std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
 {
     std::vector<FitObject> objects;
     objects.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        objects.push_back({layout.objectBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
+        objects.push_back({layout.fitBounds(i), object.castsShadow, object.receivesShadow, scene.meshes.at(std::size_t(object.mesh)).convex});
     }
     return objects;
 }

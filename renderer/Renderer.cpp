@@ -62,10 +62,11 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
                             QStringLiteral("a pool of %1² pages needs a %2² texture, and this driver allows %3² at most; lower shadow.virtual_pool")
                                 .arg(settings.shadow.virtualPool).arg(settings.shadow.virtualPool * kVirtualSlotTexels).arg(maxTextureSize()));
     ensureMap(settings, storage, grid, reversed);
+    const int sceneBefore = m_sceneGeneration;
     ensureScene(settings);
+    const bool newScene = m_sceneGeneration != sceneBefore;
     // Moving objects to where they are at the frame's time: everything that depends on where the
     // casters are is due again, as for a new scene (its geometry stays uploaded).
-    const int sceneBefore = m_sceneGeneration;
     const bool casterMoved = m_scene->pose(settings.animation.time);
     if (casterMoved)
         ++m_sceneGeneration;
@@ -101,7 +102,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     countShadowPass(settings, storage, stats);
     buildDepthRange(settings, timing, stats);
     m_light = m_update.views().frames.front();
-    stats.redraw = redrawReason(stats.shadowPassRendered, casterMoved, sceneBefore != m_sceneGeneration, settings);
+    stats.redraw = redrawReason(stats.shadowPassRendered, casterMoved, newScene, settings);
     m_viewSettings = settings;
 }
 
@@ -110,10 +111,10 @@ FrameStats::Redraw Renderer::redrawReason(bool drawn, bool casterMoved, bool sce
     using Redraw = FrameStats::Redraw;
     if (!drawn)
         return Redraw::None;
-    if (casterMoved)
-        return Redraw::Casters;
     if (sceneChanged)
         return Redraw::Scene;
+    if (casterMoved)
+        return Redraw::Casters;
     if (settings.light != m_viewSettings.light)
         return Redraw::Light;
     if (settings.camera != m_viewSettings.camera)

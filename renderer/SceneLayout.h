@@ -69,6 +69,9 @@ public:
     // Whether scene.objects[i] moves.
     bool moves(std::size_t i) const { return m_swept.at(i).has_value(); }
 
+    // What the light is fitted to for scene.objects[i]: everywhere it goes, for one that moves,
+    // so the map's volume and texel grid stand still while it moves (no swimming).
+    const Bounds& fitBounds(std::size_t i) const { return m_swept.at(i) ? *m_swept[i] : m_objectBounds.at(i); }
     // World bounds of scene.objects[i] as posed (culling runs per frame).
     const Bounds& objectBounds(std::size_t i) const { return m_objectBounds.at(i); }
     // The corners of scene.objects[i]'s mesh's own box through its model (as Bounds::corners()):

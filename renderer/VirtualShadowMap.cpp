@@ -324,6 +324,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
         m_poolSide = settings.shadow.virtualPool;
         m_cacheLayoutGeneration = m_layoutGeneration;
         m_tableDirty = true;
+        m_requestKey.reset();   // what the receivers ask for is asked again: they may have moved
         if (m_fence) {          // pages of what is gone
             m_gl->glDeleteSync(m_fence);
             m_fence = nullptr;

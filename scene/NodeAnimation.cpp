@@ -19,6 +19,8 @@ namespace {
 
 // Assimp's documented rate for a file that states none (mTicksPerSecond 0).
 constexpr double kDefaultTicksPerSecond = 25.0;
+// The longest gap between the keys of a turning node, or of one under a moving parent.
+constexpr double kDenseKeySeconds = 1.0 / 30.0;
 
 // The placement as position, rotation and scale (T·R·S). A mirror is kept as a negative x
 // scale, so that it stays on one axis from key to key and the turns between keys stay short.
@@ -215,6 +217,21 @@ std::vector<double> NodeAnimation::timesOf(const Channel& channel, const NodePos
     add(channel.scales);
     std::sort(times.begin(), times.end());
     times.erase(std::unique(times.begin(), times.end()), times.end());
+    // A turn composed with an offset (a child of a turning node, or a node turning about a pivot
+    // its parent puts aside) sweeps an arc, which keys far apart would cut as a chord: keys at
+    // most kDenseKeySeconds apart keep it on the arc.
+    if (parent || !channel.rotations.empty()) {
+        std::vector<double> dense;
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            dense.push_back(times[i]);
+            if (i + 1 == times.size())
+                break;
+            const int steps = int(std::ceil((times[i + 1] - times[i]) / kDenseKeySeconds));
+            for (int k = 1; k < steps && dense.size() <= kMaxMotionKeys; ++k)
+                dense.push_back(times[i] + (times[i + 1] - times[i]) * k / steps);
+        }
+        times = std::move(dense);
+    }
     resampled = times.size() > kMaxMotionKeys;
     if (resampled) {
         const double end = times.back();

@@ -9,7 +9,9 @@ Bounds Scene::worldBounds(const SceneObject& object) const
     Bounds local;
     for (const Vertex& v : meshes.at(std::size_t(object.mesh)).vertices)
         local.extend(glm::dvec3(v.position));
-    return object.motion ? object.motion->sweptBounds(local) : local.transformed(object.model);
+    // Where it goes at the sweep's samples, unpadded: a ground laid under the scene meets the
+    // lowest pose, not half a sample's step below it.
+    return object.motion ? object.motion->sweptBounds(local, false) : local.transformed(object.model);
 }
 
 bool Scene::moves() const

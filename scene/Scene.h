@@ -60,7 +60,8 @@ struct Scene {
     QByteArray identity;
     QStringList warnings;               // what the import changed or ignored, said once on load
 
-    // World bounds of the object; of everywhere it goes, for one that moves.
+    // World bounds of the object; of everywhere it goes, for one that moves (at the samples of
+    // Motion::sweptBounds, unpadded).
     Bounds worldBounds(const SceneObject& object) const;
     Bounds casterBounds() const;        // empty when nothing casts
     Bounds bounds() const;              // everything

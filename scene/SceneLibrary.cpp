@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -359,8 +361,14 @@ bool sceneMoves(const QString& name)
     if (cityBuildingCount(name) > 0)
         return cityVehicleCount(name) > 0;
     try {
-        if (isPresetName(name))
-            return buildScene(name).moves();
+        if (isPresetName(name)) {
+            // Asked at every measurement (the reference's key): a preset is built once for it.
+            static std::mutex mutex;
+            static std::map<QString, bool> moving;
+            std::lock_guard lock(mutex);
+            const auto known = moving.find(name);
+            return known != moving.end() ? known->second : moving.emplace(name, buildScene(name).moves()).first->second;
+        }
         return loadSceneFile(name)->moves();
     } catch (const std::exception&) {
         return false;

@@ -135,6 +135,33 @@ private Q_SLOTS:
         QVERIFY(before != there);
     }
 
+    // The light is fitted to everywhere the moving casters go: while they move, the map's volume
+    // and texel grid stand still, so the still casters' shadows do not swim.
+    void theMapStandsStillWhileCastersMove_data()
+    {
+        QTest::addColumn<QString>("light");
+        QTest::newRow("directional") << QStringLiteral("directional");
+        QTest::newRow("spot") << QStringLiteral("spot");
+    }
+    void theMapStandsStillWhileCastersMove()
+    {
+        QFETCH(QString, light);
+        Settings s = presetSettings(m_moving);
+        applyAssignment(s, QStringLiteral("light.type=") + light);
+        Renderer& r = m_headless->renderer();
+        s.animation.time = 0.5;
+        r.renderVisibility(s, kSize);
+        const glm::dmat4 first = r.lightFrame().shadowMatrix;
+        const int fits = r.fitCount();
+        for (const double t : {1.3, 2.9, 5.1}) {
+            s.animation.time = t;
+            r.renderVisibility(s, kSize);
+            QVERIFY(r.lastFrame().shadowPassRendered);
+            QCOMPARE(r.lightFrame().shadowMatrix, first);
+        }
+        QVERIFY(r.fitCount() > fits);   // refitted (the casters moved), to the same volume
+    }
+
     // On a still scene the clock changes nothing: no refit, no shadow pass, the same picture.
     void aStillSceneIgnoresTheClock()
     {

@@ -522,6 +522,7 @@ int runReport(const QStringList& arguments)
         total.start();
         HeadlessRenderer headless;
         AccuracyMeter meter(ReferenceOptions{true, request.base.reference.lightRadius, request.samples});
+        meter.keepReferences(request.times.size() + 1);
         ProgressBar progress;
         AccuracyPass accuracy = measureAllAccuracy(request, headless, meter, progress);
         timeAll(request, headless, progress, accuracy.rows);

@@ -265,18 +265,22 @@ void AccuracyController::startMeasurement(bool thenSweep)
 
 void AccuracyController::measureCaptures()
 {
+    std::optional<Settings> measured;     // the selected side, as it was captured
     while (!m_captures.empty()) {
         const Capture& capture = m_captures.front();
         const ReferenceVisibility* reference = cachedReference(capture.key);
         if (!reference)
             break;
         measure(capture, *reference);
+        if (capture.side == m_selected)
+            measured = capture.settings;
         m_captures.erase(m_captures.begin());
     }
     if (m_captures.empty()) {
         if (m_thenSweep) {
             m_thenSweep = false;
-            startSweep();
+            // Around the settings measured, not the side's now: a playing scene's clock has moved on.
+            startSweep(measured.value_or(settings()));
         }
         return;
     }
@@ -364,13 +368,13 @@ void AccuracyController::measure(const Capture& capture, const ReferenceVisibili
     emit measurementChanged();
 }
 
-void AccuracyController::startSweep()
+void AccuracyController::startSweep(const Settings& around)
 {
     const int maxTextureSize = headless().renderer().maxTextureSize();
     m_sweepPlan.clear();
-    m_sweepKey = referenceKeyFor(settings(), measureSize(), m_areaSamplesPerAxis);
-    for (const SweepEntry& entry : sweepAround(settings())) {
-        Settings s = applySweepEntry(settings(), entry);    // valid: sweepAround() keeps only what is
+    m_sweepKey = referenceKeyFor(around, measureSize(), m_areaSamplesPerAxis);
+    for (const SweepEntry& entry : sweepAround(around)) {
+        Settings s = applySweepEntry(around, entry);    // valid: sweepAround() keeps only what is
         if (s.map.size <= maxTextureSize)
             m_sweepPlan.push_back({entry.label, std::move(s), 0.0, 0.0, QString()});
     }

@@ -151,7 +151,7 @@ private:
     void measure(const Capture& capture, const ReferenceVisibility& reference);
     // The cached reference for `key`, or null.
     const ReferenceVisibility* cachedReference(const ReferenceKey& key) const;
-    void startSweep();
+    void startSweep(const Settings& around);
     void sweepStep();
     void finishSweep(const QString& message);
     void tuneStep();

@@ -101,8 +101,10 @@ void CompareController::advanceClock(double seconds, double clipLength)
 {
     if (!(clipLength > 0.0))
         return;
+    // Wrapped at scene.time's range, not the clip's: objects whose cycles are shorter than the
+    // longest (a city's vehicles) would jump at every loop of it.
     const AnimationSettings& clock = m_sides[m_selected].animation;
-    setTime(std::fmod(clock.time + seconds * clock.speed, clipLength));
+    setTime(std::fmod(clock.time + seconds * clock.speed, kMaxSceneTime));
 }
 
 void CompareController::turnLights(double radians)

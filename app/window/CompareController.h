@@ -36,8 +36,8 @@ public:
     void show(const SettingsChange::Sides& target, const SettingsChange::Sides& from);
     // Both lights turned by `radians` around the vertical through their targets.
     void turnLights(double radians);
-    // The shared clock: both sides at `time`, or `seconds` on by their speed, wrapped into a clip
-    // of `clipLength` seconds.
+    // The shared clock: both sides at `time`, or `seconds` on by their speed where the scene has a
+    // clip of `clipLength` seconds (0: a still scene, whose clock stands).
     void setTime(double time);
     void advanceClock(double seconds, double clipLength);
     // The selected side's settings with its light turned around its target by these angles

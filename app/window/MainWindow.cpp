@@ -698,6 +698,7 @@ void MainWindow::createTimeline()
         if (m_scrubStart[0] && m_scrubStart[0]->animation.time != m_sides.settings(0).animation.time)
             recordChange(m_scrubStart, selectedSide(), tr("Set scene.time"));
         m_scrubStart = {};
+        showClock();    // a drag paused the clock; a playing scene plays on
     });
 }
 

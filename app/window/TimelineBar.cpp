@@ -68,7 +68,9 @@ void TimelineBar::show(double clipLength, double time, bool playing)
     }
     if (!m_scrubbing) {
         const QSignalBlocker block(m_slider);
-        const double within = moves ? std::fmod(time, clipLength) / clipLength : 0.0;
+        // The end of the clip is its end, not the start of the next loop.
+        const double at = moves ? std::fmod(time, clipLength) : 0.0;
+        const double within = moves ? (at == 0.0 && time > 0.0 && time <= clipLength ? 1.0 : at / clipLength) : 0.0;
         m_slider->setValue(int(std::lround(std::clamp(within, 0.0, 1.0) * kSteps)));
     }
     m_time->setText(moves ? tr("%1 s / %2 s").arg(std::fmod(time, clipLength), 0, 'f', 2).arg(clipLength, 0, 'f', 2) : tr("still"));
