@@ -1,5 +1,7 @@
 #include "DepthMapPicture.h"
 
+#include "FrameStatsText.h"
+
 #include "Renderer.h"
 
 #include <QPainter>
@@ -64,6 +66,11 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
     facts.fitted = renderer.lastFit().fitted;
     facts.mapSize = renderer.shadowMap().size();
     facts.moment = renderer.depthMapMoment();
+    // What moved, while something does: a new scene or a changed setting goes without saying.
+    using Redraw = FrameStats::Redraw;
+    const Redraw redraw = renderer.lastFrame().redraw;
+    if (redraw == Redraw::Casters || redraw == Redraw::Light || redraw == Redraw::Camera)
+        facts.redrawn = redrawStatusText(renderer.lastFrame());
     facts.views = std::max<int>(1, int(renderer.shadowViews().set.views.size()));
     // Several views sit in tiles side by side: the picture is of the whole texture.
     const ShadowMap& map = renderer.shadowMap();
@@ -314,6 +321,19 @@ void drawOutsideNote(const Canvas& c, const DepthMapPicture& picture, const QRec
     }
 }
 
+// Why the last frame drew the map, in the top right corner: a moving caster's footprint is
+// redrawn as it moves, and the pane says so.
+void drawRedrawNote(const Canvas& c, const DepthMapFacts& facts)
+{
+    if (facts.redrawn.isEmpty())
+        return;
+    const QString text = c.metrics.elidedText(facts.redrawn, Qt::ElideRight, std::max(0, c.area.width() / 2 - 8));
+    const QRectF box(c.area.right() - 4 - c.metrics.horizontalAdvance(text), c.area.top() + 4, c.metrics.horizontalAdvance(text), c.metrics.height());
+    c.painter.fillRect(box.adjusted(-3, 0, 3, 0), QColor(30, 32, 40, 170));
+    c.painter.setPen(QColor(235, 200, 120));
+    c.painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter, text);
+}
+
 // What the colour bar shows, longest first.
 QStringList legendTitles(const DepthMapFacts& facts)
 {
@@ -399,6 +419,7 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         drawFootprint(canvas, *this, facts, visible);
     }
     drawOutsideNote(canvas, *this, visible);
+    drawRedrawNote(canvas, facts);
     painter.setClipping(false);
 
     // The legend, on the pane's clear colour: title and the empty swatch, the colour bar (drawn

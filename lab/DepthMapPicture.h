@@ -36,6 +36,7 @@ struct DepthMapFacts {
     // shadow.virtual: the map is the pool of pages, drawn with their levels and counts instead
     // of a light volume and the camera's region.
     std::optional<VirtualPoolFacts> pool;
+    QString redrawn;                        // what moved and redrew the map last frame (redrawStatusText()); empty when nothing did
 };
 
 // The facts of `renderer`'s last frame, with `span` measured by whoever draws, and the map

@@ -1,5 +1,8 @@
 #include "FrameStatsText.h"
 
+#include <algorithm>
+#include <map>
+
 #include <QCoreApplication>
 
 namespace shadowlab {
@@ -16,6 +19,21 @@ QString warpStatusText(const FrameStats& stats)
     if (stats.warpDeclined == FrameStats::WarpDeclined::NoGain)
         return tr("lispsm warp not drawn: it would make the texels nearest the camera only %1× as fine as unwarped").arg(stats.warpGain, 0, 'f', 2);
     return tr("lispsm warp not drawn: the camera looks along the light, where no warp helps");
+}
+
+QString redrawStatusText(const FrameStats& stats)
+{
+    using Redraw = FrameStats::Redraw;
+    static const std::map<Redraw, QString> why{{Redraw::Scene, QStringLiteral("new scene")},     {Redraw::Casters, QStringLiteral("casters moved")},
+                                               {Redraw::Light, QStringLiteral("light moved")},   {Redraw::Camera, QStringLiteral("camera moved")},
+                                               {Redraw::Settings, QStringLiteral("settings changed")}};
+    const auto reason = why.find(stats.redraw);
+    if (reason == why.end())
+        return {};
+    if (stats.viewRendered.empty())
+        return QStringLiteral("redrawn: %1").arg(reason->second);
+    const auto drawn = std::count(stats.viewRendered.begin(), stats.viewRendered.end(), true);
+    return QStringLiteral("%1 of %2 views redrawn: %3").arg(drawn).arg(stats.viewRendered.size()).arg(reason->second);
 }
 
 QString virtualMapStatusText(const FrameStats& stats)

@@ -15,6 +15,9 @@ QString warpStatusText(const FrameStats& stats);
 // resident of 900, 12 drawn"), with a warning where the pool coarsened requests; empty where
 // shadow.virtual is off.
 QString virtualMapStatusText(const FrameStats& stats);
+// Why the shadow pass drew this frame, and how many of the views ("2 of 6 views redrawn:
+// casters moved"); empty when it drew nothing. The status bar and the depth pane say it.
+QString redrawStatusText(const FrameStats& stats);
 
 // A count for people: "812", "12.4 k", "4.19 M", "1.07 G"; "n/a" for a count not taken (-1).
 QString countText(std::int64_t count);

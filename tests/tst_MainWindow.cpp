@@ -1342,6 +1342,7 @@ void tst_MainWindow::timelinePlaysScrubsAndSharesTheClock()
     QTRY_VERIFY_WITH_TIMEOUT(m_window->settings(Side::A).animation.time > 0.3, 10000);
     QCOMPARE(m_window->settings(Side::B).animation.time, m_window->settings(Side::A).animation.time);
     QVERIFY(m_window->findChild<QLabel*>(QStringLiteral("mapLabel"))->text().contains(QStringLiteral("casters moved")));
+    QVERIFY(depthMapFacts(*m_window->sceneView(Side::A)->renderer(), std::nullopt).redrawn.contains(QStringLiteral("casters moved")));
     play->trigger();
     QVERIFY(!m_window->settings(Side::A).animation.play);
     QVERIFY(settle(*m_window));

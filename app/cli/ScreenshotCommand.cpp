@@ -7,6 +7,7 @@
 #include "OutputFile.h"
 #include "PropertiesDock.h"
 #include "RenderError.h"
+#include "SceneLibrary.h"
 #include "SceneView.h"
 #include "SettingsKeys.h"
 
@@ -32,9 +33,12 @@ int totalFrames(const MainWindow& window)
         + window.depthMapView()->frameCount();
 }
 
-// Runs the event loop until every visible view has drawn and then nothing has drawn for a while.
+// Runs the event loop until every visible view has drawn and then nothing has drawn for a while;
+// a scene that plays never stops drawing, so there a while after every view has drawn is the moment.
 void waitUntilRendered(const MainWindow& window)
 {
+    const Settings& shown = window.settings(MainWindow::Side::A);
+    const bool playing = shown.animation.play && sceneMoves(shown.scene);
     const QDeadlineTimer deadline(kTimeoutMs);
     auto drawn = [&window] {
         return window.sceneView(MainWindow::Side::A)->frameCount() > 0
@@ -45,7 +49,7 @@ void waitUntilRendered(const MainWindow& window)
     QDeadlineTimer settled(kSettledMs);
     while (!deadline.hasExpired()) {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (totalFrames(window) != frames) {
+        if (totalFrames(window) != frames && !(playing && drawn())) {
             frames = totalFrames(window);
             settled.setRemainingTime(kSettledMs);
         } else if (drawn() && settled.hasExpired()) {

@@ -12,9 +12,6 @@
 #include <QToolButton>
 #include <QWidgetAction>
 
-#include <algorithm>
-#include <map>
-
 namespace shadowlab {
 
 WindowStatusBar::WindowStatusBar(QWidget* progress, QWidget* parent) : QStatusBar(parent)
@@ -114,21 +111,6 @@ void WindowStatusBar::setTiming(const QString& text, const QString& toolTip)
     m_timingLabel->setToolTip(toolTip);
 }
 
-QString WindowStatusBar::redrawText(const FrameStats& stats)
-{
-    using Redraw = FrameStats::Redraw;
-    static const std::map<Redraw, const char*> why{{Redraw::Scene, QT_TR_NOOP("new scene")},   {Redraw::Casters, QT_TR_NOOP("casters moved")},
-                                                   {Redraw::Light, QT_TR_NOOP("light moved")}, {Redraw::Camera, QT_TR_NOOP("camera moved")},
-                                                   {Redraw::Settings, QT_TR_NOOP("settings changed")}};
-    const auto reason = why.find(stats.redraw);
-    if (reason == why.end())
-        return {};
-    if (stats.viewRendered.empty())
-        return tr("redrawn: %1").arg(tr(reason->second));
-    const auto drawn = std::count(stats.viewRendered.begin(), stats.viewRendered.end(), true);
-    return tr("%1 of %2 views redrawn: %3").arg(drawn).arg(stats.viewRendered.size()).arg(tr(reason->second));
-}
-
 void WindowStatusBar::showMap(const FrameStats& stats, const Settings& shown)
 {
     // Short enough for the default window; the tooltip says it in full.
@@ -136,7 +118,7 @@ void WindowStatusBar::showMap(const FrameStats& stats, const Settings& shown)
     const QString footprint = tr("texel footprint %1 wu").arg(stats.texelWorldSize, 0, 'g', 3);
     const QString mapName = shown.shadow.virtualMap ? tr("virtual map, %1 pages").arg(stats.virtualPages.resident) : tr("map %1").arg(squareSize(shown.map.size));
     QString text = shown.shadow.enabled ? tr("%1 · %2").arg(mapName, footprint) : tr("no shadow map");
-    if (const QString redrawn = redrawText(stats); !redrawn.isEmpty())
+    if (const QString redrawn = redrawStatusText(stats); !redrawn.isEmpty())
         text += QStringLiteral(" · ") + redrawn;
     m_mapLabel->setText(text);
     QString mapTip = tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow.");

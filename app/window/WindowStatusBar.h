@@ -32,9 +32,6 @@ public:
     void setTiming(const QString& text, const QString& toolTip);
     // The map of the frame `stats` rendered with `shown`.
     void showMap(const FrameStats& stats, const Settings& shown);
-    // Why the shadow pass drew this frame, and how many of the views ("2 of 6 views redrawn:
-    // casters moved"); empty when it drew nothing.
-    static QString redrawText(const FrameStats& stats);
     // The warnings that `source` ("fit", "import") stands by now, in place of its earlier ones:
     // a button beside the messages counts them all and lists them whole, so none is lost behind
     // another or cut off.
