@@ -705,6 +705,9 @@ private Q_SLOTS:
         QVERIFY2(bad.err.contains("--times: 'soon' is not a time"), qPrintable(bad.err));
         const Run render = shadowlab({"render", "--scene", "seed", "--time", "2", "--size", "64x36", "--out", m_dir.filePath("still.png")});
         QVERIFY2(render.exitCode == 0 && render.err.contains("nothing in the scene seed moves"), qPrintable(render.err));
+        // The window of a playing scene never stops drawing: its screenshot is a moment of it.
+        const Run playing = shadowlab({"screenshot", "--scene", "swing", "--set", "scene.play=true", "--out", m_dir.filePath("playing.png")});
+        QVERIFY2(playing.exitCode == 0 && QImage(m_dir.filePath("playing.png")).width() > 0, qPrintable(playing.err));
         const Run late = shadowlab({"render", "--scene", "swing", "--time", "-1", "--out", m_dir.filePath("never.png")});
         QCOMPARE(late.exitCode, 2);
         QVERIFY2(late.err.contains("--time"), qPrintable(late.err));
