@@ -124,28 +124,32 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
             m_masks.push_back(std::move(mask));
         }
         rtcCommitGeometry(geometry);
-        if (moving) {
-            RTCScene own = rtcNewScene(m_device);
-            rtcSetSceneFlags(own, RTC_SCENE_FLAG_ROBUST);
-            rtcSetSceneBuildQuality(own, RTC_BUILD_QUALITY_HIGH);
-            rtcAttachGeometry(own, geometry);
-            rtcCommitScene(own);
-            RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
-            rtcSetGeometryInstancedScene(instance, own);
-            rtcReleaseScene(own);   // the instance holds it
-            m_instances.push_back({std::size_t(&object - scene.objects.data()), instance});
-            place(m_instances.back(), object.model);
-            rtcAttachGeometry(m_scene, instance);
-            rtcReleaseGeometry(instance);   // the scene holds it
-        } else {
+        if (moving)
+            attachMoving(geometry, std::size_t(&object - scene.objects.data()), object.model);
+        else
             rtcAttachGeometry(m_scene, geometry);
-        }
         rtcReleaseGeometry(geometry);
         m_triangles += int(mesh.indices.size() / 3);
     }
     rtcCommitScene(m_scene);
     if (const RTCError error = rtcGetDeviceError(m_device); error != RTC_ERROR_NONE)
         throw TraceError(QStringLiteral("Embree could not build the scene (error %1)").arg(int(error)));
+}
+
+void RayTracer::attachMoving(RTCGeometry geometry, std::size_t object, const glm::dmat4& model)
+{
+    RTCScene own = rtcNewScene(m_device);
+    rtcSetSceneFlags(own, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(own, RTC_BUILD_QUALITY_HIGH);
+    rtcAttachGeometry(own, geometry);
+    rtcCommitScene(own);
+    RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(instance, own);
+    rtcReleaseScene(own);   // the instance holds it
+    m_instances.push_back({object, instance});
+    place(m_instances.back(), model);
+    rtcAttachGeometry(m_scene, instance);
+    rtcReleaseGeometry(instance);   // the scene holds it
 }
 
 void RayTracer::place(const Instance& instance, const glm::dmat4& model) const

@@ -67,6 +67,9 @@ private:
         std::size_t object = 0;     // index into the scene's objects
         RTCGeometry geometry = nullptr;     // owned by the scene it is attached to
     };
+    // `geometry` (a moving caster's mesh in its own space) in a scene of its own, instanced
+    // into the tracer's at `model`.
+    void attachMoving(RTCGeometry geometry, std::size_t object, const glm::dmat4& model);
     void place(const Instance& instance, const glm::dmat4& model) const;
 
     glm::dvec3 m_origin;

@@ -67,6 +67,17 @@ QJsonValue animationJson(const AnimatedError& a)
                        {QStringLiteral("dssim_pct"), percents(a.dssim)}};
 }
 
+// Flicker over an animation's frames; null where it was not measured.
+QJsonValue timeFlickerJson(const FlickerResult& f)
+{
+    if (!f.measured())
+        return QJsonValue();
+    return QJsonObject{{QStringLiteral("flips_pct"), 100 * f.flicker},
+                       {QStringLiteral("worst_pair_pct"), 100 * f.worstPair},
+                       {QStringLiteral("mean_change_pct"), 100 * f.meanChange},
+                       {QStringLiteral("frames"), f.frames}};
+}
+
 QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
     QJsonArray jsonRows;
@@ -105,12 +116,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                                                                   {QStringLiteral("median_pixels_per_texel"), r.density.medianPixelsPerTexel},
                                                                                   {QStringLiteral("pixels"), r.density.counted}}},
                                     {QStringLiteral("animation"), animationJson(r.animation)},
-                                    {QStringLiteral("time_flicker"), r.timeFlicker.measured()
-                                         ? QJsonValue(QJsonObject{{QStringLiteral("flips_pct"), 100 * r.timeFlicker.flicker},
-                                                                  {QStringLiteral("worst_pair_pct"), 100 * r.timeFlicker.worstPair},
-                                                                  {QStringLiteral("mean_change_pct"), 100 * r.timeFlicker.meanChange},
-                                                                  {QStringLiteral("frames"), r.timeFlicker.frames}})
-                                         : QJsonValue()},
+                                    {QStringLiteral("time_flicker"), timeFlickerJson(r.timeFlicker)},
                                     {QStringLiteral("flicker"), QJsonObject{{QStringLiteral("flips_pct"), flickerValue(r, r.flicker.flicker)},
                                                                             {QStringLiteral("worst_pair_pct"), flickerValue(r, r.flicker.worstPair)},
                                                                             {QStringLiteral("mean_change_pct"), flickerValue(r, r.flicker.meanChange)},
