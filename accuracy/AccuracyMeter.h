@@ -60,7 +60,6 @@ public:
                            const std::function<void(double)>& progress = {});
 
     int referenceComputations() const { return m_referenceComputations; }
-    const ReferenceOptions& options() const { return m_options; }
 
 private:
     // A few references, newest first: a sweep that alternates between light placements (ortho

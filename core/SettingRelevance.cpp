@@ -71,11 +71,12 @@ QString ignoredBecause(const Settings& s, const QString& key)
         }
         return QStringLiteral("Only %1 skip their taps outside penumbrae; %2 does not.").arg(skipping.join(QStringLiteral(", ")), techniqueKey(s));
     }
-    // As the shadow pass decides (ShadowMap::slicesFor): one plain ortho depth24 map only.
-    const bool plainOrthoMap = s.light.projection == LightProjection::Ortho && !usesLightWarp(s) && !usesShadowViews(s) && !s.shadow.virtualMap;
-    if (key == u"map.slices" && (moments || !plainOrthoMap || s.map.format != DepthFormat::Depth24))
+    if (key == u"map.slices" && (moments || !slicesDepth(s) || s.map.format != DepthFormat::Depth24))
         return QStringLiteral("Only one plain ortho depth24 map is drawn into slices; perspective and warped maps, cascades, virtual pages, "
                               "depth32f and moments clear every time.");
+    if (key == u"map.slices" && s.rasteriser.profile == RasteriserProfile::Hardware)
+        return QStringLiteral("Depth slices save a software rasteriser its clears; with rasteriser.profile=hardware every draw clears. "
+                              "Set rasteriser.profile to software or auto.");
 
     // The light's kinds of map.
     if (key == u"light.warp" && !directional)

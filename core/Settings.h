@@ -9,6 +9,10 @@
 
 namespace shadowlab {
 
+// Plain structs with their defaults, as Filament's Options: each field's range, unit and help
+// are declared once, in the schema (SettingsTable.cpp), which validates them; the comments here
+// say what a field means.
+
 enum class LightProjection { Ortho, Perspective };
 // Directional: a direction, an ortho map (or cascades); spot: a position with a cone and a
 // perspective map; point: a position casting every way through six cube faces.
@@ -26,6 +30,9 @@ enum class BiasSpace { World, Texel, Depth };
 enum class FilterMode { Hard, Pcf, PcfOptimized, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Dpcf, Vsm, Evsm2, Evsm4, Msm, MsmHausdorff, Esm };
 enum class MomentFormat { Rgba16F, Rgba32F };
 enum class ShadingModel { Phong, BlinnPhong };
+// Which kind of rasteriser the renderer's optimisations are chosen for (RasteriserTuning): auto
+// from GL_RENDERER, or forced. Frames are the same under each; only what they cost differs.
+enum class RasteriserProfile { Auto, Software, Hardware };
 
 inline constexpr int kMaxCascades = 4;
 // Every field carries its range in a comment; SettingsTable.cpp holds the same ranges for
@@ -34,8 +41,8 @@ struct LightSettings {
     glm::dvec3 position{-2.0, 4.0, -1.0};   // world units, finite, |x| <= 1e7, != target
     glm::dvec3 target{0.0, 0.0, 0.0};       // world units, finite, |x| <= 1e7
     LightProjection projection = LightProjection::Ortho;
-    double extent = 10.0;                   // ortho half-size in world units, (0, 1e6]
-    double fov = 90.0;                      // perspective full angle in degrees, (0, 180)
+    double extent = 10.0;                   // ortho half-size in world units
+    double fov = 90.0;                      // perspective full angle in degrees
     double nearPlane = 1.0;                 // ortho: any finite < far; perspective: > 0
     double farPlane = 7.5;                  // > near, <= 1e7
     // Scene: the volume above shrunk to what casts onto what the camera sees (LightFitting.h);
@@ -46,19 +53,19 @@ struct LightSettings {
     // light.projection sets light.type (ortho: directional, perspective: spot), so settings
     // files that name only the projection load as before; validate() refuses a mismatch.
     LightType type = LightType::Directional;
-    double falloff = 0.2;                   // spot: share of the cone's half-angle over which light fades out at its rim, [0, 1]
+    double falloff = 0.2;                   // spot: share of the cone's half-angle over which light fades out at its rim
     // Directional lights (each cascade too): LiSPSM's perspective warp of the map, its strength
     // from Wimmer's optimal n times warpScale (larger: weaker, toward no warp).
     LightWarp warp = LightWarp::None;
-    double warpScale = 1.0;                 // [0.05, 100]
+    double warpScale = 1.0;                 // the warp's near distance as a multiple of Wimmer's optimum
 
     bool operator==(const LightSettings&) const = default;
 };
 
 struct MapSettings {
-    int size = 2048;                        // texels per side, [16, kMaxImageSide] and <= GL_MAX_TEXTURE_SIZE
+    int size = 2048;                        // texels per side
     DepthFormat format = DepthFormat::Depth24;
-    int slices = 4;                         // redraws between clears of a depth24 map, [1, 8] (ShadowMap::beginDraw)
+    int slices = 4;                         // redraws between clears of a depth24 map (ShadowMap::beginDraw)
 
     bool operator==(const MapSettings&) const = default;
 };
@@ -77,15 +84,15 @@ struct BiasSettings {
     // On the knee of `shadowlab tune` for every preset (within 0.001 % of the best misclassified
     // share, with back faces in the map): about a texel of the fitted map, small enough not to
     // detach contact shadows, large enough for open meshes whose front faces stay in the map.
-    double slope = 0.01;                    // [0, 100]; with Depth [0, 0.5]
-    double min = 0.002;                     // [0, 100]; with Depth [0, 0.5]
-    double normal = 0.0;                    // texels, [0, 8]
+    double slope = 0.01;                    // in the unit of `space`
+    double min = 0.002;                     // in the unit of `space`
+    double normal = 0.0;                    // texels
     // Back faces only into the shadow map: on `seed` as accurate as any bias alone and the
     // cheapest shadow pass (the single-sided ground is not drawn), so on the accuracy
     // report's Pareto front (`shadowlab report`); the classic acne demonstration turns it off.
     bool cullFront = true;
-    double polygonFactor = 0.0;             // glPolygonOffset factor, [-16, 16]
-    double polygonUnits = 0.0;              // glPolygonOffset units, [-10000, 10000]
+    double polygonFactor = 0.0;             // glPolygonOffset factor
+    double polygonUnits = 0.0;              // glPolygonOffset units
     // Wide filters (pcf, poisson, pcss) compare each tap against the receiver's plane, from its
     // depth gradient in shadow-map space, instead of the centre's depth (pcf) or a bias grown
     // with the tap's distance (poisson, pcss): exact on planar receivers, wrong where the
@@ -107,19 +114,19 @@ struct FilterSettings {
     // One bilinear hardware-compare tap on a 2048 map: smoother and closer to the true edge
     // than 3 x 3 PCF on a 1024 map, at about two thirds of its frame time (`shadowlab bench --baseline`).
     FilterMode mode = FilterMode::HwBilinear;
-    int kernel = 3;                         // odd, [1, 9]; used by FilterMode::Pcf (PcfOptimized: 3 to 7)
-    int taps = 16;                          // [8, 64]; Poisson taps of FilterMode::Poisson, Pcss and Dpcf
-    double radius = 2.5;                    // texels, [0.5, 32]; used by FilterMode::Poisson
+    int kernel = 3;                         // odd; used by FilterMode::Pcf (PcfOptimized: 3 to 7)
+    int taps = 16;                          // Poisson taps of FilterMode::Poisson, Pcss and Dpcf
+    double radius = 2.5;                    // texels; used by FilterMode::Poisson
     // pcf, poisson and pcss skip their taps where a min/max depth mip of the map says the whole
     // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
     // costs more with every shadow pass than the skipped taps save (`shadowlab report`).
     bool earlyOut = false;
     // The moment techniques (vsm, evsm2, evsm4, msm, esm), read at lookup: changing them needs
     // no new moments pass.
-    double bleeding = 0.2;                  // [0, 0.95]; light-bleeding reduction: visibility below it reads as shadow
-    double momentBias = 1e-4;               // [0, 0.01]; least variance (vsm; evsm relative to w^2) or the blend toward 0.5 (msm)
-    double positiveExponent = 40.0;         // [0, 80]; esm/evsm warp, clamped to what moments.format holds
-    double negativeExponent = 5.0;          // [0, 80]; evsm4's negative warp, clamped likewise
+    double bleeding = 0.2;                  // light-bleeding reduction: visibility below it reads as shadow
+    double momentBias = 1e-4;               // least variance (vsm; evsm relative to w^2) or the blend toward 0.5 (msm)
+    double positiveExponent = 40.0;         // esm/evsm warp, clamped to what moments.format holds
+    double negativeExponent = 5.0;          // evsm4's negative warp, clamped likewise
 
     bool operator==(const FilterSettings&) const = default;
 };
@@ -127,10 +134,10 @@ struct FilterSettings {
 // The moments pass of the moment techniques: what it stores and how it is prefiltered.
 struct MomentSettings {
     MomentFormat format = MomentFormat::Rgba32F;
-    int blur = 3;                           // separable Gaussian width in texels: 0 (none) or odd in [1, 31]
+    int blur = 3;                           // separable Gaussian width in texels, odd; 0: none
     bool mipmaps = false;                   // trilinear lookups from a mip chain built after the blur
-    int anisotropy = 1;                     // [1, 16]; 1 is off; clamped to what the driver offers
-    int view = 1;                           // [1, 4]; the moment the depth-map view shows
+    int anisotropy = 1;                     // 1 is off; clamped to what the driver offers
+    int view = 1;                           // the moment the depth-map view shows
 
     bool operator==(const MomentSettings&) const = default;
 };
@@ -140,9 +147,9 @@ struct MomentSettings {
 // with the map's shadow as the smaller visibility.
 struct ContactSettings {
     bool enabled = false;
-    double length = 0.3;                    // world units marched toward the light, > 0
-    int steps = 12;                         // [1, 64]
-    double thickness = 1.0;                 // world units a caster may extend behind its front face at most, > 0
+    double length = 0.3;                    // world units marched toward the light
+    int steps = 12;                         // depth lookups of the march
+    double thickness = 1.0;                 // world units a caster may extend behind its front face at most
 
     bool operator==(const ContactSettings&) const = default;
 };
@@ -152,11 +159,11 @@ struct ShadowSettings {
     // Cascaded shadow maps for a directional light: the camera's view from its near plane to
     // `distance` split into `cascades` slices, each with a map of map.size² fitted to it (the
     // maps sit side by side in one texture). Beyond `distance` receivers are lit.
-    int cascades = 1;                       // [1, 4]; 1: one map fitted to the whole view (no distance limit)
+    int cascades = 1;                       // 1: one map fitted to the whole view (no distance limit)
     CascadeSplit split = CascadeSplit::Practical;
-    double splitLambda = 0.75;              // practical split: 0 uniform ... 1 logarithmic, [0, 1]
-    double distance = 100.0;                // world units from the camera, (0, 1e7]; used with cascades > 1
-    double blend = 0.1;                     // share of each cascade blended into the next at its far end, [0, 0.5]
+    double splitLambda = 0.75;              // practical split: 0 uniform ... 1 logarithmic
+    double distance = 100.0;                // world units from the camera; used with cascades > 1
+    double blend = 0.1;                     // share of each cascade blended into the next at its far end
     DepthFit depthFit = DepthFit::Distance; // used with cascades > 1
     bool showCascades = false;              // tint receivers by the cascade (or cube face) they read
     // Cut-out casters (SceneObject::alphaCutoff) cast through their holes; false casts them whole,
@@ -168,12 +175,12 @@ struct ShadowSettings {
     bool virtualMap = false;
     // 1600 pages (Unreal's default pool holds 2048): a 1920 x 1080 view of the city at a level
     // finer asks for 1373; the 30² that match the memory of 4 cascades of 2048² coarsened 109.
-    int virtualPool = 40;                   // pages per side of the physical pool, [4, 64]
-    int virtualLevels = 16;                 // clipmap levels, each twice the texel of the one before, [1, 16]
+    int virtualPool = 40;                   // pages per side of the physical pool
+    int virtualLevels = 16;                 // clipmap levels, each twice the texel of the one before
     // A level finer than a texel per screen pixel, as Unreal renders its sun at Epic quality (1.5
     // finer): on the city's street camera 0.35 x the misclassified pixels of 4 stabilised
     // cascades, against 0.74 x at 0 (`report --scene city --sweep virtual`).
-    int virtualLodBias = 1;                 // levels finer than a texel per screen pixel, [0, 4]
+    int virtualLodBias = 1;                 // levels finer than a texel per screen pixel
 
     bool operator==(const ShadowSettings&) const = default;
 };
@@ -191,7 +198,7 @@ struct ShadingSettings {
 struct CameraSettings {
     glm::dvec3 position{0.0, 0.0, 3.0};     // world units, finite, != target
     glm::dvec3 target{0.0, 0.0, 0.0};
-    double fov = 45.0;                      // vertical full angle in degrees, [1, 170]
+    double fov = 45.0;                      // vertical full angle in degrees
 
     bool operator==(const CameraSettings&) const = default;
 };
@@ -199,7 +206,7 @@ struct CameraSettings {
 // The ray-traced reference the accuracy measurement compares against; nothing here changes
 // what the renderer draws.
 struct ReferenceSettings {
-    double lightRadius = 0.25;              // disk light radius for the area reference, world units, [0, 100]
+    double lightRadius = 0.25;              // disk light radius for the area reference, world units
 
     bool operator==(const ReferenceSettings&) const = default;
 };
@@ -220,11 +227,18 @@ inline constexpr double kMaxSceneTime = 1e6;
 // The scene's clock: where its moving objects are. A frame is a pure function of its settings,
 // time included; a still scene ignores it.
 struct AnimationSettings {
-    double time = 0.0;                      // seconds since the scene's start, [0, 1e6]
+    double time = 0.0;                      // seconds since the scene's start
     bool play = false;                      // the window's clock runs (time advances with the wall clock)
-    double speed = 1.0;                     // scene seconds per wall second while playing, [0.01, 100]
+    double speed = 1.0;                     // scene seconds per wall second while playing
 
     bool operator==(const AnimationSettings&) const = default;
+};
+
+// How frames are drawn, never what they show.
+struct RasteriserSettings {
+    RasteriserProfile profile = RasteriserProfile::Auto;
+
+    bool operator==(const RasteriserSettings&) const = default;
 };
 
 struct Settings {
@@ -241,6 +255,7 @@ struct Settings {
     ShadingSettings shading;
     CameraSettings camera;
     ReferenceSettings reference;
+    RasteriserSettings rasteriser;
 
     bool operator==(const Settings&) const = default;
 };

@@ -83,6 +83,7 @@ QString toString(DepthFormat value);
 QString toString(BiasSpace value);
 QString toString(FilterMode value);
 QString toString(ShadingModel value);
+QString toString(RasteriserProfile value);
 QString toString(MomentFormat value);
 
 } // namespace shadowlab

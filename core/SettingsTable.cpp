@@ -36,10 +36,12 @@ const QStringList kFilterNames = [] {
 }();
 const QStringList kMomentFormatNames{QStringLiteral("16"), QStringLiteral("32")};
 const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
+const QStringList kRasteriserNames{QStringLiteral("auto"), QStringLiteral("software"), QStringLiteral("hardware")};
 
 // The dock's groups (settingGroups() lists them in order).
 constexpr QLatin1String kLight("Light"), kShadowMap("Shadow map"), kBias("Bias"), kFiltering("Filtering"), kMomentsMap("Moments map"),
-    kContact("Contact shadows"), kShading("Shading"), kReference("Reference"), kCamera("Camera"), kScene("Scene");
+    kContact("Contact shadows"), kShading("Shading"), kReference("Reference"), kCamera("Camera"), kScene("Scene"),
+    kRasteriser("Rasteriser");
 
 Entry sceneKey(const SettingPresentation& look)
 {
@@ -545,6 +547,14 @@ std::vector<Entry> makeEntries()
     shadowKeys(e);
     virtualMapKeys(e);
     viewKeys(e);
+    e.push_back(choice<RasteriserProfile>({.key = "rasteriser.profile",
+                                           .help = "Which rasteriser the renderer's optimisations are chosen for: software (a CPU rasteriser such as llvmpipe, "
+                                                   "where clears and bandwidth cost what casters do: the shadow reach's stencil masks, depth slices, "
+                                                   "two moments in RGBA, a virtual map's requests read back whole), hardware (a GPU: the plain path), or auto "
+                                                   "(from the driver's GL_RENDERER). The same pixels under each; only what a frame costs differs",
+                                           .look = {.label = QStringLiteral("Profile"), .group = kRasteriser}},
+                                          kRasteriserNames,
+                                          [](auto& s) -> auto& { return s.rasteriser.profile; }));
     return e;
 }
 
@@ -574,7 +584,7 @@ const Entry& entryFor(const QString& key)
 
 const QStringList& settingGroups()
 {
-    static const QStringList groups{kLight, kShadowMap, kBias, kFiltering, kMomentsMap, kContact, kShading, kReference, kCamera, kScene};
+    static const QStringList groups{kLight, kShadowMap, kBias, kFiltering, kMomentsMap, kContact, kShading, kReference, kCamera, kScene, kRasteriser};
     return groups;
 }
 
@@ -588,6 +598,7 @@ QString toString(DepthFormat value) { return kFormatNames.value(int(value)); }
 QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
 QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
+QString toString(RasteriserProfile value) { return kRasteriserNames.value(int(value)); }
 QString toString(MomentFormat value) { return kMomentFormatNames.value(int(value)); }
 
 } // namespace shadowlab

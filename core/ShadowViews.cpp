@@ -76,6 +76,11 @@ bool usesLightWarp(const Settings& settings)
     return settings.light.warp == LightWarp::Lispsm && settings.light.type == LightType::Directional;
 }
 
+bool slicesDepth(const Settings& settings)
+{
+    return settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings) && !usesShadowViews(settings) && !settings.shadow.virtualMap;
+}
+
 bool usesVisibleDepth(const Settings& settings)
 {
     return settings.shadow.enabled && settings.shadow.depthFit == DepthFit::Sdsm && settings.light.type == LightType::Directional

@@ -41,6 +41,12 @@ bool usesLightWarp(const Settings& settings);
 // Whether the cascades of `settings` split the frame's drawn depth range (shadow.depth_fit = sdsm
 // on a directional light's cascades, shadows on), which a depth prepass measures.
 bool usesVisibleDepth(const Settings& settings);
+// Whether a map of `settings` may be drawn into depth slices (map.slices, ShadowMap::beginDraw):
+// one plain ortho view, whose depth is linear in distance. A perspective or warped map's depth
+// is not: its steps are spent near the light (or the warp's centre), with none to spare where
+// the scene lies. Cascades and cube faces are tiles drawn apart, and a virtual map's pool clears
+// each page it draws.
+bool slicesDepth(const Settings& settings);
 
 // The tiles of the shared texture the light's views need: 3 x 2 cube faces, cascades two to a
 // row, 1 x 1 for one map.

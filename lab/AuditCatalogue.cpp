@@ -5,6 +5,7 @@
 #include "RayTracer.h"
 #include "RenderError.h"
 #include "SceneLibrary.h"
+#include "SceneSupply.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowReference.h"
@@ -50,6 +51,7 @@ Measurement measure(HeadlessRenderer& headless, const Settings& settings)
 {
     Renderer& r = headless.renderer();
     Measurement m;
+    supplyScene(r, settings);
     m.buffer = r.renderVisibility(settings, kSize);
     const LightFrame& light = r.lightFrame();
     m.finite = isFinite(light.view) && isFinite(light.shadowMatrix) && isFinite(light.depthShadowMatrix);

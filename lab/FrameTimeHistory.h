@@ -1,7 +1,7 @@
 #pragma once
 
 #include "FrameStats.h"
-#include "GlDebug.h"
+#include "RasteriserTuning.h"
 #include "SampleStats.h"
 
 #include <QString>

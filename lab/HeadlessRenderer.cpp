@@ -2,6 +2,8 @@
 
 #include "DepthMapPicture.h"
 #include "GlDebug.h"
+#include "RasteriserTuning.h"
+#include "SceneSupply.h"
 #include "Limits.h"
 #include "RenderError.h"
 #include "SettingsError.h"
@@ -37,6 +39,7 @@ HeadlessRenderer::HeadlessRenderer()
                               .arg(m_context.format().minorVersion()));
     installGlDebugLogger();
     m_renderer = std::make_unique<Renderer>(m_gl);
+    retainFreedHeapForSoftwareRasteriser(m_renderer->rendererString());
 }
 
 HeadlessRenderer::~HeadlessRenderer()
@@ -76,6 +79,7 @@ RenderTarget HeadlessRenderer::targetOfSize(QSize size)
 
 void HeadlessRenderer::renderFrame(const Settings& settings, QSize size, TimingMode timing)
 {
+    supplyScene(*m_renderer, settings);
     m_renderer->render(settings, targetOfSize(size), timing);
 }
 

@@ -3,6 +3,7 @@
 #include "RayTracer.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
+#include "SceneSupply.h"
 #include "ShadowReference.h"
 #include "ShadowTechnique.h"
 
@@ -15,6 +16,7 @@ namespace shadowlab {
 AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const Settings& settings, QSize size,
                                const std::function<void(double)>& progress, TexelDensity* density)
 {
+    supplyScene(renderer, settings);
     const VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
     if (density != nullptr)
         *density = !settings.shadow.enabled ? TexelDensity{}
@@ -40,9 +42,10 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     // A map drawn into slices (map.slices) is cleared whole once in that many passes: a pass
     // clears that share of it, whichever of the cycle this one was.
     const ShadowMap& map = renderer.shadowMap();
-    const bool depthMap = settings.shadow.enabled && !settings.shadow.virtualMap && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments;
+    const FramePlan& plan = renderer.lastPlan();
+    const bool depthMap = plan.shadows && !plan.virtualMap && !plan.moments;
     if (depthMap && renderer.lastFrame().shadowPassRendered && map.slice().scale < 1.0)
-        counts.clearedTexels = std::int64_t(map.width()) * map.height() / std::max(1, ShadowMap::slicesFor(settings));
+        counts.clearedTexels = std::int64_t(map.width()) * map.height() / std::max(1, plan.slices);
     return counts;
 }
 
@@ -203,6 +206,7 @@ int walkPath(Renderer& renderer, const Settings& still, const std::vector<Camera
     };
     std::vector<glm::dmat4> last;
     int moves = 0;
+    supplyScene(renderer, still);
     try {
         for (const CameraSettings& camera : path) {
             renderer.setFitCamera(camera);
@@ -258,6 +262,7 @@ FlickerResult measureTimeFlicker(Renderer& renderer, const Settings& settings, c
     std::unique_ptr<RayTracer> tracer;
     ReferenceOptions options;
     options.area = false;
+    supplyScene(renderer, settings);
     for (double t : times) {
         Settings at = settings;
         at.animation.time = t;
@@ -273,6 +278,7 @@ FlickerResult measureTimeFlicker(Renderer& renderer, const Settings& settings, c
 
 std::vector<CameraSettings> subTexelPath(Renderer& renderer, const Settings& settings, QSize size, int frames, double texels)
 {
+    supplyScene(renderer, settings);
     renderer.renderVisibility(settings, sameAspect(size));
     const double texel = renderer.lastFrame().texelWorldSize;
     return cameraPath(settings.camera, frames, texel * texels);

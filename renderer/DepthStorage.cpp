@@ -13,23 +13,24 @@ class DepthStorage final : public ShadowStorage {
 public:
     DepthStorage(ShadowMap& map, DepthPass& pass) : m_map(map), m_pass(pass) {}
 
-    void ensure(const Settings&, ShadowTileGrid) override {}
+    void ensure(const FramePlan&) override {}
 
-    ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
+    ShadowStorageKey key(const FramePlan& plan, int sceneGeneration) const override
     {
-        ShadowStorageKey key = commonStorageKey(settings, sceneGeneration, reversedDepth, grid);
+        const Settings& settings = plan.settings;
+        ShadowStorageKey key = commonStorageKey(plan, sceneGeneration);
         key.cullFront = settings.bias.cullFront;
         key.skipFloors = settings.bias.skipFloors;
         key.polygonFactor = settings.bias.polygonFactor;
         key.polygonUnits = settings.bias.polygonUnits;
-        key.slices = ShadowMap::slicesFor(settings);
+        key.slices = plan.slices;
         return key;
     }
 
-    bool cullsFrontFaces(const Settings& settings) const override { return settings.bias.cullFront; }
-    bool leavesOutFloors(const Settings& settings) const override { return settings.bias.skipFloors; }
+    bool cullsFrontFaces(const FramePlan& plan) const override { return plan.settings.bias.cullFront; }
+    bool leavesOutFloors(const FramePlan& plan) const override { return plan.settings.bias.skipFloors; }
 
-    void clear(const LightFrame& light, const Settings&, const QRect& tile) override
+    void clear(const LightFrame& light, const FramePlan&, const QRect& tile) override
     {
         if (tile.isEmpty())
             m_pass.clear(m_map, light.reversedDepth);
@@ -37,10 +38,9 @@ public:
             m_pass.clearTile(m_map, light.reversedDepth, tile);
     }
 
-    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels, double*) override
+    int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels, double*) override
     {
-        return m_pass.renderTile(scene, light, settings.bias, m_map, tile, inTile(texels, tile), settings.shadow.cutouts,
-                                 ShadowMap::slicesFor(settings));
+        return m_pass.renderTile(scene, light, plan.settings.bias, m_map, tile, inTile(texels, tile), plan.settings.shadow.cutouts, plan.slices);
     }
 
     Counts takeCounts() override { return {.clearedTexels = m_pass.takeClearedTexels()}; }

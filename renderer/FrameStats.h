@@ -73,6 +73,7 @@ struct FrameStats {
     double texelWorldSizeBeforeFit = 0.0; // ... with the light volume as set
     bool lightFitted = false;           // light.fit = scene shrank the volume this frame
     bool reversedDepth = false;         // the map was rendered with reversed depth (depth32f and clip control)
+    bool softwareProfile = false;       // drawn with a software rasteriser's optimisations (RasteriserTuning)
     // light.warp = lispsm: the views it warped, of `warpViews` (0 of 0: not asked for), how
     // much finer it makes the texels nearest the camera (the first view's gain, drawn or
     // declined) and, where it warped none, why (LightWarp.h).

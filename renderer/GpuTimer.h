@@ -17,7 +17,6 @@ public:
 
     // Between passes only, never between begin() and end().
     void setEnabled(bool enabled) { m_enabled = enabled; }
-    bool enabled() const { return m_enabled; }
 
     void begin();
     void end();

@@ -1,11 +1,7 @@
 #include "LitPass.h"
 
-#include "MomentMath.h"
 #include "PassState.h"
 #include "RenderError.h"
-#include "SettingsKeys.h"
-#include "ShadowTechnique.h"
-#include "ShadowViews.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -23,10 +19,6 @@ constexpr GLuint kDiffuseUnit = 0;
 constexpr GLuint kShadowUnit = 1;
 constexpr GLuint kContactUnit = 8;     // after the shadow samplers and the min/max depth mip
 constexpr GLuint kPageTableUnit = 9;   // a virtual map's page table
-
-// Above this share of the frame a mask saves less than drawing the straddling receivers twice
-// costs (both halves still run every vertex and set up every triangle).
-constexpr double kMaxMaskShare = 0.6;
 
 } // namespace
 
@@ -64,50 +56,51 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
     return it->second;
 }
 
-LitPass::LitPass(GlFunctions* gl) : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED) {}
+LitPass::LitPass(GlFunctions* gl) : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_reachDraws(gl) {}
 
 int LitPass::compiledCutoutVariantCount() const
 {
     return int(std::count_if(m_programs.begin(), m_programs.end(), [](const auto& p) { return p.first.contains(QLatin1String("ALPHA_CUTOUT")); }));
 }
 
-QStringList LitPass::variantDefines(const Settings& settings, const Variant& variant)
+QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& variant)
 {
+    const Settings& settings = plan.settings;
     const bool measure = variant.measure, reversedDepth = variant.reversedDepth, outOfReach = variant.outOfReach, cutout = variant.cutout;
     QStringList defines;
     // Without lookups (shadows off, or receivers out of reach) no technique, bias or early-out
     // code is compiled, so every technique shares that variant.
-    const bool lookups = settings.shadow.enabled && !outOfReach;
-    const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
+    const bool lookups = plan.shadows && !outOfReach;
+    const ShadowTechnique& technique = *plan.technique;
     if (lookups)
         defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
     else
         defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"") << QStringLiteral("OUT_OF_REACH");
-    if (settings.shadow.enabled)
+    if (plan.shadows)
         defines << QStringLiteral("SHADOWS");
     if (settings.light.projection == LightProjection::Perspective)
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
     if (settings.light.type == LightType::Spot)
         defines << QStringLiteral("LIGHT_SPOT");
     // A warp asked for but declined in every view (LightWarp.h) keeps the plain lookups.
-    if (settings.shadow.enabled && usesLightWarp(settings) && variant.warped)
+    if (plan.shadows && plan.lightWarp && variant.warped)
         defines << QStringLiteral("LIGHT_WARP");
-    if (settings.shadow.enabled && usesShadowViews(settings)) {
+    if (plan.shadows && plan.severalViews) {
         defines << QStringLiteral("SHADOW_VIEWS") << (settings.light.type == LightType::Point ? QStringLiteral("LIGHT_POINT") : QStringLiteral("CASCADES"));
         if (settings.shadow.showCascades)
             defines << QStringLiteral("SHOW_CASCADES");
     }
-    if (settings.shadow.enabled && settings.shadow.virtualMap && lookups) {
+    if (plan.virtualMap && lookups) {
         defines << QStringLiteral("VIRTUAL_MAP");
         if (settings.shadow.showCascades)
             defines << QStringLiteral("SHOW_CASCADES");     // tinted by the level read
     }
-    if (settings.shadow.enabled && reversedDepth)
+    if (plan.shadows && reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
     // A depth map drawn into slices (map.slices) is read through the slice its last draw wrote.
-    // ShadowMap::slicesFor keeps the maps that are never sliced (cascades, perspective, virtual)
-    // on the variant without.
-    if (lookups && readsDepthSlices(settings, reversedDepth))
+    // The plan keeps the maps that are never sliced (cascades, perspective, virtual, or under
+    // the hardware profile) on the variant without.
+    if (lookups && readsDepthSlices(plan, reversedDepth))
         defines << QStringLiteral("DEPTH_SLICES");
     if (lookups && settings.bias.space == BiasSpace::Depth)
         defines << QStringLiteral("BIAS_DEPTH");
@@ -116,7 +109,7 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
     if (lookups && settings.bias.receiverPlane)
         defines << QStringLiteral("RECEIVER_PLANE");
     // Filtered moments read their own bias (filter.moment_bias); depth comparisons the footprint's.
-    if (lookups && settings.bias.footprint && shadowTechnique(settings.filter.mode).map != ShadowMapKind::Moments) {
+    if (lookups && settings.bias.footprint && !plan.moments) {
         defines << QStringLiteral("FOOTPRINT_BIAS");
         // Each tap's growth, unless the pass culls front faces (bias.cull_front, closed casters):
         // a lit surface's own depth is then not in the map, so no far tap can shadow it, and the
@@ -125,10 +118,10 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         if (!settings.bias.cullFront)
             defines << QStringLiteral("FOOTPRINT_TAPS");
     }
-    if (lookups && usesDepthRange(settings))
+    if (lookups && plan.depthRange)
         defines << QStringLiteral("EARLY_OUT");
     // Both sides of the reach march: a receiver no caster reaches in the map has none in view either.
-    if (usesContactShadows(settings))
+    if (plan.contactShadows)
         defines << QStringLiteral("CONTACT_SHADOWS");
     if (settings.shading.model == ShadingModel::Phong)
         defines << QStringLiteral("SHADING_PHONG");
@@ -136,33 +129,23 @@ QStringList LitPass::variantDefines(const Settings& settings, const Variant& var
         defines << QStringLiteral("ALPHA_CUTOUT");
     if (measure)
         defines << QStringLiteral("MEASURE");
-    else if (settings.shading.texelDensity && settings.shadow.enabled)
+    else if (settings.shading.texelDensity && plan.shadows)
         defines << QStringLiteral("TEXEL_DENSITY");   // a view only: never in what is measured
-    if (!measure && settings.shading.shadowOnly && settings.shadow.enabled)
+    if (!measure && settings.shading.shadowOnly && plan.shadows)
         defines << QStringLiteral("SHADOW_ONLY");     // likewise
     return defines;
 }
 
-bool LitPass::readsDepthSlices(const Settings& settings, bool reversedDepth)
+bool LitPass::readsDepthSlices(const FramePlan& plan, bool reversedDepth)
 {
-    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    const std::vector<ShadowSampler>& samplers = plan.technique->samplers;
     const bool readsDepth = std::any_of(samplers.begin(), samplers.end(), [](ShadowSampler s) { return s != ShadowSampler::Moments; });
-    return settings.shadow.enabled && readsDepth && ShadowMap::slices(ShadowMap::slicesFor(settings), settings.map.format, reversedDepth);
+    return plan.shadows && readsDepth && ShadowMap::slices(plan.slices, plan.settings.map.format, reversedDepth);
 }
 
-bool LitPass::usesContactShadows(const Settings& settings)
+LitPass::Program& LitPass::programFor(const FramePlan& plan, const Variant& variant)
 {
-    return settings.shadow.enabled && settings.contact.enabled;
-}
-
-bool LitPass::usesDepthRange(const Settings& settings)
-{
-    return settings.shadow.enabled && settings.filter.earlyOut && shadowTechnique(settings.filter.mode).penumbraOnly;
-}
-
-LitPass::Program& LitPass::programFor(const Settings& settings, const Variant& variant)
-{
-    const QStringList defines = variantDefines(settings, variant);
+    const QStringList defines = variantDefines(plan, variant);
     const QString key = defines.join(QLatin1Char(';'));
     auto it = m_programs.find(key);
     if (it == m_programs.end())
@@ -170,13 +153,13 @@ LitPass::Program& LitPass::programFor(const Settings& settings, const Variant& v
     return *it->second;
 }
 
-LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& settings, Variant variant)
+LitPass::Programs LitPass::programsFor(const GpuScene& scene, const FramePlan& plan, Variant variant)
 {
     variant.cutout = false;
-    Programs p{&programFor(settings, variant)};
+    Programs p{&programFor(plan, variant)};
     if (scene.hasCutouts()) {
         variant.cutout = true;
-        p.cutout = &programFor(settings, variant);
+        p.cutout = &programFor(plan, variant);
     }
     return p;
 }
@@ -236,9 +219,10 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
     }
 }
 
-void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
                                const ShadowMap* map, bool readsRange, const DepthRangePass* depthRange)
 {
+    const Settings& settings = plan.settings;
     p.program.bind();
     p.program.set(p.diffuse, int(kDiffuseUnit));
     // Camera-relative: differences of large coordinates are taken in double here, not in float
@@ -260,7 +244,7 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     const double depthUnit = settings.bias.space == BiasSpace::Depth ? slice[2][2] : 1.0;
     p.program.set(p.biasSlope, float(settings.bias.slope * depthUnit));
     p.program.set(p.biasMin, float(settings.bias.min * depthUnit));
-    for (const TechniqueUniform& u : shadowTechnique(settings.filter.mode).uniforms(settings))
+    for (const TechniqueUniform& u : plan.technique->uniforms(settings))
         p.program.set(p.techniqueUniform(u.name), u.value);
     p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
     p.program.set(p.techniqueUniform("uShadowSlice"), map->slice().uniform());
@@ -271,13 +255,13 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
     if (m_views == nullptr || m_views->frames.empty())
         throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
     setViewUniforms(p, camera, settings, *map, slice);
-    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    const std::vector<ShadowSampler>& samplers = plan.technique->samplers;
     for (std::size_t i = 0; i < samplers.size(); ++i) {
         const bool readsMoments = samplers[i] == ShadowSampler::Moments;
         p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap,
                       int(kShadowUnit + GLuint(i)));
     }
-    if (m_virtualMap && settings.shadow.virtualMap) {
+    if (m_virtualMap && plan.virtualMap) {
         const VirtualMapUniforms& v = *m_virtualMap;
         if (v.levelOffsets.empty())
             throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
@@ -290,7 +274,7 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
         p.program.set(p.techniqueUniform("uVsmTexel0"), v.finestTexel);
         p.program.set(p.techniqueUniform("uVsmPageTable"), int(kPageTableUnit));
     }
-    if (usesContactShadows(settings)) {
+    if (plan.contactShadows) {
         p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));
         p.program.set(p.techniqueUniform("uCameraViewProjection"), glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), camera.position)));
         p.program.set(p.techniqueUniform("uCameraForward"), glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]));
@@ -325,61 +309,7 @@ bool LitPass::boundTargetHasStencil() const
     return bits > 0;
 }
 
-void LitPass::drawReachMask(const CameraFrame& camera, const QRect& pixels)
-{
-    if (!m_maskProgram) {
-        m_maskProgram = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("depth.vert"), QStringLiteral("depth.frag"), QStringList());
-        m_maskMatrix = m_maskProgram->uniform("uLightModelViewProjection");
-        m_maskVertexArray = makeVertexArray(m_gl);
-        m_maskVertices = makeBuffer(m_gl);
-        m_gl->glBindVertexArray(m_maskVertexArray.id());
-        m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_maskVertices.id());
-        labelGlObject(GlLabelKind::VertexArray, m_maskVertexArray.id(), QStringLiteral("shadow reach mask"));
-        m_gl->glEnableVertexAttribArray(0);
-        m_gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    }
-    m_gl->glBindVertexArray(m_maskVertexArray.id());
-    if (m_maskGeneration != m_reach->generation) {
-        // Each polygon as a fan, relative to the first vertex so that float keeps the precision
-        // of a scene far from the origin.
-        std::vector<glm::vec3> triangles;
-        m_maskOrigin = m_reach->mask.empty() || m_reach->mask.front().empty() ? glm::dvec3(0.0) : m_reach->mask.front().front();
-        for (const convex::Polygon& polygon : m_reach->mask) {
-            for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-                for (const glm::dvec3& corner : {polygon[0], polygon[k], polygon[k + 1]})
-                    triangles.emplace_back(corner - m_maskOrigin);
-            }
-        }
-        m_gl->glBindBuffer(GL_ARRAY_BUFFER, m_maskVertices.id());
-        m_gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(triangles.size() * sizeof(glm::vec3)), triangles.data(), GL_STATIC_DRAW);
-        m_maskVertexCount = GLsizei(triangles.size());
-        m_maskGeneration = m_reach->generation;
-    }
-    // Both faces, with no depth test: a pixel is marked when its ray passes through a piece of a
-    // flat receiver's plane inside a box, or through a box in front of the near plane, which
-    // holds for every surface point inside one.
-    // Depth clamp: a box is not clipped at the camera's near or far plane either.
-    PassState state;
-    state.depthTest = false;
-    state.depthWrite = false;
-    state.depthClamp = true;
-    applyPassState(m_gl, state);
-    m_gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    m_gl->glStencilMask(0xff);
-    m_gl->glEnable(GL_STENCIL_TEST);
-    m_gl->glStencilFunc(GL_ALWAYS, 1, 0xff);
-    m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    m_gl->glEnable(GL_SCISSOR_TEST);
-    m_gl->glScissor(pixels.x(), pixels.y(), pixels.width(), pixels.height());
-    m_maskProgram->bind();
-    m_maskProgram->set(m_maskMatrix, glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), m_maskOrigin)));
-    if (m_maskVertexCount > 0)
-        m_gl->glDrawArrays(GL_TRIANGLES, 0, m_maskVertexCount);
-    m_gl->glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-}
-
-void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const CameraFrame& camera,
-                          const std::vector<std::pair<double, std::size_t>>& order)
+void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const CameraFrame& camera, const ReachDraws::Order& order)
 {
     const auto& items = scene.drawItems();
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
@@ -406,43 +336,6 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
     }
 }
 
-void LitPass::sortByReach(const GpuScene& scene, const CameraFrame& camera, bool shadows)
-{
-    const auto& items = scene.drawItems();
-    const bool reachKnown = shadows && m_reach != nullptr && m_reach->objects.size() == items.size();
-    // Nearest first, so the depth test rejects hidden pixels before they are shaded: on a
-    // software rasteriser every shaded pixel costs, and the ground plane is behind everything.
-    m_drawOrder.clear();
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        const Bounds& bounds = items[i].bounds;
-        if (isOutsideFrustum(camera.viewProjection, bounds, false))
-            continue;
-        const glm::dvec3 nearest = glm::clamp(camera.position, bounds.min, bounds.max);
-        m_drawOrder.emplace_back(glm::length(nearest - camera.position), i);
-    }
-    std::sort(m_drawOrder.begin(), m_drawOrder.end());
-    // Which receivers need a lookup: those the reach touches; those that straddle it only inside
-    // its stencil mask, when a mask is worth drawing.
-    m_lookupOrder.clear();
-    m_maskedLookupOrder.clear();
-    m_maskedPlainOrder.clear();
-    m_plainOrder.clear();
-    const bool mask = reachKnown && !m_reach->boxes.empty() && m_reach->partlyCount() > 0 && m_reach->screenShare <= kMaxMaskShare
-        && boundTargetHasStencil();
-    for (const auto& entry : m_drawOrder) {
-        const Reach reach = reachKnown ? m_reach->objects[entry.second] : Reach::Inside;
-        if (reach == Reach::Outside) {
-            m_plainOrder.push_back(entry);
-        } else if (reach == Reach::Partly && mask) {
-            m_maskedLookupOrder.push_back(entry);
-            m_maskedPlainOrder.push_back(entry);
-        } else {
-            m_lookupOrder.push_back(entry);
-        }
-    }
-    m_reachUse = ReachUse{int(m_lookupOrder.size() + m_maskedLookupOrder.size()), int(m_plainOrder.size() + m_maskedPlainOrder.size()), mask};
-}
-
 void LitPass::clearTarget(bool measure)
 {
     const GLfloat clearColour[4] = {0.11f, 0.12f, 0.15f, 1.0f};
@@ -460,20 +353,10 @@ void LitPass::clearTarget(bool measure)
     }
 }
 
-QRect LitPass::reachPixels(const glm::dvec4& r, QSize size)
-{
-    // A pixel of margin for rounding.
-    const int x0 = std::max(int(std::floor((r.x + 1.0) * 0.5 * size.width())) - 1, 0);
-    const int y0 = std::max(int(std::floor((r.y + 1.0) * 0.5 * size.height())) - 1, 0);
-    const int x1 = std::min(int(std::ceil((r.z + 1.0) * 0.5 * size.width())) + 1, size.width());
-    const int y1 = std::min(int(std::ceil((r.w + 1.0) * 0.5 * size.height())) + 1, size.height());
-    return QRect(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
-}
-
-void LitPass::bindShadowTextures(const Settings& settings, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange)
+void LitPass::bindShadowTextures(const FramePlan& plan, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange)
 {
     // Each sampler the technique's row asks for reads the map on a unit of its own.
-    const std::vector<ShadowSampler>& samplers = shadowTechnique(settings.filter.mode).samplers;
+    const std::vector<ShadowSampler>& samplers = plan.technique->samplers;
     for (std::size_t i = 0; i < samplers.size(); ++i) {
         const GLuint unit = kShadowUnit + GLuint(i);
         const bool readsMoments = samplers[i] == ShadowSampler::Moments;
@@ -490,9 +373,9 @@ void LitPass::bindShadowTextures(const Settings& settings, const ShadowMap& map,
     m_gl->glActiveTexture(GL_TEXTURE0 + kDiffuseUnit);
 }
 
-void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
+void LitPass::unbindShadowTextures(const FramePlan& plan, bool readsRange)
 {
-    for (std::size_t i = 0; i < shadowTechnique(settings.filter.mode).samplers.size() + (readsRange ? 1 : 0); ++i) {
+    for (std::size_t i = 0; i < plan.technique->samplers.size() + (readsRange ? 1 : 0); ++i) {
         m_gl->glActiveTexture(GL_TEXTURE0 + kShadowUnit + GLuint(i));
         m_gl->glBindTexture(GL_TEXTURE_2D, 0);
         m_gl->glBindSampler(kShadowUnit + GLuint(i), 0);
@@ -500,9 +383,8 @@ void LitPass::unbindShadowTextures(const Settings& settings, bool readsRange)
     m_gl->glActiveTexture(GL_TEXTURE0);
 }
 
-void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
-                              const std::vector<std::pair<double, std::size_t>>& everywhere,
-                              const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors)
+void LitPass::drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const ReachDraws::Order& everywhere,
+                              const ReachDraws::Order& masked, GLenum stencilFunc, const std::vector<QRect>* scissors)
 {
     drawObjects(p, scene, camera, everywhere);
     if (masked.empty())
@@ -530,11 +412,11 @@ namespace {
 // What the lit pass reads must have been drawn: a moments map for a moment technique (`shadowMap`:
 // null without shadows), the min/max mip for penumbra-only filtering (`range`: whether it is
 // read), the camera's depth for contact shadows (`contactDepth`: 1 without them).
-void checkInputs(const Settings& settings, const ShadowMap* shadowMap, bool range, const DepthRangePass* depthRange, const MomentsMap* moments,
+void checkInputs(const FramePlan& plan, const ShadowMap* shadowMap, bool range, const DepthRangePass* depthRange, const MomentsMap* moments,
                  GLuint contactDepth)
 {
-    if (shadowMap != nullptr && isMomentTechnique(settings.filter.mode) && (moments == nullptr || moments->size() != shadowMap->size()))
-        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(toString(settings.filter.mode)));
+    if (shadowMap != nullptr && plan.moments && (moments == nullptr || moments->size() != shadowMap->size()))
+        throw RenderError(QStringLiteral("filter.mode=%1 reads a moments map, which was not rendered").arg(plan.technique->key));
     if (range && (depthRange == nullptr || depthRange->levels() == 0))
         throw RenderError(QStringLiteral("filter.early_out needs the shadow map's min/max depth mip, which was not built"));
     if (contactDepth == 0)
@@ -553,18 +435,18 @@ void bindUnit(GlFunctions* gl, GLuint unit, GLuint texture, GLenum after = GL_TE
 
 } // namespace
 
-int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
                     const ShadowMap* map, const RenderTarget& target, bool measure, const DepthRangePass* depthRange,
                     const MomentsMap* moments)
 {
-    const bool shadows = settings.shadow.enabled && map != nullptr;
-    const bool readsRange = usesDepthRange(settings) && map != nullptr;
-    m_floorsLeftOutFor = settings.bias.skipFloors ? &light : nullptr;
-    const bool contact = shadows && usesContactShadows(settings);
-    checkInputs(settings, shadows ? map : nullptr, readsRange, depthRange, moments, contact ? m_contactDepth : GLuint(1));
+    const bool shadows = plan.shadows && map != nullptr;
+    const bool readsRange = plan.depthRange && map != nullptr;
+    m_floorsLeftOutFor = plan.settings.bias.skipFloors ? &light : nullptr;
+    const bool contact = shadows && plan.contactShadows;
+    checkInputs(plan, shadows ? map : nullptr, readsRange, depthRange, moments, contact ? m_contactDepth : GLuint(1));
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    sortByReach(scene, camera, shadows);
+    m_reachDraws.sort(scene, camera, shadows, m_reach, shadows && m_reach != nullptr && boundTargetHasStencil());
     PassState state;
     state.viewport = QRect(QPoint(0, 0), target.size);
     state.depthTest = true;
@@ -573,18 +455,14 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     clearTarget(measure);
     // The lookups' draws stay inside the reach's rectangle on screen, so the rasteriser skips
     // the rest of the frame for them.
-    std::vector<QRect> lookupRects;
-    if (m_reachUse.masked) {
-        drawReachMask(camera, reachPixels(m_reach->screenRect, target.size));
-        for (const glm::dvec4& rect : m_reach->screenRects)
-            lookupRects.push_back(reachPixels(rect, target.size));
+    const std::vector<QRect> lookupRects = m_reachDraws.drawMask(camera, target.size);
+    if (m_reachDraws.use().masked)
         applyPassState(m_gl, state);
-    }
     if (shadows)
-        bindShadowTextures(settings, *map, moments, readsRange ? depthRange : nullptr);
+        bindShadowTextures(plan, *map, moments, readsRange ? depthRange : nullptr);
     if (contact)
         bindUnit(m_gl, kContactUnit, m_contactDepth);
-    const bool pageTable = shadows && settings.shadow.virtualMap && m_virtualMap != nullptr;
+    const bool pageTable = shadows && plan.virtualMap && m_virtualMap != nullptr;
     if (pageTable)
         bindUnit(m_gl, kPageTableUnit, m_virtualMap->pageTable);
     const ShadowMap* shadowMap = shadows ? map : nullptr;
@@ -594,38 +472,39 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         for (const LightFrame& frame : m_views->frames)
             variant.warped = variant.warped || frame.volume.warped;
     }
-    if (!m_lookupOrder.empty() || !m_maskedLookupOrder.empty()) {
-        const Programs lookup = programsFor(scene, settings, variant);
+    const ReachDraws& r = m_reachDraws;
+    if (!r.lookup().empty() || !r.maskedLookup().empty()) {
+        const Programs lookup = programsFor(scene, plan, variant);
         for (Program* p : {lookup.plain, lookup.cutout}) {
             if (p)
-                setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
+                setFrameUniforms(*p, camera, light, plan, shadowMap, readsRange, depthRange);
         }
         if (m_counting)
             m_lookupSamples.begin();
-        drawMaskedOrder(lookup, scene, camera, m_lookupOrder, m_maskedLookupOrder, GL_EQUAL, &lookupRects);
+        drawMaskedOrder(lookup, scene, camera, r.lookup(), r.maskedLookup(), GL_EQUAL, &lookupRects);
         if (m_counting)
             m_lookupSamples.end();
     }
-    if (!m_plainOrder.empty() || !m_maskedPlainOrder.empty()) {
+    if (!r.plain().empty() || !r.maskedPlain().empty()) {
         variant.outOfReach = true;
-        const Programs plain = programsFor(scene, settings, variant);
+        const Programs plain = programsFor(scene, plan, variant);
         for (Program* p : {plain.plain, plain.cutout}) {
             if (p)
-                setFrameUniforms(*p, camera, light, settings, shadowMap, readsRange, depthRange);
+                setFrameUniforms(*p, camera, light, plan, shadowMap, readsRange, depthRange);
         }
         if (m_counting)
             m_plainSamples.begin();
-        drawMaskedOrder(plain, scene, camera, m_plainOrder, m_maskedPlainOrder, GL_NOTEQUAL, nullptr);
+        drawMaskedOrder(plain, scene, camera, r.plain(), r.maskedPlain(), GL_NOTEQUAL, nullptr);
         if (m_counting)
             m_plainSamples.end();
     }
     m_fragments = {.lookup = std::max<std::int64_t>(m_lookupSamples.result(), 0), .plain = std::max<std::int64_t>(m_plainSamples.result(), 0)};
-    const int draws = int(m_lookupOrder.size() + m_maskedLookupOrder.size() + m_plainOrder.size() + m_maskedPlainOrder.size());
+    const int draws = r.use().lookupDraws + r.use().plainDraws;
 
     m_gl->glBindVertexArray(0);
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     if (shadows)
-        unbindShadowTextures(settings, readsRange);
+        unbindShadowTextures(plan, readsRange);
     for (const auto& [unit, used] : {std::pair{kContactUnit, contact}, std::pair{kPageTableUnit, pageTable}}) {
         if (used)
             bindUnit(m_gl, unit, 0, GL_TEXTURE0);

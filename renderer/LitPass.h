@@ -2,9 +2,11 @@
 
 #include "DepthRangePass.h"
 #include "CountQuery.h"
+#include "FramePlan.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "MomentsMap.h"
+#include "ReachDraws.h"
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
@@ -19,7 +21,7 @@
 
 namespace shadowlab {
 
-// What selects a variant besides the settings: what the frame draws and what its light's
+// What selects a variant besides the frame's plan: what the frame draws and what its light's
 // views are like.
 struct LitVariant {
     bool measure = false;       // into a measure target (MeasureTarget.h)
@@ -42,30 +44,24 @@ public:
     // the colour is made of (ambient + visibility * direct; the background's ambient is the
     // clear colour). Returns the number of draw calls.
     // `depthRange` is the min/max depth mip of `map` for penumbra-only filtering; it must be
-    // current (built from the map as it is) whenever usesDepthRange(settings). `moments` is the
+    // current (built from the map as it is) whenever the plan reads it (FramePlan::depthRange). `moments` is the
     // moments map a moment technique reads (its sampler ShadowSampler::Moments); `map` still
     // gives the map's size then.
-    int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const Settings& settings,
+    int render(const GpuScene& scene, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
                const ShadowMap* map, const RenderTarget& target, bool measure = false, const DepthRangePass* depthRange = nullptr,
                const MomentsMap* moments = nullptr);
 
-    // Whether `settings` make the lit pass march contact shadows over the camera's depth of the
-    // casters (renderer/CameraDepthPass), which must then be set with setContactDepth().
-    static bool usesContactShadows(const Settings& settings);
     // The casters' front and back faces as the camera sees them (CameraDepthPass::texture())
-    // that the next render() marches over; not owned.
+    // that the next render() marches over (FramePlan::contactShadows); not owned.
     void setContactDepth(GLuint texture) { m_contactDepth = texture; }
 
-    // Whether `settings` make the lit pass read the min/max depth mip (filter.early_out with a
-    // technique that can skip its taps).
-    static bool usesDepthRange(const Settings& settings);
-    // Whether the lookups of `settings` read a depth map drawn into slices (map.slices): their
+    // Whether the lookups of `plan` read a depth map drawn into slices (map.slices): their
     // shadow matrix then gives stored depth (DepthSlice::matrix).
-    static bool readsDepthSlices(const Settings& settings, bool reversedDepth);
+    static bool readsDepthSlices(const FramePlan& plan, bool reversedDepth);
 
     using Variant = LitVariant;
-    // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
-    static QStringList variantDefines(const Settings& settings, const Variant& variant = {});
+    // The #defines that select the variant for `plan` (exposed for tests and diagnostics).
+    static QStringList variantDefines(const FramePlan& plan, const Variant& variant = {});
     int compiledVariantCount() const { return int(m_programs.size()); }
     // Of those, the variants for cut-out objects (ALPHA_CUTOUT).
     int compiledCutoutVariantCount() const;
@@ -78,16 +74,12 @@ public:
     // Where the next render()'s lookups can find a caster, per object of the scene (computed by
     // the Renderer with the fit): receivers out of reach are shaded without a lookup, and those
     // that straddle it are drawn twice under a stencil mask of the reach where the target has a
-    // stencil buffer. Null: every receiver looks up. Not owned; must outlive render().
+    // stencil buffer. A software rasteriser's optimisation (RasteriserTuning::skipsOutOfReach).
+    // Null: every receiver looks up. Not owned; must outlive render().
     void setShadowReach(const ShadowReach* reach) { m_reach = reach; }
     // What the last render() did with the reach: receivers drawn with and without a lookup, and
     // whether it drew the stencil mask.
-    struct ReachUse {
-        int lookupDraws = 0;
-        int plainDraws = 0;
-        bool masked = false;
-    };
-    const ReachUse& lastReachUse() const { return m_reachUse; }
+    const ReachDraws::Use& lastReachUse() const { return m_reachDraws.use(); }
     // Whether render() counts the fragments of its draws that look the shadow up and of those
     // that do not (GL_SAMPLES_PASSED; Renderer::setCounting).
     void setCounting(bool counting) { m_counting = counting; }
@@ -117,33 +109,22 @@ private:
         Program* cutout = nullptr;
     };
 
-    Program& programFor(const Settings& settings, const Variant& variant);
-    Programs programsFor(const GpuScene& scene, const Settings& settings, Variant variant);
+    Program& programFor(const FramePlan& plan, const Variant& variant);
+    Programs programsFor(const GpuScene& scene, const FramePlan& plan, Variant variant);
     void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map, const glm::dmat4& slice);
-    void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const Settings& settings, const ShadowMap* map,
+    void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan, const ShadowMap* map,
                           bool readsRange, const DepthRangePass* depthRange);
     // Whether the framebuffer bound now has stencil bits.
     bool boundTargetHasStencil() const;
-    // Marks the reach's mask (ShadowReach::mask) in the stencil buffer (1 inside) within
-    // `pixels`, colour and depth untouched.
-    void drawReachMask(const CameraFrame& camera, const QRect& pixels);
-    void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
-                     const std::vector<std::pair<double, std::size_t>>& order);
-    // The draw orders of this frame: the receivers in view nearest first, split by the reach;
-    // sets m_reachUse (whether a mask is drawn).
-    void sortByReach(const GpuScene& scene, const CameraFrame& camera, bool shadows);
+    void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const ReachDraws::Order& order);
     // Colour, depth and stencil, and the measurement's targets.
     void clearTarget(bool measure);
-    // A rectangle of the reach on screen (ShadowReach::screenRect or one of screenRects) in
-    // pixels of a target of `size`.
-    static QRect reachPixels(const glm::dvec4& rect, QSize size);
-    void bindShadowTextures(const Settings& settings, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange);
-    void unbindShadowTextures(const Settings& settings, bool readsRange);
+    void bindShadowTextures(const FramePlan& plan, const ShadowMap& map, const MomentsMap* moments, const DepthRangePass* depthRange);
+    void unbindShadowTextures(const FramePlan& plan, bool readsRange);
     // `everywhere`, then `masked` where the stencil passes `stencilFunc` against 1: once inside
     // each of `scissors` when given (none: not at all), else over the whole target.
-    void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera,
-                         const std::vector<std::pair<double, std::size_t>>& everywhere,
-                         const std::vector<std::pair<double, std::size_t>>& masked, GLenum stencilFunc, const std::vector<QRect>* scissors);
+    void drawMaskedOrder(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const ReachDraws::Order& everywhere,
+                         const ReachDraws::Order& masked, GLenum stencilFunc, const std::vector<QRect>* scissors);
 
     GlFunctions* m_gl;
     bool m_counting = false;
@@ -151,27 +132,14 @@ private:
     CountQuery m_plainSamples;
     Fragments m_fragments;
     std::map<QString, std::unique_ptr<Program>> m_programs;
-    std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
-    // The same split by what the reach says: looked up everywhere, looked up inside the mask,
-    // shaded without a lookup outside the mask, shaded without a lookup everywhere.
-    std::vector<std::pair<double, std::size_t>> m_lookupOrder, m_maskedLookupOrder, m_maskedPlainOrder, m_plainOrder;
     const ShadowViewFrames* m_views = nullptr;
     // This frame's conventional-to-stored depth of the map (DepthSlice::matrix), folded into
     // the shadow matrices of the variants compiled with DEPTH_SLICES.
     glm::dmat4 m_sliceMatrix{1.0};
     const VirtualMapUniforms* m_virtualMap = nullptr;
     const ShadowReach* m_reach = nullptr;
+    ReachDraws m_reachDraws;            // which receivers look up, and the reach's mask
     GLuint m_contactDepth = 0;
-    ReachUse m_reachUse;
-    // The mask's program (the shadow pass's: positions through one matrix, no colour) and its
-    // boxes, uploaded when the reach changes.
-    std::unique_ptr<ShaderProgram> m_maskProgram;
-    GLint m_maskMatrix = -1;
-    GlVertexArray m_maskVertexArray;
-    GlBuffer m_maskVertices;
-    GLsizei m_maskVertexCount = 0;
-    int m_maskGeneration = -1;                  // the reach the uploaded boxes were made from
-    glm::dvec3 m_maskOrigin{0.0};               // the boxes' vertices are relative to it
     // The light the shadow pass left floors out for (bias.skip_floors), during render().
     const LightFrame* m_floorsLeftOutFor = nullptr;
 };

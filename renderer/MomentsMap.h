@@ -52,7 +52,6 @@ public:
     bool mipmaps() const { return m_mipmaps; }
     // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
     // the extension).
-    float anisotropy() const { return m_anisotropy; }
     GLuint texture() const { return m_texture.id(); }
     GLuint framebuffer() const { return m_framebuffer.id(); }
     // The blur's intermediate target (first axis), and its framebuffer.

@@ -75,8 +75,7 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     setLightUniforms(*p, light, settings);
     // The far plane's moments, computed by the technique's own encoding: drawn over what is
     // cleared, or, over a whole map, cleared to the value that drawing gave last time (a
-    // rasteriser clears a whole surface fastest; llvmpipe fills a 2048² RG32F map in 2 ms
-    // this way against 8 ms drawn).
+    // rasteriser clears a whole surface fastest: docs/performance.md).
     const QString key = encoding(light, settings);
     const bool whole = clear == QRect(0, 0, map.width(), map.height());
     const auto known = m_farMoments.find(key);

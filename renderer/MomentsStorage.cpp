@@ -19,23 +19,25 @@ namespace {
 // map's cures for acne, which moments do not need.
 class MomentsStorage final : public ShadowStorage {
 public:
-    MomentsStorage(GlFunctions* gl, bool wideTwoChannels) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl), m_wideTwoChannels(wideTwoChannels) {}
+    explicit MomentsStorage(GlFunctions* gl) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl) {}
 
-    void ensure(const Settings& settings, ShadowTileGrid grid) override
+    void ensure(const FramePlan& plan) override
     {
-        const int channels = shadowTechnique(settings.filter.mode).momentChannels;
-        m_channels = channels;
-        m_map.ensureTiles(settings.map.size, grid.columns, grid.rows, settings.moments.format, channels == 2 && m_wideTwoChannels ? 4 : channels,
-                          settings.moments.mipmaps, settings.moments.anisotropy);
+        const Settings& settings = plan.settings;
+        m_channels = plan.technique->momentChannels;
+        m_map.ensureTiles(plan.tileSize, plan.grid.columns, plan.grid.rows, settings.moments.format, storedChannels(plan), settings.moments.mipmaps,
+                          settings.moments.anisotropy);
     }
 
-    ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const override
+    ShadowStorageKey key(const FramePlan& plan, int sceneGeneration) const override
     {
+        const Settings& settings = plan.settings;
         const MomentWarp warp = momentWarp(settings);
-        ShadowStorageKey key = commonStorageKey(settings, sceneGeneration, reversedDepth, grid);
+        ShadowStorageKey key = commonStorageKey(plan, sceneGeneration);
         key.moments = true;
         key.momentTechnique = settings.filter.mode;
         key.momentFormat = settings.moments.format;
+        key.momentChannels = storedChannels(plan);
         key.exponentPositive = warp.positive;
         key.exponentNegative = warp.negative;
         key.blur = settings.moments.blur;
@@ -43,19 +45,20 @@ public:
         return key;
     }
 
-    bool cullsFrontFaces(const Settings&) const override { return false; }
+    bool cullsFrontFaces(const FramePlan&) const override { return false; }
     // The moments hold every surface, floors too (MomentsPass::render).
-    bool leavesOutFloors(const Settings&) const override { return false; }
+    bool leavesOutFloors(const FramePlan&) const override { return false; }
 
-    void clear(const LightFrame& light, const Settings& settings, const QRect& tile) override
+    void clear(const LightFrame& light, const FramePlan& plan, const QRect& tile) override
     {
-        m_pass.clear(light, settings, m_map, tile);
+        m_pass.clear(light, plan.settings, m_map, tile);
         m_blur.render(m_map, 0, tile);     // no blur: only the mips, which would keep what was cleared
     }
 
-    int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels,
+    int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
              double* blurWallMs) override
     {
+        const Settings& settings = plan.settings;
         const int draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile));
         // The view's moments blurred within its tile, and the mips of a map of one view (those
         // of several would mix the views, which settings refuse).
@@ -87,6 +90,13 @@ public:
     qint64 bytes() const override { return m_map.bytes(m_channels); }
 
 private:
+    // Two moments in four channels where the rasteriser profile says so (RasteriserTuning).
+    static int storedChannels(const FramePlan& plan)
+    {
+        const int channels = plan.technique->momentChannels;
+        return channels == 2 && plan.tuning.wideTwoChannelMoments ? 4 : channels;
+    }
+
     void countBlur(int width)
     {
         const qint64 texels = m_blur.lastTexels();
@@ -101,15 +111,14 @@ private:
     MomentsMap m_map;
     MomentsPass m_pass;
     MomentsBlurPass m_blur;
-    bool m_wideTwoChannels;     // two moments in RGBA (Renderer::setWideTwoChannelMoments)
     int m_channels = 4;         // the technique's, which the counts use
 };
 
 } // namespace
 
-std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl, bool wideTwoChannels)
+std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl)
 {
-    return std::make_unique<MomentsStorage>(gl, wideTwoChannels);
+    return std::make_unique<MomentsStorage>(gl);
 }
 
 } // namespace shadowlab

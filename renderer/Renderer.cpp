@@ -1,15 +1,12 @@
 #include "Renderer.h"
 
-#include "GlDebug.h"
 #include "LightFitting.h"
-#include "MomentMath.h"
-#include "ShadowTechnique.h"
+#include "RenderError.h"
 #include "SceneLibrary.h"
+#include "SceneNames.h"
 #include "SettingsError.h"
-#include "ShadowViews.h"
 
 #include <algorithm>
-#include <mutex>
 
 #include <QElapsedTimer>
 
@@ -20,9 +17,10 @@ Renderer::Renderer(GlFunctions* gl)
       m_shadowTimer(gl), m_litTimer(gl), m_shadowPrimitives(gl, GL_PRIMITIVES_GENERATED), m_shadowSamples(gl, GL_SAMPLES_PASSED),
       m_litPrimitives(gl, GL_PRIMITIVES_GENERATED)
 {
+    m_softwareDriver = isSoftwareRenderer(rendererString());
     // A software rasteriser's timer queries measure nothing (its rasterisation is deferred past
     // them) and cost the pass after a shadow pass a sixth of its time: wall times stand there.
-    const bool gpuTimed = !isSoftwareRenderer(rendererString());
+    const bool gpuTimed = !m_softwareDriver;
     m_shadowTimer.setEnabled(gpuTimed);
     m_litTimer.setEnabled(gpuTimed);
 }
@@ -34,7 +32,7 @@ const MomentsMap* Renderer::momentsMap() const
 
 const MomentsMap* Renderer::momentsShown() const
 {
-    return m_viewSettings.shadow.enabled ? storageFor(m_viewSettings).momentsMap() : nullptr;
+    return m_plan.shadows && m_plan.moments ? momentsMap() : nullptr;
 }
 
 Renderer::~Renderer() = default;
@@ -45,23 +43,30 @@ void Renderer::setScene(std::optional<Scene> scene)
     m_sceneChanged = true;
 }
 
+void Renderer::setSceneFile(const QString& path, std::shared_ptr<const Scene> scene)
+{
+    m_sceneFile = {path, std::move(scene)};
+    m_sceneChanged = m_sceneChanged || !m_scene || m_scene->scene().name == path;
+}
+
+bool Renderer::needsSceneFile(const Settings& settings) const
+{
+    return !m_customScene && !isPresetName(settings.scene) && (!m_sceneFile || m_sceneFile->first != settings.scene);
+}
+
 void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats, bool measure)
 {
-    static std::once_flag allocatorTuned;
-    std::call_once(allocatorTuned, [this] { keepFreedMemoryForSoftwareRasteriser(rendererString()); });
     ensureValid(settings);
     // Compute everything that can fail before touching state, so a bad value keeps the last frame.
     computeLightFrame(settings.light);
-    ShadowStorage& storage = storageFor(settings);
-    const bool reversed = reversedDepth(settings, storage);
-    const bool virtualMap = settings.shadow.enabled && settings.shadow.virtualMap;
-    // A virtual map's pool is the map: a slot per page, poolSide² of them.
-    const ShadowTileGrid grid = virtualMap ? ShadowTileGrid{settings.shadow.virtualPool, settings.shadow.virtualPool} : shadowTileGrid(settings);
-    if (virtualMap && settings.shadow.virtualPool * kVirtualSlotTexels > maxTextureSize())
+    FramePlan plan = planFrame(settings, m_softwareDriver, m_depthPass.supportsReversedDepth());
+    warnOnce(plan);
+    if (plan.virtualMap && plan.grid.columns * plan.tileSize > maxTextureSize())
         throw SettingsError(QStringLiteral("shadow.virtual_pool"),
                             QStringLiteral("a pool of %1² pages needs a %2² texture, and this driver allows %3² at most; lower shadow.virtual_pool")
-                                .arg(settings.shadow.virtualPool).arg(settings.shadow.virtualPool * kVirtualSlotTexels).arg(maxTextureSize()));
-    ensureMap(settings, storage, grid, reversed);
+                                .arg(plan.grid.columns).arg(plan.grid.columns * plan.tileSize).arg(maxTextureSize()));
+    ShadowStorage& storage = storageFor(plan);
+    ensureMap(plan, storage);
     const int sceneBefore = m_sceneGeneration;
     ensureScene(settings);
     const bool newScene = m_sceneGeneration != sceneBefore;
@@ -75,12 +80,13 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // scene's generation: a still scene's time changes nothing).
     Settings fitted = settings;
     fitted.animation = {};
-    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, std::move(fitted), m_fitCamera, size, reversed}, m_scene->bounds());
+    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, std::move(fitted), m_fitCamera, size, plan.reversedDepth}, m_scene->bounds());
     m_camera = frame.camera;
     if (frame.refit)
-        refit(frame, storage, stats);
+        refit(frame, plan, storage, stats);
     m_update.describe(settings, stats);
-    stats.reversedDepth = reversed;
+    stats.reversedDepth = plan.reversedDepth;
+    stats.softwareProfile = plan.tuning.software;
 
     // A map in a later slice than its first differs from a cleared one by a 24-bit step at
     // exact ties (a bias of 0): a measurement draws it again after a clear, so the same settings
@@ -94,16 +100,16 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     storage.takeCounts();   // what a pass did before this frame is not its
     {
         CountingScope counting(m_counting, {&m_shadowPrimitives, &m_shadowSamples});
-        if (virtualMap)
-            renderPages(settings, storage, grid, size, timing, stats);
-        else if (settings.shadow.enabled)
-            renderViews(settings, storage, grid, timing, stats);
+        if (plan.virtualMap)
+            renderPages(plan, storage, size, timing, stats);
+        else if (plan.shadows)
+            renderViews(plan, storage, timing, stats);
     }
-    countShadowPass(settings, storage, stats);
-    buildDepthRange(settings, timing, stats);
+    countShadowPass(plan, storage, stats);
+    buildDepthRange(plan, timing, stats);
     m_light = m_update.views().frames.front();
     stats.redraw = redrawReason(stats.shadowPassRendered, casterMoved, newScene, settings);
-    m_viewSettings = settings;
+    m_plan = std::move(plan);
 }
 
 FrameStats::Redraw Renderer::redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const
@@ -115,38 +121,44 @@ FrameStats::Redraw Renderer::redrawReason(bool drawn, bool casterMoved, bool sce
         return Redraw::Scene;
     if (casterMoved)
         return Redraw::Casters;
-    if (settings.light != m_viewSettings.light)
+    if (settings.light != m_plan.settings.light)
         return Redraw::Light;
-    if (settings.camera != m_viewSettings.camera)
+    if (settings.camera != m_plan.settings.camera)
         return Redraw::Camera;
     return Redraw::Settings;
 }
 
-bool Renderer::reversedDepth(const Settings& settings, const ShadowStorage& storage)
+void Renderer::warnOnce(const FramePlan& plan)
 {
-    // A moments map keeps its precision in its own format; its pass uses conventional depth.
-    const bool wantReversed = settings.shadow.enabled && settings.map.format == DepthFormat::Depth32F && !storage.momentsMap();
-    const bool reversed = wantReversed && m_depthPass.supportsReversedDepth();
-    if (wantReversed && !reversed && !m_warnedNoReversedDepth) {
+    if (plan.reversedDepthWanted && !plan.reversedDepth && !m_warnedNoReversedDepth) {
         qWarning("shadowlab: this driver has neither OpenGL 4.5 nor GL_ARB_clip_control; depth32f maps use conventional depth");
         m_warnedNoReversedDepth = true;
     }
-    return reversed;
 }
 
-void Renderer::ensureMap(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, bool reversed)
+void Renderer::ensureMap(const FramePlan& plan, ShadowStorage& storage)
 {
-    if (!settings.shadow.enabled)
+    if (!plan.shadows)
         return;
-    const bool virtualMap = settings.shadow.virtualMap;
-    m_shadowMap.ensureTiles(virtualMap ? kVirtualSlotTexels : settings.map.size, grid.columns, grid.rows, settings.map.format, reversed);
-    storage.ensure(settings, grid);
+    m_shadowMap.ensureTiles(plan.tileSize, plan.grid.columns, plan.grid.rows, plan.settings.map.format, plan.reversedDepth);
+    storage.ensure(plan);
+}
+
+Scene Renderer::sceneOf(const Settings& settings) const
+{
+    if (m_customScene)
+        return *m_customScene;
+    if (isPresetName(settings.scene))
+        return buildPresetScene(settings.scene);
+    if (!m_sceneFile || m_sceneFile->first != settings.scene)
+        throw RenderError(QStringLiteral("the scene file '%1' was not loaded before the frame (Renderer::setSceneFile)").arg(settings.scene));
+    return *m_sceneFile->second;
 }
 
 void Renderer::ensureScene(const Settings& settings)
 {
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene) || m_objectSwitches != settings.objects) {
-        Scene scene = m_customScene ? *m_customScene : buildScene(settings.scene);
+        Scene scene = sceneOf(settings);
         applyObjectSwitches(scene, settings.objects);    // throws for an object the scene has not: the last scene stays
         m_scene = std::make_unique<GpuScene>(m_gl, std::move(scene));
         m_objectSwitches = settings.objects;
@@ -155,37 +167,36 @@ void Renderer::ensureScene(const Settings& settings)
     }
 }
 
-void Renderer::refit(const FrameUpdate::Frame& frame, const ShadowStorage& storage, FrameStats& stats)
+void Renderer::refit(const FrameUpdate::Frame& frame, const FramePlan& plan, const ShadowStorage& storage, FrameStats& stats)
 {
     const Settings& settings = frame.inputs.settings;
     FrameUpdate::FitSources sources;
     // Sample-distribution cascades split the depth range the fitting camera draws.
     m_visibleRange.reset();
-    if (usesVisibleDepth(settings)) {
+    if (plan.visibleDepth) {
         if (!m_visibleDepth)
             m_visibleDepth = std::make_unique<VisibleDepthPass>(m_gl);
         m_visibleRange = m_visibleDepth->ensure(*m_scene, m_sceneGeneration, frame.fitCamera, frame.inputs.size, &stats.visibleDepthDraws);
     }
     sources.visibleRange = m_visibleRange;
-    if (settings.shadow.enabled && settings.shadow.virtualMap) {
+    if (plan.virtualMap) {
         if (!m_virtual) {
             m_virtual = std::make_unique<VirtualShadowMap>(m_gl);
-            const bool software = isSoftwareRenderer(rendererString());
-            m_virtual->setReduction(m_virtualReduction.value_or(software ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu));
             m_virtual->setAsyncRequests(m_virtualAsync);
         }
+        m_virtual->setReduction(plan.tuning.cpuVirtualRequests ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu);
         sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
-    sources.cullsFrontFaces = storage.cullsFrontFaces(settings);
-    sources.floorsLeftOut = storage.leavesOutFloors(settings);
+    sources.cullsFrontFaces = storage.cullsFrontFaces(plan);
+    sources.floorsLeftOut = storage.leavesOutFloors(plan);
     m_update.fit(frame, m_scene->scene(), m_scene->layout(), sources);
 }
 
-void Renderer::buildDepthRange(const Settings& settings, TimingMode timing, FrameStats& stats)
+void Renderer::buildDepthRange(const FramePlan& plan, TimingMode timing, FrameStats& stats)
 {
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
     // filtering is turned on over a map it was not built from.
-    if (!LitPass::usesDepthRange(settings) || m_depthRangeGeneration == m_mapGeneration)
+    if (!plan.depthRange || m_depthRangeGeneration == m_mapGeneration)
         return;
     if (!m_depthRange)
         m_depthRange = std::make_unique<DepthRangePass>(m_gl);
@@ -199,32 +210,70 @@ void Renderer::buildDepthRange(const Settings& settings, TimingMode timing, Fram
     }
 }
 
-ShadowStorage& Renderer::storageFor(const Settings& settings) const
+ShadowStorage& Renderer::storageFor(const FramePlan& plan)
 {
-    if (isMomentTechnique(settings.filter.mode)) {
+    if (plan.moments) {
         if (!m_momentsStorage)
-            m_momentsStorage = makeMomentsStorage(m_gl, m_wideTwoChannelMoments.value_or(isSoftwareRenderer(rendererString())));
+            m_momentsStorage = makeMomentsStorage(m_gl);
         return *m_momentsStorage;
     }
     return *m_depthStorage;
 }
 
-void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats)
+bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, std::size_t count)
 {
     // What all views share: when it changes, every view is drawn or cleared again.
-    const ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
-    const std::size_t count = m_update.views().set.views.size();
-    bool fresh = false;
-    if (m_shadowKey != shared || m_viewVolumes.size() != count) {
-        // New settings start a new cycle of slices (map.slices): what a setting draws does not
-        // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
-        // and so does invalidateShadowMap(), which stands for one.
-        if (m_shadowKey && *m_shadowKey != shared)
-            m_shadowMap.restartSlices();
-        m_viewVolumes.assign(count, std::nullopt);
-        m_shadowKey = shared;
-        fresh = true;
+    const ShadowStorageKey shared = storage.key(plan, m_sceneGeneration);
+    if (m_shadowKey == shared && m_viewVolumes.size() == count)
+        return false;
+    // New settings start a new cycle of slices (map.slices): what a setting draws does not
+    // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
+    // and so does invalidateShadowMap(), which stands for one.
+    if (m_shadowKey && *m_shadowKey != shared)
+        m_shadowMap.restartSlices();
+    m_viewVolumes.assign(count, std::nullopt);
+    m_shadowKey = shared;
+    return true;
+}
+
+std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
+{
+    // Nothing to shadow, or no caster in the view: the tile reads lit, and stays so until the
+    // view has something.
+    const std::vector<CasterTexels>& texels = m_update.casterTexels();
+    std::vector<std::optional<LightVolume>> wanted;
+    for (std::size_t i = 0; i < m_update.views().set.views.size(); ++i) {
+        const FittedLight& fit = m_update.views().set.views[i].fit;
+        const bool casters = i >= texels.size() || !texels[i].drawn.isEmpty();
+        wanted.push_back(fit.anythingToShadow && casters ? std::optional<LightVolume>(fit.volume) : std::nullopt);
     }
+    return wanted;
+}
+
+double Renderer::casterCoverage(std::size_t count) const
+{
+    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage).
+    double coverage = count == 1 ? 0.0 : 1.0;
+    for (const ReachBox& box : m_update.reach().boxes) {
+        const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
+        coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
+    }
+    return std::min(coverage, 1.0);
+}
+
+void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats)
+{
+    const std::size_t count = m_update.views().set.views.size();
+    const bool fresh = beginViews(plan, storage, count);
+    const std::vector<std::optional<LightVolume>> wanted = wantedVolumes();
+    std::vector<bool> due(count);
+    bool draws = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        due[i] = fresh || m_viewVolumes[i] != wanted[i];
+        draws = draws || (due[i] && wanted[i]);
+    }
+    if (std::find(due.begin(), due.end(), true) == due.end())
+        return;
     // Per view only for a light of several; one view's figures are the shadow pass's.
     const bool perView = count > 1;
     if (perView) {
@@ -232,66 +281,19 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
         stats.viewDraws.assign(count, 0);
         stats.viewWallMs.assign(count, 0.0);
     }
-    const int size = m_shadowMap.size();
     const int clearsBefore = m_shadowMap.clearCount();
-    // Nothing to shadow, or no caster in the view: the tile reads lit, and stays so until the
-    // view has something.
-    const std::vector<CasterTexels>& texels = m_update.casterTexels();
-    const auto wantedVolume = [&](std::size_t i) {
-        const FittedLight& fit = m_update.views().set.views[i].fit;
-        const bool casters = i >= texels.size() || !texels[i].drawn.isEmpty();
-        return fit.anythingToShadow && casters ? std::optional<LightVolume>(fit.volume) : std::nullopt;
-    };
-    bool any = fresh, draws = false;
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::optional<LightVolume> wanted = wantedVolume(i);
-        const bool changed = fresh || m_viewVolumes[i] != wanted;
-        any = any || changed;
-        draws = draws || (changed && wanted);
-    }
-    if (!any)
-        return;
-    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage), for the
-    // frames that draw.
-    double coverage = count == 1 ? 0.0 : 1.0;
-    for (const ReachBox& box : m_update.reach().boxes) {
-        const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
-        coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
-    }
-    m_shadowMap.setCasterCoverage(std::min(coverage, 1.0));
+    m_shadowMap.setCasterCoverage(casterCoverage(count));
     // Only a frame that draws a view is a shadow pass, timed; clearing a tile is not.
     if (draws)
         m_shadowTimer.begin();
     QElapsedTimer total;
     total.start();
     // A fresh map reads lit everywhere first, tiles no view uses included (3 cascades in 2 x 2).
-    if (fresh && count < std::size_t(grid.columns * grid.rows))
-        storage.clear(m_update.views().frames.front(), settings);
+    if (fresh && count < std::size_t(plan.grid.columns * plan.grid.rows))
+        storage.clear(m_update.views().frames.front(), plan);
     for (std::size_t i = 0; i < count; ++i) {
-        const ShadowView& view = m_update.views().set.views[i];
-        const QRect tile(view.column * size, view.row * size, size, size);
-        const std::optional<LightVolume> wanted = wantedVolume(i);
-        if (!fresh && m_viewVolumes[i] == wanted)
-            continue;
-        QElapsedTimer wall;
-        wall.start();
-        int viewDraws = 0;
-        if (wanted)
-            viewDraws = storage.draw(*m_scene, m_update.views().frames[i], settings, tile, i < texels.size() ? &texels[i] : nullptr,
-                                     timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
-        else
-            storage.clear(m_update.views().frames[i], settings, tile);
-        if (timing == TimingMode::Finish && perView) {
-            m_gl->glFinish();
-            stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
-        }
-        if (perView) {
-            // A view without casters is cleared where it was written, not drawn.
-            stats.viewRendered[i] = wanted.has_value();
-            stats.viewDraws[i] = viewDraws;
-        }
-        m_viewVolumes[i] = wanted;
-        stats.shadowDraws += viewDraws;
+        if (due[i])
+            drawView(i, wanted[i], plan, storage, timing, stats);
     }
     ++m_mapGeneration;
     if (!draws)
@@ -307,11 +309,33 @@ void Renderer::renderViews(const Settings& settings, ShadowStorage& storage, Sha
     }
 }
 
-void Renderer::setVirtualReduction(VirtualShadowMap::Reduction reduction)
+void Renderer::drawView(std::size_t i, const std::optional<LightVolume>& wanted, const FramePlan& plan, ShadowStorage& storage, TimingMode timing,
+                        FrameStats& stats)
 {
-    m_virtualReduction = reduction;
-    if (m_virtual)
-        m_virtual->setReduction(reduction);
+    const ShadowView& view = m_update.views().set.views[i];
+    const int size = m_shadowMap.size();
+    const QRect tile(view.column * size, view.row * size, size, size);
+    const std::vector<CasterTexels>& texels = m_update.casterTexels();
+    const bool perView = m_update.views().set.views.size() > 1;
+    QElapsedTimer wall;
+    wall.start();
+    int draws = 0;
+    if (wanted)
+        draws = storage.draw(*m_scene, m_update.views().frames[i], plan, tile, i < texels.size() ? &texels[i] : nullptr,
+                             timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
+    else
+        storage.clear(m_update.views().frames[i], plan, tile);
+    if (timing == TimingMode::Finish && perView) {
+        m_gl->glFinish();
+        stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
+    }
+    if (perView) {
+        // A view without casters is cleared where it was written, not drawn.
+        stats.viewRendered[i] = wanted.has_value();
+        stats.viewDraws[i] = draws;
+    }
+    m_viewVolumes[i] = wanted;
+    stats.shadowDraws += draws;
 }
 
 void Renderer::setVirtualAsyncRequests(bool async)
@@ -321,10 +345,10 @@ void Renderer::setVirtualAsyncRequests(bool async)
         m_virtual->setAsyncRequests(async);
 }
 
-void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats)
+void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize size, TimingMode timing, FrameStats& stats)
 {
-    ShadowStorageKey shared = storage.key(settings, m_sceneGeneration, m_shadowMap.reversedDepth(), grid);
-    shared.mapSize = kVirtualSlotTexels;
+    const Settings& settings = plan.settings;
+    const ShadowStorageKey shared = storage.key(plan, m_sceneGeneration);
     const bool invalidate = m_shadowKey != shared;
     m_shadowKey = shared;
     m_viewVolumes.clear();
@@ -336,10 +360,10 @@ void Renderer::renderPages(const Settings& settings, ShadowStorage& storage, Sha
     m_shadowTimer.begin();
     const auto frameOf = [&](const LightVolume& volume) { return computeLightFrame(settings.light, volume, m_shadowMap.reversedDepth()); };
     if (invalidate)
-        storage.clear(m_update.views().frames.front(), settings);    // every slot reads lit until a page is drawn there
+        storage.clear(m_update.views().frames.front(), plan);    // every slot reads lit until a page is drawn there
     int draws = 0;
     stats.virtualMap = true;
-    stats.virtualPages = m_virtual->update(*m_scene, settings, m_camera, size, invalidate, storage, frameOf, &draws);
+    stats.virtualPages = m_virtual->update(*m_scene, plan, m_camera, size, invalidate, storage, frameOf, &draws);
     m_shadowTimer.end();
     m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
@@ -376,7 +400,7 @@ void Renderer::finishTiming(TimingMode timing, FrameStats& stats)
     stats.litPassMs = m_lastLitMs;
 }
 
-void Renderer::countShadowPass(const Settings& settings, ShadowStorage& storage, FrameStats& stats)
+void Renderer::countShadowPass(const FramePlan& plan, ShadowStorage& storage, FrameStats& stats)
 {
     FrameCounts& counts = stats.counts;
     const ShadowStorage::Counts done = storage.takeCounts();
@@ -384,37 +408,37 @@ void Renderer::countShadowPass(const Settings& settings, ShadowStorage& storage,
     counts.clearedTexels = done.clearedTexels;
     counts.blurTexels = done.blurTexels;
     counts.blurBytes = done.blurBytes;
-    counts.mapBytes = !settings.shadow.enabled ? 0
-        : settings.shadow.virtualMap && m_virtual ? std::int64_t(m_shadowMap.width()) * m_shadowMap.height() * 4 + m_virtual->pageTableBytes()
-                                                  : storage.bytes();
-    counts.tapsPerLookup = settings.shadow.enabled ? shadowTechnique(settings.filter.mode).taps(settings.filter) : 0;
+    counts.mapBytes = !plan.shadows ? 0
+        : plan.virtualMap && m_virtual ? std::int64_t(m_shadowMap.width()) * m_shadowMap.height() * 4 + m_virtual->pageTableBytes()
+                                       : storage.bytes();
+    counts.tapsPerLookup = plan.tapsPerLookup;
     if (m_counting) {
         counts.shadow.primitives = m_shadowPrimitives.result();
         counts.shadow.samples = m_shadowSamples.result();
     }
 }
 
-void Renderer::drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats)
+void Renderer::drawLit(const FramePlan& plan, const RenderTarget& target, bool measure, FrameStats& stats)
 {
     CountingScope counting(m_counting, {&m_litPrimitives});
     m_litPass.setCounting(m_counting);
     m_litTimer.begin();
     // Contact shadows march over the casters' depth as this camera sees them: part of the lit
     // pass's cost, drawn again only when the scene, the camera or the size changed.
-    if (LitPass::usesContactShadows(settings)) {
+    if (plan.contactShadows) {
         if (!m_cameraDepth)
             m_cameraDepth = std::make_unique<CameraDepthPass>(m_gl);
-        stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size, settings.shadow.cutouts);
+        stats.contactDepthDraws = m_cameraDepth->ensure(*m_scene, m_sceneGeneration, m_camera, target.size, plan.settings.shadow.cutouts);
         m_litPass.setContactDepth(m_cameraDepth->texture());
         m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     } else {
         m_litPass.setContactDepth(0);
     }
     m_litPass.setShadowViews(&m_update.views());
-    m_litPass.setVirtualMap(settings.shadow.enabled && settings.shadow.virtualMap ? &m_virtualUniforms : nullptr);
-    m_litPass.setShadowReach(m_skipsOutOfReach ? &m_update.reach() : nullptr);
-    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, settings, settings.shadow.enabled ? &m_shadowMap : nullptr, target, measure,
-                                      m_depthRange.get(), storageFor(settings).momentsMap());
+    m_litPass.setVirtualMap(plan.virtualMap ? &m_virtualUniforms : nullptr);
+    m_litPass.setShadowReach(plan.tuning.skipsOutOfReach ? &m_update.reach() : nullptr);
+    stats.litDraws = m_litPass.render(*m_scene, m_camera, m_light, plan, plan.shadows ? &m_shadowMap : nullptr, target, measure, m_depthRange.get(),
+                                      plan.moments ? momentsMap() : nullptr);
     stats.litPlainDraws = m_litPass.lastReachUse().plainDraws;
     stats.litReachMasked = m_litPass.lastReachUse().masked;
     m_litTimer.end();
@@ -424,7 +448,7 @@ void Renderer::drawLit(const Settings& settings, const RenderTarget& target, boo
         stats.counts.lit.primitives = m_litPrimitives.result();
         const LitPass::Fragments fragments = m_litPass.lastFragments();
         stats.counts.lit.samples = fragments.lookup + fragments.plain;
-        stats.counts.lookupFragments = settings.shadow.enabled ? fragments.lookup : 0;
+        stats.counts.lookupFragments = plan.shadows ? fragments.lookup : 0;
     }
 }
 
@@ -441,7 +465,7 @@ void Renderer::render(const Settings& settings, const RenderTarget& target, Timi
 
     QElapsedTimer lit;
     lit.start();
-    drawLit(settings, target, false, stats);
+    drawLit(m_plan, target, false, stats);
     if (timing == TimingMode::Finish) {
         m_gl->glFinish();
         stats.litPassWallMs = double(lit.nsecsElapsed()) * 1e-6;
@@ -460,7 +484,7 @@ VisibilityBuffer Renderer::renderVisibility(const Settings& settings, QSize size
     if (!m_measureTarget)
         m_measureTarget = std::make_unique<MeasureTarget>(m_gl);
     const RenderTarget target = m_measureTarget->ensure(size);
-    drawLit(settings, target, true, stats);
+    drawLit(m_plan, target, true, stats);
     finishTiming(TimingMode::Finish, stats);
     m_stats = stats;
     return m_measureTarget->read(m_camera.position);
@@ -487,7 +511,7 @@ void Renderer::renderDepthMap(const RenderTarget& target, const QRectF& visible,
     if (const MomentsMap* moments = momentsShown()) {
         if (!m_depthView)
             m_depthView = std::make_unique<DepthViewPass>(m_gl);
-        m_depthView->renderMoments(moments->texture(), m_viewSettings, target, visible, viewport);
+        m_depthView->renderMoments(moments->texture(), m_plan.settings, target, visible, viewport);
         return;
     }
     const std::optional<DepthSpan> span = depthMapSpan();

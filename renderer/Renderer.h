@@ -6,6 +6,7 @@
 #include "DepthPass.h"
 #include "DepthRangePass.h"
 #include "DepthViewPass.h"
+#include "FramePlan.h"
 #include "FrameStats.h"
 #include "FrameUpdate.h"
 #include "GpuScene.h"
@@ -68,7 +69,7 @@ public:
     // The moments map of the moment techniques; null until one is first used.
     const MomentsMap* momentsMap() const;
     // Which moment the depth-map view shows (1-4), or 0 when it shows depth.
-    int depthMapMoment() const { return momentsShown() ? m_viewSettings.moments.view : 0; }
+    int depthMapMoment() const { return momentsShown() ? m_plan.settings.moments.view : 0; }
     // The min/max depth mip of the map for penumbra-only filtering; null until first needed.
     const DepthRangePass* depthRange() const { return m_depthRange.get(); }
     const Scene* scene() const { return m_scene ? &m_scene->scene() : nullptr; }
@@ -76,6 +77,13 @@ public:
     // (for the audit's degenerate scenes; the `scene` key offers only the presets). Uploaded on
     // the next render().
     void setScene(std::optional<Scene> scene);
+    // The scene of the model or scene file `path` that settings.scene names, loaded by the caller
+    // before the frame (lab/SceneSupply.h): a frame builds a preset from the program's own
+    // resources, and reads no file and starts no process itself. A frame whose settings name a
+    // file other than the last one handed in throws RenderError.
+    void setSceneFile(const QString& path, std::shared_ptr<const Scene> scene);
+    // Whether settings.scene is a file this renderer has not been handed (setSceneFile).
+    bool needsSceneFile(const Settings& settings) const;
     // The light volume of the last frame after light.fit (the passes' volume), with what it cut.
     const FittedLight& lastFit() const { return m_update.fitted(); }
     // The views of the last frame when the light has several (cascades, cube faces); their
@@ -98,15 +106,12 @@ public:
     void setFitCamera(std::optional<CameraSettings> camera) { m_fitCamera = std::move(camera); }
     // Where the lookups of the last frame could find a caster (core/ShadowReach.h).
     const ShadowReach& shadowReach() const { return m_update.reach(); }
-    // Whether the lit pass shades receivers out of the casters' reach without a lookup (on by
-    // default; the frame is the same either way, which the tests check with this off).
-    void setSkipsOutOfReach(bool skips) { m_skipsOutOfReach = skips; }
+    // What the last frame resolved its settings into: the technique's row, the storage, the
+    // tiles, the rasteriser profile's optimisations.
+    const FramePlan& lastPlan() const { return m_plan; }
     // The virtual shadow map of shadow.virtual (null until first used): its layout, page cache
     // and windows as of the last frame.
     const VirtualShadowMap* virtualMap() const { return m_virtual.get(); }
-    // How the virtual map's requests are reduced (VirtualShadowMap::Reduction). By default on the
-    // GPU, but on a software rasteriser, where a point per pixel costs six times the read-back.
-    void setVirtualReduction(VirtualShadowMap::Reduction reduction);
     // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
     void setVirtualAsyncRequests(bool async);
     // Tests: draw a one-view map into slices whatever share of it the casters cover
@@ -115,13 +120,6 @@ public:
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
-
-    // Whether two moments (vsm, evsm2) are stored in RGBA rather than RG: a software rasteriser's
-    // optimisation, on by default there only (nullopt). llvmpipe blurs a 2048² RG32F map in
-    // 100 ms and an RGBA32F one in 75, while a GPU reads half the bytes from RG; one channel (esm)
-    // is faster than four on both. Frames are the same either way. Takes effect before the first
-    // frame of a moment technique.
-    void setWideTwoChannelMoments(std::optional<bool> wide) { m_wideTwoChannelMoments = wide; }
 
     // Whether frames count what transfers to any GPU (FrameCounts' query counts: primitives,
     // samples, lookup fragments). Off by default: the queries cost a software rasteriser a wait,
@@ -137,30 +135,41 @@ private:
     // `measure`: a measurement's frame, whose map is drawn into its first slice after a clear
     // (map.slices), so what is measured does not depend on the draws before it.
     void prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats, bool measure = false);
-    // Whether the frame's depth32f map gets reversed depth (warns once when it cannot).
-    bool reversedDepth(const Settings& settings, const ShadowStorage& storage);
+    // Warns once where the plan wants reversed depth and the driver cannot give it.
+    void warnOnce(const FramePlan& plan);
     // The map's tiles (a virtual map's pool: a slot per page) and the storage for them.
-    void ensureMap(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, bool reversed);
+    void ensureMap(const FramePlan& plan, ShadowStorage& storage);
     // The scene the settings name, uploaded when it changed.
     void ensureScene(const Settings& settings);
+    // A copy of the scene `settings` draw: the custom one, a preset's, or the file's handed in.
+    Scene sceneOf(const Settings& settings) const;
     // Why this frame's shadow pass drew, from what changed since the last frame's settings.
     FrameStats::Redraw redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const;
     // The fit of `frame`, with what it reads from passes: sdsm's visible depth, the virtual layout.
-    void refit(const FrameUpdate::Frame& frame, const ShadowStorage& storage, FrameStats& stats);
+    void refit(const FrameUpdate::Frame& frame, const FramePlan& plan, const ShadowStorage& storage, FrameStats& stats);
     // The min/max depth mip of penumbra-only filtering, when the map changed; timed with the shadow pass.
-    void buildDepthRange(const Settings& settings, TimingMode timing, FrameStats& stats);
+    void buildDepthRange(const FramePlan& plan, TimingMode timing, FrameStats& stats);
     void finishTiming(TimingMode timing, FrameStats& stats);
     // The lit pass into `target` (with its camera depth prepass for contact shadows), timed.
-    void drawLit(const Settings& settings, const RenderTarget& target, bool measure, FrameStats& stats);
+    void drawLit(const FramePlan& plan, const RenderTarget& target, bool measure, FrameStats& stats);
     // The shadow pass's half of stats.counts, after it ran (or did not).
-    void countShadowPass(const Settings& settings, ShadowStorage& storage, FrameStats& stats);
+    void countShadowPass(const FramePlan& plan, ShadowStorage& storage, FrameStats& stats);
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
-    void renderViews(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, TimingMode timing, FrameStats& stats);
+    void renderViews(const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats);
+    // Whether what all `count` views share changed since they were drawn: then every one is due.
+    bool beginViews(const FramePlan& plan, const ShadowStorage& storage, std::size_t count);
+    // Each view's volume as it should be drawn: nullopt where it has nothing to shadow.
+    std::vector<std::optional<LightVolume>> wantedVolumes() const;
+    // The share of a map of `count` views its casters may cover (ShadowMap::setCasterCoverage).
+    double casterCoverage(std::size_t count) const;
+    // View `i` drawn at `wanted`, or its tile cleared where it has nothing to shadow.
+    void drawView(std::size_t i, const std::optional<LightVolume>& wanted, const FramePlan& plan, ShadowStorage& storage, TimingMode timing,
+                  FrameStats& stats);
     // shadow.virtual's shadow pass: the pages the frame's pixels need, drawn where new.
-    void renderPages(const Settings& settings, ShadowStorage& storage, ShadowTileGrid grid, QSize size, TimingMode timing, FrameStats& stats);
-    // The storage of the technique in `settings` (built on first use).
-    ShadowStorage& storageFor(const Settings& settings) const;
+    void renderPages(const FramePlan& plan, ShadowStorage& storage, QSize size, TimingMode timing, FrameStats& stats);
+    // The storage of the plan's technique (built on first use).
+    ShadowStorage& storageFor(const FramePlan& plan);
     // The moments map the last frame's technique read, or null when it read depth.
     const MomentsMap* momentsShown() const;
 
@@ -168,18 +177,17 @@ private:
     ShadowMap m_shadowMap;
     DepthPass m_depthPass;
     std::unique_ptr<ShadowStorage> m_depthStorage;
-    mutable std::unique_ptr<ShadowStorage> m_momentsStorage;  // built when a moment technique is first used
+    std::unique_ptr<ShadowStorage> m_momentsStorage;  // built when a moment technique is first used
     LitPass m_litPass;
     std::unique_ptr<DepthViewPass> m_depthView;  // built on first use
     std::unique_ptr<DepthRangePass> m_depthRange;    // built when penumbra-only filtering is first used
     std::unique_ptr<CameraDepthPass> m_cameraDepth;  // built when contact shadows are first used
     std::unique_ptr<VisibleDepthPass> m_visibleDepth;  // built when sdsm cascades are first used
     std::unique_ptr<VirtualShadowMap> m_virtual;        // built when shadow.virtual is first used
-    std::optional<VirtualShadowMap::Reduction> m_virtualReduction;  // none: by the driver
     bool m_virtualAsync = false;
     VirtualMapUniforms m_virtualUniforms;               // the last frame's, for the lit pass
     std::optional<VisibleDepthRange> m_visibleRange;   // what the last fit split (sdsm)
-    Settings m_viewSettings;        // the last frame's settings, for the depth-map view of moments
+    FramePlan m_plan;               // the last frame's
     int m_mapGeneration = 0;        // counts changes of the shadow map's content
     int m_depthRangeGeneration = -1;    // the map generation the depth range was built from
     int m_spanGeneration = -1;          // ... and the written span
@@ -189,7 +197,7 @@ private:
     GpuTimer m_shadowTimer;
     GpuTimer m_litTimer;
     bool m_counting = false;
-    std::optional<bool> m_wideTwoChannelMoments;
+    bool m_softwareDriver = false;      // GL_RENDERER names a software rasteriser (what rasteriser.profile=auto follows)
     CountQuery m_shadowPrimitives;
     CountQuery m_shadowSamples;
     CountQuery m_litPrimitives;
@@ -199,12 +207,12 @@ private:
     std::vector<std::optional<LightVolume>> m_viewVolumes;
     FrameUpdate m_update;           // the camera, the fitted views and their reach
     std::optional<Scene> m_customScene;
+    std::optional<std::pair<QString, std::shared_ptr<const Scene>>> m_sceneFile;     // setSceneFile's path and scene
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     ObjectSwitches m_objectSwitches;    // applied to m_scene
     int m_sceneGeneration = 0;
     bool m_warnedNoReversedDepth = false;
-    bool m_skipsOutOfReach = true;
     LightFrame m_light;
     CameraFrame m_camera;
     FrameStats m_stats;

@@ -3,7 +3,6 @@
 #include "RenderError.h"
 #include "SettingsError.h"
 #include "SettingsKeys.h"
-#include "ShadowViews.h"
 
 #include <algorithm>
 #include <utility>
@@ -56,12 +55,6 @@ void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format,
         m_drawsSinceClear = kUnknown;
         m_slice = {};
     }
-}
-
-int ShadowMap::slicesFor(const Settings& settings)
-{
-    const bool plainOrtho = settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings);
-    return plainOrtho && !usesShadowViews(settings) && !settings.shadow.virtualMap ? settings.map.slices : 1;
 }
 
 ShadowMap::Draw ShadowMap::beginDraw(const QRect& tile, int slices)

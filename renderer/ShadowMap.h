@@ -78,7 +78,7 @@ public:
     // draws left compares as beyond the far plane, lit, exactly as a cleared texel does. It
     // costs log2(n) bits of the 24. Maps of several tiles (cascades, cube faces, virtual pages)
     // and reversed (float) depth, whose precision lies near 0, clear every draw, and so do
-    // perspective maps (slicesFor).
+    // perspective maps (core's slicesDepth).
     struct Draw {
         bool clear = true;          // clear the tile before drawing
         DepthSlice slice;           // where the draw writes
@@ -87,10 +87,8 @@ public:
     Draw beginDraw(const QRect& tile, int slices);
     // The share of the map the next draw's casters may cover (the area of their reach boxes,
     // ShadowReach, which bound their footprints). A draw into a slice reads each texel its
-    // casters cover from memory, where after a clear it finds it in the cache: a ground drawn
-    // into the map (bias.cull_front=false) took 7.2 ms sliced against 5.0 cleared at 2048², while
-    // seed, cubes and torus, whose boxes cover 34 %, 60 % and 79 % of their maps, gained 10 to
-    // 30 % of the shadow pass. A draw whose boxes cover more than kSlicedCoverage clears.
+    // casters cover from memory, where after a clear it finds it in the cache, so a draw whose
+    // boxes cover more than kSlicedCoverage clears (docs/performance.md has the figures).
     void setCasterCoverage(double share) { m_casterCoverage = share; }
     double casterCoverage() const { return m_casterCoverage; }
     static constexpr double kSlicedCoverage = 0.85;
@@ -108,12 +106,8 @@ public:
     void restartSlices() { m_restart = true; }
     // Clears of the map or of a tile so far, whether asked for or before a draw.
     int clearCount() const { return m_clearCount; }
-    // The slices a draw asks for, and whether a map of these settings draws into slices (the lit
-    // pass's DEPTH_SLICES variant): a plain ortho map's, whose depth is linear in distance. A
-    // perspective or warped map's depth is not: its steps are spent near the light (or the
-    // warp's centre), with none to spare where the scene lies. Cascades and cube faces are
-    // tiles drawn apart, and a virtual map's pool clears each page it draws.
-    static int slicesFor(const Settings& settings);
+    // Whether a draw asking for `slices` (FramePlan::slices, core's slicesDepth) draws into
+    // slices: the lit pass's DEPTH_SLICES variant.
     static bool slices(int slices, DepthFormat format, bool reversedDepth) { return slices > 1 && format == DepthFormat::Depth24 && !reversedDepth; }
 
 private:

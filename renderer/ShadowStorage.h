@@ -1,6 +1,7 @@
 #pragma once
 
 #include "CasterTexels.h"
+#include "FramePlan.h"
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "Settings.h"
@@ -32,11 +33,12 @@ struct ShadowStorageKey {
     bool skipFloors = false;        // bias.skip_floors: floors the light is above left out
     double polygonFactor = 0.0;
     double polygonUnits = 0.0;
-    int slices = 1;                 // map.slices: the lit pass reads the map through its slice
+    int slices = 1;                 // FramePlan::slices: the lit pass reads the map through its slice
     // What the moments pass stores and how it is prefiltered (moments storage only).
     bool moments = false;
     FilterMode momentTechnique = FilterMode::Hard;
     MomentFormat momentFormat = MomentFormat::Rgba32F;
+    int momentChannels = 0;         // stored: the technique's, or four where the profile widens two
     double exponentPositive = 0.0;
     double exponentNegative = 0.0;
     int blur = 0;
@@ -52,16 +54,16 @@ inline std::optional<QRect> inTile(const CasterTexels* texels, const QRect& tile
 }
 
 // What every storage's key holds: the scene, the depth convention, the map's size, format and tiles.
-inline ShadowStorageKey commonStorageKey(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid)
+inline ShadowStorageKey commonStorageKey(const FramePlan& plan, int sceneGeneration)
 {
     ShadowStorageKey key;
     key.sceneGeneration = sceneGeneration;
-    key.reversedDepth = reversedDepth;
-    key.mapSize = settings.map.size;
-    key.format = settings.map.format;
-    key.columns = grid.columns;
-    key.rows = grid.rows;
-    key.cutouts = settings.shadow.cutouts;
+    key.reversedDepth = plan.reversedDepth;
+    key.mapSize = plan.tileSize;
+    key.format = plan.settings.map.format;
+    key.columns = plan.grid.columns;
+    key.rows = plan.grid.rows;
+    key.cutouts = plan.settings.shadow.cutouts;
     return key;
 }
 
@@ -73,22 +75,22 @@ class ShadowStorage {
 public:
     virtual ~ShadowStorage() = default;
 
-    // Textures for the views of `settings` in `grid` (the depth map itself is the renderer's,
+    // Textures for the views of `plan` in its tiles (the depth map itself is the renderer's,
     // shared by every storage: its texel grid is the one the lit pass looks up in).
-    virtual void ensure(const Settings& settings, ShadowTileGrid grid) = 0;
-    // What the stored views of `settings` depend on besides their volumes.
-    virtual ShadowStorageKey key(const Settings& settings, int sceneGeneration, bool reversedDepth, ShadowTileGrid grid) const = 0;
-    // Whether the pass drawing `settings` culls front faces (bias.cull_front): where a flat
+    virtual void ensure(const FramePlan& plan) = 0;
+    // What the stored views of `plan` depend on besides their volumes.
+    virtual ShadowStorageKey key(const FramePlan& plan, int sceneGeneration) const = 0;
+    // Whether the pass drawing `plan` culls front faces (bias.cull_front): where a flat
     // one-sided caster facing the light then casts nothing (core/ShadowReach.h).
-    virtual bool cullsFrontFaces(const Settings& settings) const = 0;
+    virtual bool cullsFrontFaces(const FramePlan& plan) const = 0;
     // Whether it leaves out floors the light is above (bias.skip_floors): the same for a floor.
-    virtual bool leavesOutFloors(const Settings& settings) const = 0;
+    virtual bool leavesOutFloors(const FramePlan& plan) const = 0;
     // The whole map read lit (every tile), or one view's `tile` of it.
-    virtual void clear(const LightFrame& light, const Settings& settings, const QRect& tile = QRect()) = 0;
+    virtual void clear(const LightFrame& light, const FramePlan& plan, const QRect& tile = QRect()) = 0;
     // Draws one view into its tile; returns the casters drawn. `texels`: where in the tile
     // (its own texels) the casters lie (core/CasterTexels.h); null: anywhere. `blurWallMs`,
     // when given, gets the wall time of a prefilter pass added (glFinish around it).
-    virtual int draw(const GpuScene& scene, const LightFrame& light, const Settings& settings, const QRect& tile, const CasterTexels* texels,
+    virtual int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
                      double* blurWallMs) = 0;
     // What its clears and prefilter did since the last call (and starts counting again).
     struct Counts {
@@ -106,8 +108,6 @@ public:
 // The storage of each kind, built on first use: depth draws into the renderer's `map` with its
 // `pass`; moments own their map and passes.
 std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass);
-// `wideTwoChannels`: two moments (vsm, evsm2) stored in RGBA rather than RG, for a software
-// rasteriser (Renderer::setWideTwoChannelMoments).
-std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl, bool wideTwoChannels);
+std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl);
 
 } // namespace shadowlab

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
@@ -229,20 +230,29 @@ std::vector<VirtualPage> VirtualShadowMap::decodeRequests(const RequestBytes& by
         return pages;
     }
     // Deduplicated over a flag per page of every window; neighbouring pixels mostly ask for the
-    // same page, so the last one is remembered too.
+    // same page, so the last one is remembered too. The pages come out in the flags' order, as
+    // the GPU's reduction gives them: the pool places them in the same slots, so the frame does
+    // not depend on which reduction ran.
     const auto* words = static_cast<const std::uint32_t*>(data);
     const std::size_t pagesPerLevel = std::size_t(kVirtualLevelPages) * kVirtualLevelPages;
     std::vector<std::uint8_t> seen(pagesPerLevel * windows.size(), 0);
     std::uint32_t last = 0;
+    std::uint32_t lowest = std::numeric_limits<std::uint32_t>::max(), highest = 0;
     for (std::size_t i = 0; i < bytes.bytes / sizeof(std::uint32_t); ++i) {
         const std::uint32_t value = words[i];
         if (value == 0 || value == last)
             continue;
         last = value;
-        if (value - 1 >= seen.size() || seen[value - 1])
+        if (value - 1 >= seen.size())
             continue;
         seen[value - 1] = 1;
-        if (const std::optional<VirtualPage> page = decodePageRequest(value, windows))
+        lowest = std::min(lowest, value - 1);
+        highest = std::max(highest, value - 1);
+    }
+    for (std::uint32_t i = lowest; i <= highest && i < seen.size(); ++i) {
+        if (seen[i] == 0)
+            continue;
+        if (const std::optional<VirtualPage> page = decodePageRequest(i + 1u, windows))
             pages.push_back(*page);
     }
     return pages;
@@ -311,9 +321,10 @@ void VirtualShadowMap::uploadPageTable()
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& settings, const CameraFrame& camera, QSize size, bool invalidate,
+VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                                          ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws)
 {
+    const Settings& settings = plan.settings;
     if (!m_layout)
         throw RenderError(QStringLiteral("the virtual shadow map has no layout: layout() comes first"));
     VirtualMapStats stats;
@@ -373,7 +384,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const Settings& 
     int draws = 0;
     for (const auto& [page, slot] : placed.draw) {
         const QRect tile((slot % m_poolSide) * kVirtualSlotTexels, (slot / m_poolSide) * kVirtualSlotTexels, kVirtualSlotTexels, kVirtualSlotTexels);
-        draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), settings, tile, nullptr, nullptr);
+        draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), plan, tile, nullptr, nullptr);
     }
     stats.drawn = int(placed.draw.size());
     stats.resident = m_cache.resident();

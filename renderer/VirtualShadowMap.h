@@ -21,6 +21,7 @@ namespace shadowlab {
 
 class ShadowMap;
 class ShadowStorage;
+struct FramePlan;
 
 // The uniforms the lit pass's VIRTUAL_MAP lookup reads (shadow_lookup.glsl).
 struct VirtualMapUniforms {
@@ -53,6 +54,8 @@ public:
     // Takes the requests again on the next frame.
     void setReduction(Reduction reduction)
     {
+        if (reduction == m_reduction)
+            return;
         m_reduction = reduction;
         m_requestKey.reset();
     }
@@ -62,19 +65,26 @@ public:
     // Asynchronous requests (the window): a request pass's pages are read back a frame later,
     // through a pixel-pack buffer and a fence, so the frame does not wait for the GPU; until
     // they arrive the lookup reads the nearest coarser resident level. The first requests of
-    // an empty pool are read at once. Off (the command line, the tests): in the same frame.
-    void setAsyncRequests(bool async) { m_async = async; }
+    // an empty pool are read at once. Off (the command line, the tests): in the same frame. A
+    // change asks for the pages again on the next frame.
+    void setAsyncRequests(bool async)
+    {
+        if (async == m_async)
+            return;
+        m_async = async;
+        m_requestKey.reset();
+    }
 
     // The layout for the light of `settings` over the scene (kept while both stay the same).
     const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
 
-    // The frame: asks which pages the pixels `camera` sees at `size` need (again only when the
+    // The frame of `plan`: asks which pages the pixels `camera` sees at `size` need (again only when the
     // camera, the size or the layout changed), makes them resident, draws the new ones with
     // `storage` into its slots of the renderer's map, and rebuilds the page table. `invalidate`
     // (what the pages depend on changed: the light, the scene, the depth pass's state) drops
     // every cached page first. `frameOf` gives a page volume's light frame; `casterDraws` gets
     // the casters drawn. Leaves the framebuffer binding to the caller.
-    VirtualMapStats update(const GpuScene& scene, const Settings& settings, const CameraFrame& camera, QSize size, bool invalidate,
+    VirtualMapStats update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                            ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws);
 
     VirtualMapUniforms uniforms(const CameraFrame& camera) const;

@@ -224,10 +224,15 @@ std::vector<CameraSettings> cameraPath(const CameraSettings& start, int frames, 
 
 Scene buildScene(const QString& name)
 {
+    return isPresetName(name) ? buildPresetScene(name) : *loadSceneFile(name);
+}
+
+Scene buildPresetScene(const QString& name)
+{
     if (const int buildings = cityBuildingCount(name); buildings > 0)
         return cityScene(name, buildings);
-    if (!sceneNames().contains(name))
-        return *loadSceneFile(name);
+    if (!isPresetName(name))
+        throw SettingsError(QStringLiteral("scene"), QStringLiteral("'%1' is not a preset").arg(name));
     const QJsonObject preset = presetFile(name);
     const QString generator = preset.value(QStringLiteral("generator")).toString();
     if (generator == u"foliage")

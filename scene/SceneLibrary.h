@@ -13,6 +13,9 @@ namespace shadowlab {
 // Builds a preset's geometry, or loads the model or scene file `name` is a path of
 // (SceneLoader.h); throws SettingsError (SceneFileError for files) when it cannot.
 Scene buildScene(const QString& name);
+// A preset's geometry (isPresetName(name)): built from the program's own resources, reading no
+// file and starting no process. Throws SettingsError for a name that is not a preset.
+Scene buildPresetScene(const QString& name);
 
 // Default settings for a preset (the global defaults with the preset's light and camera) or
 // for a model or scene file (derived from its bounds, then the file's own keys).

@@ -135,11 +135,11 @@ cat > "$out/run.sh" <<'RUN'
 # this bundle on a GPU machine with no display (Qt's headless platform, EGL). Keeps going after a
 # failure; writes under ${OUT_DIR:-./results}: summary.txt (PASS/FAIL/TIMEOUT per step, GPU,
 # renderer), env.txt, tst_*.log + tst_*.junit.xml, render-<scene>.png + -depth.png + .log,
-# bench-<scene>.json + .log, bench-seed-<variant>.json + .log. Exit status 0 when every step passed.
+# bench-<scene>-<profile>.json + .log, bench-seed-<variant>.json + .log. Exit status 0 when every step passed.
 #   ./run.sh                     everything
 #   ./run.sh exec CMD [ARG...]   CMD in the same environment (bin/ first on PATH)
 # Knobs: OUT_DIR=./results  RUN_TESTS="<all bundled>" ("" runs none)  TEST_TIMEOUT=300
-#   SCENES="seed city" ("" skips renders and benches)  SIZE=1920x1080  STEP_TIMEOUT=300 (each render/bench)
+#   SCENES="seed city" ("" skips renders and benches)  PROFILES="hardware software" (rasteriser.profile of each scene's bench)  SIZE=1920x1080  STEP_TIMEOUT=300 (each render/bench)
 #   VARIANTS="point:light.type=point vsm:filter.mode=vsm spot:light.type=spot" (seed, light moving; "" skips)
 #   SHADOWLAB_EGL_PLATFORM=device (surfaceless: Mesa's software EGL; empty: surfaceless, then device)
 #   BUNDLE_UNPACK_DIR: where payload.tar.xz is unpacked
@@ -242,12 +242,15 @@ for scene in ${SCENES-seed city}; do
         --size "${SIZE:-1920x1080}" --out "$png" --depth-out "$results/render-$scene-depth.png"
     [ "$rc" != 0 ] || [ -s "$png" ] || rc=1
     record "render $scene" "$rc" "$secs" "render-$scene.png"
-    json=$results/bench-$scene.json
-    step "${STEP_TIMEOUT:-300}" "$json" "$results/bench-$scene.log" "$root/bin/shadowlab" bench --json \
-        --scene "$scene" --size "${SIZE:-1920x1080}"
-    [ "$rc" != 0 ] || head -c 1 "$json" | grep -q '{' || rc=1
-    renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$json" | head -n 1)
-    record "bench $scene" "$rc" "$secs" "${renderer:+renderer: $renderer}"
+    # Both rasteriser profiles: whether a software rasteriser's optimisations pay on this GPU.
+    for profile in ${PROFILES-hardware software}; do
+        json=$results/bench-$scene-$profile.json
+        step "${STEP_TIMEOUT:-300}" "$json" "$results/bench-$scene-$profile.log" "$root/bin/shadowlab" bench --json \
+            --scene "$scene" --size "${SIZE:-1920x1080}" --set "rasteriser.profile=$profile"
+        [ "$rc" != 0 ] || head -c 1 "$json" | grep -q '{' || rc=1
+        renderer=$(sed -n 's/^ *"renderer": "\(.*\)",*$/\1/p' "$json" | head -n 1)
+        record "bench $scene ($profile profile)" "$rc" "$secs" "${renderer:+renderer: $renderer}"
+    done
 done
 # The point light and a moment technique with the light moving: their times beside the counts
 # (draws, primitives, samples, texels cleared, blur bytes, taps) that bench --json gives for any GPU.

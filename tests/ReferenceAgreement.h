@@ -2,6 +2,7 @@
 
 #include "RayTracer.h"
 #include "Renderer.h"
+#include "SceneSupply.h"
 #include "ShadowReference.h"
 
 #include <glm/glm.hpp>
@@ -59,9 +60,17 @@ inline Agreement agreement(const shadowlab::VisibilityBuffer& buffer, const std:
     return a;
 }
 
+// The measuring frame of `settings`, its scene handed to the renderer first where it is a file
+// (as the command line and the window hand theirs).
+inline shadowlab::VisibilityBuffer visibility(shadowlab::Renderer& renderer, const shadowlab::Settings& settings, QSize size)
+{
+    shadowlab::supplyScene(renderer, settings);
+    return renderer.renderVisibility(settings, size);
+}
+
 inline Agreement agreement(shadowlab::Renderer& renderer, const shadowlab::Settings& settings, QSize size)
 {
-    const shadowlab::VisibilityBuffer buffer = renderer.renderVisibility(settings, size);
+    const shadowlab::VisibilityBuffer buffer = visibility(renderer, settings, size);
     return agreement(buffer, hardReference(renderer, buffer), renderer.lightFrame());
 }
 

@@ -81,7 +81,7 @@ private Q_SLOTS:
         std::vector<std::vector<float>> shadows;
         for (int i = 0; i < 4; ++i) {
             s.animation.time = clip * (0.1 + 0.2 * i);
-            const VisibilityBuffer buffer = r.renderVisibility(s, kSize);
+            const VisibilityBuffer buffer = probe::visibility(r, s, kSize);
             const std::vector<float> hard = probe::hardReference(r, buffer);
             const probe::Agreement a = probe::agreement(buffer, hard, r.lightFrame());
             qInfo("%s at %.2f s: %s", qPrintable(QTest::currentDataTag()), s.animation.time, qPrintable(probe::describe(a)));
@@ -150,12 +150,12 @@ private Q_SLOTS:
         applyAssignment(s, QStringLiteral("light.type=") + light);
         Renderer& r = m_headless->renderer();
         s.animation.time = 0.5;
-        r.renderVisibility(s, kSize);
+        probe::visibility(r, s, kSize);
         const glm::dmat4 first = r.lightFrame().shadowMatrix;
         const int fits = r.fitCount();
         for (const double t : {1.3, 2.9, 5.1}) {
             s.animation.time = t;
-            r.renderVisibility(s, kSize);
+            probe::visibility(r, s, kSize);
             QVERIFY(r.lastFrame().shadowPassRendered);
             QCOMPARE(r.lightFrame().shadowMatrix, first);
         }
@@ -203,7 +203,7 @@ private Q_SLOTS:
         std::vector<VisibilityBuffer> frames;
         for (double t : times) {
             s.animation.time = t;
-            frames.push_back(r.renderVisibility(s, kSize));
+            frames.push_back(probe::visibility(r, s, kSize));
         }
         QVERIFY(measureFlicker(frames).flicker > 5 * flicker[2]);
     }

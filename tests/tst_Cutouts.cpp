@@ -188,7 +188,7 @@ private Q_SLOTS:
         const Settings seed = presetSettings("seed");
         m_headless->renderScene(seed, kSize);
         m_headless->renderScene(with("seed", {"shadow.cutouts=false", "contact.enabled=true"}), kSize);
-        r.renderVisibility(seed, kSize);
+        probe::visibility(r, seed, kSize);
         QCOMPARE(r.compiledCutoutVariants(), 0);
         const Settings foliage = presetSettings("foliage");
         m_headless->renderScene(foliage, kSize);
@@ -369,9 +369,9 @@ private Q_SLOTS:
         QFETCH(QStringList, more);
         QFETCH(double, limit);
         Renderer& r = m_headless->renderer();
-        const VisibilityBuffer masked = r.renderVisibility(with(scene, more), kSize);
+        const VisibilityBuffer masked = probe::visibility(r, with(scene, more), kSize);
         const std::vector<float> truth = probe::hardReference(r, masked);
-        const VisibilityBuffer whole = r.renderVisibility(with(scene, more + QStringList{"shadow.cutouts=false"}), kSize);
+        const VisibilityBuffer whole = probe::visibility(r, with(scene, more + QStringList{"shadow.cutouts=false"}), kSize);
         const probe::Agreement through = probe::agreement(masked, truth, r.lightFrame()), solid = probe::agreement(whole, truth, r.lightFrame());
         qInfo().noquote() << "through the mask:" << text(through) << "| cast whole:" << text(solid);
         QVERIFY2(through.counted > 2000, qPrintable(text(through)));
@@ -417,10 +417,10 @@ private Q_SLOTS:
         s.light.position = s.light.target + distance * glm::dvec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
         Renderer& r = m_headless->renderer();
         const QSize size(240, 135);
-        const VisibilityBuffer masked = r.renderVisibility(s, size);
+        const VisibilityBuffer masked = probe::visibility(r, s, size);
         const std::vector<float> truth = probe::hardReference(r, masked);
         s.shadow.cutouts = false;
-        const VisibilityBuffer whole = r.renderVisibility(s, size);
+        const VisibilityBuffer whole = probe::visibility(r, s, size);
         const probe::Agreement through = probe::agreement(masked, truth, r.lightFrame()), solid = probe::agreement(whole, truth, r.lightFrame());
         // Pixels on an edge of the reference's shadow: a counted neighbour across it.
         int edge = 0;
@@ -451,7 +451,7 @@ private Q_SLOTS:
     {
         Renderer& r = m_headless->renderer();
         const Settings settings = with("foliage", {"camera.position=0,1,4", "camera.target=-0.3,0.8,-1.6"});
-        const VisibilityBuffer buffer = r.renderVisibility(settings, kSize);
+        const VisibilityBuffer buffer = probe::visibility(r, settings, kSize);
         const Scene& scene = *r.scene();
         const auto trellis = std::find_if(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.name == u"trellis"; });
         QVERIFY(trellis != scene.objects.end());
@@ -525,10 +525,10 @@ private Q_SLOTS:
         settings.camera.target = {0.0, 0.0, 0.0};
         Renderer& r = m_headless->renderer();
         r.setScene(s);
-        const VisibilityBuffer masked = r.renderVisibility(settings, kSize);
+        const VisibilityBuffer masked = probe::visibility(r, settings, kSize);
         const std::vector<float> truth = probe::hardReference(r, masked);
         settings.shadow.cutouts = false;
-        const VisibilityBuffer whole = r.renderVisibility(settings, kSize);
+        const VisibilityBuffer whole = probe::visibility(r, settings, kSize);
         r.setScene(std::nullopt);
         const probe::Agreement through = probe::agreement(masked, truth, r.lightFrame()), solid = probe::agreement(whole, truth, r.lightFrame());
         qInfo().noquote() << "through the mask:" << text(through) << "| cast whole:" << text(solid);

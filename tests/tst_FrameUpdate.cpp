@@ -1,6 +1,8 @@
 // The frame's pure half without GL: the scene's layout (every object drawn once, batches that
 // keep every vertex and the winding of mirrored placements) and the update (a fit only when an
-// input changed, the cameras it fits to, the reach kept with it, a virtual map's one view).
+// input changed, the cameras it fits to, the reach kept with it, a virtual map's one view), and
+// the frame plan its settings resolve into (the rasteriser profile's optimisations included).
+#include "FramePlan.h"
 #include "FrameUpdate.h"
 #include "SceneLayout.h"
 #include "SceneLibrary.h"
@@ -284,6 +286,78 @@ private slots:
         QVERIFY(stats.warpedViews == 1 || stats.warpDeclined != FrameStats::WarpDeclined::No);
         QVERIFY(stats.texelWorldSize > 0.0);
         QVERIFY(stats.lightFitted);
+    }
+    // A frame's decisions, resolved once: the profile turns on every software rasteriser's
+    // optimisation or none, auto follows the driver, and each decision is the settings'.
+    void plansTheFrame_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("assignments");
+        QTest::addColumn<bool>("softwareDriver");
+        QTest::addColumn<bool>("tuned");            // the software profile's optimisations are on
+        QTest::addColumn<int>("slices");
+        QTest::addColumn<int>("columns");
+        QTest::addColumn<int>("rows");
+        QTest::addColumn<bool>("reversed");
+        QTest::addColumn<bool>("moments");
+        QTest::addColumn<bool>("depthRange");
+        QTest::addRow("auto on llvmpipe") << "seed" << QStringList{} << true << true << 4 << 1 << 1 << false << false << false;
+        QTest::addRow("auto on a GPU") << "seed" << QStringList{} << false << false << 1 << 1 << 1 << false << false << false;
+        QTest::addRow("software forced on a GPU") << "seed" << QStringList{"rasteriser.profile=software", "map.slices=6"} << false << true << 6 << 1 << 1
+                                                << false << false << false;
+        QTest::addRow("hardware forced on llvmpipe") << "seed" << QStringList{"rasteriser.profile=hardware"} << true << false << 1 << 1 << 1 << false
+                                                   << false << false;
+        QTest::addRow("perspective: never sliced") << "seed" << QStringList{"light.projection=perspective"} << true << true << 1 << 1 << 1 << false
+                                                  << false << false;
+        QTest::addRow("warped: never sliced") << "city" << QStringList{"light.warp=lispsm"} << true << true << 1 << 1 << 1 << false << false << false;
+        QTest::addRow("3 cascades in 2 x 2") << "city" << QStringList{"shadow.cascades=3"} << true << true << 1 << 2 << 2 << false << false << false;
+        QTest::addRow("point: 3 x 2 faces") << "seed" << QStringList{"light.type=point"} << true << true << 1 << 3 << 2 << false << false << false;
+        QTest::addRow("virtual: a slot per page") << "city" << QStringList{"shadow.virtual=true", "shadow.virtual_pool=12"} << false << false << 1 << 12
+                                                 << 12 << false << false << false;
+        QTest::addRow("depth32f reversed") << "seed" << QStringList{"map.format=depth32f"} << true << true << 4 << 1 << 1 << true << false << false;
+        QTest::addRow("moments keep conventional depth") << "seed" << QStringList{"map.format=depth32f", "filter.mode=evsm4"} << true << true << 4 << 1
+                                                        << 1 << false << true << false;
+        QTest::addRow("penumbra-only pcf") << "seed" << QStringList{"filter.mode=pcf", "filter.early_out=true"} << false << false << 1 << 1 << 1 << false
+                                          << false << true;
+        QTest::addRow("shadows off") << "seed" << QStringList{"shadow.enabled=false", "filter.mode=pcf", "filter.early_out=true"} << true << true << 4
+                                    << 1 << 1 << false << false << false;
+    }
+
+    void plansTheFrame()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, assignments);
+        QFETCH(bool, softwareDriver);
+        QFETCH(bool, tuned);
+        QFETCH(int, slices);
+        QFETCH(int, columns);
+        QFETCH(int, rows);
+        QFETCH(bool, reversed);
+        QFETCH(bool, moments);
+        QFETCH(bool, depthRange);
+        Settings s = presetSettings(scene);
+        for (const QString& a : assignments)
+            applyAssignment(s, a);
+        ensureValid(s);
+        const FramePlan plan = planFrame(s, softwareDriver, true);
+        const RasteriserTuning& t = plan.tuning;
+        QCOMPARE(t.software, tuned);
+        // All or nothing: each optimisation is the profile's.
+        for (const bool on : {t.skipsOutOfReach, t.depthSlices, t.wideTwoChannelMoments, t.cpuVirtualRequests})
+            QCOMPARE(on, tuned);
+        QCOMPARE(plan.slices, slices);
+        QCOMPARE(plan.grid.columns, columns);
+        QCOMPARE(plan.grid.rows, rows);
+        QCOMPARE(plan.tileSize, plan.virtualMap ? kVirtualSlotTexels : s.map.size);
+        QCOMPARE(plan.reversedDepth, reversed);
+        QCOMPARE(plan.moments, moments);
+        QCOMPARE(plan.depthRange, depthRange);
+        QVERIFY(plan.technique->mode == s.filter.mode);
+        QCOMPARE(plan.tapsPerLookup, s.shadow.enabled ? plan.technique->taps(s.filter) : 0);
+        // A driver without clip control: asked for, not given.
+        const FramePlan without = planFrame(s, softwareDriver, false);
+        QCOMPARE(without.reversedDepthWanted, reversed);
+        QVERIFY(!without.reversedDepth);
     }
 };
 

@@ -145,7 +145,7 @@ private Q_SLOTS:
         QVERIFY2(a.falseShadow <= 0.003 * a.counted, qPrintable(numbers));
         if (type == "spot") {
             // The cone leaves part of the view unlit, and the renderer agrees there (above).
-            const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, size);
+            const VisibilityBuffer buffer = probe::visibility(m_headless->renderer(), s, size);
             const LightFrame& light = m_headless->renderer().lightFrame();
             int outside = 0;
             for (int i = 0; i < buffer.pixelCount(); ++i) {
@@ -334,7 +334,7 @@ private Q_SLOTS:
         QVERIFY(switched == reference);
     }
 
-    // Two moments stored in RGBA (a software rasteriser's choice, Renderer::setWideTwoChannelMoments)
+    // Two moments stored in RGBA (the software profile's choice, RasteriserTuning::wideTwoChannelMoments)
     // or in RG read the same: the frames are byte for byte alike.
     void twoMomentsReadTheSameWideOrNarrow()
     {
@@ -342,8 +342,8 @@ private Q_SLOTS:
             std::array<QImage, 2> frames;
             for (const bool wide : {true, false}) {
                 FreshRenderer own(*m_headless);
-                own->renderer().setWideTwoChannelMoments(wide);
                 Settings s = presetSettings("torus");
+                s.rasteriser.profile = wide ? RasteriserProfile::Software : RasteriserProfile::Hardware;
                 s.map.size = 256;
                 applySetting(s, "filter.mode", mode);
                 frames[wide ? 0 : 1] = own->renderScene(s, QSize(160, 90));
@@ -425,7 +425,7 @@ private Q_SLOTS:
         s.shadow.distance = cityBuildingCount(scene) > 0 ? 100.0 : viewDistance * 1.3;
         m_headless->renderer().setScene(std::nullopt);
         Renderer& renderer = m_headless->renderer();
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(320, 180));
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, QSize(320, 180));
         const ShadowViewFrames& views = renderer.shadowViews();
         QCOMPARE(int(views.set.views.size()), cascades);
         const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
@@ -498,7 +498,7 @@ private Q_SLOTS:
         m_headless->renderer().setScene(std::nullopt);
         Renderer& renderer = m_headless->renderer();
         const QSize size(320, 180);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, size);
         QVERIFY(renderer.lastFrame().visibleDepthDraws > 0);
         QVERIFY(renderer.visibleDepthRange().has_value());
         const ShadowViewFrames& views = renderer.shadowViews();
@@ -524,15 +524,15 @@ private Q_SLOTS:
         QVERIFY2(low >= views.camera.nearPlane && high <= s.shadow.distance * (1.0 + 1e-9), qPrintable(numbers));
         QVERIFY2(low > views.camera.nearPlane * 2.0 || high < s.shadow.distance * 0.9, qPrintable(numbers));
         // A still frame and a moving light measure nothing again; a moving camera does.
-        renderer.renderVisibility(s, size);
+        probe::visibility(renderer, s, size);
         QCOMPARE(renderer.lastFrame().visibleDepthDraws, 0);
         Settings lit = s;
         lit.light.position.x += 0.3 * glm::length(s.light.position - s.light.target);
-        renderer.renderVisibility(lit, size);
+        probe::visibility(renderer, lit, size);
         QCOMPARE(renderer.lastFrame().visibleDepthDraws, 0);
         Settings moved = s;
         moved.camera.position += 0.05 * (s.camera.target - s.camera.position);
-        renderer.renderVisibility(moved, size);
+        probe::visibility(renderer, moved, size);
         QVERIFY(renderer.lastFrame().visibleDepthDraws > 0);
     }
 
@@ -638,7 +638,7 @@ private Q_SLOTS:
         s.light.position = position;
         s.light.target = position + glm::dvec3(0.3, -1.0, 0.2);
         m_headless->renderer().setScene(std::nullopt);
-        const VisibilityBuffer buffer = m_headless->renderer().renderVisibility(s, QSize(160, 90));
+        const VisibilityBuffer buffer = probe::visibility(m_headless->renderer(), s, QSize(160, 90));
         for (int i = 0; i < buffer.pixelCount(); ++i) {
             if (buffer.mask(i) == VisibilityBuffer::Background)
                 continue;

@@ -126,7 +126,7 @@ private Q_SLOTS:
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
         const QSize size(240, 135);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, size);
         for (int i = 0; i < buffer.pixelCount(); ++i) {
             const float v = buffer.visibility(i);
             QVERIFY2(std::isfinite(v) && v >= 0.0f && v <= 1.0f, qPrintable(QString("pixel %1: visibility %2").arg(i).arg(v)));
@@ -146,7 +146,7 @@ private Q_SLOTS:
         const bool clean = a.falseShadow <= 0.003 * a.counted;
         if (!keeps || !clean) {
             applySetting(s, "light.warp", "none");
-            const VisibilityBuffer plainBuffer = renderer.renderVisibility(s, size);
+            const VisibilityBuffer plainBuffer = probe::visibility(renderer, s, size);
             const Agreement p = probe::agreement(plainBuffer, probe::hardReference(renderer, plainBuffer), renderer.lightFrame());
             numbers += "; unwarped: " + describe(p);
             const double slack = 0.0005 * a.counted;
@@ -183,10 +183,10 @@ private Q_SLOTS:
         renderer.setScene(std::nullopt);
         const QSize size(320, 180);
         std::vector<double> plain, warped;
-        const VisibilityBuffer plainBuffer = renderer.renderVisibility(s, size);
+        const VisibilityBuffer plainBuffer = probe::visibility(renderer, s, size);
         measureTexelDensity(plainBuffer, renderer.shadowViews(), renderer.lightFrame(), s.map.size, &plain);
         applySetting(s, "light.warp", "lispsm");
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, size);
         const FittedLight fit = renderer.lastFit();
         measureTexelDensity(buffer, renderer.shadowViews(), renderer.lightFrame(), s.map.size, &warped);
         // The pixels both maps reach, nearest to the camera first.
@@ -261,7 +261,7 @@ private Q_SLOTS:
         }
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(200, 120));
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, QSize(200, 120));
         QVERIFY(!renderer.lastFit().warped);
         for (int i = 0; i < buffer.pixelCount(); ++i)
             QVERIFY(std::isfinite(buffer.visibility(i)));
@@ -282,7 +282,7 @@ private Q_SLOTS:
         lowerCamera(s, 0.3);
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
-        renderer.renderVisibility(s, QSize(160, 90));
+        probe::visibility(renderer, s, QSize(160, 90));
         const LightFrame& light = renderer.lightFrame();
         QVERIFY(light.volume.warped);
         QVERIFY(std::isnan(depthToDistance(light, 0.5)));

@@ -630,7 +630,7 @@ private Q_SLOTS:
         })").arg(model("OBJ/box.obj"), receives ? "true" : "false").toUtf8());
         const Settings s = presetSettings(QFileInfo(path).absoluteFilePath());
         Renderer& renderer = m_headless->renderer();
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(160, 90));
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, QSize(160, 90));
         int notReceiving = 0, shadowed = 0;
         for (int i = 0; i < buffer.pixelCount(); ++i) {
             if (buffer.mask(i) == VisibilityBuffer::NotReceiving) {

@@ -5,7 +5,7 @@
 // still frame that draws no page, a camera move that draws only the pages it newly sees, a
 // light move that draws them all, and a pool too small that coarsens with a count, not holes.
 #include "Application.h"
-#include "GlDebug.h"
+#include "RasteriserTuning.h"
 #include "HeadlessRenderer.h"
 #include "HeadlessTestMain.h"
 #include "Measurement.h"
@@ -341,7 +341,7 @@ private Q_SLOTS:
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
         const QSize size(240, 135);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, size);
         for (int i = 0; i < buffer.pixelCount(); ++i) {
             const float v = buffer.visibility(i);
             QVERIFY2(std::isfinite(v) && v >= 0.0f && v <= 1.0f, qPrintable(QString("pixel %1: visibility %2").arg(i).arg(v)));
@@ -389,7 +389,7 @@ private Q_SLOTS:
         s.camera.position = s.camera.target + offset;
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(320, 180));
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, QSize(320, 180));
         const TexelDensity density = measureVirtualTexelDensity(buffer, *renderer.virtualMap());
         const QString numbers = QString("%1 of %2 pixels fine, median %3 px per texel; pages: %4")
                                     .arg(density.fine).arg(density.counted).arg(density.medianPixelsPerTexel).arg(describe(renderer.lastFrame().virtualPages));
@@ -453,15 +453,15 @@ private Q_SLOTS:
         Settings virtualMap = presetSettings(QStringLiteral("city"));
         applyAssignment(virtualMap, QStringLiteral("shadow.virtual=true"));
         const QSize size(640, 360);
-        const VisibilityBuffer c = renderer.renderVisibility(cascades, size);
+        const VisibilityBuffer c = probe::visibility(renderer, cascades, size);
         const Agreement ca = probe::agreement(c, probe::hardReference(renderer, c), renderer.lightFrame());
-        const VisibilityBuffer v = renderer.renderVisibility(virtualMap, size);
+        const VisibilityBuffer v = probe::visibility(renderer, virtualMap, size);
         const Agreement va = probe::agreement(v, probe::hardReference(renderer, v), renderer.lightFrame());
         qInfo().noquote() << "cascades:" << describe(ca) << "| virtual:" << describe(va);
         const int virtualWrong = va.falseShadow + va.falseLight, cascadesWrong = ca.falseShadow + ca.falseLight;
         QVERIFY2(2 * virtualWrong <= cascadesWrong, qPrintable(QString("virtual %1 px, cascades %2 px").arg(virtualWrong).arg(cascadesWrong)));
 
-        renderer.renderVisibility(virtualMap, QSize(1920, 1080));
+        probe::visibility(renderer, virtualMap, QSize(1920, 1080));
         const VirtualMapStats& pages = renderer.lastFrame().virtualPages;
         QVERIFY2(pages.coarsened == 0 && pages.overflow == 0 && pages.resident > 900, qPrintable(describe(pages)));
     }
@@ -478,7 +478,7 @@ private Q_SLOTS:
         s.camera.position = s.camera.target + offset;
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
-        const VisibilityBuffer buffer = renderer.renderVisibility(s, QSize(320, 180));
+        const VisibilityBuffer buffer = probe::visibility(renderer, s, QSize(320, 180));
         const VirtualMapStats& pages = renderer.lastFrame().virtualPages;
         QVERIFY2(pages.coarsened > 0 && pages.levelsCoarsened >= 1 && pages.resident <= 16, qPrintable(describe(pages)));
         QCOMPARE(pages.overflow, 0);
@@ -489,8 +489,10 @@ private Q_SLOTS:
         qInfo().noquote() << describe(pages) << "|" << describe(a);
     }
 
-    // The requests reduced on the GPU to a flag per page are the pages the CPU finds in the
-    // whole read-back, on every scene and from cameras high, low and aside.
+    // The requests reduced on the GPU to a flag per page (the hardware profile) are the pages the
+    // CPU finds in the whole read-back (the software profile), in the same order, so the pool
+    // places them alike and the frames are byte for byte the same, on every scene and from
+    // cameras high, low and aside.
     void gpuReductionFindsThePagesTheCpuFinds_data()
     {
         QTest::addColumn<QString>("scene");
@@ -512,12 +514,16 @@ private Q_SLOTS:
             applyAssignment(s, a);
         Renderer& renderer = m_headless->renderer();
         renderer.setScene(std::nullopt);
-        const auto restore = qScopeGuard([&] {
-            renderer.setVirtualReduction(isSoftwareRenderer(renderer.rendererString()) ? VirtualShadowMap::Reduction::Cpu : VirtualShadowMap::Reduction::Gpu);
-        });
-        const auto pagesOf = [&](VirtualShadowMap::Reduction reduction) -> std::set<std::uint64_t> {
-            renderer.setVirtualReduction(reduction);
-            m_headless->renderFrame(s, QSize(320, 180));
+        // The software profile reduces the requests on the CPU, the hardware one on the GPU.
+        std::vector<QImage> frames;
+        const auto pagesOf = [&](RasteriserProfile profile) -> std::set<std::uint64_t> {
+            s.rasteriser.profile = profile;
+            renderer.invalidateShadowMap();     // every page placed afresh
+            frames.push_back(m_headless->renderScene(s, QSize(320, 180)));
+            const VirtualShadowMap::Reduction expected = profile == RasteriserProfile::Software ? VirtualShadowMap::Reduction::Cpu
+                                                                                               : VirtualShadowMap::Reduction::Gpu;
+            if (renderer.virtualMap()->reduction() != expected)
+                return {};
             std::set<std::uint64_t> keys;
             for (const VirtualPage& page : renderer.virtualMap()->requests())
                 keys.insert(page.key());
@@ -525,10 +531,11 @@ private Q_SLOTS:
                 return {};      // a page twice: the comparison below fails
             return keys;
         };
-        const std::set<std::uint64_t> cpu = pagesOf(VirtualShadowMap::Reduction::Cpu);
-        const std::set<std::uint64_t> gpu = pagesOf(VirtualShadowMap::Reduction::Gpu);
+        const std::set<std::uint64_t> cpu = pagesOf(RasteriserProfile::Software);
+        const std::set<std::uint64_t> gpu = pagesOf(RasteriserProfile::Hardware);
         QVERIFY(!cpu.empty());
         QVERIFY2(cpu == gpu, qPrintable(QStringLiteral("%1 pages from the CPU, %2 from the GPU").arg(cpu.size()).arg(gpu.size())));
+        QVERIFY(frames[0] == frames[1]);
     }
 
     // The window's requests come back a frame later: the frame that moves the camera asks and
@@ -561,8 +568,7 @@ private Q_SLOTS:
         m_headless->renderFrame(s, size);
         QCOMPARE(renderer.lastFrame().virtualPages.drawn, 0);
         // The same camera's requests taken in the same frame.
-        renderer.setVirtualAsyncRequests(false);
-        renderer.setVirtualReduction(renderer.virtualMap()->reduction());  // asks again
+        renderer.setVirtualAsyncRequests(false);    // asks again
         m_headless->renderFrame(s, size);
         std::set<std::uint64_t> sync;
         for (const VirtualPage& page : renderer.virtualMap()->requests())

@@ -413,6 +413,7 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
     }
     QJsonObject document{{QStringLiteral("renderer"), rendererString},
                          {QStringLiteral("gpu_timer_meaningful"), !isSoftwareRenderer(rendererString)},
+                         {QStringLiteral("rasteriser_profile"), profileName(RasteriserTuning::of(request.settings.rasteriser.profile, rendererString))},
                          {QStringLiteral("configuration"), configurationSummary(request)},
                          {QStringLiteral("scene_load_ms"), request.loadMs},
                          {QStringLiteral("triangles"), qint64(request.triangles)},
@@ -516,6 +517,10 @@ void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
 void printText(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
 {
     out() << "renderer: " << rendererString << '\n' << "configuration: " << configurationSummary(request) << '\n';
+    const RasteriserTuning tuning = RasteriserTuning::of(request.settings.rasteriser.profile, rendererString);
+    out() << "rasteriser profile: " << profileName(tuning)
+          << (tuning.software ? " (a software rasteriser's optimisations on; rasteriser.profile=hardware for the plain path)\n"
+                              : " (the plain path; rasteriser.profile=software for a software rasteriser's optimisations)\n");
     // A software renderer's timer queries miss its deferred rasterisation: its "GPU" rows
     // would only mislead, so they are left out and the wall times (CPU time there) stand.
     const bool software = isSoftwareRenderer(rendererString);

@@ -38,88 +38,88 @@ QString shellWord(const QString& word)
     return QStringLiteral("'%1'").arg(QString(word).replace(QLatin1Char('\''), QStringLiteral("'\\''")));
 }
 
-} // namespace
-
-int runExplorer(const QStringList& arguments)
+// A file named on its own (as a file manager starts a program) is --scene file.
+QStringList fileAsSceneOption(const QStringList& arguments)
 {
-    // Before the word is taken for a model file: with options after it, it would be refused for
-    // what follows ("a file and --scene both name the scene") instead of for what it is.
-    if (isMistypedCommand(arguments))
-        return unknownCommand(arguments.first());
-
-    std::optional<Settings> settings;
-    QString preset;
-    QString backgroundScene;
-    QStringList given;      // the options as parsed (a file named alone as --scene file)
-    try {
-        if (!arguments.isEmpty()) {
-            QCommandLineParser parser;
-            parser.setApplicationDescription(
-                QStringLiteral("Open the explorer window. With settings options, side A starts from them instead of the last "
-                               "session's settings; a model or scene file alone opens it, as --scene does."));
-            parser.addHelpOption();
-            addSettingsOptions(parser);
-            parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A model or scene file to open (the same as --scene file)."),
-                                         QStringLiteral("[file]"));
-            // A file named on its own (as a file manager starts a program) is --scene file.
-            QStringList rewritten;
-            bool named = false;
-            for (qsizetype i = 0; i < arguments.size(); ++i) {
-                const QString& a = arguments[i];
-                const bool value = i > 0 && takesValue(arguments[i - 1]);
-                if (!a.startsWith(QLatin1Char('-')) && !value && !named) {
-                    rewritten << QStringLiteral("--scene") << a;
-                    named = true;
-                } else {
-                    rewritten << a;
-                }
-            }
-            if (named && arguments.contains(QStringLiteral("--scene")))
-                throw UsageError(QStringLiteral("a file and --scene both name the scene; give one of them"));
-            if (!parseArguments(parser, QString(), rewritten))
-                return kExitOk;
-            given = rewritten;
-            applyImportOptions(parser);
-            // A file alone (as a file manager starts a program) opens in the window, in the
-            // background; with other settings on top, or with no display to open on, it is read
-            // first, like every command does, and a refusal is exit code 2.
-            const bool onlyAFile = !headlessPlatformNames().contains(QGuiApplication::platformName())
-                                   && parser.isSet(QStringLiteral("scene")) && !parser.isSet(QStringLiteral("set"))
-                                   && !parser.isSet(QStringLiteral("settings")) && !parser.isSet(QStringLiteral("preset"));
-            if (onlyAFile) {
-                Settings probe;
-                applySetting(probe, QStringLiteral("scene"), parser.value(QStringLiteral("scene")));   // a missing file: exit 2 now
-                if (!isPresetName(probe.scene))
-                    backgroundScene = probe.scene;
-            }
-            if (backgroundScene.isEmpty())
-                settings = settingsFromOptions(parser);
-            preset = parser.value(QStringLiteral("preset"));
+    QStringList rewritten;
+    bool named = false;
+    for (qsizetype i = 0; i < arguments.size(); ++i) {
+        const QString& a = arguments[i];
+        const bool value = i > 0 && takesValue(arguments[i - 1]);
+        if (!a.startsWith(QLatin1Char('-')) && !value && !named) {
+            rewritten << QStringLiteral("--scene") << a;
+            named = true;
+        } else {
+            rewritten << a;
         }
-    } catch (const SettingsError& e) {
-        err() << "shadowlab: " << e.what() << (e.isUnknownKey() ? "; run `shadowlab settings` for the list of keys" : "") << Qt::endl;
-        return kExitBadInput;
-    } catch (const UsageError& e) {
-        err() << "shadowlab: " << e.what() << Qt::endl;
-        return kExitBadInput;
     }
+    if (named && arguments.contains(QStringLiteral("--scene")))
+        throw UsageError(QStringLiteral("a file and --scene both name the scene; give one of them"));
+    return rewritten;
+}
 
-    if (headlessPlatformNames().contains(QGuiApplication::platformName())) {
-        // A window nobody can see would run forever: say what to do instead.
-        // The same settings, offscreen: the options the window was given, quoted for a shell.
-        QStringList same;
-        for (const QString& a : given)
-            same << shellWord(a);
-        err() << "shadowlab: there is no display, so the explorer cannot open.\n"
-              << "Render it offscreen instead: shadowlab screenshot " << (same.isEmpty() ? QString() : same.join(QLatin1Char(' ')) + QLatin1Char(' '))
-              << "--out window.png" << Qt::endl;
-        return kExitBadInput;
+// What the explorer's options ask for.
+struct ExplorerRequest {
+    std::optional<Settings> settings;   // side A's, where options gave any
+    QString preset;
+    QString backgroundScene;            // a model or scene file alone, read in the window
+    QStringList given;                  // the options as parsed (a file named alone as --scene file)
+};
+
+// The request of non-empty `arguments`; nullopt where help was asked for (and printed).
+// Throws SettingsError and UsageError.
+std::optional<ExplorerRequest> parseExplorerOptions(const QStringList& arguments)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Open the explorer window. With settings options, side A starts from them instead of the last "
+                       "session's settings; a model or scene file alone opens it, as --scene does."));
+    parser.addHelpOption();
+    addSettingsOptions(parser);
+    parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A model or scene file to open (the same as --scene file)."),
+                                 QStringLiteral("[file]"));
+    ExplorerRequest request;
+    request.given = fileAsSceneOption(arguments);
+    if (!parseArguments(parser, QString(), request.given))
+        return std::nullopt;
+    applyImportOptions(parser);
+    // A file alone (as a file manager starts a program) opens in the window, in the
+    // background; with other settings on top, or with no display to open on, it is read
+    // first, like every command does, and a refusal is exit code 2.
+    const bool onlyAFile = !headlessPlatformNames().contains(QGuiApplication::platformName()) && parser.isSet(QStringLiteral("scene"))
+                           && !parser.isSet(QStringLiteral("set")) && !parser.isSet(QStringLiteral("settings")) && !parser.isSet(QStringLiteral("preset"));
+    if (onlyAFile) {
+        Settings probe;
+        applySetting(probe, QStringLiteral("scene"), parser.value(QStringLiteral("scene")));   // a missing file: exit 2 now
+        if (!isPresetName(probe.scene))
+            request.backgroundScene = probe.scene;
     }
+    if (request.backgroundScene.isEmpty())
+        request.settings = settingsFromOptions(parser);
+    request.preset = parser.value(QStringLiteral("preset"));
+    return request;
+}
+
+// A window nobody can see would run forever: says what to do instead, with the same settings
+// offscreen (the options the window was given, quoted for a shell).
+int refuseWithoutDisplay(const QStringList& given)
+{
+    QStringList same;
+    for (const QString& a : given)
+        same << shellWord(a);
+    err() << "shadowlab: there is no display, so the explorer cannot open.\n"
+          << "Render it offscreen instead: shadowlab screenshot " << (same.isEmpty() ? QString() : same.join(QLatin1Char(' ')) + QLatin1Char(' '))
+          << "--out window.png" << Qt::endl;
+    return kExitBadInput;
+}
+
+int openExplorer(const ExplorerRequest& request)
+{
     MainWindow window;
-    if (settings) {
-        window.setSettings(MainWindow::Side::A, *settings, QApplication::translate("Explorer", "Start from the command line's settings"));
-        if (!preset.isEmpty())
-            window.propertiesDock()->showPreset(preset);
+    if (request.settings) {
+        window.setSettings(MainWindow::Side::A, *request.settings, QApplication::translate("Explorer", "Start from the command line's settings"));
+        if (!request.preset.isEmpty())
+            window.propertiesDock()->showPreset(request.preset);
     }
     // A logout or `kill` closes the window as the user would; where the process cannot have
     // that (no socket pair to spare), a signal stops it as it would any program.
@@ -130,9 +130,37 @@ int runExplorer(const QStringList& arguments)
         err() << "shadowlab: " << e.what() << "; a logout or `kill` will stop the explorer without saving the session" << Qt::endl;
     }
     window.show();
-    if (!backgroundScene.isEmpty())
-        window.openSceneInBackground(backgroundScene);
+    if (!request.backgroundScene.isEmpty())
+        window.openSceneInBackground(request.backgroundScene);
     return QApplication::exec();
+}
+
+} // namespace
+
+int runExplorer(const QStringList& arguments)
+{
+    // Before the word is taken for a model file: with options after it, it would be refused for
+    // what follows ("a file and --scene both name the scene") instead of for what it is.
+    if (isMistypedCommand(arguments))
+        return unknownCommand(arguments.first());
+    ExplorerRequest request;
+    try {
+        if (!arguments.isEmpty()) {
+            const std::optional<ExplorerRequest> parsed = parseExplorerOptions(arguments);
+            if (!parsed)
+                return kExitOk;
+            request = *parsed;
+        }
+    } catch (const SettingsError& e) {
+        err() << "shadowlab: " << e.what() << (e.isUnknownKey() ? "; run `shadowlab settings` for the list of keys" : "") << Qt::endl;
+        return kExitBadInput;
+    } catch (const UsageError& e) {
+        err() << "shadowlab: " << e.what() << Qt::endl;
+        return kExitBadInput;
+    }
+    if (headlessPlatformNames().contains(QGuiApplication::platformName()))
+        return refuseWithoutDisplay(request.given);
+    return openExplorer(request);
 }
 
 } // namespace shadowlab::cli

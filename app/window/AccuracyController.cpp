@@ -9,6 +9,7 @@
 #include "RayTracer.h"
 #include "RenderError.h"
 #include "SampleStats.h"
+#include "SceneSupply.h"
 #include "SettingsKeys.h"
 #include "SettingsSummary.h"
 #include "ShadowTechnique.h"
@@ -241,6 +242,7 @@ void AccuracyController::startMeasurement(bool thenSweep)
             Capture capture{side, s, referenceKeyFor(s, size, m_areaSamplesPerAxis), nullptr, {}, {}, nullptr, {}};
             capture.flicker = measureFlicker(renderer, s, subTexelPath(renderer, s, size, kFlickerFrames, kFlickerStepTexels), size);
             capture.counts = countFrames(headless(), s, size);
+            supplyScene(renderer, s);
             capture.buffer = std::make_shared<const VisibilityBuffer>(renderer.renderVisibility(s, size));
             // A trace needs the scene and light as they were: copied, unless an earlier capture
             // traces the same reference or the cache holds it.
@@ -408,6 +410,7 @@ void AccuracyController::sweepStep()
         const ReferenceVisibility* reference = cachedReference(m_sweepKey);
         if (!reference)
             throw RenderError(tr("the reference is gone; compare again"));
+        supplyScene(h.renderer(), point.settings);
         const VisibilityBuffer buffer = h.renderer().renderVisibility(point.settings, m_sweepSize);
         const AccuracyResult result = compareWithReference(buffer, *reference);
         point.misclassifiedPercent = 100.0 * result.hard.misclassified;

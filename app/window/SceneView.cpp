@@ -1,14 +1,14 @@
 #include "SceneView.h"
 
-#include "Loupe.h"
-
 #include "GlDebug.h"
 #include "LightGizmoPass.h"
 #include "Loupe.h"
 #include "OrbitCamera.h"
+#include "RasteriserTuning.h"
 #include "RenderError.h"
 #include "Renderer.h"
 #include "SceneLibrary.h"
+#include "SceneSupply.h"
 #include "SettingsError.h"
 
 #include <QElapsedTimer>
@@ -128,6 +128,7 @@ void SceneView::initializeGL()
     try {
         m_renderer = std::make_unique<Renderer>(gl);
         m_renderer->setVirtualAsyncRequests(true);     // a frame never waits for the GPU's requests
+        retainFreedHeapForSoftwareRasteriser(m_renderer->rendererString());    // once, for the process
         m_gizmo = std::make_unique<LightGizmoPass>(gl);
     } catch (const RenderError& e) {
         m_renderer.reset();
@@ -157,6 +158,7 @@ void SceneView::renderFrame(const Settings& settings)
     m_renderer->setFitCamera(m_frozenCamera);
     // Finish: per-pass wall times for the status bar; this is a measuring tool, and on a
     // software renderer the frame is CPU work either way.
+    supplyScene(*m_renderer, settings);
     m_renderer->render(settings, target, TimingMode::Finish);
     // A virtual map's pages asked for this frame arrive with a later one: draw it, unasked.
     if (m_renderer->lastFrame().virtualPages.requestsPending)
@@ -305,6 +307,7 @@ void SceneView::drawWipe()
         if (!m_wipeTarget || m_wipeTarget->size() != size)
             m_wipeTarget = std::make_unique<QOpenGLFramebufferObject>(size, QOpenGLFramebufferObject::CombinedDepthStencil, GL_TEXTURE_2D, GL_RGBA8);
         m_wipeRenderer->setFitCamera(m_frozenCamera);
+        supplyScene(*m_wipeRenderer, *m_wipe);
         m_wipeRenderer->render(*m_wipe, RenderTarget{m_wipeTarget->handle(), size}, TimingMode::Finish);
     } catch (const std::runtime_error& e) {
         const auto* settingsError = dynamic_cast<const SettingsError*>(&e);

@@ -1,0 +1,30 @@
+#include "FramePlan.h"
+
+#include "VirtualPages.h"
+
+namespace shadowlab {
+
+FramePlan planFrame(const Settings& settings, bool softwareDriver, bool reversedDepthSupported)
+{
+    FramePlan plan;
+    plan.settings = settings;
+    plan.technique = &shadowTechnique(settings.filter.mode);
+    plan.tuning = RasteriserTuning::of(settings.rasteriser.profile, softwareDriver);
+    plan.shadows = settings.shadow.enabled;
+    plan.virtualMap = plan.shadows && settings.shadow.virtualMap;
+    plan.moments = plan.technique->map == ShadowMapKind::Moments;
+    plan.severalViews = usesShadowViews(settings);
+    plan.lightWarp = usesLightWarp(settings);
+    plan.grid = plan.virtualMap ? ShadowTileGrid{settings.shadow.virtualPool, settings.shadow.virtualPool} : shadowTileGrid(settings);
+    plan.tileSize = plan.virtualMap ? kVirtualSlotTexels : settings.map.size;
+    plan.reversedDepthWanted = plan.shadows && settings.map.format == DepthFormat::Depth32F && !plan.moments;
+    plan.reversedDepth = plan.reversedDepthWanted && reversedDepthSupported;
+    plan.slices = plan.tuning.depthSlices && slicesDepth(settings) ? settings.map.slices : 1;
+    plan.depthRange = plan.shadows && settings.filter.earlyOut && plan.technique->penumbraOnly;
+    plan.contactShadows = plan.shadows && settings.contact.enabled;
+    plan.visibleDepth = usesVisibleDepth(settings);
+    plan.tapsPerLookup = plan.shadows ? plan.technique->taps(settings.filter) : 0;
+    return plan;
+}
+
+} // namespace shadowlab
