@@ -281,14 +281,14 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
         const VirtualMapUniforms& v = *m_virtualMap;
         if (v.levelOffsets.empty())
             throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
-        p.program.set(p.techniqueUniform("uVsmLight"), v.light);
-        p.program.set(p.techniqueUniform("uVsmLevels"), v.levels);
-        p.program.set(p.techniqueUniform("uVsmLodBias"), v.lodBias);
-        m_gl->glUniform2fv(p.techniqueUniform("uVsmLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
-        m_gl->glUniform2iv(p.techniqueUniform("uVsmWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
-        p.program.set(p.techniqueUniform("uVsmPoolSide"), v.poolSide);
-        p.program.set(p.techniqueUniform("uVsmTexel0"), v.finestTexel);
-        p.program.set(p.techniqueUniform("uVsmPageTable"), int(kPageTableUnit));
+        p.program.set(p.techniqueUniform("uVirtualLight"), v.light);
+        p.program.set(p.techniqueUniform("uVirtualLevels"), v.levels);
+        p.program.set(p.techniqueUniform("uVirtualLodBias"), v.lodBias);
+        m_gl->glUniform2fv(p.techniqueUniform("uVirtualLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
+        m_gl->glUniform2iv(p.techniqueUniform("uVirtualWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
+        p.program.set(p.techniqueUniform("uVirtualPoolSide"), v.poolSide);
+        p.program.set(p.techniqueUniform("uVirtualTexel0"), v.finestTexel);
+        p.program.set(p.techniqueUniform("uVirtualPageTable"), int(kPageTableUnit));
     }
     if (usesContactShadows(settings)) {
         p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));

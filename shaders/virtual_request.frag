@@ -15,14 +15,14 @@ layout(location = 0) out uint request;
 
 void main()
 {
-    vec2 q0 = (uVsmLight * vec4(vPosition, 1.0)).xy;
+    vec2 q0 = (uVirtualLight * vec4(vPosition, 1.0)).xy;
     vec2 dqx = dFdx(q0), dqy = dFdy(q0);
     vec2 q;
-    int level = vsmRequestLevel(q0, dqx, dqy, q);
+    int level = virtualRequestLevel(q0, dqx, dqy, q);
     if (!uReceives || level < 0) {
         request = 0u;
         return;
     }
-    ivec2 page = clamp(ivec2(floor(q)), ivec2(0), ivec2(int(kVsmWindowPages) - 1));
+    ivec2 page = clamp(ivec2(floor(q)), ivec2(0), ivec2(int(kVirtualLevelPages) - 1));
     request = 1u + uint(level) * 16384u + uint(page.y) * 128u + uint(page.x);
 }

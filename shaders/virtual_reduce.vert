@@ -1,4 +1,4 @@
-// GPU reduction of a virtual map's page requests (vsm_request.frag), as far as GL 3.3 goes
+// GPU reduction of a virtual map's page requests (virtual_request.frag), as far as GL 3.3 goes
 // without image atomics: one point per request pixel, drawn on the texel of the page it asks for
 // in a target of one flag per page of every level's window (128 wide, 128 rows a level). The
 // read-back is then a byte per page, not a word per pixel, and duplicates are gone. Pixels
