@@ -1,6 +1,7 @@
 #include "ShadowTechnique.h"
 
 #include "MomentMath.h"
+#include "ShaderConstants.h"
 
 #include <glm/geometric.hpp>
 
@@ -266,8 +267,8 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .uniforms = noUniforms,
         .describe = plainLabel("pcf64"),
         .sweep = {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}},
-        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 3.5; },
-        .taps = [](const FilterSettings&) { return 64; },
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return kPcf64TapReach; },
+        .taps = [](const FilterSettings&) { return kPcf64Side * kPcf64Side; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -328,7 +329,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
-        .taps = [](const FilterSettings& f) { return 16 + f.taps; },
+        .taps = [](const FilterSettings& f) { return kPcssBlockerTaps + f.taps; },
     });
     t.push_back({
         .mode = FilterMode::Dpcf,

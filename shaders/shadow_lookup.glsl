@@ -9,17 +9,17 @@ uniform float uBiasMin;             // the same units
 uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
 #endif
 uniform int uShadowViewCount;
-uniform mat4 uShadowViews[6];       // camera-relative world -> map uv (of the whole map) and the view's depth
-uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max xy
-uniform vec2 uShadowViewUvWorld[6]; // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
-uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
-uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
+uniform mat4 uShadowViews[kMaxShadowViews];         // camera-relative world -> map uv (of the whole map) and the view's depth
+uniform vec4 uShadowTiles[kMaxShadowViews];         // each view's tile in map uv: min xy, max xy
+uniform vec2 uShadowViewUvWorld[kMaxShadowViews];   // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
+uniform vec2 uShadowViewDepth[kMaxShadowViews];     // near and far of each view's volume
+uniform float uShadowViewTexel[kMaxShadowViews];    // world size of one of its texels (perspective: at unit distance)
 // An ortho view is affine (w = 1) and sees one direction to the light, so the bias's step along
 // the ray to the light is a constant change of depth per world unit: no division by w and no
 // matrix product per pixel.
 #if !defined(LIGHT_PERSPECTIVE) && !defined(LIGHT_WARP)
 #define AFFINE_VIEW
-uniform float uShadowViewRayDepth[6];   // each view's depth change per world unit toward the light
+uniform float uShadowViewRayDepth[kMaxShadowViews];   // each view's depth change per world unit toward the light
 #endif
 // Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
 // here, per pixel; one plain view takes it from the vertex stage.
@@ -38,10 +38,10 @@ int gViewIndex = -1;                // the view the pixel read (the nearer one o
 
 #ifdef VIRTUAL_MAP
 #include "virtual_pages.glsl"
-uniform usampler2D uVirtualPageTable;   // per level 128 rows of 128: slot + 1 of the page there, 0 none
-uniform ivec2 uVirtualWrap[16];         // each level's window origin, mod 128 (the table wraps)
-uniform int uVirtualPoolSide;           // slots per side of the pool (the map)
-uniform float uVirtualTexel0;           // world size of a level-0 texel
+uniform usampler2D uVirtualPageTable;           // per level a window's rows of pages: slot + 1 of the page there, 0 none
+uniform ivec2 uVirtualWrap[kMaxVirtualLevels];  // each level's window origin, mod its width (the table wraps)
+uniform int uVirtualPoolSide;                   // slots per side of the pool (the map)
+uniform float uVirtualTexel0;                   // world size of a level-0 texel
 #endif
 
 // What the lookup needs of a view: its matrix (camera-relative world to map uv and depth), its
@@ -280,8 +280,8 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 // The page table's entry for level `level` at its window-relative position q: slot + 1, or 0.
 uint virtualPageEntry(int level, vec2 q)
 {
-    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(127)) + uVirtualWrap[level]) % 128;
-    return texelFetch(uVirtualPageTable, ivec2(at.x, at.y + level * 128), 0).r;
+    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1)) + uVirtualWrap[level]) % kVirtualLevelPages;
+    return texelFetch(uVirtualPageTable, ivec2(at.x, at.y + level * kVirtualLevelPages), 0).r;
 }
 
 // A virtual map's lookup: the level the pixel asked for (virtual_pages.glsl), else the one
@@ -314,9 +314,9 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     vec2 page = floor(q);
     vec2 atlas = 1.0 / uShadowTexel;
     mat4 toSlot = mat4(1.0);
-    toSlot[0][0] = kVirtualPageTexels * scale / atlas.x;
-    toSlot[1][1] = kVirtualPageTexels * scale / atlas.y;
-    toSlot[3].xy = (slotOrigin + float(kVirtualPageBorder) + kVirtualPageTexels * (uVirtualLevelOffset[level] - page)) / atlas;
+    toSlot[0][0] = float(kVirtualPageTexels) * scale / atlas.x;
+    toSlot[1][1] = float(kVirtualPageTexels) * scale / atlas.y;
+    toSlot[3].xy = (slotOrigin + float(kVirtualPageBorder) + float(kVirtualPageTexels) * (uVirtualLevelOffset[level] - page)) / atlas;
     float texel = uVirtualTexel0 * exp2(float(level));
     // The slot's matrix leaves depth as the light's: its step toward the light is the light's.
     ShadowViewLookup view = ShadowViewLookup(toSlot * uVirtualLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlotTexels)) / atlas),
@@ -367,7 +367,6 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 // The overlay colour of a view: cascades red, green, blue, yellow; faces add magenta and cyan.
 vec3 viewTint(int i)
 {
-    const vec3 tints[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 0.9, 0.2),
-                                  vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
-    return i < 0 ? vec3(1.0) : tints[i % 6];   // virtual maps' levels go round them
+    const vec3 tints[] = kViewTints;
+    return i < 0 ? vec3(1.0) : tints[i % tints.length()];   // virtual maps' levels go round them
 }

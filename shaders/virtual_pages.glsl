@@ -4,17 +4,13 @@
 uniform mat4 uVirtualLight;         // camera-relative world -> (q0, depth as the pages store it)
 uniform int uVirtualLevels;
 uniform int uVirtualLodBias;        // levels finer than a texel per pixel (shadow.virtual_lod_bias)
-uniform vec2 uVirtualLevelOffset[16];
-const float kVirtualLevelPages = 128.0;
-const float kVirtualPageTexels = 128.0;
-const int kVirtualPageBorder = 4;   // texels of a page's border in its slot
-const int kVirtualSlotTexels = 136; // a slot's texels per side: the page and its borders
+uniform vec2 uVirtualLevelOffset[kMaxVirtualLevels];
 
 // The coarsest level whose texel still covers at most one screen pixel: from the change of q0
 // across one pixel (dqx, dqy), as an area.
 int virtualDensityLevel(vec2 dqx, vec2 dqy)
 {
-    float texelsPerPixel = kVirtualPageTexels * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
+    float texelsPerPixel = float(kVirtualPageTexels) * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
     int level = (texelsPerPixel > 1.0 ? int(floor(log2(texelsPerPixel))) : 0) - uVirtualLodBias;
     return clamp(level, 0, uVirtualLevels - 1);
 }

@@ -1,9 +1,9 @@
 // GPU reduction of a virtual map's page requests (virtual_request.frag), as far as GL 3.3 goes
 // without image atomics: one point per request pixel, drawn on the texel of the page it asks for
-// in a target of one flag per page of every level's window (128 wide, 128 rows a level). The
-// read-back is then a byte per page, not a word per pixel, and duplicates are gone. Pixels
-// that ask for nothing are sent outside the target. (With GL 4.3 a compute pass could append
-// the flagged pages to a list of a few hundred entries.)
+// in a target of one flag per page of every level's window (a window's width wide, as many rows
+// a level). The read-back is then a byte per page, not a word per pixel, and duplicates are
+// gone. Pixels that ask for nothing are sent outside the target. (With GL 4.3 a compute pass
+// could append the flagged pages to a list of a few hundred entries.)
 uniform usampler2D uRequests;
 uniform int uRequestWidth;
 uniform int uLevels;
@@ -16,8 +16,9 @@ void main()
         gl_Position = vec4(2.0, 2.0, 0.0, 1.0);     // clipped: no flag
         return;
     }
-    uint index = request - 1u;                      // level * 128² + y * 128 + x
-    uint level = index / 16384u;
-    vec2 texel = vec2(float(index % 128u), float(level * 128u + (index / 128u) % 128u)) + 0.5;
-    gl_Position = vec4(texel / vec2(128.0, 128.0 * float(uLevels)) * 2.0 - 1.0, 0.0, 1.0);
+    const uint n = uint(kVirtualLevelPages);        // pages per side of a level's window
+    uint index = request - 1u;                      // level * n² + y * n + x
+    uint level = index / (n * n);
+    vec2 texel = vec2(float(index % n), float(level * n + (index / n) % n)) + 0.5;
+    gl_Position = vec4(texel / vec2(float(n), float(n) * float(uLevels)) * 2.0 - 1.0, 0.0, 1.0);
 }

@@ -1,6 +1,7 @@
 // Page requests of a virtual shadow map: each receiver pixel the camera sees writes the page it
-// needs (virtual_pages.glsl), packed as 1 + level * 128² + y * 128 + x on its level's window;
-// 0 where nothing that receives a shadow is seen. Read back and deduplicated on the CPU.
+// needs (virtual_pages.glsl), packed as 1 + level * n² + y * n + x on its level's window of n²
+// pages (n = kVirtualLevelPages); 0 where nothing that receives a shadow is seen. Read back and
+// deduplicated on the CPU.
 #include "virtual_pages.glsl"
 
 in vec3 vPosition;
@@ -23,6 +24,6 @@ void main()
         request = 0u;
         return;
     }
-    ivec2 page = clamp(ivec2(floor(q)), ivec2(0), ivec2(int(kVirtualLevelPages) - 1));
-    request = 1u + uint(level) * 16384u + uint(page.y) * 128u + uint(page.x);
+    ivec2 page = clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1));
+    request = 1u + uint(level * kVirtualLevelPages * kVirtualLevelPages + page.y * kVirtualLevelPages + page.x);
 }
