@@ -64,11 +64,9 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
     return it->second;
 }
 
-LitPass::LitPass(GlFunctions* gl) : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED) {}
-
-int LitPass::compiledCutoutVariantCount() const
+LitPass::LitPass(GlFunctions* gl)
+    : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_programs(gl)
 {
-    return int(std::count_if(m_programs.begin(), m_programs.end(), [](const auto& p) { return p.first.contains(QLatin1String("ALPHA_CUTOUT")); }));
 }
 
 QStringList LitPass::variantDefines(const Settings& settings, const Variant& variant)
@@ -162,12 +160,7 @@ bool LitPass::usesDepthRange(const Settings& settings)
 
 LitPass::Program& LitPass::programFor(const Settings& settings, const Variant& variant)
 {
-    const QStringList defines = variantDefines(settings, variant);
-    const QString key = defines.join(QLatin1Char(';'));
-    auto it = m_programs.find(key);
-    if (it == m_programs.end())
-        it = m_programs.emplace(key, std::make_unique<Program>(m_gl, defines)).first;
-    return *it->second;
+    return m_programs.get(variantDefines(settings, variant));
 }
 
 LitPass::Programs LitPass::programsFor(const GpuScene& scene, const Settings& settings, Variant variant)

@@ -5,6 +5,7 @@
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "MomentsMap.h"
+#include "ProgramCache.h"
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
@@ -66,9 +67,9 @@ public:
     using Variant = LitVariant;
     // The #defines that select the variant for `settings` (exposed for tests and diagnostics).
     static QStringList variantDefines(const Settings& settings, const Variant& variant = {});
-    int compiledVariantCount() const { return int(m_programs.size()); }
+    int compiledVariantCount() const { return m_programs.size(); }
     // Of those, the variants for cut-out objects (ALPHA_CUTOUT).
-    int compiledCutoutVariantCount() const;
+    int compiledCutoutVariantCount() const { return m_programs.countWith(QStringLiteral("ALPHA_CUTOUT")); }
 
     // The light's views the next render() reads (one map, cascades or cube faces, each in its
     // tile of `map`); needed when shadows are on. Not owned; must outlive render().
@@ -150,7 +151,7 @@ private:
     CountQuery m_lookupSamples;
     CountQuery m_plainSamples;
     Fragments m_fragments;
-    std::map<QString, std::unique_ptr<Program>> m_programs;
+    ProgramCache<Program> m_programs;
     std::vector<std::pair<double, std::size_t>> m_drawOrder;   // (distance, object), reused per frame
     // The same split by what the reach says: looked up everywhere, looked up inside the mask,
     // shaded without a lookup outside the mask, shaded without a lookup everywhere.
