@@ -1,4 +1,4 @@
-// 8 x 8 taps at half-texel offsets: the smoothest and most expensive box.
+// 8×8 (kPcf64Side²) taps at half-texel offsets: the smoothest and most expensive box.
 float filterShadow(vec2 uv, float reference)
 {
     float lit = 0.0;
