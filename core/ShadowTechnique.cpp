@@ -1,6 +1,7 @@
 #include "ShadowTechnique.h"
 
 #include "MomentMath.h"
+#include "ShaderConstants.h"
 
 #include <glm/geometric.hpp>
 
@@ -192,7 +193,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
         .mode = FilterMode::Pcf,
         .key = QStringLiteral("pcf"),
         .label = QStringLiteral("PCF N×N"),
-        .help = QStringLiteral("pcf (N x N taps): percentage-closer filtering over filter.kernel texels; softer edges at N² taps"),
+        .help = QStringLiteral("pcf (N×N taps): percentage-closer filtering over filter.kernel texels; softer edges at N² taps"),
         .shaderFile = QStringLiteral("shadow/pcf.glsl"),
         .map = ShadowMapKind::DepthCompare,
         .samplers = {ShadowSampler::CompareNearest},
@@ -233,14 +234,14 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
     });
 }
 
-// Kernels of a fixed size: dithered, 8 x 8, and the hardware's bilinear compare.
+// Kernels of a fixed size: dithered, 8×8, and the hardware's bilinear compare.
 void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
 {
     t.push_back({
         .mode = FilterMode::PcfDither4,
         .key = QStringLiteral("pcf-dither4"),
         .label = QStringLiteral("PCF dithered 4"),
-        .help = QStringLiteral("pcf-dither4 (4 dithered taps): a 4 x 4 footprint in 4 lookups, placed per 2 x 2 pixel block"),
+        .help = QStringLiteral("pcf-dither4 (4 dithered taps): a 4×4 footprint in 4 lookups, placed per 2×2 pixel block"),
         .shaderFile = QStringLiteral("shadow/pcf-dither4.glsl"),
         .map = ShadowMapKind::DepthCompare,
         .samplers = {ShadowSampler::CompareNearest},
@@ -257,7 +258,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .mode = FilterMode::Pcf64,
         .key = QStringLiteral("pcf64"),
         .label = QStringLiteral("PCF 8×8"),
-        .help = QStringLiteral("pcf64 (8 x 8 taps): the smoothest and most expensive box"),
+        .help = QStringLiteral("pcf64 (8×8 taps): the smoothest and most expensive box"),
         .shaderFile = QStringLiteral("shadow/pcf64.glsl"),
         .map = ShadowMapKind::DepthCompare,
         .samplers = {ShadowSampler::CompareNearest},
@@ -266,8 +267,8 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .uniforms = noUniforms,
         .describe = plainLabel("pcf64"),
         .sweep = {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}},
-        .tapReach = [](const FilterSettings&) -> std::optional<double> { return 3.5; },
-        .taps = [](const FilterSettings&) { return 64; },
+        .tapReach = [](const FilterSettings&) -> std::optional<double> { return kPcf64TapReach; },
+        .taps = [](const FilterSettings&) { return kPcf64Side * kPcf64Side; },
         .referencesStayNearer = [](const Settings& s) { return !s.bias.receiverPlane; },
     });
     t.push_back({
@@ -328,7 +329,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
-        .taps = [](const FilterSettings& f) { return 16 + f.taps; },
+        .taps = [](const FilterSettings& f) { return kPcssBlockerTaps + f.taps; },
     });
     t.push_back({
         .mode = FilterMode::Dpcf,
@@ -395,8 +396,8 @@ const std::vector<TechniqueParameter>& techniqueParameters()
 {
     static const std::vector<TechniqueParameter> parameters{
         {QStringLiteral("filter.kernel"), QStringLiteral("PCF kernel"), QStringLiteral(" texels"),
-         QStringLiteral("PCF kernel width in texels (pcf; pcf-optimized has 3, 5 and 7): wider softens edges and hides aliasing, at N^2 taps "
-                        "per pixel for pcf, ((N + 1) / 2)^2 bilinear ones for pcf-optimized"),
+         QStringLiteral("PCF kernel width in texels (pcf; pcf-optimized has 3, 5 and 7): wider softens edges and hides aliasing, at N² taps "
+                        "per pixel for pcf, ((N + 1) / 2)² bilinear ones for pcf-optimized"),
          1, 9, true, &FilterSettings::kernel},
         {QStringLiteral("filter.taps"), QStringLiteral("Poisson taps"), QString(),
          QStringLiteral("Taps of the Poisson disk (poisson, pcss's filter after its 16-tap blocker search, dpcf's one pass): more taps, "

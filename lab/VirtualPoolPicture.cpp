@@ -1,6 +1,7 @@
 #include "VirtualPoolPicture.h"
 
 #include "Renderer.h"
+#include "ShaderConstants.h"
 
 #include <QFontMetrics>
 #include <QImage>
@@ -133,10 +134,11 @@ std::optional<int> poolSlotAt(int poolSide, QPointF uv)
 
 QColor levelTint(int level)
 {
-    // shaders/shadow_lookup.glsl's viewTint, level by level round its six colours.
-    static const QColor tints[6] = {QColor::fromRgbF(1.0f, 0.25f, 0.25f), QColor::fromRgbF(0.25f, 1.0f, 0.25f), QColor::fromRgbF(0.3f, 0.45f, 1.0f),
-                                    QColor::fromRgbF(1.0f, 0.9f, 0.2f),   QColor::fromRgbF(1.0f, 0.3f, 1.0f),   QColor::fromRgbF(0.2f, 1.0f, 1.0f)};
-    return level < 0 ? QColor(Qt::white) : tints[level % 6];
+    // shaders/shadow_lookup.glsl's viewTint, level by level round its colours.
+    if (level < 0)
+        return QColor(Qt::white);
+    const Rgb& tint = kViewTints[std::size_t(level) % kViewTints.size()];
+    return QColor::fromRgbF(tint[0], tint[1], tint[2]);
 }
 
 QString virtualPoolSummary(const VirtualPoolFacts& facts)

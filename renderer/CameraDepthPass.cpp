@@ -108,7 +108,7 @@ int CameraDepthPass::ensure(const GpuScene& scene, int sceneGeneration, const Ca
         allocate(size);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
     m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    m_gl->glClearColor(kNothing, kNothing, 0.0f, 0.0f);
+    m_gl->glClearColor(kNoCasterDepth, kNoCasterDepth, 0.0f, 0.0f);   // both channels: no caster
     m_gl->glClear(GL_COLOR_BUFFER_BIT);
     const int draws = draw(scene, camera, GL_BACK, cutouts) + draw(scene, camera, GL_FRONT, cutouts);
     m_gl->glBindVertexArray(0);

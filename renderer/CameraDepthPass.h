@@ -2,6 +2,7 @@
 
 #include "GpuScene.h"
 #include "LightMath.h"
+#include "ShaderConstants.h"
 #include "ShaderProgram.h"
 
 #include <QSize>
@@ -20,9 +21,6 @@ namespace shadowlab {
 // scene, the camera, the frame's size or that setting changed.
 class CameraDepthPass {
 public:
-    // Where no caster is, both channels hold this distance.
-    static constexpr float kNothing = 1e30f;
-
     explicit CameraDepthPass(GlFunctions* gl);
 
     // Draws when the scene (its generation), `camera` or `size` changed since the last draw;

@@ -40,7 +40,7 @@ void DepthRangePass::allocate(QSize mapSize)
     m_origins = {QPoint(0, 0)};
     m_sizes = {levelZero};
     int columnWidth = 0, columnHeight = 0;
-    while (m_sizes.back() != QSize(1, 1) && int(m_sizes.size()) < kMaxLevels) {
+    while (m_sizes.back() != QSize(1, 1) && int(m_sizes.size()) < kMaxDepthRangeLevels) {
         const int level = int(m_sizes.size());
         const QSize size(std::max(levelZero.width() >> level, 1), std::max(levelZero.height() >> level, 1));
         m_origins.emplace_back(levelZero.width(), columnHeight);

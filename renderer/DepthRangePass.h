@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GlObject.h"
+#include "ShaderConstants.h"
 #include "ShaderProgram.h"
 #include "ShadowMap.h"
 
@@ -55,7 +56,6 @@ public:
     QSize levelSize(int level) const { return m_sizes[std::size_t(level)]; }
 
     static constexpr int kLevelZeroBlock = 4;   // map texels per side of a level-0 texel
-    static constexpr int kMaxLevels = 16;       // the lit pass's table (a 2^17-texel map)
 
 private:
     void allocate(QSize mapSize);

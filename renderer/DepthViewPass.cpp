@@ -32,7 +32,7 @@ DepthViewPass::MomentsProgram::MomentsProgram(GlFunctions* gl, const QStringList
 }
 
 DepthViewPass::DepthViewPass(GlFunctions* gl)
-    : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_sampler(makeSampler(gl))
+    : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_sampler(makeSampler(gl)), m_programs(gl), m_momentsPrograms(gl)
 {
     // A sampler of our own: the texture's parameters belong to the renderer, and the compare
     // mode of its lit-pass sampler must not leak into this raw read.
@@ -49,14 +49,6 @@ DepthViewPass::DepthViewPass(GlFunctions* gl)
 }
 
 DepthViewPass::~DepthViewPass() = default;
-
-DepthViewPass::Program& DepthViewPass::program(const QStringList& defines)
-{
-    std::unique_ptr<Program>& variant = m_programs[defines.join(QLatin1Char(';'))];
-    if (!variant)
-        variant = std::make_unique<Program>(m_gl, defines);
-    return *variant;
-}
 
 std::optional<DepthSpan> DepthViewPass::measure(const ShadowMap& map, const LightFrame& light)
 {
@@ -81,7 +73,7 @@ void DepthViewPass::render(const ShadowMap& map, const LightFrame& light, const 
         defines << QStringLiteral("LINEARIZE");
     if (light.reversedDepth)
         defines << QStringLiteral("REVERSED_Z");
-    Program& p = program(defines);
+    Program& p = m_programs.get(defines);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     PassState state;
@@ -106,10 +98,7 @@ void DepthViewPass::renderMoments(GLuint momentsTexture, const Settings& setting
     const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
     QStringList defines{QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile), QStringLiteral("MOMENTS_VIEW")};
     defines << technique.defines(settings);
-    std::unique_ptr<MomentsProgram>& variant = m_momentsPrograms[defines.join(QLatin1Char(';'))];
-    if (!variant)
-        variant = std::make_unique<MomentsProgram>(m_gl, defines);
-    MomentsProgram& p = *variant;
+    MomentsProgram& p = m_momentsPrograms.get(defines);
 
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     PassState state;
@@ -142,7 +131,7 @@ void DepthViewPass::renderLegend(const RenderTarget& target, const QRect& viewpo
 {
     if (viewport.isEmpty())
         return;
-    Program& p = program({QStringLiteral("LEGEND")});
+    Program& p = m_programs.get({QStringLiteral("LEGEND")});
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     PassState state;
     state.viewport = viewport;
@@ -169,7 +158,7 @@ void DepthViewPass::renderOverlay(const RenderTarget& target, const QImage& imag
         labelGlObject(GlLabelKind::Texture, m_overlay.id(), QStringLiteral("depth view: legend and outlines"));
     m_gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     m_gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, rgba.width(), rgba.height(), 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.constBits());
-    Program& p = program({QStringLiteral("OVERLAY")});
+    Program& p = m_programs.get({QStringLiteral("OVERLAY")});
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     PassState state;
     state.viewport = QRect(QPoint(0, 0), target.size);

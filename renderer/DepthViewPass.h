@@ -2,6 +2,7 @@
 
 #include "DepthRangePass.h"
 #include "LightMath.h"
+#include "ProgramCache.h"
 #include "RenderTarget.h"
 #include "Settings.h"
 #include "ShaderProgram.h"
@@ -11,7 +12,6 @@
 #include <QRect>
 #include <QRectF>
 
-#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -69,7 +69,6 @@ private:
         ShaderProgram program;
         GLint depth, nearPlane, farPlane, uvOffset, uvScale, span, slice;
     };
-    Program& program(const QStringList& defines);
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
@@ -77,8 +76,8 @@ private:
     std::unique_ptr<DepthRangePass> m_range;    // built on first measure()
     GlTexture m_overlay;                        // built on first renderOverlay()
     // Variants by their defines (perspective, reversed depth, legend), compiled when first shown.
-    std::map<QString, std::unique_ptr<Program>> m_programs;
-    std::map<QString, std::unique_ptr<MomentsProgram>> m_momentsPrograms;   // by technique variant
+    ProgramCache<Program> m_programs;
+    ProgramCache<MomentsProgram> m_momentsPrograms;     // by technique variant
 };
 
 } // namespace shadowlab

@@ -56,11 +56,9 @@ GLint LitPass::Program::techniqueUniform(const QByteArray& name)
     return it->second;
 }
 
-LitPass::LitPass(GlFunctions* gl) : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_reachDraws(gl) {}
-
-int LitPass::compiledCutoutVariantCount() const
+LitPass::LitPass(GlFunctions* gl)
+    : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_programs(gl), m_reachDraws(gl)
 {
-    return int(std::count_if(m_programs.begin(), m_programs.end(), [](const auto& p) { return p.first.contains(QLatin1String("ALPHA_CUTOUT")); }));
 }
 
 QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& variant)
@@ -145,12 +143,7 @@ bool LitPass::readsDepthSlices(const FramePlan& plan, bool reversedDepth)
 
 LitPass::Program& LitPass::programFor(const FramePlan& plan, const Variant& variant)
 {
-    const QStringList defines = variantDefines(plan, variant);
-    const QString key = defines.join(QLatin1Char(';'));
-    auto it = m_programs.find(key);
-    if (it == m_programs.end())
-        it = m_programs.emplace(key, std::make_unique<Program>(m_gl, defines)).first;
-    return *it->second;
+    return m_programs.get(variantDefines(plan, variant));
 }
 
 LitPass::Programs LitPass::programsFor(const GpuScene& scene, const FramePlan& plan, Variant variant)
@@ -265,14 +258,14 @@ void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const Ligh
         const VirtualMapUniforms& v = *m_virtualMap;
         if (v.levelOffsets.empty())
             throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
-        p.program.set(p.techniqueUniform("uVsmLight"), v.light);
-        p.program.set(p.techniqueUniform("uVsmLevels"), v.levels);
-        p.program.set(p.techniqueUniform("uVsmLodBias"), v.lodBias);
-        m_gl->glUniform2fv(p.techniqueUniform("uVsmLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
-        m_gl->glUniform2iv(p.techniqueUniform("uVsmWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
-        p.program.set(p.techniqueUniform("uVsmPoolSide"), v.poolSide);
-        p.program.set(p.techniqueUniform("uVsmTexel0"), v.finestTexel);
-        p.program.set(p.techniqueUniform("uVsmPageTable"), int(kPageTableUnit));
+        p.program.set(p.techniqueUniform("uVirtualLight"), v.light);
+        p.program.set(p.techniqueUniform("uVirtualLevels"), v.levels);
+        p.program.set(p.techniqueUniform("uVirtualLodBias"), v.lodBias);
+        m_gl->glUniform2fv(p.techniqueUniform("uVirtualLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
+        m_gl->glUniform2iv(p.techniqueUniform("uVirtualWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
+        p.program.set(p.techniqueUniform("uVirtualPoolSide"), v.poolSide);
+        p.program.set(p.techniqueUniform("uVirtualTexel0"), v.finestTexel);
+        p.program.set(p.techniqueUniform("uVirtualPageTable"), int(kPageTableUnit));
     }
     if (plan.contactShadows) {
         p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));

@@ -6,6 +6,7 @@
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "MomentsMap.h"
+#include "ProgramCache.h"
 #include "ReachDraws.h"
 #include "RenderTarget.h"
 #include "ShaderProgram.h"
@@ -62,9 +63,9 @@ public:
     using Variant = LitVariant;
     // The #defines that select the variant for `plan` (exposed for tests and diagnostics).
     static QStringList variantDefines(const FramePlan& plan, const Variant& variant = {});
-    int compiledVariantCount() const { return int(m_programs.size()); }
+    int compiledVariantCount() const { return m_programs.size(); }
     // Of those, the variants for cut-out objects (ALPHA_CUTOUT).
-    int compiledCutoutVariantCount() const;
+    int compiledCutoutVariantCount() const { return m_programs.countWith(QStringLiteral("ALPHA_CUTOUT")); }
 
     // The light's views the next render() reads (one map, cascades or cube faces, each in its
     // tile of `map`); needed when shadows are on. Not owned; must outlive render().
@@ -131,7 +132,7 @@ private:
     CountQuery m_lookupSamples;
     CountQuery m_plainSamples;
     Fragments m_fragments;
-    std::map<QString, std::unique_ptr<Program>> m_programs;
+    ProgramCache<Program> m_programs;
     const ShadowViewFrames* m_views = nullptr;
     // This frame's conventional-to-stored depth of the map (DepthSlice::matrix), folded into
     // the shadow matrices of the variants compiled with DEPTH_SLICES.

@@ -1,16 +1,11 @@
 #include "MomentsBlurPass.h"
 
 #include "PassState.h"
+#include "ShaderConstants.h"
 
 #include <cmath>
 
 namespace shadowlab {
-
-namespace {
-
-constexpr int kMaxWeights = 16;    // uWeights[16] in momentsblur.frag: widths up to 31
-
-} // namespace
 
 MomentsBlurPass::Program::Program(GlFunctions* gl, int radius)
     : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("momentsblur.frag"), {QStringLiteral("BLUR_RADIUS %1").arg(radius)}),
@@ -70,8 +65,8 @@ int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile,
     m_lastTexels = radius > 0 ? qint64(first.width()) * first.height() + qint64(second.width()) * second.height() : 0;
     m_lastWritten = radius > 0 ? second : QRect();
     if (radius > 0 && !second.isEmpty()) {
-        float padded[kMaxWeights] = {};
-        std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxWeights), padded);
+        float padded[kMaxBlurWeights] = {};
+        std::copy_n(w.begin(), std::min<std::size_t>(w.size(), kMaxBlurWeights), padded);
         PassState state;
         state.viewport = whole;
         applyPassState(m_gl, state);
@@ -80,7 +75,7 @@ int MomentsBlurPass::render(const MomentsMap& map, int width, const QRect& tile,
             p = std::make_unique<Program>(m_gl, radius);
         p->program.bind();
         p->program.set(p->source, 0);
-        m_gl->glUniform1fv(p->weights, kMaxWeights, padded);
+        m_gl->glUniform1fv(p->weights, kMaxBlurWeights, padded);
         m_gl->glUniform2i(p->tileMin, whole.left(), whole.top());
         m_gl->glUniform2i(p->tileMax, whole.right(), whole.bottom());
         m_gl->glActiveTexture(GL_TEXTURE0);

@@ -18,7 +18,7 @@ MomentsPass::Program::Program(GlFunctions* gl, const QStringList& defines)
 {
 }
 
-MomentsPass::MomentsPass(GlFunctions* gl) : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl))
+MomentsPass::MomentsPass(GlFunctions* gl) : m_gl(gl), m_emptyVertexArray(makeVertexArray(gl)), m_programs(gl)
 {
     m_gl->glBindVertexArray(m_emptyVertexArray.id());
     labelGlObject(GlLabelKind::VertexArray, m_emptyVertexArray.id(), QStringLiteral("moments pass: far plane"));
@@ -40,10 +40,7 @@ MomentsPass::Program& MomentsPass::program(const LightFrame& light, const Settin
     QStringList defines = variantDefines(settings, light.perspective);
     if (cutout)
         defines << QStringLiteral("ALPHA_CUTOUT") << QStringLiteral("CUTOUT_FULL_RESOLUTION");
-    std::unique_ptr<Program>& p = m_programs[defines.join(QLatin1Char(';'))];
-    if (!p)
-        p = std::make_unique<Program>(m_gl, defines);
-    return *p;
+    return m_programs.get(defines);
 }
 
 void MomentsPass::setLightUniforms(Program& p, const LightFrame& light, const Settings& settings)

@@ -3,6 +3,7 @@
 #include "GpuScene.h"
 #include "LightMath.h"
 #include "MomentsMap.h"
+#include "ProgramCache.h"
 #include "Settings.h"
 #include "ShaderProgram.h"
 
@@ -10,7 +11,6 @@
 
 #include <array>
 #include <map>
-#include <memory>
 #include <optional>
 #include <utility>
 
@@ -62,7 +62,7 @@ private:
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // for the far-plane triangle
-    std::map<QString, std::unique_ptr<Program>> m_programs;
+    ProgramCache<Program> m_programs;
     qint64 m_clearedTexels = 0;
     // The far plane's moments per variant and exponents, as its encoding drew them.
     std::map<QString, std::array<GLfloat, 4>> m_farMoments;

@@ -1,6 +1,7 @@
 #include "ShaderProgram.h"
 
 #include "RenderError.h"
+#include "ShaderConstants.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -57,7 +58,7 @@ QByteArray expandIncludes(const QString& file, const QString& includedFrom, cons
 
 QByteArray loadShaderSource(const QString& file, const QStringList& defines)
 {
-    QByteArray source = "#version 330 core\n";
+    QByteArray source = "#version 330 core\n" + glslConstants();
     for (const QString& define : defines) {
         if (!define.endsWith(QLatin1Char('"')))    // file names are for #include, not for GLSL
             source += "#define " + define.toUtf8() + '\n';

@@ -16,7 +16,8 @@ namespace shadowlab {
 
 // Reads a shader from the :/shaders resource, expanding `#include "file"` lines and
 // `#include NAME` lines whose file an entry `NAME "file"` of `defines` names, and puts
-// `#version 330 core` and one `#define` per other entry in front ("NAME" or "NAME VALUE").
+// `#version 330 core`, the constants shared with C++ (core/ShaderConstants.h) and one `#define`
+// per other entry in front ("NAME" or "NAME VALUE").
 // Throws RenderError naming the file when it or an include is missing.
 QByteArray loadShaderSource(const QString& file, const QStringList& defines);
 

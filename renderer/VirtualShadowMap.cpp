@@ -101,15 +101,15 @@ VirtualMapUniforms VirtualShadowMap::uniforms(const CameraFrame& camera) const
 int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size)
 {
     if (!m_program) {
-        m_program = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("lit.vert"), QStringLiteral("vsm_request.frag"), QStringList());
+        m_program = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("lit.vert"), QStringLiteral("virtual_request.frag"), QStringList());
         m_model = m_program->uniform("uModel");
         m_normalMatrix = m_program->uniform("uNormalMatrix");
         m_mvp = m_program->uniform("uModelViewProjection");
         m_receives = m_program->uniform("uReceives");
-        m_light = m_program->uniform("uVsmLight");
-        m_levels = m_program->uniform("uVsmLevels");
-        m_offsets = m_program->uniform("uVsmLevelOffset");
-        m_lodBiasUniform = m_program->uniform("uVsmLodBias");
+        m_light = m_program->uniform("uVirtualLight");
+        m_levels = m_program->uniform("uVirtualLevels");
+        m_offsets = m_program->uniform("uVirtualLevelOffset");
+        m_lodBiasUniform = m_program->uniform("uVirtualLodBias");
     }
     if (!m_requestTexture || m_requestSize != size)
         allocateTargets(size);
@@ -150,7 +150,7 @@ void VirtualShadowMap::reducePass(QSize size)
 {
     const int levels = int(m_windows.size());
     if (!m_reduceProgram) {
-        m_reduceProgram = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("vsm_reduce.vert"), QStringLiteral("vsm_reduce.frag"), QStringList());
+        m_reduceProgram = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("virtual_reduce.vert"), QStringLiteral("virtual_reduce.frag"), QStringList());
         m_reduceWidth = m_reduceProgram->uniform("uRequestWidth");
         m_reduceLevels = m_reduceProgram->uniform("uLevels");
         m_reduceRequests = m_reduceProgram->uniform("uRequests");

@@ -48,7 +48,7 @@ public:
     std::int64_t pageTableBytes() const { return std::int64_t(kVirtualLevelPages) * kVirtualLevelPages * m_pageTableLevels * 2; }
 
     // Where the request pass's pixels become a set of pages: reduced on the GPU to a flag per
-    // page and read back as such (vsm_reduce.vert), or read back whole and deduplicated here.
+    // page and read back as such (virtual_reduce.vert), or read back whole and deduplicated here.
     // The same pages either way.
     enum class Reduction { Gpu, Cpu };
     // Takes the requests again on the next frame.

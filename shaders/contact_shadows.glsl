@@ -6,7 +6,7 @@
 // by a fixed thickness). contact.thickness still bounds how deep a caster may be, for one with
 // no back faces (an open mesh). What the screen does not show is not known: the march stops at
 // its edges. The lit pass takes the smaller of this and the map's visibility.
-uniform sampler2D uCameraDepths;    // the casters' distance along the view: nearest front faces (r), back faces (g); 1e30 none
+uniform sampler2D uCameraDepths;    // the casters' distance along the view: nearest front faces (r), back faces (g); kNoCasterDepth none
 uniform mat4 uCameraViewProjection; // camera-relative world -> clip
 uniform vec3 uCameraForward;        // unit view direction
 uniform float uContactLength;       // world units
@@ -29,7 +29,6 @@ float contactVisibility(vec3 position, vec3 toLight)
     vec4 clipStart = uCameraViewProjection * vec4(position, 1.0);
     vec4 clipEnd = uCameraViewProjection * vec4(position + toLight * reach, 1.0);
     float depthEnd = dot(position + toLight * reach, uCameraForward);
-    const float kNothing = 1e29;        // below the prepass's clear value: no caster there
     // Each pixel's steps start at its own offset (interleaved gradient noise): noise that
     // neighbours average, not bands.
     float start = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
@@ -47,7 +46,7 @@ float contactVisibility(vec3 position, vec3 toLight)
         // in front of the back face (or there is none): inside a caster.
         float pointDepth = mix(depth, depthEnd, t);
         float behind = pointDepth - faces.r;
-        if (behind > tolerance && behind < uContactThickness && (faces.g > kNothing || pointDepth < faces.g + tolerance))
+        if (behind > tolerance && behind < uContactThickness && (faces.g >= kNoCasterDepth || pointDepth < faces.g + tolerance))
             return 0.0;
     }
     return 1.0;

@@ -36,7 +36,7 @@ void main()
     fragColor = texture(uDepth, vec2(vUv.x, 1.0 - vUv.y));
 #else
     if (any(lessThan(vUv, vec2(0.0))) || any(greaterThan(vUv, vec2(1.0)))) {
-        fragColor = vec4(0.15, 0.16, 0.20, 1.0);   // outside the map: lit (clamp to border), a shade off the pane
+        fragColor = vec4(kOutsideMapColour, 1.0);
         return;
     }
     // What earlier draws of a sliced map (map.slices) left reads as the far plane.

@@ -71,9 +71,9 @@ void main()
     bool inMap = vShadowCoord.w > 0.0 && all(greaterThanEqual(mapCoord.xy, vec2(0.0))) && all(lessThanEqual(mapCoord.xy, vec2(1.0)));
 #ifdef VIRTUAL_MAP
     // A virtual map's texel is its level's: level 0's density, halved per level read.
-    vec2 q0 = (uVsmLight * vec4(vPosition, 1.0)).xy;
+    vec2 q0 = (uVirtualLight * vec4(vPosition, 1.0)).xy;
     vec2 dqx = dFdx(q0), dqy = dFdy(q0);
-    float texelsPerPixelLevel0 = kVsmPageTexels * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
+    float texelsPerPixelLevel0 = float(kVirtualPageTexels) * sqrt(abs(dqx.x * dqy.y - dqx.y * dqy.x));
 #endif
 #endif
     vec4 base = texture(uDiffuse, vUv);

@@ -6,7 +6,7 @@
 // took ten times longer.
 uniform sampler2D uSource;
 uniform ivec2 uStep;            // one texel along this pass's axis
-uniform float uWeights[16];     // centre first, summing to 1 over both sides
+uniform float uWeights[kMaxBlurWeights];  // centre first, summing to 1 over both sides
 uniform ivec2 uTileMin;         // the texels of the tile being blurred (the whole map, or one
 uniform ivec2 uTileMax;         // view's tile of several), inclusive: taps stay inside it
 

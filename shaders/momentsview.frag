@@ -13,7 +13,7 @@ out vec4 fragColor;
 void main()
 {
     if (any(lessThan(vUv, vec2(0.0))) || any(greaterThan(vUv, vec2(1.0)))) {
-        fragColor = vec4(0.15, 0.16, 0.20, 1.0);   // outside the map: lit (clamp to border), a shade off the pane
+        fragColor = vec4(kOutsideMapColour, 1.0);
         return;
     }
     vec4 moments = viewMoments(texture(uMoments, vUv));

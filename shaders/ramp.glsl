@@ -18,8 +18,7 @@ vec3 depthRamp(float t)
 vec3 densityRamp(float pixelsPerTexel)
 {
     float k = clamp(log2(max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);   // -1: 1/8, 0: 1, 1: 8 pixels
-    vec3 blue = vec3(0.15, 0.35, 0.95), green = vec3(0.1, 0.8, 0.25), yellow = vec3(0.95, 0.85, 0.1), red = vec3(0.95, 0.15, 0.1);
     if (k < 0.0)
-        return mix(green, blue, clamp(-k * 3.0, 0.0, 1.0));
-    return k < 0.5 ? mix(green, yellow, (k - 0.1) / 0.4 * step(0.1, k)) : mix(yellow, red, (k - 0.5) * 2.0);
+        return mix(kDensityGreen, kDensityBlue, clamp(-k * 3.0, 0.0, 1.0));
+    return k < 0.5 ? mix(kDensityGreen, kDensityYellow, (k - 0.1) / 0.4 * step(0.1, k)) : mix(kDensityYellow, kDensityRed, (k - 0.5) * 2.0);
 }

@@ -143,7 +143,7 @@ const vec2 kPoissonDisk[64] = vec2[64](
 // min (r) and max (g) depth of 2^(k+2) x 2^(k+2) map texels.
 uniform sampler2D uDepthRange;
 uniform int uDepthRangeLevels;
-uniform ivec4 uDepthRangeLevel[16];     // each level's origin in the atlas and its size
+uniform ivec4 uDepthRangeLevel[kMaxDepthRangeLevels];  // each level's origin in the atlas and its size
 
 // Level `level`'s texel `p` (clamped to the level), in the atlas's layout.
 vec2 rangeTexel(int level, ivec2 p)

@@ -9,17 +9,17 @@ uniform float uBiasMin;             // the same units
 uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
 #endif
 uniform int uShadowViewCount;
-uniform mat4 uShadowViews[6];       // camera-relative world -> map uv (of the whole map) and the view's depth
-uniform vec4 uShadowTiles[6];       // each view's tile in map uv: min xy, max xy
-uniform vec2 uShadowViewUvWorld[6]; // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
-uniform vec2 uShadowViewDepth[6];   // near and far of each view's volume
-uniform float uShadowViewTexel[6];  // world size of one of its texels (perspective: at unit distance)
+uniform mat4 uShadowViews[kMaxShadowViews];         // camera-relative world -> map uv (of the whole map) and the view's depth
+uniform vec4 uShadowTiles[kMaxShadowViews];         // each view's tile in map uv: min xy, max xy
+uniform vec2 uShadowViewUvWorld[kMaxShadowViews];   // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
+uniform vec2 uShadowViewDepth[kMaxShadowViews];     // near and far of each view's volume
+uniform float uShadowViewTexel[kMaxShadowViews];    // world size of one of its texels (perspective: at unit distance)
 // An ortho view is affine (w = 1) and sees one direction to the light, so the bias's step along
 // the ray to the light is a constant change of depth per world unit: no division by w and no
 // matrix product per pixel.
 #if !defined(LIGHT_PERSPECTIVE) && !defined(LIGHT_WARP)
 #define AFFINE_VIEW
-uniform float uShadowViewRayDepth[6];   // each view's depth change per world unit toward the light
+uniform float uShadowViewRayDepth[kMaxShadowViews];   // each view's depth change per world unit toward the light
 #endif
 // Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
 // here, per pixel; one plain view takes it from the vertex stage.
@@ -38,10 +38,10 @@ int gViewIndex = -1;                // the view the pixel read (the nearer one o
 
 #ifdef VIRTUAL_MAP
 #include "virtual_pages.glsl"
-uniform usampler2D uVsmPageTable;   // per level 128 rows of 128: slot + 1 of the page there, 0 none
-uniform ivec2 uVsmWrap[16];         // each level's window origin, mod 128 (the table wraps)
-uniform int uVsmPoolSide;           // slots per side of the pool (the map)
-uniform float uVsmTexel0;           // world size of a level-0 texel
+uniform usampler2D uVirtualPageTable;           // per level a window's rows of pages: slot + 1 of the page there, 0 none
+uniform ivec2 uVirtualWrap[kMaxVirtualLevels];  // each level's window origin, mod its width (the table wraps)
+uniform int uVirtualPoolSide;                   // slots per side of the pool (the map)
+uniform float uVirtualTexel0;                   // world size of a level-0 texel
 #endif
 
 // What the lookup needs of a view: its matrix (camera-relative world to map uv and depth), its
@@ -278,10 +278,10 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 
 #ifdef VIRTUAL_MAP
 // The page table's entry for level `level` at its window-relative position q: slot + 1, or 0.
-uint vsmEntry(int level, vec2 q)
+uint virtualPageEntry(int level, vec2 q)
 {
-    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(127)) + uVsmWrap[level]) % 128;
-    return texelFetch(uVsmPageTable, ivec2(at.x, at.y + level * 128), 0).r;
+    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1)) + uVirtualWrap[level]) % kVirtualLevelPages;
+    return texelFetch(uVirtualPageTable, ivec2(at.x, at.y + level * kVirtualLevelPages), 0).r;
 }
 
 // A virtual map's lookup: the level the pixel asked for (virtual_pages.glsl), else the one
@@ -289,38 +289,38 @@ uint vsmEntry(int level, vec2 q)
 // with the page resident; then that page's slot of the pool as an ortho view of its own.
 float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
-    vec2 q0 = (uVsmLight * vec4(vPosition, 1.0)).xy;
-    vec2 dqx = (uVsmLight * vec4(dx, 0.0)).xy, dqy = (uVsmLight * vec4(dy, 0.0)).xy;
+    vec2 q0 = (uVirtualLight * vec4(vPosition, 1.0)).xy;
+    vec2 dqx = (uVirtualLight * vec4(dx, 0.0)).xy, dqy = (uVirtualLight * vec4(dy, 0.0)).xy;
     vec2 q;
-    int asked = vsmRequestLevel(q0, dqx, dqy, q);
+    int asked = virtualRequestLevel(q0, dqx, dqy, q);
     if (asked < 0)
         return 1.0;             // beyond the coarsest window: beyond the scene, lit
     int level = -1;
     uint entry = 0u;
-    for (int k = -1; k < uVsmLevels && entry == 0u; ++k) {
+    for (int k = -1; k < uVirtualLevels && entry == 0u; ++k) {
         int l = k < 0 ? asked : (k == 0 ? asked - 1 : asked + k);
-        if (l < 0 || l >= uVsmLevels || !vsmInWindow(l, q0, q))
+        if (l < 0 || l >= uVirtualLevels || !virtualInWindow(l, q0, q))
             continue;
-        entry = vsmEntry(l, q);
+        entry = virtualPageEntry(l, q);
         level = l;
     }
     gViewIndex = level;
     if (entry == 0u)
         return 1.0;             // no page resident at any level (cannot happen once requested)
     int slot = int(entry) - 1;
-    vec2 slotOrigin = vec2(slot % uVsmPoolSide, slot / uVsmPoolSide) * float(kVirtualSlot);
+    vec2 slotOrigin = vec2(slot % uVirtualPoolSide, slot / uVirtualPoolSide) * float(kVirtualSlotTexels);
     // q0 -> the slot's texels: level scale, the page's place in the window, its border.
     float scale = exp2(-float(level));
     vec2 page = floor(q);
     vec2 atlas = 1.0 / uShadowTexel;
     mat4 toSlot = mat4(1.0);
-    toSlot[0][0] = kVsmPageTexels * scale / atlas.x;
-    toSlot[1][1] = kVsmPageTexels * scale / atlas.y;
-    toSlot[3].xy = (slotOrigin + float(kVirtualBorder) + kVsmPageTexels * (uVsmLevelOffset[level] - page)) / atlas;
-    float texel = uVsmTexel0 * exp2(float(level));
+    toSlot[0][0] = float(kVirtualPageTexels) * scale / atlas.x;
+    toSlot[1][1] = float(kVirtualPageTexels) * scale / atlas.y;
+    toSlot[3].xy = (slotOrigin + float(kVirtualPageBorder) + float(kVirtualPageTexels) * (uVirtualLevelOffset[level] - page)) / atlas;
+    float texel = uVirtualTexel0 * exp2(float(level));
     // The slot's matrix leaves depth as the light's: its step toward the light is the light's.
-    ShadowViewLookup view = ShadowViewLookup(toSlot * uVsmLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlot)) / atlas),
-                                             atlas * texel, uShadowViewDepth[0], texel, (uVsmLight * vec4(toLight, 0.0)).z);
+    ShadowViewLookup view = ShadowViewLookup(toSlot * uVirtualLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlotTexels)) / atlas),
+                                             atlas * texel, uShadowViewDepth[0], texel, (uVirtualLight * vec4(toLight, 0.0)).z);
     return viewVisibility(view, normal, toLight, dx, dy);
 }
 #endif
@@ -367,7 +367,6 @@ float shadowVisibility(vec3 normal, vec3 toLight)
 // The overlay colour of a view: cascades red, green, blue, yellow; faces add magenta and cyan.
 vec3 viewTint(int i)
 {
-    const vec3 tints[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), vec3(1.0, 0.9, 0.2),
-                                  vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
-    return i < 0 ? vec3(1.0) : tints[i % 6];   // virtual maps' levels go round them
+    const vec3 tints[] = kViewTints;
+    return i < 0 ? vec3(1.0) : tints[i % tints.length()];   // virtual maps' levels go round them
 }

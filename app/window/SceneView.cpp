@@ -10,6 +10,7 @@
 #include "SceneLibrary.h"
 #include "SceneSupply.h"
 #include "SettingsError.h"
+#include "ShaderConstants.h"
 
 #include <QElapsedTimer>
 #include <QKeyEvent>
@@ -37,14 +38,13 @@ constexpr double kDegreesPerPixel = 0.4;
 QColor densityColour(double pixelsPerTexel)
 {
     const double k = std::clamp(std::log2(std::max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);
-    const auto mix = [](const double* a, const double* b, double t) {
+    const auto mix = [](const Rgb& a, const Rgb& b, double t) {
         t = std::clamp(t, 0.0, 1.0);
         return QColor::fromRgbF(float(a[0] + (b[0] - a[0]) * t), float(a[1] + (b[1] - a[1]) * t), float(a[2] + (b[2] - a[2]) * t));
     };
-    static const double blue[] = {0.15, 0.35, 0.95}, green[] = {0.1, 0.8, 0.25}, yellow[] = {0.95, 0.85, 0.1}, red[] = {0.95, 0.15, 0.1};
     if (k < 0.0)
-        return mix(green, blue, -k * 3.0);
-    return k < 0.5 ? mix(green, yellow, k < 0.1 ? 0.0 : (k - 0.1) / 0.4) : mix(yellow, red, (k - 0.5) * 2.0);
+        return mix(kDensityGreen, kDensityBlue, -k * 3.0);
+    return k < 0.5 ? mix(kDensityGreen, kDensityYellow, k < 0.1 ? 0.0 : (k - 0.1) / 0.4) : mix(kDensityYellow, kDensityRed, (k - 0.5) * 2.0);
 }
 
 // What the texel-density tint means, in the view's bottom-left corner.

@@ -1,4 +1,4 @@
-// Four taps of a 4 x 4 footprint whose placement alternates over 2 x 2 pixel blocks
+// Four taps of a 4×4 footprint whose placement alternates over 2×2 pixel blocks
 // (GPU Gems 2, ch. 17): 4 lookups, the look of 16 once the eye averages neighbours.
 float filterShadow(vec2 uv, float reference)
 {

@@ -1,5 +1,5 @@
 // pcf-optimized: the wide PCF of The Witness (Castaño 2013; MJP's Shadows sample, OptimizedPCF):
-// a smooth PCF_KERNEL x PCF_KERNEL kernel (3, 5 or 7 texels) from ((N + 1) / 2)² bilinear
+// a smooth PCF_KERNEL×PCF_KERNEL kernel (3, 5 or 7 texels) from ((N + 1) / 2)² bilinear
 // compare taps. Each tap sits where the hardware's blend of its four texels gives each of them
 // the kernel's weight, so 4, 9 or 16 lookups filter what pcf's box does in 9, 25 or 49, with
 // weights that fall off toward the kernel's edge: a smoother penumbra, no staircase.

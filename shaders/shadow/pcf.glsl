@@ -1,4 +1,4 @@
-// pcf: an N x N box of single-texel comparisons (percentage-closer filtering); N is
+// pcf: an N×N box of single-texel comparisons (percentage-closer filtering); N is
 // PCF_KERNEL (odd), from filter.kernel.
 float filterShadow(vec2 uv, float reference)
 {

@@ -5,8 +5,6 @@
 // reference traces it, and by similar triangles for a perspective one.
 #include "blocker_search.glsl"
 
-const int kBlockerTaps = 16;
-
 float filterShadow(vec2 uv, float reference)
 {
     float receiver = shadowDistance(reference);
@@ -23,7 +21,7 @@ float filterShadow(vec2 uv, float reference)
     mat2 rotation = tapRotation();
     float blockerSum = 0.0;
     float blockers = 0.0;
-    for (int i = 0; i < kBlockerTaps; ++i) {
+    for (int i = 0; i < kPcssBlockerTaps; ++i) {
         vec2 offset = rotation * kPoissonDisk[i] * search;
         float depth = blockerDepth(uv + offset);
         if (isBlocker(depth, tapReference(offset, reference))) {

@@ -1,4 +1,4 @@
-// A page some pixel asked for (vsm_reduce.vert).
+// A page some pixel asked for (virtual_reduce.vert).
 layout(location = 0) out uint flag;
 
 void main()
