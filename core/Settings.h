@@ -65,7 +65,7 @@ struct LightSettings {
 struct MapSettings {
     int size = 2048;                        // texels per side
     DepthFormat format = DepthFormat::Depth24;
-    int slices = 4;                         // redraws between clears of a depth24 map (ShadowMap::beginDraw)
+    int slices = 4;                         // redraws between clears of a depth24 map (DepthSlices::beginDraw)
 
     bool operator==(const MapSettings&) const = default;
 };

@@ -41,7 +41,7 @@ bool usesLightWarp(const Settings& settings);
 // Whether the cascades of `settings` split the frame's drawn depth range (shadow.depth_fit = sdsm
 // on a directional light's cascades, shadows on), which a depth prepass measures.
 bool usesVisibleDepth(const Settings& settings);
-// Whether a map of `settings` may be drawn into depth slices (map.slices, ShadowMap::beginDraw):
+// Whether a map of `settings` may be drawn into depth slices (map.slices, DepthSlices::beginDraw):
 // one plain ortho view, whose depth is linear in distance. A perspective or warped map's depth
 // is not: its steps are spent near the light (or the warp's centre), with none to spare where
 // the scene lies. Cascades and cube faces are tiles drawn apart, and a virtual map's pool clears

@@ -65,7 +65,7 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
                           const std::optional<QRect>& drawn, bool cutouts, int slices)
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
-    const ShadowMap::Draw slice = map.beginDraw(tile, slices);
+    const DepthSlices::Draw slice = map.beginDraw(tile, slices);
     // A sliced draw keeps what earlier slices left; any other clears what was written and what
     // it draws, and draws only where its casters are.
     const bool sliced = slice.slice.scale < 1.0;

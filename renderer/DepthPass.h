@@ -30,7 +30,7 @@ public:
     void clear(ShadowMap& map, bool reversedDepth);
     // Clears, then draws the casters; with `slices` > 1 (map.slices) a whole 24-bit map is
     // cleared once in that many draws and drawn into its next depth slice between
-    // (ShadowMap::beginDraw). Returns the number of draw calls issued.
+    // (DepthSlices::beginDraw). Returns the number of draw calls issued.
     int render(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, bool cutouts = true, int slices = 1);
     // The same for one tile of a map of several views (`tile` in texels), where the casters
     // cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): clears what earlier draws

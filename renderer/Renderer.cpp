@@ -92,9 +92,9 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // exact ties (a bias of 0): a measurement draws it again after a clear, so the same settings
     // measure the same whatever was drawn before.
     if (measure) {
-        if (m_shadowMap.sliceIndex() > 0)
+        if (m_shadowMap.depthSlices().index() > 0)
             invalidateShadowMap();
-        m_shadowMap.restartSlices();    // a draw this frame, for whatever reason, clears first
+        m_shadowMap.depthSlices().restart();    // a draw this frame, for whatever reason, clears first
     }
     // Render: the shadow pass where its inputs changed, then what it feeds.
     storage.takeCounts();   // what a pass did before this frame is not its
@@ -230,7 +230,7 @@ bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, s
     // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
     // and so does invalidateShadowMap(), which stands for one.
     if (m_shadowKey && *m_shadowKey != shared)
-        m_shadowMap.restartSlices();
+        m_shadowMap.depthSlices().restart();
     m_viewVolumes.assign(count, std::nullopt);
     m_shadowKey = shared;
     return true;
@@ -252,7 +252,7 @@ std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
 
 double Renderer::casterCoverage(std::size_t count) const
 {
-    // How much of a one-view map its casters may cover (ShadowMap::setCasterCoverage).
+    // How much of a one-view map its casters may cover (DepthSlices::setCasterCoverage).
     double coverage = count == 1 ? 0.0 : 1.0;
     for (const ReachBox& box : m_update.reach().boxes) {
         const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
@@ -282,7 +282,7 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, Timing
         stats.viewWallMs.assign(count, 0.0);
     }
     const int clearsBefore = m_shadowMap.clearCount();
-    m_shadowMap.setCasterCoverage(casterCoverage(count));
+    m_shadowMap.depthSlices().setCasterCoverage(casterCoverage(count));
     // Only a frame that draws a view is a shadow pass, timed; clearing a tile is not.
     if (draws)
         m_shadowTimer.begin();
@@ -300,7 +300,7 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, Timing
         return;
     m_shadowTimer.end();
     stats.shadowPassRendered = true;
-    // A moments map is cleared with each view drawn; the depth map as ShadowMap::beginDraw says.
+    // A moments map is cleared with each view drawn; the depth map as DepthSlices::beginDraw says.
     stats.shadowMapCleared = storage.momentsMap() != nullptr || m_shadowMap.clearCount() != clearsBefore;
     ++m_shadowPassCount;
     if (timing == TimingMode::Finish) {

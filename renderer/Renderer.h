@@ -115,8 +115,8 @@ public:
     // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
     void setVirtualAsyncRequests(bool async);
     // Tests: draw a one-view map into slices whatever share of it the casters cover
-    // (ShadowMap::setSlicedCoverageLimit), so every technique's lookups are checked on slices.
-    void setSlicedCoverageLimit(double limit) { m_shadowMap.setSlicedCoverageLimit(limit); }
+    // (DepthSlices::setCoverageLimit), so every technique's lookups are checked on slices.
+    void setSlicedCoverageLimit(double limit) { m_shadowMap.depthSlices().setCoverageLimit(limit); }
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
@@ -161,7 +161,7 @@ private:
     bool beginViews(const FramePlan& plan, const ShadowStorage& storage, std::size_t count);
     // Each view's volume as it should be drawn: nullopt where it has nothing to shadow.
     std::vector<std::optional<LightVolume>> wantedVolumes() const;
-    // The share of a map of `count` views its casters may cover (ShadowMap::setCasterCoverage).
+    // The share of a map of `count` views its casters may cover (DepthSlices::setCasterCoverage).
     double casterCoverage(std::size_t count) const;
     // View `i` drawn at `wanted`, or its tile cleared where it has nothing to shadow.
     void drawView(std::size_t i, const std::optional<LightVolume>& wanted, const FramePlan& plan, ShadowStorage& storage, TimingMode timing,

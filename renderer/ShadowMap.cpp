@@ -52,43 +52,22 @@ void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format,
         configureSampler(m_gl, m_raw.id(), GL_NEAREST, false, reversedDepth);
         m_reversedDepth = reversedDepth;
         m_written.reset(m_size, m_columns, m_rows);    // its far depth is now near
-        m_drawsSinceClear = kUnknown;
-        m_slice = {};
+        m_slices.reset();
     }
 }
 
-ShadowMap::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
+DepthSlices::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
 {
-    if (tile != QRect(0, 0, width(), height()) || !ShadowMap::slices(slices, m_format, m_reversedDepth) || m_casterCoverage > m_slicedCoverageLimit) {
-        m_drawsSinceClear = kUnknown;
-        m_slice = {};
-        m_restart = false;
-        ++m_clearCount;
-        return {};
-    }
-    Draw draw;
-    // Slices of another count since the clear lie anywhere in [0, 1]: clear them first; so
-    // does a draw after restartSlices().
-    const bool restart = std::exchange(m_restart, false);
-    draw.clear = restart || m_drawsSinceClear >= slices || slices != m_slicesSinceClear;
-    if (draw.clear) {
-        m_drawsSinceClear = 0;
-        m_slicesSinceClear = slices;
-        ++m_clearCount;
-    }
-    const int k = m_drawsSinceClear++;
-    const double top = 1.0 - double(k) / slices;
-    draw.slice = {top - 1.0 / slices, 1.0 / slices - DepthSlice::kGap, top - 0.5 * DepthSlice::kGap};
-    m_slice = draw.slice;
+    const bool sliceable = tile == QRect(0, 0, width(), height()) && ShadowMap::slices(slices, m_format, m_reversedDepth);
+    const DepthSlices::Draw draw = m_slices.beginDraw(slices, sliceable);
+    m_clearCount += draw.clear;
     return draw;
 }
 
 void ShadowMap::cleared(const QRect& tile)
 {
-    m_drawsSinceClear = tile == QRect(0, 0, width(), height()) ? 0 : kUnknown;
     m_written.cleared(tile);
-    m_slice = {};
-    m_restart = false;
+    m_slices.cleared(tile == QRect(0, 0, width(), height()));
     ++m_clearCount;
 }
 
@@ -164,8 +143,7 @@ void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
     m_rows = rows;
     m_format = format;
     m_written.reset(size, columns, rows);
-    m_drawsSinceClear = kUnknown;
-    m_slice = {};
+    m_slices.reset();
 }
 
 } // namespace shadowlab

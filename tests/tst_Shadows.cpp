@@ -902,7 +902,7 @@ private Q_SLOTS:
         // Sliced whatever share of the map the casters cover (a wide filter's or a blocker
         // search's reach covers all of it): the next test checks where slices are left out.
         r.setSlicedCoverageLimit(1.0);
-        const auto restore = qScopeGuard([&] { r.setSlicedCoverageLimit(ShadowMap::kSlicedCoverage); });
+        const auto restore = qScopeGuard([&] { r.setSlicedCoverageLimit(DepthSlices::kSlicedCoverage); });
         std::vector<QImage> expected, expectedMaps;
         for (int step = 0; step < steps; ++step) {
             expected.push_back(m_headless->renderScene(at(cleared, step), kSize));
@@ -950,12 +950,12 @@ private Q_SLOTS:
         Settings last = at(sliced, steps - 1);
         if (raise)
             last.map.slices = 8;
-        const bool laterSlice = r.shadowMap().sliceIndex() > 0;
+        const bool laterSlice = r.shadowMap().depthSlices().index() > 0;
         QCOMPARE(laterSlice, n > 1);
         m_headless->makeCurrent();
         r.renderVisibility(last, kSize);
         QCOMPARE(r.lastFrame().shadowMapCleared, laterSlice);
-        QCOMPARE(r.shadowMap().sliceIndex(), 0);
+        QCOMPARE(r.shadowMap().depthSlices().index(), 0);
     }
 
     // A draw into a slice reads what its casters cover from memory, where after a clear it
@@ -975,7 +975,7 @@ private Q_SLOTS:
                 m_headless->renderFrame(s, kSize);
                 QVERIFY(r.lastFrame().shadowPassRendered);
                 clears += r.lastFrame().shadowMapCleared;
-                QCOMPARE(r.shadowMap().casterCoverage() > ShadowMap::kSlicedCoverage, groundInMap);
+                QCOMPARE(r.shadowMap().depthSlices().casterCoverage() > DepthSlices::kSlicedCoverage, groundInMap);
             }
             QCOMPARE(clears, groundInMap ? 8 : 2);
         }
