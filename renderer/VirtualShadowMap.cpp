@@ -321,6 +321,19 @@ void VirtualShadowMap::uploadPageTable()
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+void VirtualShadowMap::resetPool(int poolSide)
+{
+    m_cache.reset(poolSide);
+    m_poolSide = poolSide;
+    m_cacheLayoutGeneration = m_layoutGeneration;
+    m_tableDirty = true;
+    m_requestKey.reset();   // what the receivers ask for is asked again: they may have moved
+    if (m_fence) {          // pages of what is gone
+        m_gl->glDeleteSync(m_fence);
+        m_fence = nullptr;
+    }
+}
+
 VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                                          ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws)
 {
@@ -330,17 +343,8 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     VirtualMapStats stats;
     m_depthMatrix = frameOf(m_layout->coarsest).depthShadowMatrix;
     // A new layout (the light turned, the scene changed) leaves no page where it was.
-    if (invalidate || m_poolSide != settings.shadow.virtualPool || m_cacheLayoutGeneration != m_layoutGeneration) {
-        m_cache.reset(settings.shadow.virtualPool);
-        m_poolSide = settings.shadow.virtualPool;
-        m_cacheLayoutGeneration = m_layoutGeneration;
-        m_tableDirty = true;
-        m_requestKey.reset();   // what the receivers ask for is asked again: they may have moved
-        if (m_fence) {          // pages of what is gone
-            m_gl->glDeleteSync(m_fence);
-            m_fence = nullptr;
-        }
-    }
+    if (invalidate || m_poolSide != settings.shadow.virtualPool || m_cacheLayoutGeneration != m_layoutGeneration)
+        resetPool(settings.shadow.virtualPool);
     const QSize requestSize(std::max(size.width(), 1), std::max(size.height(), 1));
     m_lodBias = settings.shadow.virtualLodBias;
     const RequestKey key{camera.viewProjection, camera.position, requestSize, m_layoutGeneration, m_lodBias};

@@ -95,6 +95,8 @@ public:
     int lodBias() const { return m_lodBias; }
 
 private:
+    // Every page dropped, for a pool of poolSide² slots.
+    void resetPool(int poolSide);
     int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
     // The request pass's result as bytes: a flag a page (reduced on the GPU) or a word a pixel.
     struct RequestBytes {
