@@ -78,6 +78,30 @@ QJsonValue timeFlickerJson(const FlickerResult& f)
                        {QStringLiteral("frames"), f.frames}};
 }
 
+namespace {
+
+// What to pick under each light, and why (recommend()).
+QJsonArray recommendationsJson(const std::vector<ReportRow>& rows)
+{
+    QJsonArray picks;
+    for (const QString& light : lightsOf(rows)) {
+        for (const Recommendation& pick : recommend(rows, light)) {
+            QJsonArray ties;
+            for (const ReportRow* r : pick.ties)
+                ties.append(r->label);
+            picks.append(QJsonObject{{QStringLiteral("light"), light},
+                                     {QStringLiteral("pick"), pick.title()},
+                                     {QStringLiteral("label"), pick.row->label},
+                                     {QStringLiteral("sweep_index"), pick.row->sweepIndex},
+                                     {QStringLiteral("reason"), pick.reason()},
+                                     {QStringLiteral("ties"), ties}});
+        }
+    }
+    return picks;
+}
+
+} // namespace
+
 QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& facts)
 {
     QJsonArray jsonRows;
@@ -124,21 +148,6 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                                                             {QStringLiteral("pixels"), r.flicker.pixels},
                                                                             {QStringLiteral("map_moves"), r.flicker.mapMoves}}}});
     }
-    // What to pick under each light, and why (recommend()).
-    QJsonArray picks;
-    for (const QString& light : lightsOf(rows)) {
-        for (const Recommendation& pick : recommend(rows, light)) {
-            QJsonArray ties;
-            for (const ReportRow* r : pick.ties)
-                ties.append(r->label);
-            picks.append(QJsonObject{{QStringLiteral("light"), light},
-                                     {QStringLiteral("pick"), pick.title()},
-                                     {QStringLiteral("label"), pick.row->label},
-                                     {QStringLiteral("sweep_index"), pick.row->sweepIndex},
-                                     {QStringLiteral("reason"), pick.reason()},
-                                     {QStringLiteral("ties"), ties}});
-        }
-    }
     const QJsonObject json{{QStringLiteral("scene"), facts.scene},
                            {QStringLiteral("size"), QStringLiteral("%1x%2").arg(facts.size.width()).arg(facts.size.height())},
                            {QStringLiteral("frames"), facts.frames},
@@ -156,10 +165,9 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                            {QStringLiteral("configurations"), facts.configurations},
                            {QStringLiteral("shard"), QStringLiteral("%1/%2").arg(facts.shard).arg(facts.shards)},
                            {QStringLiteral("parts"), facts.parts},
-                           {QStringLiteral("recommendations"), picks},
+                           {QStringLiteral("recommendations"), recommendationsJson(rows)},
                            {QStringLiteral("rows"), jsonRows}};
     return QJsonDocument(json).toJson(QJsonDocument::Indented);
-
 }
 
 } // namespace shadowlab

@@ -332,6 +332,50 @@ ReportPart readReportPart(const QString& directory)
     return part;
 }
 
+namespace {
+
+// Refuses a merge that leaves configurations of the sweep unmeasured, naming them and, where
+// every part was cut alike, the shares to add.
+void refuseMissing(const std::vector<ReportPart>& parts, const std::map<std::pair<int, QString>, const ReportPart*>& measured)
+{
+    const ReportPart& first = parts.front();
+    std::vector<bool> found(std::size_t(first.facts.configurations), false);
+    for (const auto& entry : measured)
+        found[std::size_t(entry.first.first)] = true;
+    std::vector<int> missing;
+    for (int i = 0; i < first.facts.configurations; ++i) {
+        if (!found[std::size_t(i)])
+            missing.push_back(i);
+    }
+    if (missing.empty())
+        return;
+    // Said as the shares to add, where every part was cut into the same number of shares.
+    const int shards = first.facts.shards;
+    const bool sameCut = std::all_of(parts.begin(), parts.end(), [&](const ReportPart& p) { return p.facts.shards == shards; });
+    QStringList absent;
+    std::set<int> shares;
+    for (int i : missing) {
+        if (absent.size() < 12)
+            absent << QString::number(i + 1);
+        shares.insert(i % shards + 1);
+    }
+    QString hint;
+    if (sameCut && shards > 1) {
+        QStringList named;
+        for (int k : shares)
+            named << QStringLiteral("--shard %1/%2").arg(k).arg(shards);
+        hint = QStringLiteral(": add the report of %1").arg(named.join(QStringLiteral(", ")));
+    }
+    throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations %3 in none of the reports given (%4 %5)%6")
+                               .arg(missing.size())
+                               .arg(first.facts.configurations)
+                               .arg(missing.size() == 1 ? QStringLiteral("is") : QStringLiteral("are"),
+                                    missing.size() == 1 ? QStringLiteral("number") : QStringLiteral("numbers"),
+                                    absent.join(QStringLiteral(", ")) + (missing.size() > 12 ? QStringLiteral(", …") : QString()), hint));
+}
+
+} // namespace
+
 MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
 {
     if (parts.empty())
@@ -355,39 +399,7 @@ MergedReport mergeReportParts(const std::vector<ReportPart>& parts)
                                            .arg(partName(*at->second), partName(part), row.label));
         }
     }
-    std::vector<bool> found(std::size_t(first.facts.configurations), false);
-    for (const auto& entry : measured)
-        found[std::size_t(entry.first.first)] = true;
-    std::vector<int> missing;
-    for (int i = 0; i < first.facts.configurations; ++i) {
-        if (!found[std::size_t(i)])
-            missing.push_back(i);
-    }
-    if (!missing.empty()) {
-        // Said as the shares to add, where every part was cut into the same number of shares.
-        const int shards = first.facts.shards;
-        const bool sameCut = std::all_of(parts.begin(), parts.end(), [&](const ReportPart& p) { return p.facts.shards == shards; });
-        QStringList absent;
-        std::set<int> shares;
-        for (int i : missing) {
-            if (absent.size() < 12)
-                absent << QString::number(i + 1);
-            shares.insert(i % shards + 1);
-        }
-        QString hint;
-        if (sameCut && shards > 1) {
-            QStringList named;
-            for (int k : shares)
-                named << QStringLiteral("--shard %1/%2").arg(k).arg(shards);
-            hint = QStringLiteral(": add the report of %1").arg(named.join(QStringLiteral(", ")));
-        }
-        throw ReportMergeError(QStringLiteral("%1 of the sweep's %2 configurations %3 in none of the reports given (%4 %5)%6")
-                                   .arg(missing.size())
-                                   .arg(first.facts.configurations)
-                                   .arg(missing.size() == 1 ? QStringLiteral("is") : QStringLiteral("are"),
-                                        missing.size() == 1 ? QStringLiteral("number") : QStringLiteral("numbers"),
-                                        absent.join(QStringLiteral(", ")) + (missing.size() > 12 ? QStringLiteral(", …") : QString()), hint));
-    }
+    refuseMissing(parts, measured);
 
     MergedReport merged;
     ReportFacts& f = merged.facts;

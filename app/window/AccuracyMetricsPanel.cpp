@@ -314,6 +314,53 @@ bool AccuracyMetricsPanel::heatWanted() const
     return m_overlayKind->currentIndex() == 1;
 }
 
+namespace {
+
+// The line under the table: the image, the reference's samples and whether it was traced, and
+// whether a side changed since.
+QString referenceInfo(const AccuracyController& controller, const std::array<const AccuracyController::Measurement*, 2>& m, const std::array<bool, 2>& stale)
+{
+    const AccuracyController::Measurement* shown = m[controller.selectedSide() < 2 ? controller.selectedSide() : 0];
+    if (!m[0] && !m[1])
+        return AccuracyMetricsPanel::tr("Not measured yet.");
+    if (!shown)
+        shown = m[0] ? m[0] : m[1];
+    const QSize size = shown->errors.size();
+    const int traced = controller.lastReferencesTraced();
+    const QString reference = traced == 0 ? AccuracyMetricsPanel::tr("reference reused")
+                              : traced == 1 ? AccuracyMetricsPanel::tr("reference traced at %1").arg(raysText(controller.lastRaysPerSecond()))
+                                            : AccuracyMetricsPanel::tr("%1 references traced (the sides' lights differ), at %2").arg(traced).arg(raysText(controller.lastRaysPerSecond()));
+    QString info = AccuracyMetricsPanel::tr("%1×%2 px, %3 rays/px for the area light; %4.")
+                       .arg(size.width())
+                       .arg(size.height())
+                       .arg(shown->referenceSamplesPerPixel)
+                       .arg(reference);
+    const int sides = int(std::min<std::size_t>(controller.sideCount(), 2));
+    if (sides > 1)
+        info += QLatin1Char(' ') + AccuracyMetricsPanel::tr("Both sides over the same pixels.");
+    if (stale[0] || stale[1])
+        info += QLatin1Char(' ') + (sides > 1 && stale[0] != stale[1] ? AccuracyMetricsPanel::tr("Side %1 changed since: compare again.").arg(QLatin1Char(stale[0] ? 'A' : 'B'))
+                                                                       : AccuracyMetricsPanel::tr("The view changed since: compare again."));
+    return info;
+}
+
+} // namespace
+
+void AccuracyMetricsPanel::markStillFlicker(const AccuracyController& controller)
+{
+    // A zero that measured nothing: the maps stood still through the walk.
+    for (std::size_t s = 0; s < std::min<std::size_t>(controller.sideCount(), 2); ++s) {
+        const auto& m = controller.measurement(s);
+        m_flicker->values[s]->setToolTip(m_flicker->toolTip);
+        if (m && m->flicker.frames > 1 && m->flicker.mapMoves == 0) {
+            m_flicker->values[s]->setText(tr("still"));   // short: the tooltip says why
+            m_flicker->values[s]->setToolTip(tr("The light's maps did not move while the camera walked: the casters, not the view, bound "
+                                                "the fitted volume, so this view cannot show shimmer. Move the camera so its view cuts "
+                                                "the shadows, or try the city."));
+        }
+    }
+}
+
 void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
 {
     const int sides = int(std::min<std::size_t>(controller.sideCount(), 2));
@@ -362,17 +409,7 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     put(*m_hardRmse, values([](const M& x) { return std::optional(x.hard.rmse); }), stale, 5e-5);
     put(*m_flicker, values([](const M& x) { return x.flicker.frames > 1 ? std::optional(x.flicker.flicker) : std::nullopt; }), stale,
         countNoise([](const M& x) { return x.flicker.flicker; }, [](const M& x) { return double(x.flicker.frames > 1 ? x.flicker.pixels : 0); }));
-    // A zero that measured nothing: the maps stood still through the walk.
-    for (std::size_t s = 0; s < std::min<std::size_t>(controller.sideCount(), 2); ++s) {
-        const auto& m = controller.measurement(s);
-        m_flicker->values[s]->setToolTip(m_flicker->toolTip);
-        if (m && m->flicker.frames > 1 && m->flicker.mapMoves == 0) {
-            m_flicker->values[s]->setText(tr("still"));   // short: the tooltip says why
-            m_flicker->values[s]->setToolTip(tr("The light's maps did not move while the camera walked: the casters, not the view, bound "
-                                                "the fitted volume, so this view cannot show shimmer. Move the camera so its view cuts "
-                                                "the shadows, or try the city."));
-        }
-    }
+    markStillFlicker(controller);
     // The area reference is a Monte Carlo estimate: a difference within its noise floor is noise.
     double floor = 5e-5;
     for (int s = 0; s < 2; ++s)
@@ -385,29 +422,7 @@ void AccuracyMetricsPanel::showMeasurement(const AccuracyController& controller)
     put(*m_areaRmse, values(area([](const M& x) { return x.area.rmse; })), stale, floor);
     put(*m_noiseFloor, values(area([](const M& x) { return x.areaNoiseFloor; })), stale, floor);
 
-    const M* shown = m[controller.selectedSide() < 2 ? controller.selectedSide() : 0];
-    if (!m[0] && !m[1]) {
-        m_referenceInfo->setText(tr("Not measured yet."));
-        return;
-    }
-    if (!shown)
-        shown = m[0] ? m[0] : m[1];
-    const QSize size = shown->errors.size();
-    const int traced = controller.lastReferencesTraced();
-    const QString reference = traced == 0 ? tr("reference reused")
-                              : traced == 1 ? tr("reference traced at %1").arg(raysText(controller.lastRaysPerSecond()))
-                                            : tr("%1 references traced (the sides' lights differ), at %2").arg(traced).arg(raysText(controller.lastRaysPerSecond()));
-    QString info = tr("%1×%2 px, %3 rays/px for the area light; %4.")
-                       .arg(size.width())
-                       .arg(size.height())
-                       .arg(shown->referenceSamplesPerPixel)
-                       .arg(reference);
-    if (sides > 1)
-        info += QLatin1Char(' ') + tr("Both sides over the same pixels.");
-    if (stale[0] || stale[1])
-        info += QLatin1Char(' ') + (sides > 1 && stale[0] != stale[1] ? tr("Side %1 changed since: compare again.").arg(QLatin1Char(stale[0] ? 'A' : 'B'))
-                                                                       : tr("The view changed since: compare again."));
-    m_referenceInfo->setText(info);
+    m_referenceInfo->setText(referenceInfo(controller, m, stale));
 }
 
 void AccuracyMetricsPanel::showFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime)

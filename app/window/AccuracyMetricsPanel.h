@@ -45,6 +45,8 @@ signals:
     void overlayToggled(bool on);
 
 private:
+    // The flicker row's zeros that measured nothing, the maps standing still through the walk.
+    void markStillFlicker(const AccuracyController& controller);
     // The groups of rows: against the hard-shadow reference (with flicker), against the area
     // reference, and the frames' cost.
     QGroupBox* createHardGroup();
