@@ -91,7 +91,7 @@ float warpTexel(vec2 uvWorld)
 #endif
 
 // The footprint's move along the normal, in texels (viewPosition), and its clearance along the
-// ray, in texels of depth (viewVisibility): 0 without FOOTPRINT_BIAS or on a floor left out.
+// ray, in texels of depth (biasedReference): 0 without FOOTPRINT_BIAS or on a floor left out.
 float footprintNormalTexels(float cosTheta, float sinTheta)
 {
 #ifdef FOOTPRINT_BIAS
@@ -110,9 +110,69 @@ float footprintRayTexels(float tanTheta)
 #endif
 }
 
-// The light rig: where view i sees the pixel, moved off the surface by the normal offset. One
-// view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
-// interpolated); several views' are taken here, as each pixel picks its own.
+// The lookup's steps, one helper per axis, so that viewVisibility reads as their sequence: where
+// the view sees the pixel and its scales there (ortho, perspective, warped), the bias in its
+// space, the comparison in the map's depth convention.
+
+// The world size of the whole map's uv square where the view sees `position`: a warped map's
+// texels differ in size over the map.
+vec2 viewUvWorld(ShadowViewLookup view, vec4 position, vec3 toLight)
+{
+#ifdef LIGHT_WARP
+    return warpUvWorld(view.matrix, position, toLight);
+#else
+    return view.uvWorld;
+#endif
+}
+
+// The world size of a texel where the map's uv square spans uvWorld.
+float viewTexel(ShadowViewLookup view, vec2 uvWorld)
+{
+#ifdef LIGHT_WARP
+    return warpTexel(uvWorld);
+#else
+    return view.texel;
+#endif
+}
+
+// `texels` of `texel` world size, in world units at a receiver of clip w: a perspective texel
+// grows with the distance from the light.
+float texelsToWorld(float texels, float texel, float w)
+{
+#ifdef LIGHT_PERSPECTIVE
+    return texels * texel * w;
+#else
+    return texels * texel;
+#endif
+}
+
+#ifdef VIEW_PER_PIXEL
+// Several views' position is taken here, as each pixel picks its own view: moved along the
+// normal by bias.normal and the footprint's `texels`.
+vec4 pixelPosition(ShadowViewLookup view, vec3 normal, vec3 toLight, float texels)
+{
+    vec4 plain = view.matrix * vec4(vPosition, 1.0);
+    float offset = texelsToWorld(uNormalOffsetTexels + texels, viewTexel(view, viewUvWorld(view, plain, toLight)), plain.w);
+    return plain + view.matrix * vec4(normal * offset, 0.0);
+}
+#endif
+
+// One view's position comes from the vertex stage (vShadowCoord, in the exact object-space path,
+// interpolated) with bias.normal's offset, and the normal's step in the map for the footprint's
+// `offset` (world units) from there too: no matrix product per pixel (a branch around one cost
+// llvmpipe more).
+vec4 vertexPosition(float offset)
+{
+#if !defined(FOOTPRINT_BIAS)
+    return vShadowCoord;
+#elif defined(LIGHT_PERSPECTIVE)
+    return vShadowCoord + vShadowNormal * offset;
+#else
+    return vShadowCoord + vec4(vShadowNormal * offset, 0.0);    // an ortho view's w stays 1
+#endif
+}
+
+// The light rig: where view i sees the pixel, moved off the surface by the normal offset.
 vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight, float cosTheta, float sinTheta)
 {
     // The lookup's own footprint (FOOTPRINT_BIAS): the texel it reads lies up to half a texel
@@ -127,31 +187,155 @@ vec4 viewPosition(ShadowViewLookup view, vec3 normal, vec3 toLight, float cosThe
     // models) in docs/techniques.md#bias.
     float footprint = footprintNormalTexels(cosTheta, sinTheta);
 #ifdef VIEW_PER_PIXEL
-    vec4 plain = view.matrix * vec4(vPosition, 1.0);
+    return pixelPosition(view, normal, toLight, footprint);
+#else
+    return vertexPosition(texelsToWorld(footprint, view.texel, vShadowCoord.w));
+#endif
+}
+
+// Whether `position` lies behind a perspective light, outside its volume; an ortho view's w is 1.
+bool behindLight(vec4 position)
+{
+#ifdef AFFINE_VIEW
+    return false;
+#else
+    return position.w <= 0.0;
+#endif
+}
+
+// The map uv and depth of `position`: no division by an ortho view's w of 1.
+vec3 mapCoord(vec4 position)
+{
+#ifdef AFFINE_VIEW
+    return position.xyz;
+#else
+    return position.xyz / position.w;
+#endif
+}
+
+// Whether a map depth lies beyond the far plane, which is lit.
+bool beyondFarPlane(float depth)
+{
+#ifdef REVERSED_Z
+    return depth < 0.0;         // depth 0 when reversed
+#elif defined(DEPTH_SLICES)
+    return depth > sliceTop();  // stored (depth_slice.glsl)
+#else
+    return depth > 1.0;
+#endif
+}
+
+// A screen-space step of the pixel (shadowVisibility's dx or dy) in this view's map coordinates:
+// through the view's matrix with several views, as derivatives of the coordinate itself are
+// undefined where neighbours pick other views; one view's steps are taken in the map already.
+vec3 mapStep(ShadowViewLookup view, vec3 d)
+{
+#ifdef VIEW_PER_PIXEL
+    vec4 c0 = view.matrix * vec4(vPosition, 1.0);
+    vec4 c = view.matrix * vec4(vPosition + d, 1.0);
+    return c.xyz / c.w - c0.xyz / c0.w;
+#else
+    return d;
+#endif
+}
+
+// The receiver's depth as a plane over the map (RECEIVER_PLANE), as depth change per uv unit,
+// from the pixel's screen-space change in map coordinates. A degenerate footprint (the plane
+// seen edge-on from the camera) gets a flat plane, as every receiver does without.
+vec2 receiverSlope(ShadowViewLookup view, vec3 dx, vec3 dy)
+{
+#ifdef RECEIVER_PLANE
+    vec3 ddx = mapStep(view, dx), ddy = mapStep(view, dy);
+    float det = ddx.x * ddy.y - ddx.y * ddy.x;
+    return abs(det) > 1e-20 ? vec2(ddx.z * ddy.y - ddx.y * ddy.z, ddx.x * ddy.z - ddx.z * ddy.x) / det : vec2(0.0);
+#else
+    return vec2(0.0);
+#endif
+}
+
+// The change of map depth per world unit toward the light at `position`: an ortho view's is a
+// constant of the view.
+float depthPerWorldAt(ShadowViewLookup view, vec4 position, vec3 toLight)
+{
+#ifdef AFFINE_VIEW
+    return view.rayDepth;
+#else
+    vec4 alongRay = view.matrix * vec4(toLight, 0.0);
+    return (alongRay.z * position.w - position.z * alongRay.w) / (position.w * position.w);
+#endif
+}
+
+// Near and far of the view's volume in world units along its axis. Along a ray a warped depth
+// is linear in distance, at a scale of this texel's own: the depth range here, from 0, in world
+// units (as an ortho view's, for shadowDistance).
+vec2 viewDepthRange(ShadowViewLookup view, float depthPerWorld)
+{
 #ifdef LIGHT_WARP
-    float texel = warpTexel(warpUvWorld(view.matrix, plain, toLight));
+    return vec2(0.0, 1.0 / max(abs(depthPerWorld), 1e-30));
 #else
-    float texel = view.texel;
+    return view.depth;
 #endif
-    float offset = (uNormalOffsetTexels + footprint) * texel;
-#ifdef LIGHT_PERSPECTIVE
-    offset *= plain.w;
-#endif
-    return plain + view.matrix * vec4(normal * offset, 0.0);
+}
+
+// A view at the receiver: where it sees it (viewPosition), that position's map uv and depth, the
+// world size of a texel there and the change of depth per world unit toward the light.
+struct ViewPoint {
+    vec4 position;
+    vec3 coord;
+    float texel;
+    float depthPerWorld;
+};
+
+// The map depth of the receiver moved `units` world units toward the light: on the ray to the
+// light, so it stays on the same texel, and the same offset whatever the depth range.
+float depthTowardLight(ShadowViewLookup view, ViewPoint p, vec3 toLight, float units)
+{
+#ifdef AFFINE_VIEW
+    return p.coord.z + units * p.depthPerWorld;
 #else
-    // With bias.normal's offset from the vertex stage, and the normal's step in the map from
-    // there too: no matrix product per pixel (a branch around one cost llvmpipe more).
-#ifdef FOOTPRINT_BIAS
-    float offset = footprint * view.texel;
-#ifdef LIGHT_PERSPECTIVE
-    offset *= vShadowCoord.w;
-    return vShadowCoord + vShadowNormal * offset;
-#else
-    return vShadowCoord + vec4(vShadowNormal * offset, 0.0);    // an ortho view's w stays 1
+    vec4 moved = p.position + view.matrix * vec4(toLight * units, 0.0);
+    return moved.z / moved.w;
 #endif
+}
+
+// A map depth moved `bias` depth units toward the light: nearer the light is greater reversed.
+float nearerLight(float depth, float bias)
+{
+#ifdef REVERSED_Z
+    return depth + bias;
 #else
-    return vShadowCoord;
+    return depth - bias;
 #endif
+}
+
+// The bias in world units: as set (bias.space=world), or its texels' world size (texel).
+float worldBias(float bias, ViewPoint p, float tanTheta)
+{
+#if defined(BIAS_TEXEL)
+    return texelsToWorld(bias, p.texel, p.position.w);
+#elif defined(VIRTUAL_MAP)
+    // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
+    // levels and no one world-unit bias fits them all: at least the depth this receiver's own
+    // plane spans over one texel of its level, the reach of a lookup's 2 x 2 comparison
+    // footprint along the slope, or it shadows itself (acne; half a texel's diagonal, a hard
+    // lookup's reach, still left the default hw-bilinear's partial acne on a model's ground).
+    return max(bias, p.texel * tanTheta);
+#else
+    return bias;
+#endif
+}
+
+// The depth the filter compares against: the receiver's, moved toward the light by the bias in
+// bias.space's units and by the footprint's clearance along the ray.
+float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLight, float tanTheta)
+{
+    // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
+    float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+    float footprint = texelsToWorld(footprintRayTexels(tanTheta), p.texel, p.position.w);
+#ifdef BIAS_DEPTH
+    return nearerLight(p.coord.z, bias) + footprint * p.depthPerWorld;
+#else
+    return depthTowardLight(view, p, toLight, worldBias(bias, p, tanTheta) + footprint);
 #endif
 }
 
@@ -162,118 +346,34 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // The receiver's angle to the light, once: rounding can put N.L above 1, so no NaN.
     float cosTheta = clamp(dot(normal, toLight), 0.0, 1.0);
     float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
-    vec4 shadowCoord = viewPosition(view, normal, toLight, cosTheta, sinTheta);
-#ifdef AFFINE_VIEW
-    vec3 coord = shadowCoord.xyz;
-#else
-    if (shadowCoord.w <= 0.0)
+    ViewPoint p;
+    p.position = viewPosition(view, normal, toLight, cosTheta, sinTheta);
+    if (behindLight(p.position))
         return 1.0;             // behind a perspective light: outside its volume
-    vec3 coord = shadowCoord.xyz / shadowCoord.w;
-#endif
-#ifdef REVERSED_Z
-    if (coord.z < 0.0)
-        return 1.0;             // beyond the far plane (depth 0 when reversed) is lit
-#elif defined(DEPTH_SLICES)
-    if (coord.z > sliceTop())
-        return 1.0;             // beyond the far plane (stored, depth_slice.glsl) is lit
-#else
-    if (coord.z > 1.0)
+    p.coord = mapCoord(p.position);
+    if (beyondFarPlane(p.coord.z))
         return 1.0;             // beyond the far plane is lit
-#endif
     if (dot(normal, toLight) <= 0.0)
         return 0.0;             // facing away from the light: unlit anyway
     vec4 tile = view.tile;
-    if (any(lessThan(coord.xy, tile.xy)) || any(greaterThan(coord.xy, tile.zw)))
+    if (any(lessThan(p.coord.xy, tile.xy)) || any(greaterThan(p.coord.xy, tile.zw)))
         return 1.0;             // outside the view's fitted volume every tap would read lit
     // Taps stay inside the tile (half a texel in), so a wide filter never reads a neighbour.
     gShadowTile = vec4(tile.xy + 0.5 * uShadowTexel, tile.zw - 0.5 * uShadowTexel);
-#ifdef LIGHT_WARP
-    gShadowUvWorld = warpUvWorld(view.matrix, shadowCoord, toLight);
-#else
-    gShadowUvWorld = view.uvWorld;
-    gShadowDepthRange = view.depth;
-#endif
-#ifdef RECEIVER_PLANE
-    // The receiver's depth as a plane over the map, as depth change per uv unit, from the
-    // pixel's screen-space change in map coordinates. A degenerate footprint (the plane seen
-    // edge-on from the camera) gets a flat plane.
-#ifdef VIEW_PER_PIXEL
-    // Through this view's matrix: derivatives of coord itself are undefined where neighbours
-    // pick other views.
-    vec4 c0 = view.matrix * vec4(vPosition, 1.0);
-    vec4 cx = view.matrix * vec4(vPosition + dx, 1.0), cy = view.matrix * vec4(vPosition + dy, 1.0);
-    vec3 ddx = cx.xyz / cx.w - c0.xyz / c0.w, ddy = cy.xyz / cy.w - c0.xyz / c0.w;
-#else
-    vec3 ddx = dx, ddy = dy;
-#endif
-    float det = ddx.x * ddy.y - ddx.y * ddy.x;
-    gReceiverSlope = abs(det) > 1e-20 ? vec2(ddx.z * ddy.y - ddx.y * ddy.z, ddx.x * ddy.z - ddx.z * ddy.x) / det : vec2(0.0);
-#endif
-    // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
-    float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+    gShadowUvWorld = viewUvWorld(view, p.position, toLight);
+    gReceiverSlope = receiverSlope(view, dx, dy);
+    p.texel = viewTexel(view, gShadowUvWorld);
+    p.depthPerWorld = depthPerWorldAt(view, p.position, toLight);
+    gShadowDepthRange = viewDepthRange(view, p.depthPerWorld);
     // For the wide filters: a tap d world units away on this receiver's plane lies up to
     // d tan(theta) nearer the light; gGrowth is that in depth per world unit. tan is capped at 3
     // (72 degrees): beyond it the lookup's normal offset (viewPosition) holds the centre, and a
     // growth of up to 10 (the cap before) lit grazing receivers in a crest's own shadow; on real
     // models 3 misclassifies least (docs/techniques.md#bias).
     float tanTheta = min(sinTheta / max(cosTheta, 1e-6), 3.0);
-#if defined(VIRTUAL_MAP) && !defined(BIAS_TEXEL) && !defined(BIAS_DEPTH)
-    // A virtual level's texel is about a screen pixel wherever it lies, so its size spans the
-    // levels and no one world-unit bias fits them all: at least the depth this receiver's own
-    // plane spans over one texel of its level, the reach of a lookup's 2 x 2 comparison
-    // footprint along the slope, or it shadows itself (acne; half a texel's diagonal, a hard
-    // lookup's reach, still left the default hw-bilinear's partial acne on a model's ground).
-    bias = max(bias, view.texel * tanTheta);
-#endif
-#ifdef AFFINE_VIEW
-    float depthPerWorld = view.rayDepth;
-#else
-    vec4 alongRay = view.matrix * vec4(toLight, 0.0);
-    float depthPerWorld = (alongRay.z * shadowCoord.w - shadowCoord.z * alongRay.w) / (shadowCoord.w * shadowCoord.w);
-#endif
-    gGrowth = depthPerWorld * tanTheta;
-    gShadowW = shadowCoord.w;
-#ifdef LIGHT_WARP
-    // Along a ray a warped depth is linear in distance, at a scale of this texel's own: the
-    // depth range here, from 0, in world units (as an ortho view's, for shadowDistance).
-    gShadowDepthRange = vec2(0.0, 1.0 / max(abs(depthPerWorld), 1e-30));
-#endif
-    // The footprint's clearance along the ray, in world units.
-#ifdef LIGHT_WARP
-    float footprintWorld = footprintRayTexels(tanTheta) * warpTexel(gShadowUvWorld);
-#else
-    float footprintWorld = footprintRayTexels(tanTheta) * view.texel;
-#endif
-#ifdef LIGHT_PERSPECTIVE
-    footprintWorld *= shadowCoord.w;
-#endif
-#ifdef BIAS_DEPTH
-#ifdef REVERSED_Z
-    return filterShadow(coord.xy, coord.z + bias + footprintWorld * depthPerWorld);  // nearer the light is greater
-#else
-    return filterShadow(coord.xy, coord.z - bias + footprintWorld * depthPerWorld);
-#endif
-#else
-#ifdef BIAS_TEXEL
-#ifdef LIGHT_WARP
-    bias *= warpTexel(gShadowUvWorld);
-#else
-    bias *= view.texel;
-#endif
-#ifdef LIGHT_PERSPECTIVE
-    bias *= shadowCoord.w;      // a perspective texel grows with the distance from the light
-#endif
-#endif
-    bias += footprintWorld;
-    // Compare from a point moved toward the light by `bias` world units: on the ray to the
-    // light, so it stays on the same texel, and the same offset whatever the depth range.
-#ifdef AFFINE_VIEW
-    return filterShadow(coord.xy, coord.z + bias * depthPerWorld);
-#else
-    vec4 moved = shadowCoord + view.matrix * vec4(toLight * bias, 0.0);
-    return filterShadow(coord.xy, moved.z / moved.w);
-#endif
-#endif
+    gGrowth = p.depthPerWorld * tanTheta;
+    gShadowW = p.position.w;
+    return filterShadow(p.coord.xy, biasedReference(view, p, normal, toLight, tanTheta));
 }
 
 #ifdef VIRTUAL_MAP
