@@ -76,7 +76,7 @@ QString ignoredBecause(const Settings& s, const QString& key)
                               "depth32f and moments clear every time.");
     if (key == u"map.slices" && s.rasteriser.profile == RasteriserProfile::Hardware)
         return QStringLiteral("Depth slices save a software rasteriser its clears; with rasteriser.profile=hardware every draw clears. "
-                              "Set rasteriser.profile to software or auto.");
+                              "Set rasteriser.profile to software (or auto, on a software rasteriser).");
 
     // The light's kinds of map.
     if (key == u"light.warp" && !directional)

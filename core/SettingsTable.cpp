@@ -217,7 +217,8 @@ void mapKeys(std::vector<Entry>& e)
     e.push_back(whole({.key = "map.slices",
                        .range = {.lo = 1, .hi = 8},
                        .help = "Redraws of a depth24 map between clears: each writes a nearer 1/n of the depth range, so what earlier ones left reads lit, as cleared texels do (the same shadows, one clear in n); "
-                               "costs log2(n) of the 24 bits; 1 clears every redraw. Ortho maps only: perspective maps, cascades, virtual pages and depth32f clear every time",
+                               "costs log2(n) of the 24 bits; 1 clears every redraw. Ortho maps only: perspective maps, cascades, virtual pages and depth32f clear every time. "
+                               "A software rasteriser's optimisation: on under rasteriser.profile=software (auto on llvmpipe), every draw clears on a GPU",
                        .look = {.label = QStringLiteral("Slices"), .sliderLow = 1.0, .sliderHigh = 8.0, .group = kShadowMap}},
                       [](auto& s) -> auto& { return s.map.slices; }));
     e.push_back(choice<BiasSpace>({.key = "bias.space",

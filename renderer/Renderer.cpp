@@ -45,13 +45,23 @@ void Renderer::setScene(std::optional<Scene> scene)
 
 void Renderer::setSceneFile(const QString& path, std::shared_ptr<const Scene> scene)
 {
+    // A new load of the file drawn now (it changed on disk) is drawn from the next frame.
+    m_sceneChanged = m_sceneChanged || (m_drawnFile && m_drawnFile->first == path && m_drawnFile->second != scene);
     m_sceneFile = {path, std::move(scene)};
-    m_sceneChanged = m_sceneChanged || !m_scene || m_scene->scene().name == path;
+}
+
+const Renderer::SceneFile* Renderer::fileFor(const QString& path) const
+{
+    if (m_sceneFile && m_sceneFile->first == path)
+        return &*m_sceneFile;
+    return m_drawnFile && m_drawnFile->first == path ? &*m_drawnFile : nullptr;
 }
 
 bool Renderer::needsSceneFile(const Settings& settings) const
 {
-    return !m_customScene && !isPresetName(settings.scene) && (!m_sceneFile || m_sceneFile->first != settings.scene);
+    // The file drawn now needs nothing either: going back to it after another file's frame
+    // failed draws what is uploaded, without reading the file again.
+    return !m_customScene && !isPresetName(settings.scene) && !fileFor(settings.scene);
 }
 
 void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode timing, FrameStats& stats, bool measure)
@@ -150,9 +160,10 @@ Scene Renderer::sceneOf(const Settings& settings) const
         return *m_customScene;
     if (isPresetName(settings.scene))
         return buildPresetScene(settings.scene);
-    if (!m_sceneFile || m_sceneFile->first != settings.scene)
+    const SceneFile* file = fileFor(settings.scene);
+    if (!file)
         throw RenderError(QStringLiteral("the scene file '%1' was not loaded before the frame (Renderer::setSceneFile)").arg(settings.scene));
-    return *m_sceneFile->second;
+    return *file->second;
 }
 
 void Renderer::ensureScene(const Settings& settings)
@@ -160,7 +171,10 @@ void Renderer::ensureScene(const Settings& settings)
     if (m_sceneChanged || !m_scene || (!m_customScene && m_scene->scene().name != settings.scene) || m_objectSwitches != settings.objects) {
         Scene scene = sceneOf(settings);
         applyObjectSwitches(scene, settings.objects);    // throws for an object the scene has not: the last scene stays
+        const SceneFile* file = m_customScene ? nullptr : fileFor(settings.scene);
+        std::optional<SceneFile> drawn = file ? std::optional<SceneFile>(*file) : std::nullopt;
         m_scene = std::make_unique<GpuScene>(m_gl, std::move(scene));
+        m_drawnFile = std::move(drawn);
         m_objectSwitches = settings.objects;
         m_sceneChanged = false;
         ++m_sceneGeneration;

@@ -143,6 +143,9 @@ private:
     void ensureScene(const Settings& settings);
     // A copy of the scene `settings` draw: the custom one, a preset's, or the file's handed in.
     Scene sceneOf(const Settings& settings) const;
+    using SceneFile = std::pair<QString, std::shared_ptr<const Scene>>;
+    // The file of `path` as last handed in, or as drawn now; null when neither.
+    const SceneFile* fileFor(const QString& path) const;
     // Why this frame's shadow pass drew, from what changed since the last frame's settings.
     FrameStats::Redraw redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const;
     // The fit of `frame`, with what it reads from passes: sdsm's visible depth, the virtual layout.
@@ -208,6 +211,7 @@ private:
     FrameUpdate m_update;           // the camera, the fitted views and their reach
     std::optional<Scene> m_customScene;
     std::optional<std::pair<QString, std::shared_ptr<const Scene>>> m_sceneFile;     // setSceneFile's path and scene
+    std::optional<std::pair<QString, std::shared_ptr<const Scene>>> m_drawnFile;     // the file m_scene was built from
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     ObjectSwitches m_objectSwitches;    // applied to m_scene

@@ -13,6 +13,7 @@
 #include "SliderSpinBox.h"
 #include "PropertiesDock.h"
 #include "RayTracer.h"
+#include "RenderError.h"
 #include "ReportSweep.h"
 #include "Renderer.h"
 #include "SceneFileError.h"
@@ -255,6 +256,32 @@ private Q_SLOTS:
         const Scene scene = importModel(path);
         QVERIFY2(scene.warnings.filter("cannot be read").isEmpty(), qPrintable(scene.warnings.join('\n')));
         QVERIFY(std::any_of(scene.objects.begin(), scene.objects.end(), [](const SceneObject& o) { return o.texture == TextureKind::Image; }));
+    }
+
+    // A frame builds no model: the file is handed in before it (supplyScene). Going back to the
+    // file drawn now, after another was handed in (whose frame failed, say), reads nothing and
+    // uploads nothing: the last good scene stays as it is.
+    void aFileIsHandedInBeforeTheFrame()
+    {
+        Renderer& renderer = m_headless->renderer();
+        renderer.setScene(std::nullopt);
+        const Settings box = presetSettings(model("OBJ/box.obj"));
+        const Settings wuson = presetSettings(model("PLY/Wuson.ply"));
+        const QSize size(64, 36);
+        QVERIFY(renderer.needsSceneFile(box));
+        m_headless->renderFrame(box, size);
+        const Scene* drawn = renderer.scene();
+        QVERIFY(drawn != nullptr);
+        supplyScene(renderer, wuson);
+        QVERIFY(!renderer.needsSceneFile(wuson));
+        QVERIFY(!renderer.needsSceneFile(box));
+        m_headless->renderFrame(box, size);
+        QCOMPARE(renderer.scene(), drawn);
+        // A file nobody handed in is refused by name, and the last frame's scene stays.
+        Settings other = presetSettings(model("STL/Spider_ascii.stl"));
+        QVERIFY(renderer.needsSceneFile(other));
+        QVERIFY_THROWS_EXCEPTION(RenderError, renderer.render(other, RenderTarget{0, size}));
+        QCOMPARE(renderer.scene(), drawn);
     }
 
     // What a user sees first: the model, a ground under it and a light that casts its shadow
