@@ -33,6 +33,12 @@ enum class ShadingModel { Phong, BlinnPhong };
 // Which kind of rasteriser the renderer's optimisations are chosen for (RasteriserTuning): auto
 // from GL_RENDERER, or forced. Frames are the same under each; only what they cost differs.
 enum class RasteriserProfile { Auto, Software, Hardware };
+// What the shadow pass keeps between frames while casters move (renderer/ShadowCache.h): off
+// draws every caster again; static keeps a copy of the still casters' map and draws only the
+// moving ones over it (exact); pages keeps a virtual map's pages but those a moved caster
+// touches (exact); every-n draws moving casters every n-th frame (stale between); on-demand
+// until asked (stale).
+enum class ShadowCachePolicy { Off, Static, Pages, EveryN, OnDemand };
 
 inline constexpr int kMaxCascades = 4;
 // Every field carries its range in a comment; SettingsTable.cpp holds the same ranges for
@@ -181,6 +187,8 @@ struct ShadowSettings {
     // finer): on the city's street camera 0.35 x the misclassified pixels of 4 stabilised
     // cascades, against 0.74 x at 0 (`report --scene city --sweep virtual`).
     int virtualLodBias = 1;                 // levels finer than a texel per screen pixel
+    ShadowCachePolicy cache = ShadowCachePolicy::Off;
+    int cacheInterval = 4;                  // every-n: frames of moving casters between redraws
 
     bool operator==(const ShadowSettings&) const = default;
 };

@@ -84,6 +84,7 @@ QString toString(BiasSpace value);
 QString toString(FilterMode value);
 QString toString(ShadingModel value);
 QString toString(RasteriserProfile value);
+QString toString(ShadowCachePolicy value);
 QString toString(MomentFormat value);
 
 } // namespace shadowlab

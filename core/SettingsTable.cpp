@@ -38,6 +38,8 @@ const QStringList kFilterNames = [] {
 const QStringList kMomentFormatNames{QStringLiteral("16"), QStringLiteral("32")};
 const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
 const QStringList kRasteriserNames{QStringLiteral("auto"), QStringLiteral("software"), QStringLiteral("hardware")};
+const QStringList kCacheNames{QStringLiteral("off"), QStringLiteral("static"), QStringLiteral("pages"), QStringLiteral("every-n"),
+                              QStringLiteral("on-demand")};
 
 // The dock's groups (settingGroups() lists them in order).
 constexpr QLatin1String kLight("Light"), kShadowMap("Shadow map"), kBias("Bias"), kFiltering("Filtering"), kMomentsMap("Moments map"),
@@ -393,6 +395,27 @@ void virtualMapKeys(std::vector<Entry>& e)
                       [](auto& s) -> auto& { return s.shadow.virtualLodBias; }));
 }
 
+// What the shadow pass keeps between frames while casters move (renderer/ShadowCache.h).
+void cacheKeys(std::vector<Entry>& e)
+{
+    e.push_back(choice<ShadowCachePolicy>(
+        {.key = "shadow.cache",
+         .help = "What the shadow pass keeps while casters move: off draws every caster of a view again; static draws the still casters once "
+                 "into a copy of each view and, each frame, starts from the copy and draws only the moving casters over it (the same "
+                 "pixels as off); pages keeps a virtual map's pages but those a moved caster's old or new bounds touch (the same pixels); "
+                 "every-n draws the moving casters every shadow.cache_interval-th frame they move, stale between; on-demand keeps the "
+                 "map until asked (View > Redraw cached shadows), stale. A moving light or a changed setting draws everything",
+         .look = {.label = QStringLiteral("Cache"), .group = kShadowMap}},
+        kCacheNames, [](auto& s) -> auto& { return s.shadow.cache; }));
+    e.push_back(whole({.key = "shadow.cache_interval",
+                       .range = {.lo = 1, .hi = 600},
+                       .help = "With shadow.cache=every-n: the frames of moving casters from one redraw of them to the next; the shadows "
+                               "between are those of the last redraw",
+                       .look = {.label = QStringLiteral("Redraw every"), .unit = QStringLiteral(" frames"), .sliderLow = 1.0, .sliderHigh = 60.0,
+                                .group = kShadowMap}},
+                      [](auto& s) -> auto& { return s.shadow.cacheInterval; }));
+}
+
 // Contact shadows, shading and the camera.
 void viewKeys(std::vector<Entry>& e)
 {
@@ -483,6 +506,7 @@ std::vector<Entry> makeEntries()
     filterKeys(e);
     shadowKeys(e);
     virtualMapKeys(e);
+    cacheKeys(e);
     viewKeys(e);
     e.push_back(choice<RasteriserProfile>({.key = "rasteriser.profile",
                                            .help = "Which rasteriser the renderer's optimisations are chosen for: software (a CPU rasteriser such as llvmpipe, "
@@ -536,6 +560,7 @@ QString toString(BiasSpace value) { return kBiasSpaceNames.value(int(value)); }
 QString toString(FilterMode value) { return kFilterNames.value(int(value)); }
 QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
 QString toString(RasteriserProfile value) { return kRasteriserNames.value(int(value)); }
+QString toString(ShadowCachePolicy value) { return kCacheNames.value(int(value)); }
 QString toString(MomentFormat value) { return kMomentFormatNames.value(int(value)); }
 
 } // namespace shadowlab

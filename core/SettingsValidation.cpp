@@ -97,6 +97,18 @@ void checkVirtualMap(const Settings& s, Issues& issues)
         refuse("filter.early_out", QStringLiteral("penumbra-only filtering reads a min/max mip of one map, not of pages; set filter.early_out=false"));
 }
 
+// A cache policy the map cannot keep: a virtual map keeps pages, a map of views keeps views.
+void checkCache(const Settings& s, Issues& issues)
+{
+    const ShadowCachePolicy cache = s.shadow.cache;
+    if (cache == ShadowCachePolicy::Pages && !s.shadow.virtualMap)
+        issues.error("shadow.cache", QStringLiteral("pages keeps a virtual map's pages, and this map has views, not pages; set shadow.virtual=true, "
+                                                    "or shadow.cache=static to keep the views' still casters"));
+    else if (s.shadow.virtualMap && cache != ShadowCachePolicy::Off && cache != ShadowCachePolicy::Pages)
+        issues.error("shadow.cache", QStringLiteral("a virtual map keeps pages, not views: %1 does not apply to it; set shadow.cache=pages (or off)")
+                                         .arg(toString(cache)));
+}
+
 // A depth-unit bias above half the depth range pushes every receiver through its casters.
 void checkDepthBias(const Settings& s, Issues& issues)
 {
@@ -149,6 +161,7 @@ std::vector<SettingsIssue> validate(const Settings& s)
     checkPlacement(s, issues);
     checkLightRig(s, issues);
     checkVirtualMap(s, issues);
+    checkCache(s, issues);
     if (s.shadow.cascades > 1 && s.light.fit == LightFit::Manual)
         issues.error("shadow.cascades", QStringLiteral("cascades are fitted to the camera's view; set light.fit=scene or shadow.cascades=1"));
     checkDepthBias(s, issues);

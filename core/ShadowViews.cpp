@@ -78,7 +78,8 @@ bool usesLightWarp(const Settings& settings)
 
 bool slicesDepth(const Settings& settings)
 {
-    return settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings) && !usesShadowViews(settings) && !settings.shadow.virtualMap;
+    return settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings) && !usesShadowViews(settings) && !settings.shadow.virtualMap
+        && settings.shadow.cache == ShadowCachePolicy::Off;
 }
 
 bool usesVisibleDepth(const Settings& settings)

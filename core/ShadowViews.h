@@ -45,7 +45,8 @@ bool usesVisibleDepth(const Settings& settings);
 // one plain ortho view, whose depth is linear in distance. A perspective or warped map's depth
 // is not: its steps are spent near the light (or the warp's centre), with none to spare where
 // the scene lies. Cascades and cube faces are tiles drawn apart, and a virtual map's pool clears
-// each page it draws.
+// each page it draws. A cached map (shadow.cache) starts each frame from its copy, which writes
+// every texel as a clear does.
 bool slicesDepth(const Settings& settings);
 
 // The tiles of the shared texture the light's views need: 3 x 2 cube faces, cascades two to a

@@ -1,9 +1,11 @@
 #include "VirtualPages.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_set>
 
 namespace shadowlab {
@@ -94,6 +96,23 @@ LightVolume virtualPageVolume(const VirtualLayout& layout, const VirtualPage& pa
     v.bottom = page.y * size - border;
     v.top = (page.y + 1) * size + border;
     return v;
+}
+
+AcrossLight acrossLight(const VirtualLayout& layout, const Bounds& bounds)
+{
+    AcrossLight area{glm::dvec2(std::numeric_limits<double>::max()), glm::dvec2(std::numeric_limits<double>::lowest())};
+    for (const glm::dvec3& corner : bounds.corners()) {
+        const glm::dvec2 p(layout.view * glm::dvec4(corner, 1.0));
+        area.min = glm::min(area.min, p);
+        area.max = glm::max(area.max, p);
+    }
+    return area;
+}
+
+bool pageOverlaps(const VirtualLayout& layout, const VirtualPage& page, const AcrossLight& area)
+{
+    const LightVolume v = virtualPageVolume(layout, page);
+    return area.min.x <= v.right && area.max.x >= v.left && area.min.y <= v.top && area.max.y >= v.bottom;
 }
 
 void VirtualPageCache::reset(int poolSide)

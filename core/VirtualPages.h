@@ -59,6 +59,16 @@ std::vector<glm::ivec2> virtualWindows(const VirtualLayout& layout, const glm::d
 // The ortho volume one page is drawn with: its square on the grid and the border around it.
 LightVolume virtualPageVolume(const VirtualLayout& layout, const VirtualPage& page);
 
+// Where `bounds` lies across the light, in the layout's view plane (x, y of VirtualLayout::view):
+// the square a caster there can shadow, at any depth.
+struct AcrossLight {
+    glm::dvec2 min{0.0}, max{0.0};
+};
+AcrossLight acrossLight(const VirtualLayout& layout, const Bounds& bounds);
+// Whether a page's drawn square (its border included) overlaps `area`: a caster there is in the
+// page (shadow.cache=pages draws such a page again when the caster moves).
+bool pageOverlaps(const VirtualLayout& layout, const VirtualPage& page, const AcrossLight& area);
+
 // The pool of physical pages and which virtual page each holds, least recently used first out.
 class VirtualPageCache {
 public:

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace shadowlab {
 
@@ -58,6 +59,51 @@ QPointF exitPoint(QPointF inside, QPointF outside, const QRectF& frame)
 
 } // namespace
 
+QColor cacheColour(ViewCause cause)
+{
+    switch (cause) {
+    case ViewCause::Cached:
+        return {70, 190, 100};
+    case ViewCause::Stale:
+        return {235, 170, 40};
+    case ViewCause::Casters:
+        return {225, 60, 70};
+    case ViewCause::Light:
+        return {80, 140, 240};
+    case ViewCause::New:
+        return {215, 215, 225};
+    }
+    return {};
+}
+
+namespace {
+
+// Each view's (or page's) square of the map with why it holds what it holds, under shadow.cache.
+std::vector<DepthMapFacts::CacheTile> cacheTiles(const Renderer& renderer)
+{
+    std::vector<DepthMapFacts::CacheTile> tiles;
+    if (renderer.lastPlan().cache == ShadowCachePolicy::Off || !renderer.lastPlan().shadows)
+        return tiles;
+    const FrameStats& stats = renderer.lastFrame();
+    const ShadowMap& map = renderer.shadowMap();
+    const double columns = std::max(1, map.columns()), rows = std::max(1, map.rows());
+    if (renderer.lastPlan().virtualMap) {
+        for (const auto& [slot, cause] : stats.pageCauses) {
+            const double x = (slot % map.columns()) / columns, y = double(slot / map.columns()) / rows;
+            tiles.push_back({QRectF(x, y, 1.0 / columns, 1.0 / rows), cause});
+        }
+        return tiles;
+    }
+    const std::vector<ShadowView>& views = renderer.shadowViews().set.views;
+    for (std::size_t i = 0; i < stats.viewCauses.size(); ++i) {
+        const double x = i < views.size() ? views[i].column / columns : 0.0, y = i < views.size() ? views[i].row / rows : 0.0;
+        tiles.push_back({QRectF(x, y, 1.0 / columns, 1.0 / rows), stats.viewCauses[i]});
+    }
+    return tiles;
+}
+
+} // namespace
+
 DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthSpan>& span, const std::optional<QPointF>& pointer)
 {
     DepthMapFacts facts;
@@ -83,6 +129,7 @@ DepthMapFacts depthMapFacts(const Renderer& renderer, const std::optional<DepthS
         facts.footprint = cameraFootprint(scene->bounds(), renderer.cameraFrame().viewProjection, facts.light.shadowMatrix);
     // A virtual map's texture is its pool: square, its slots in no light volume's place.
     facts.pool = virtualPoolFacts(renderer, pointer);
+    facts.cacheTiles = cacheTiles(renderer);
     if (facts.pool) {
         facts.footprint.clear();
         facts.aspect = 1.0;
@@ -334,6 +381,36 @@ void drawRedrawNote(const Canvas& c, const DepthMapFacts& facts)
     c.painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter, text);
 }
 
+// shadow.cache: each view or page tinted by why it holds what it holds, and a key with the counts
+// in the bottom left corner.
+void drawCacheTiles(const Canvas& c, const DepthMapPicture& picture, const QRectF& visible, const DepthMapFacts& facts)
+{
+    if (facts.cacheTiles.empty())
+        return;
+    std::map<ViewCause, int> counts;
+    for (const DepthMapFacts::CacheTile& tile : facts.cacheTiles) {
+        QColor fill = cacheColour(tile.cause);
+        const QRectF pixels = QRectF(picture.toPixel(tile.rect.topLeft(), visible), picture.toPixel(tile.rect.bottomRight(), visible)).normalized();
+        QColor edge = fill;
+        fill.setAlpha(tile.cause == ViewCause::Cached ? 45 : 95);
+        c.painter.fillRect(pixels, fill);
+        c.painter.setPen(QPen(edge, 1.5));
+        c.painter.drawRect(pixels.adjusted(1, 1, -1, -1));
+        ++counts[tile.cause];
+    }
+    const int line = c.metrics.height();
+    int y = c.area.bottom() - 4 - line * int(counts.size());
+    for (const auto& [cause, count] : counts) {
+        const QString text = QStringLiteral("%1 %2").arg(count).arg(toString(cause));
+        const QRectF box(c.area.left() + 4 + line, y, c.metrics.horizontalAdvance(text), line);
+        c.painter.fillRect(QRectF(c.area.left() + 2, y, line + box.width() + 4, line), QColor(30, 32, 40, 170));
+        c.painter.fillRect(QRectF(c.area.left() + 5, y + 2, line - 4, line - 4), cacheColour(cause));
+        c.painter.setPen(QColor(230, 230, 235));
+        c.painter.drawText(box, Qt::AlignLeft | Qt::AlignVCenter, text);
+        y += line;
+    }
+}
+
 // What the colour bar shows, longest first.
 QStringList legendTitles(const DepthMapFacts& facts)
 {
@@ -418,6 +495,7 @@ void DepthMapPicture::paint(QPainter& painter, const DepthMapFacts& facts, const
         drawVolume(canvas, QRectF(toPixel({0.0, 1.0}, visible), toPixel({1.0, 0.0}, visible)), facts);
         drawFootprint(canvas, *this, facts, visible);
     }
+    drawCacheTiles(canvas, *this, visible, facts);
     drawOutsideNote(canvas, *this, visible);
     drawRedrawNote(canvas, facts);
     painter.setClipping(false);

@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <QColor>
 #include <QPointF>
 #include <QRect>
 #include <QRectF>
@@ -37,7 +38,17 @@ struct DepthMapFacts {
     // of a light volume and the camera's region.
     std::optional<VirtualPoolFacts> pool;
     QString redrawn;                        // what moved and redrew the map last frame (redrawStatusText()); empty when nothing did
+    // shadow.cache: why each view (or a virtual map's page) holds what it holds, over its square
+    // of the map (map coordinates, y up): Unreal's cache visualisation.
+    struct CacheTile {
+        QRectF rect;
+        ViewCause cause = ViewCause::Cached;
+    };
+    std::vector<CacheTile> cacheTiles;
 };
+
+// The colour of a cause in the depth pane's cache view.
+QColor cacheColour(ViewCause cause);
 
 // The facts of `renderer`'s last frame, with `span` measured by whoever draws, and the map
 // point under the pointer where there is one (a virtual pool's slot is picked by it).

@@ -36,6 +36,24 @@ QString redrawStatusText(const FrameStats& stats)
     return QStringLiteral("%1 of %2 views redrawn: %3").arg(drawn).arg(stats.viewRendered.size()).arg(reason->second);
 }
 
+QString cacheStatusText(const FrameStats& stats)
+{
+    std::map<ViewCause, int> counts;
+    for (ViewCause cause : stats.viewCauses)
+        ++counts[cause];
+    for (const auto& [slot, cause] : stats.pageCauses)
+        ++counts[cause];
+    if (counts.empty())
+        return {};
+    QStringList parts;
+    for (const auto& [cause, count] : counts)
+        parts << QStringLiteral("%1 %2").arg(count).arg(toString(cause));
+    QString text = QStringLiteral("cache: %1").arg(parts.join(QStringLiteral(", ")));
+    if (stats.cacheBytes > 0)
+        text += QStringLiteral(" · copies %1").arg(bytesText(stats.cacheBytes));
+    return text;
+}
+
 QString virtualMapStatusText(const FrameStats& stats)
 {
     const auto tr = [](const char* text) { return QCoreApplication::translate("FrameStats", text); };

@@ -18,6 +18,9 @@ QString virtualMapStatusText(const FrameStats& stats);
 // Why the shadow pass drew this frame, and how many of the views ("2 of 6 views redrawn:
 // casters moved"); empty when it drew nothing. The status bar and the depth pane say it.
 QString redrawStatusText(const FrameStats& stats);
+// shadow.cache: how many views (or a virtual map's pages) are cached, stale or drawn and why,
+// and the copies' memory ("cache: 3 cached, 1 caster moved · copies 16 MiB"); empty without a cache.
+QString cacheStatusText(const FrameStats& stats);
 
 // A count for people: "812", "12.4 k", "4.19 M", "1.07 G"; "n/a" for a count not taken (-1).
 QString countText(std::int64_t count);

@@ -19,7 +19,7 @@ int DepthOnlyDraw::draw(const GpuScene& scene, const Items& items)
     Variant* bound = nullptr;
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
-        if ((items.castersOnly && !item.castsShadow) || (items.light && shadowsNothing(item, *items.light))
+        if ((items.castersOnly && !item.castsShadow) || !drawsItem(items.casters, item) || (items.light && shadowsNothing(item, *items.light))
             || isOutsideFrustum(items.culling, item.bounds, items.clampDepth))
             continue;
         const bool cutout = items.cutouts && item.alphaCutoff > 0.0f;

@@ -27,6 +27,7 @@ public:
         // The light the casters are drawn for: what shadows nothing under it is left out (shadowsNothing).
         const LightFrame* light = nullptr;
         bool cutouts = true;                // cut-outs through their masks; false: whole
+        CasterSet casters = CasterSet::All; // the still or moving items alone (a cache's draws)
     };
     // Draws the items into the bound framebuffer with the raster state as set; leaves texture unit
     // 0 active with nothing bound. Returns the draw calls.

@@ -62,7 +62,7 @@ int DepthPass::render(const GpuScene& scene, const LightFrame& light, const Bias
 }
 
 int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
-                          const std::optional<QRect>& drawn, bool cutouts, int slices)
+                          const std::optional<QRect>& drawn, bool cutouts, int slices, CasterSet casters)
 {
     const bool reversed = light.reversedDepth;   // the Renderer asks only when supportsReversedDepth()
     const DepthSlices::Draw slice = map.beginDraw(tile, slices);
@@ -78,10 +78,23 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
         clearTileOnly(map, reversed, clear);
         map.written().cleared(clear);
     }
+    return drawCasters(scene, light, bias, map, tile, area, slice.slice, cutouts, casters);
+}
+
+int DepthPass::drawOver(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
+                        const std::optional<QRect>& drawn, bool cutouts, CasterSet casters)
+{
+    return drawCasters(scene, light, bias, map, tile, drawn.value_or(tile) & tile, map.depthSlices().current(), cutouts, casters);
+}
+
+int DepthPass::drawCasters(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
+                           const QRect& area, const DepthSlice& slice, bool cutouts, CasterSet casters)
+{
+    const bool reversed = light.reversedDepth;
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     PassState state;
-    state.depthRangeNear = slice.slice.offset;
-    state.depthRangeFar = slice.slice.offset + slice.slice.scale;
+    state.depthRangeNear = slice.offset;
+    state.depthRangeFar = slice.offset + slice.scale;
     state.viewport = tile;
     state.depthTest = true;
     state.depthFunc = reversed ? GL_GREATER : GL_LESS;
@@ -98,7 +111,7 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     // Units are steps of the depth buffer, the same wherever they land; in a slice 1/n of the
     // range a step is n steps of conventional depth, so the units shrink by the slice's scale
     // to push by the same depth (the factor's slope term follows the range on its own).
-    state.polygonOffsetUnits = sign * float(bias.polygonUnits * slice.slice.scale);
+    state.polygonOffsetUnits = sign * float(bias.polygonUnits * slice.scale);
     applyPassState(m_gl, state);
     // Nothing outside the area, whatever the rasteriser's guard band does.
     m_gl->glEnable(GL_SCISSOR_TEST);
@@ -106,7 +119,8 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     map.written().drew(area);
 
     const int draws = m_draw.draw(scene, {.viewProjection = light.depthViewProjection, .culling = light.viewProjection, .clampDepth = clampDepth,
-                                          .castersOnly = true, .light = bias.skipFloors ? &light : nullptr, .cutouts = cutouts});
+                                          .castersOnly = true, .light = bias.skipFloors ? &light : nullptr, .cutouts = cutouts,
+                                          .casters = casters});
     m_gl->glDisable(GL_SCISSOR_TEST);
     // GL's defaults again (no clamp, no offset, -1..1 depth) for whatever draws next here.
     applyPassState(m_gl, PassState{});

@@ -35,8 +35,13 @@ public:
     // The same for one tile of a map of several views (`tile` in texels), where the casters
     // cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): clears what earlier draws
     // wrote there and `drawn`, and draws within `drawn` only.
+    // `casters`: only the still or the moving ones (a cache's draws, renderer/ShadowCache.h).
     int renderTile(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
-                   const std::optional<QRect>& drawn, bool cutouts = true, int slices = 1);
+                   const std::optional<QRect>& drawn, bool cutouts = true, int slices = 1, CasterSet casters = CasterSet::All);
+    // Draws `casters` over what the tile holds, clearing nothing, in the map's current slice:
+    // the moving casters over a cached copy of the still ones.
+    int drawOver(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile,
+                 const std::optional<QRect>& drawn, bool cutouts, CasterSet casters);
     void clearTile(ShadowMap& map, bool reversedDepth, const QRect& tile);
 
     // Texels cleared since the last call.
@@ -46,6 +51,8 @@ public:
     bool hasCutoutVariant() const { return m_draw.hasCutoutVariant(); }
 
 private:
+    int drawCasters(const GpuScene& scene, const LightFrame& light, const BiasSettings& bias, ShadowMap& map, const QRect& tile, const QRect& area,
+                    const DepthSlice& slice, bool cutouts, CasterSet casters);
     void clearTileOnly(const ShadowMap& map, bool reversedDepth, const QRect& tile);
 
     GlFunctions* m_gl;

@@ -1,6 +1,8 @@
 #include "ShadowStorage.h"
 
+#include "CachedCopy.h"
 #include "DepthPass.h"
+#include "ShadowCache.h"
 #include "ShadowMap.h"
 
 namespace shadowlab {
@@ -11,9 +13,15 @@ namespace {
 // acne (front-face culling, polygon offset).
 class DepthStorage final : public ShadowStorage {
 public:
-    DepthStorage(ShadowMap& map, DepthPass& pass) : m_map(map), m_pass(pass) {}
+    DepthStorage(GlFunctions* gl, ShadowMap& map, DepthPass& pass) : m_map(map), m_pass(pass), m_copy(gl) {}
 
-    void ensure(const FramePlan&) override {}
+    void ensure(const FramePlan& plan) override
+    {
+        if (keepsViews(plan.cache))
+            m_copy.ensure(QSize(m_map.width(), m_map.height()), m_map.texture(), 0);
+        else
+            m_copy.release();
+    }
 
     ShadowStorageKey key(const FramePlan& plan, int sceneGeneration) const override
     {
@@ -43,7 +51,31 @@ public:
         return m_pass.renderTile(scene, light, plan.settings.bias, m_map, tile, inTile(texels, tile), plan.settings.shadow.cutouts, plan.slices);
     }
 
-    Counts takeCounts() override { return {.clearedTexels = m_pass.takeClearedTexels()}; }
+    CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels, double*,
+                          CacheStep step) override
+    {
+        const BiasSettings& bias = plan.settings.bias;
+        const bool cutouts = plan.settings.shadow.cutouts;
+        CachedDraw drawn;
+        if (step == CacheStep::Refresh) {
+            drawn.draws = m_pass.renderTile(scene, light, bias, m_map, tile, inTile(texels, tile), cutouts, 1, CasterSet::Still);
+            m_copy.save(m_map.framebuffer(), tile);
+        } else {
+            m_copy.restore(m_map.framebuffer(), tile);
+            m_map.written().drew(tile);
+        }
+        m_copiedTexels += qint64(tile.width()) * tile.height();
+        drawn.movingDraws = m_pass.drawOver(scene, light, bias, m_map, tile, inTile(texels, tile), cutouts, CasterSet::Moving);
+        drawn.draws += drawn.movingDraws;
+        return drawn;
+    }
+
+    qint64 cacheBytes() const override { return m_copy.bytes(); }
+
+    Counts takeCounts() override
+    {
+        return {.clearedTexels = m_pass.takeClearedTexels(), .copiedTexels = std::exchange(m_copiedTexels, 0)};
+    }
 
     qint64 bytes() const override
     {
@@ -54,13 +86,15 @@ public:
 private:
     ShadowMap& m_map;
     DepthPass& m_pass;
+    CachedCopy m_copy;
+    qint64 m_copiedTexels = 0;
 };
 
 } // namespace
 
-std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass)
+std::unique_ptr<ShadowStorage> makeDepthStorage(GlFunctions* gl, ShadowMap& map, DepthPass& pass)
 {
-    return std::make_unique<DepthStorage>(map, pass);
+    return std::make_unique<DepthStorage>(gl, map, pass);
 }
 
 } // namespace shadowlab

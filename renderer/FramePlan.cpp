@@ -24,6 +24,7 @@ FramePlan planFrame(const Settings& settings, bool softwareDriver, bool reversed
     plan.contactShadows = plan.shadows && settings.contact.enabled;
     plan.visibleDepth = usesVisibleDepth(settings);
     plan.tapsPerLookup = plan.shadows ? plan.technique->taps(settings.filter) : 0;
+    plan.cache = plan.shadows ? settings.shadow.cache : ShadowCachePolicy::Off;
     return plan;
 }
 

@@ -1,15 +1,30 @@
 #pragma once
 
+#include <QString>
+
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
+
+// Why a view (or a virtual map's page) holds what it holds this frame: the depth pane's
+// colours and the status bar's counts, as Unreal's cache visualisation shows its pages.
+enum class ViewCause {
+    Cached,         // kept from an earlier frame, and right
+    Stale,          // kept although a moving caster left it out of date (every-n, on-demand)
+    Casters,        // drawn again because a moving caster touched it
+    Light,          // drawn again because its volume changed (the light moved, or the fit did)
+    New,            // drawn because what every view shares changed (the scene, a setting) or first
+};
+QString toString(ViewCause cause);
 
 // What a frame of a virtual shadow map did, for FrameStats and the window.
 struct VirtualMapStats {
     int requested = 0;          // distinct pages the visible pixels asked for
     int resident = 0;           // pages held in the pool after the frame
     int drawn = 0;              // pages drawn this frame (new, or invalid)
+    int invalidated = 0;        // ... of which resident, drawn again because a moving caster touched them (shadow.cache=pages)
     int coarsened = 0;          // requests served a coarser level than asked, the pool being too small
     int levelsCoarsened = 0;    // ... by at most this many levels
     int overflow = 0;           // coarsest-level pages that did not fit at all
@@ -36,6 +51,7 @@ struct FrameCounts {
     std::int64_t clearedTexels = 0;     // shadow-map texels cleared (or filled with the far plane's moments)
     std::int64_t blurTexels = 0;        // texels the moments blur wrote, both axes
     std::int64_t blurBytes = 0;         // bytes it read and wrote
+    std::int64_t copiedTexels = 0;      // texels shadow.cache copied to and from its copies
     std::int64_t mapBytes = 0;          // the shadow storage's memory (page pool and table for a virtual map)
     int tapsPerLookup = 0;              // the technique's texture reads per lookup, at most (ShadowTechnique::taps)
     std::int64_t lookupFragments = -1;  // lit fragments that looked the shadow up (counted frames)
@@ -87,6 +103,11 @@ struct FrameStats {
     std::vector<bool> viewRendered;
     std::vector<int> viewDraws;
     std::vector<double> viewWallMs;
+    // Why each view holds what it holds (ShadowCache.h): the depth pane's colours; for a
+    // virtual map, per slot of its pool. And the memory of the copies shadow.cache keeps.
+    std::vector<ViewCause> viewCauses;
+    std::vector<std::pair<int, ViewCause>> pageCauses;     // shadow.cache=pages: per resident slot
+    std::int64_t cacheBytes = 0;
     // What transfers to any GPU (see FrameCounts); shadow.* of a frame that drew no shadow
     // pass are zero.
     FrameCounts counts;

@@ -53,6 +53,7 @@ public:
     // The anisotropy the sampler uses: the setting capped by the driver's maximum (1 without
     // the extension).
     GLuint texture() const { return m_texture.id(); }
+    GLuint depthTexture() const { return m_depth.id(); }
     GLuint framebuffer() const { return m_framebuffer.id(); }
     // The blur's intermediate target (first axis), and its framebuffer.
     GLuint scratchTexture() const { return m_scratch.id(); }

@@ -70,6 +70,8 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     applyPassState(m_gl, fill);
     p->program.bind();
     setLightUniforms(*p, light, settings);
+    if (clear.isEmpty())
+        return *p;      // drawn over what is there
     // The far plane's moments, computed by the technique's own encoding: drawn over what is
     // cleared, or, over a whole map, cleared to the value that drawing gave last time (a
     // rasteriser clears a whole surface fastest: docs/performance.md).
@@ -118,7 +120,7 @@ void MomentsPass::clear(const LightFrame& light, const Settings& settings, Momen
 }
 
 int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile,
-                        const std::optional<QRect>& drawn)
+                        const std::optional<QRect>& drawn, CasterSet casters, bool clear)
 {
     // Every face: the moments must hold the nearest surface, receivers included, so a lit
     // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
@@ -130,7 +132,7 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     // A map of one view is cleared whole (the fast clear), a tile of several only where it was
     // or will be written.
     const bool oneView = whole == QRect(0, 0, map.width(), map.height());
-    Program& plain = begin(light, settings, map, oneView ? whole : map.written().toClear(whole, area));
+    Program& plain = begin(light, settings, map, !clear ? QRect() : oneView ? whole : map.written().toClear(whole, area));
     PassState state;
     state.viewport = whole;
     state.depthTest = true;
@@ -146,7 +148,7 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     m_gl->glActiveTexture(GL_TEXTURE0);
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
-        if (!item.castsShadow || isOutsideFrustum(light.viewProjection, item.bounds, true))
+        if (!item.castsShadow || !drawsItem(casters, item) || isOutsideFrustum(light.viewProjection, item.bounds, true))
             continue;
         const bool cutout = settings.shadow.cutouts && item.alphaCutoff > 0.0f;
         if (cutout && !cutoutProgram) {

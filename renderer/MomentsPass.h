@@ -30,9 +30,10 @@ public:
     // Into `tile` of the map (texels; empty: the whole map), for one view of several, where the
     // casters cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): what earlier draws
     // wrote there and `drawn` get the far plane's moments first, and the casters are drawn
-    // within `drawn` only.
+    // within `drawn` only. `casters`: only the still or the moving ones; `clear` false draws over
+    // what the tile holds (the moving casters over a cache's copy, renderer/ShadowCache.h).
     int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect(),
-               const std::optional<QRect>& drawn = std::nullopt);
+               const std::optional<QRect>& drawn = std::nullopt, CasterSet casters = CasterSet::All, bool clear = true);
     // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
     void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
 

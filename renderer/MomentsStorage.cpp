@@ -1,9 +1,11 @@
 #include "ShadowStorage.h"
 
+#include "CachedCopy.h"
 #include "MomentMath.h"
 #include "MomentsBlurPass.h"
 #include "MomentsMap.h"
 #include "MomentsPass.h"
+#include "ShadowCache.h"
 #include "ShadowTechnique.h"
 
 #include <QElapsedTimer>
@@ -19,7 +21,7 @@ namespace {
 // map's cures for acne, which moments do not need.
 class MomentsStorage final : public ShadowStorage {
 public:
-    explicit MomentsStorage(GlFunctions* gl) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl) {}
+    explicit MomentsStorage(GlFunctions* gl) : m_gl(gl), m_map(gl), m_pass(gl), m_blur(gl), m_copy(gl) {}
 
     void ensure(const FramePlan& plan) override
     {
@@ -27,6 +29,12 @@ public:
         m_channels = plan.technique->momentChannels;
         m_map.ensureTiles(plan.tileSize, plan.grid.columns, plan.grid.rows, settings.moments.format, storedChannels(plan), settings.moments.mipmaps,
                           settings.moments.anisotropy);
+        // The copy holds the moments before the blur, with the pass's depth, so the moving
+        // casters are drawn over it as over the still ones, and the blur runs after both.
+        if (keepsViews(plan.cache))
+            m_copy.ensure(QSize(m_map.width(), m_map.height()), m_map.depthTexture(), m_map.texture());
+        else
+            m_copy.release();
     }
 
     ShadowStorageKey key(const FramePlan& plan, int sceneGeneration) const override
@@ -58,8 +66,38 @@ public:
     int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
              double* blurWallMs) override
     {
+        const int draws = m_pass.render(scene, light, plan.settings, m_map, tile, inTile(texels, tile));
+        prefilter(plan, tile, texels, blurWallMs);
+        return draws;
+    }
+
+    CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
+                          double* blurWallMs, CacheStep step) override
+    {
         const Settings& settings = plan.settings;
-        const int draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile));
+        CachedDraw drawn;
+        if (step == CacheStep::Refresh) {
+            drawn.draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile), CasterSet::Still);
+            m_copy.save(m_map.framebuffer(), tile);
+        } else {
+            m_copy.restore(m_map.framebuffer(), tile);
+            m_map.written().drew(tile);
+        }
+        m_counts.copiedTexels += qint64(tile.width()) * tile.height();
+        drawn.movingDraws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile), CasterSet::Moving, false);
+        drawn.draws += drawn.movingDraws;
+        // The whole area blurred again: the moving casters' moments spread by the blur's radius,
+        // and the still casters' must be read unblurred to blur the texels where both meet.
+        prefilter(plan, tile, texels, blurWallMs);
+        return drawn;
+    }
+
+    qint64 cacheBytes() const override { return m_copy.bytes(); }
+
+private:
+    void prefilter(const FramePlan& plan, const QRect& tile, const CasterTexels* texels, double* blurWallMs)
+    {
+        const Settings& settings = plan.settings;
         // The view's moments blurred within its tile, and the mips of a map of one view (those
         // of several would mix the views, which settings refuse).
         QElapsedTimer blur;
@@ -74,9 +112,9 @@ public:
             m_gl->glFinish();
             *blurWallMs += double(blur.nsecsElapsed()) * 1e-6;
         }
-        return draws;
     }
 
+public:
     const MomentsMap* momentsMap() const override { return &m_map; }
 
     Counts takeCounts() override
@@ -111,6 +149,7 @@ private:
     MomentsMap m_map;
     MomentsPass m_pass;
     MomentsBlurPass m_blur;
+    CachedCopy m_copy;
     int m_channels = 4;         // the technique's, which the counts use
 };
 

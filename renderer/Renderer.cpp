@@ -7,13 +7,14 @@
 #include "SettingsError.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <QElapsedTimer>
 
 namespace shadowlab {
 
 Renderer::Renderer(GlFunctions* gl)
-    : m_gl(gl), m_shadowMap(gl), m_depthPass(gl), m_depthStorage(makeDepthStorage(m_shadowMap, m_depthPass)), m_litPass(gl),
+    : m_gl(gl), m_shadowMap(gl), m_depthPass(gl), m_depthStorage(makeDepthStorage(gl, m_shadowMap, m_depthPass)), m_litPass(gl),
       m_shadowTimer(gl), m_litTimer(gl), m_shadowPrimitives(gl, GL_PRIMITIVES_GENERATED), m_shadowSamples(gl, GL_SAMPLES_PASSED),
       m_litPrimitives(gl, GL_PRIMITIVES_GENERATED)
 {
@@ -82,9 +83,25 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     const bool newScene = m_sceneGeneration != sceneBefore;
     // Moving objects to where they are at the frame's time: everything that depends on where the
     // casters are is due again, as for a new scene (its geometry stays uploaded).
+    // shadow.cache=pages draws again the pages where a moving caster was and where it is.
+    m_movedBounds.clear();
+    const auto movingBounds = [&] {
+        for (const DrawItem& item : m_scene->drawItems()) {
+            if (item.moves && item.castsShadow)
+                m_movedBounds.push_back(item.bounds);
+        }
+    };
+    if (plan.cache == ShadowCachePolicy::Pages)
+        movingBounds();
     const bool casterMoved = m_scene->pose(settings.animation.time);
     if (casterMoved)
         ++m_sceneGeneration;
+    if (plan.cache == ShadowCachePolicy::Pages) {
+        if (casterMoved)
+            movingBounds();
+        else
+            m_movedBounds.clear();
+    }
 
     // Update: the cameras, and the fit when one of its inputs changed (the clock through the
     // scene's generation: a still scene's time changes nothing).
@@ -113,7 +130,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         if (plan.virtualMap)
             renderPages(plan, storage, size, timing, stats);
         else if (plan.shadows)
-            renderViews(plan, storage, timing, stats);
+            renderViews(plan, storage, casterMoved, timing, stats);
     }
     countShadowPass(plan, storage, stats);
     buildDepthRange(plan, timing, stats);
@@ -178,6 +195,7 @@ void Renderer::ensureScene(const Settings& settings)
         m_objectSwitches = settings.objects;
         m_sceneChanged = false;
         ++m_sceneGeneration;
+        ++m_shapeGeneration;
     }
 }
 
@@ -234,20 +252,45 @@ ShadowStorage& Renderer::storageFor(const FramePlan& plan)
     return *m_depthStorage;
 }
 
-bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, std::size_t count)
+int Renderer::keyGeneration(const FramePlan& plan) const
+{
+    // A cache keeps what does not move through a caster's move; without one, it draws again.
+    return plan.cache == ShadowCachePolicy::Off ? m_sceneGeneration : m_shapeGeneration;
+}
+
+bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, bool castersMoved, ViewCause& cause)
 {
     // What all views share: when it changes, every view is drawn or cleared again.
-    const ShadowStorageKey shared = storage.key(plan, m_sceneGeneration);
-    if (m_shadowKey == shared && m_viewVolumes.size() == count)
+    const ShadowStorageKey shared = storage.key(plan, keyGeneration(plan));
+    if (m_shadowKey == shared)
         return false;
     // New settings start a new cycle of slices (map.slices): what a setting draws does not
     // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
     // and so does invalidateShadowMap(), which stands for one.
     if (m_shadowKey && *m_shadowKey != shared)
         m_shadowMap.depthSlices().restart();
-    m_viewVolumes.assign(count, std::nullopt);
+    // Without a cache, a caster's move alone draws every view: for it.
+    std::optional<ShadowStorageKey> posed = m_shadowKey;
+    if (posed)
+        posed->sceneGeneration = shared.sceneGeneration;
+    cause = castersMoved && posed == shared ? ViewCause::Casters : ViewCause::New;
+    m_viewCache.reset();
     m_shadowKey = shared;
     return true;
+}
+
+std::vector<bool> Renderer::movingInViews() const
+{
+    // Which views a moving caster lies in now (where it was, the cache remembers).
+    const std::vector<LightFrame>& frames = m_update.views().frames;
+    std::vector<bool> inside(frames.size(), false);
+    for (const DrawItem& item : m_scene->drawItems()) {
+        if (!item.moves || !item.castsShadow)
+            continue;
+        for (std::size_t i = 0; i < frames.size(); ++i)
+            inside[i] = inside[i] || !isOutsideFrustum(frames[i].viewProjection, item.bounds, true);
+    }
+    return inside;
 }
 
 std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
@@ -275,18 +318,28 @@ double Renderer::casterCoverage(std::size_t count) const
     return std::min(coverage, 1.0);
 }
 
-void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats)
+void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool castersMoved, TimingMode timing, FrameStats& stats)
 {
     const std::size_t count = m_update.views().set.views.size();
-    const bool fresh = beginViews(plan, storage, count);
-    const std::vector<std::optional<LightVolume>> wanted = wantedVolumes();
-    std::vector<bool> due(count);
-    bool draws = false;
-    for (std::size_t i = 0; i < count; ++i) {
-        due[i] = fresh || m_viewVolumes[i] != wanted[i];
-        draws = draws || (due[i] && wanted[i]);
+    ShadowCache::Frame frame;
+    frame.policy = plan.cache;
+    frame.interval = plan.settings.shadow.cacheInterval;
+    frame.fresh = beginViews(plan, storage, castersMoved, frame.freshCause);
+    frame.castersMoved = castersMoved;
+    frame.requested = std::exchange(m_redrawRequested, false);
+    frame.wanted = wantedVolumes();
+    if (castersMoved && keepsViews(plan.cache))
+        frame.movingInside = movingInViews();
+    const std::vector<ShadowCache::Decision> decisions = m_viewCache.decide(frame);
+    bool any = false, draws = false;
+    for (const ShadowCache::Decision& d : decisions) {
+        if (plan.cache != ShadowCachePolicy::Off)
+            stats.viewCauses.push_back(d.cause);
+        any = any || d.work != ShadowCache::Work::Keep;
+        draws = draws || (d.work != ShadowCache::Work::Keep && d.work != ShadowCache::Work::Clear);
     }
-    if (std::find(due.begin(), due.end(), true) == due.end())
+    stats.cacheBytes = storage.cacheBytes();
+    if (!any)
         return;
     // Per view only for a light of several; one view's figures are the shadow pass's.
     const bool perView = count > 1;
@@ -303,11 +356,11 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, Timing
     QElapsedTimer total;
     total.start();
     // A fresh map reads lit everywhere first, tiles no view uses included (3 cascades in 2 x 2).
-    if (fresh && count < std::size_t(plan.grid.columns * plan.grid.rows))
+    if (frame.fresh && count < std::size_t(plan.grid.columns * plan.grid.rows))
         storage.clear(m_update.views().frames.front(), plan);
     for (std::size_t i = 0; i < count; ++i) {
-        if (due[i])
-            drawView(i, wanted[i], plan, storage, timing, stats);
+        if (decisions[i].work != ShadowCache::Work::Keep)
+            drawView(i, decisions[i], frame.wanted[i], plan, storage, timing, stats);
     }
     ++m_mapGeneration;
     if (!draws)
@@ -323,32 +376,43 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, Timing
     }
 }
 
-void Renderer::drawView(std::size_t i, const std::optional<LightVolume>& wanted, const FramePlan& plan, ShadowStorage& storage, TimingMode timing,
-                        FrameStats& stats)
+void Renderer::drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const FramePlan& plan,
+                        ShadowStorage& storage, TimingMode timing, FrameStats& stats)
 {
     const ShadowView& view = m_update.views().set.views[i];
     const int size = m_shadowMap.size();
     const QRect tile(view.column * size, view.row * size, size, size);
     const std::vector<CasterTexels>& texels = m_update.casterTexels();
+    const CasterTexels* casters = i < texels.size() ? &texels[i] : nullptr;
+    const LightFrame& light = m_update.views().frames[i];
+    double* blurMs = timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr;
     const bool perView = m_update.views().set.views.size() > 1;
     QElapsedTimer wall;
     wall.start();
     int draws = 0;
-    if (wanted)
-        draws = storage.draw(*m_scene, m_update.views().frames[i], plan, tile, i < texels.size() ? &texels[i] : nullptr,
-                             timing == TimingMode::Finish ? &stats.blurPassWallMs : nullptr);
-    else
-        storage.clear(m_update.views().frames[i], plan, tile);
+    bool holdsMoving = false;
+    using Work = ShadowCache::Work;
+    if (decision.work == Work::Draw) {
+        draws = storage.draw(*m_scene, light, plan, tile, casters, blurMs);
+    } else if (decision.work == Work::Refresh || decision.work == Work::Restore) {
+        const ShadowStorage::CachedDraw drawn = storage.drawCached(*m_scene, light, plan, tile, casters, blurMs,
+                                                                   decision.work == Work::Refresh ? ShadowStorage::CacheStep::Refresh
+                                                                                                  : ShadowStorage::CacheStep::Restore);
+        draws = drawn.draws;
+        holdsMoving = drawn.movingDraws > 0;
+    } else {
+        storage.clear(light, plan, tile);
+    }
     if (timing == TimingMode::Finish && perView) {
         m_gl->glFinish();
         stats.viewWallMs[i] = double(wall.nsecsElapsed()) * 1e-6;
     }
     if (perView) {
         // A view without casters is cleared where it was written, not drawn.
-        stats.viewRendered[i] = wanted.has_value();
+        stats.viewRendered[i] = decision.work != Work::Clear;
         stats.viewDraws[i] = draws;
     }
-    m_viewVolumes[i] = wanted;
+    m_viewCache.done(i, decision, wanted, holdsMoving);
     stats.shadowDraws += draws;
 }
 
@@ -362,10 +426,10 @@ void Renderer::setVirtualAsyncRequests(bool async)
 void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize size, TimingMode timing, FrameStats& stats)
 {
     const Settings& settings = plan.settings;
-    const ShadowStorageKey shared = storage.key(plan, m_sceneGeneration);
+    const ShadowStorageKey shared = storage.key(plan, keyGeneration(plan));
     const bool invalidate = m_shadowKey != shared;
     m_shadowKey = shared;
-    m_viewVolumes.clear();
+    m_viewCache.reset();
     GLint previousDraw = 0, previousRead = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousDraw);
     m_gl->glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
@@ -378,6 +442,10 @@ void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize 
     int draws = 0;
     stats.virtualMap = true;
     stats.virtualPages = m_virtual->update(*m_scene, plan, m_camera, size, invalidate, storage, frameOf, &draws);
+    if (plan.cache == ShadowCachePolicy::Pages) {
+        stats.virtualPages.invalidated = m_virtual->redrawTouched(*m_scene, plan, m_movedBounds, storage, frameOf, &draws, stats.pageCauses);
+        stats.virtualPages.drawn += stats.virtualPages.invalidated;
+    }
     m_shadowTimer.end();
     m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
@@ -422,6 +490,7 @@ void Renderer::countShadowPass(const FramePlan& plan, ShadowStorage& storage, Fr
     counts.clearedTexels = done.clearedTexels;
     counts.blurTexels = done.blurTexels;
     counts.blurBytes = done.blurBytes;
+    counts.copiedTexels = done.copiedTexels;
     counts.mapBytes = !plan.shadows ? 0
         : plan.virtualMap && m_virtual ? std::int64_t(m_shadowMap.width()) * m_shadowMap.height() * 4 + m_virtual->pageTableBytes()
                                        : storage.bytes();

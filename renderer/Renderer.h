@@ -18,6 +18,7 @@
 #include "MomentsMap.h"
 #include "RenderTarget.h"
 #include "Settings.h"
+#include "ShadowCache.h"
 #include "ShadowMap.h"
 #include "ShadowReach.h"
 #include "ShadowStorage.h"
@@ -120,6 +121,8 @@ public:
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
+    // shadow.cache=on-demand: the next frame draws the moving casters where its views are stale.
+    void requestShadowRedraw() { m_redrawRequested = true; }
 
     // Whether frames count what transfers to any GPU (FrameCounts' query counts: primitives,
     // samples, lookup fragments). Off by default: the queries cost a software rasteriser a wait,
@@ -159,16 +162,22 @@ private:
     void countShadowPass(const FramePlan& plan, ShadowStorage& storage, FrameStats& stats);
     // The shadow pass: the views (one, a cascade set or six faces, each a tile of the map)
     // whose volume changed, or every view when what they share did.
-    void renderViews(const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats);
-    // Whether what all `count` views share changed since they were drawn: then every one is due.
-    bool beginViews(const FramePlan& plan, const ShadowStorage& storage, std::size_t count);
+    // Under shadow.cache, a view a moving caster touched is drawn from its copy of the still
+    // casters (ShadowCache).
+    void renderViews(const FramePlan& plan, ShadowStorage& storage, bool castersMoved, TimingMode timing, FrameStats& stats);
+    // Whether what all views share changed since they were drawn: then every one is due, for `cause`.
+    bool beginViews(const FramePlan& plan, const ShadowStorage& storage, bool castersMoved, ViewCause& cause);
+    // The scene generation the stored views depend on: with a cache, not on where casters are.
+    int keyGeneration(const FramePlan& plan) const;
+    // Per view, whether a moving caster lies in it now.
+    std::vector<bool> movingInViews() const;
     // Each view's volume as it should be drawn: nullopt where it has nothing to shadow.
     std::vector<std::optional<LightVolume>> wantedVolumes() const;
     // The share of a map of `count` views its casters may cover (DepthSlices::setCasterCoverage).
     double casterCoverage(std::size_t count) const;
     // View `i` drawn at `wanted`, or its tile cleared where it has nothing to shadow.
-    void drawView(std::size_t i, const std::optional<LightVolume>& wanted, const FramePlan& plan, ShadowStorage& storage, TimingMode timing,
-                  FrameStats& stats);
+    void drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const FramePlan& plan,
+                  ShadowStorage& storage, TimingMode timing, FrameStats& stats);
     // shadow.virtual's shadow pass: the pages the frame's pixels need, drawn where new.
     void renderPages(const FramePlan& plan, ShadowStorage& storage, QSize size, TimingMode timing, FrameStats& stats);
     // The storage of the plan's technique (built on first use).
@@ -205,9 +214,11 @@ private:
     CountQuery m_shadowSamples;
     CountQuery m_litPrimitives;
     std::optional<ShadowStorageKey> m_shadowKey;
-    // Each view's volume as last drawn (nullopt: cleared), redrawn only when it changes;
-    // m_shadowKey holds what all views share.
-    std::vector<std::optional<LightVolume>> m_viewVolumes;
+    // Each view's volume as last drawn, redrawn only when it changes, and what shadow.cache
+    // keeps of it; m_shadowKey holds what all views share.
+    ShadowCache m_viewCache;
+    bool m_redrawRequested = false;     // requestShadowRedraw()
+    std::vector<Bounds> m_movedBounds;  // shadow.cache=pages: where moving casters were and are, when they moved
     FrameUpdate m_update;           // the camera, the fitted views and their reach
     std::optional<Scene> m_customScene;
     std::optional<std::pair<QString, std::shared_ptr<const Scene>>> m_sceneFile;     // setSceneFile's path and scene
@@ -215,7 +226,8 @@ private:
     std::optional<CameraSettings> m_fitCamera;
     bool m_sceneChanged = true;     // rebuild m_scene on the next frame
     ObjectSwitches m_objectSwitches;    // applied to m_scene
-    int m_sceneGeneration = 0;
+    int m_sceneGeneration = 0;      // counts new scenes and moves of their casters
+    int m_shapeGeneration = 0;      // counts new scenes
     bool m_warnedNoReversedDepth = false;
     LightFrame m_light;
     CameraFrame m_camera;

@@ -131,6 +131,7 @@ void SceneLayout::layOutItems(const Scene& scene)
             m_itemOf[i] = m_items.size();
             m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
             m_items.back().floor = m_objectFloors[i];
+            m_items.back().moves = moves(i);
             continue;
         }
         const glm::dvec3 size = glm::max(m_bounds.max - m_bounds.min, glm::dvec3(1e-30));

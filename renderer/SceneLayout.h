@@ -28,6 +28,7 @@ struct DrawItem {
     bool castsShadow = true;
     bool receivesShadow = true;
     bool batch = false;
+    bool moves = false;                 // a moving object's (drawn alone): a dynamic caster to a cache
     // A cut-out's texture alpha below which it is not there (textureAlphaCutoff); 0: opaque.
     // Items that honour a mask draw with their pass's ALPHA_CUTOUT variant (shaders/cutout.glsl).
     float alphaCutoff = 0.0f;
@@ -38,6 +39,14 @@ struct DrawItem {
     // of a wide filter's taps on it), whatever the bias.
     std::optional<WorldPlane> floor;
 };
+
+// Which casters a shadow pass draws: all, or for a cache (renderer/ShadowCache.h) the still
+// ones into its copy and the moving ones over it.
+enum class CasterSet { All, Still, Moving };
+inline bool drawsItem(CasterSet set, const DrawItem& item)
+{
+    return set == CasterSet::All || (set == CasterSet::Moving) == item.moves;
+}
 
 // Whether `item` can shadow nothing under `light`: a floor with the light on its front side.
 bool shadowsNothing(const DrawItem& item, const LightFrame& light);

@@ -28,6 +28,7 @@ struct ShadowStorageKey {
     int columns = 1;
     int rows = 1;
     bool cutouts = true;            // shadow.cutouts: cut-out casters drawn through their mask
+    bool keepsCopy = false;         // shadow.cache keeps a copy of each view's still casters
     // The depth pass's raster state against acne (depth storage only).
     bool cullFront = false;
     bool skipFloors = false;        // bias.skip_floors: floors the light is above left out
@@ -64,6 +65,7 @@ inline ShadowStorageKey commonStorageKey(const FramePlan& plan, int sceneGenerat
     key.columns = plan.grid.columns;
     key.rows = plan.grid.rows;
     key.cutouts = plan.settings.shadow.cutouts;
+    key.keepsCopy = plan.cache == ShadowCachePolicy::Static || plan.cache == ShadowCachePolicy::EveryN || plan.cache == ShadowCachePolicy::OnDemand;
     return key;
 }
 
@@ -92,11 +94,27 @@ public:
     // when given, gets the wall time of a prefilter pass added (glFinish around it).
     virtual int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
                      double* blurWallMs) = 0;
+    // shadow.cache's two draws of a view (renderer/ShadowCache.h), over a copy of the still
+    // casters that the storage keeps beside its map: Refresh clears the tile, draws the still
+    // casters, keeps a copy of the tile, then draws the moving casters over it; Restore copies
+    // the tile back and draws the moving casters over it. Either prefilters after, so the view
+    // holds what draw() would have drawn.
+    enum class CacheStep { Refresh, Restore };
+    struct CachedDraw {
+        int draws = 0;              // casters drawn, the moving ones included
+        int movingDraws = 0;        // of which moving
+    };
+    virtual CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
+                                  double* blurWallMs, CacheStep step) = 0;
+    // Bytes of the copy kept for shadow.cache (0 without one).
+    virtual qint64 cacheBytes() const = 0;
+
     // What its clears and prefilter did since the last call (and starts counting again).
     struct Counts {
         qint64 clearedTexels = 0;   // texels cleared (depth) or filled with the far plane's moments
         qint64 blurTexels = 0;      // texels the blur wrote, both axes
         qint64 blurBytes = 0;       // bytes the blur read and wrote
+        qint64 copiedTexels = 0;    // texels shadow.cache copied to and from its copy
     };
     virtual Counts takeCounts() = 0;
     // Bytes of the textures a lookup or a pass of this storage uses.
@@ -107,7 +125,7 @@ public:
 
 // The storage of each kind, built on first use: depth draws into the renderer's `map` with its
 // `pass`; moments own their map and passes.
-std::unique_ptr<ShadowStorage> makeDepthStorage(ShadowMap& map, DepthPass& pass);
+std::unique_ptr<ShadowStorage> makeDepthStorage(GlFunctions* gl, ShadowMap& map, DepthPass& pass);
 std::unique_ptr<ShadowStorage> makeMomentsStorage(GlFunctions* gl);
 
 } // namespace shadowlab

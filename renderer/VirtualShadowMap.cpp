@@ -341,6 +341,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     if (!m_layout)
         throw RenderError(QStringLiteral("the virtual shadow map has no layout: layout() comes first"));
     VirtualMapStats stats;
+    m_drawnSlots.clear();
     m_depthMatrix = frameOf(m_layout->coarsest).depthShadowMatrix;
     // A new layout (the light turned, the scene changed) leaves no page where it was.
     if (invalidate || m_poolSide != settings.shadow.virtualPool || m_cacheLayoutGeneration != m_layoutGeneration)
@@ -387,6 +388,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     stats.poolPages = m_cache.capacity();
     int draws = 0;
     for (const auto& [page, slot] : placed.draw) {
+        m_drawnSlots.push_back(slot);
         const QRect tile((slot % m_poolSide) * kVirtualSlotTexels, (slot / m_poolSide) * kVirtualSlotTexels, kVirtualSlotTexels, kVirtualSlotTexels);
         draws += storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), plan, tile, nullptr, nullptr);
     }
@@ -405,6 +407,36 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     stats.requestsPending = m_fence != nullptr;
     m_lastStats = stats;
     return stats;
+}
+
+int VirtualShadowMap::redrawTouched(const GpuScene& scene, const FramePlan& plan, const std::vector<Bounds>& moved, ShadowStorage& storage,
+                                    const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws,
+                                    std::vector<std::pair<int, ViewCause>>& causes)
+{
+    causes.clear();
+    if (!m_layout)
+        return 0;
+    std::vector<AcrossLight> areas;
+    areas.reserve(moved.size());
+    for (const Bounds& bounds : moved)
+        areas.push_back(acrossLight(*m_layout, bounds));
+    int drawn = 0;
+    for (const auto& [page, slot] : m_cache.residentPages()) {
+        if (std::find(m_drawnSlots.begin(), m_drawnSlots.end(), slot) != m_drawnSlots.end()) {
+            causes.emplace_back(slot, ViewCause::New);
+            continue;
+        }
+        const bool touched = std::any_of(areas.begin(), areas.end(), [&](const AcrossLight& a) { return pageOverlaps(*m_layout, page, a); });
+        causes.emplace_back(slot, touched ? ViewCause::Casters : ViewCause::Cached);
+        if (!touched)
+            continue;
+        const QRect tile((slot % m_poolSide) * kVirtualSlotTexels, (slot / m_poolSide) * kVirtualSlotTexels, kVirtualSlotTexels, kVirtualSlotTexels);
+        const int draws = storage.draw(scene, frameOf(virtualPageVolume(*m_layout, page)), plan, tile, nullptr, nullptr);
+        if (casterDraws)
+            *casterDraws += draws;
+        ++drawn;
+    }
+    return drawn;
 }
 
 } // namespace shadowlab

@@ -87,6 +87,13 @@ public:
     VirtualMapStats update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                            ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws);
 
+    // shadow.cache=pages: draws again, in their slots, the resident pages that `moved` (where
+    // moving casters were last frame and where they are now) overlaps, except those update()
+    // drew this frame; every other page keeps what it holds, which no moved caster touches.
+    // Returns the pages drawn, and gives each resident page its cause in `causes`.
+    int redrawTouched(const GpuScene& scene, const FramePlan& plan, const std::vector<Bounds>& moved, ShadowStorage& storage,
+                      const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws, std::vector<std::pair<int, ViewCause>>& causes);
+
     VirtualMapUniforms uniforms(const CameraFrame& camera) const;
     const VirtualPageCache& cache() const { return m_cache; }
     const std::vector<glm::ivec2>& windows() const { return m_windows; }
@@ -171,6 +178,7 @@ private:
     RequestKey m_pendingKey;
     std::vector<glm::ivec2> m_pendingWindows;
     VirtualMapStats m_lastStats;        // what the last frame that placed pages found
+    std::vector<int> m_drawnSlots;      // the slots update() drew this frame
 };
 
 } // namespace shadowlab

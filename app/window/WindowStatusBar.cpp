@@ -120,6 +120,8 @@ void WindowStatusBar::showMap(const FrameStats& stats, const Settings& shown)
     QString text = shown.shadow.enabled ? tr("%1 · %2").arg(mapName, footprint) : tr("no shadow map");
     if (const QString redrawn = redrawStatusText(stats); !redrawn.isEmpty())
         text += QStringLiteral(" · ") + redrawn;
+    if (const QString cache = cacheStatusText(stats); shown.shadow.enabled && !cache.isEmpty())
+        text += QStringLiteral(" · ") + cache;
     m_mapLabel->setText(text);
     QString mapTip = tr("Shadow-map size, and the footprint of one of its texels in world units: the size of the blocks in a hard shadow.");
     if (shown.shadow.enabled && refitted)

@@ -1,0 +1,79 @@
+#include "ShadowCache.h"
+
+#include <algorithm>
+
+namespace shadowlab {
+
+QString toString(ViewCause cause)
+{
+    switch (cause) {
+    case ViewCause::Cached:
+        return QStringLiteral("cached");
+    case ViewCause::Stale:
+        return QStringLiteral("stale");
+    case ViewCause::Casters:
+        return QStringLiteral("caster moved");
+    case ViewCause::Light:
+        return QStringLiteral("light moved");
+    case ViewCause::New:
+        return QStringLiteral("new");
+    }
+    return {};
+}
+
+std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
+{
+    const std::size_t count = frame.wanted.size();
+    const bool fresh = frame.fresh || m_views.size() != count;
+    if (fresh) {
+        m_views.assign(count, View{});
+        m_movedFrames = 0;      // every-n counts from the frame that drew everything
+    }
+    const bool keeps = keepsViews(frame.policy);
+    // Whether this frame draws the moving casters where they moved: always (static), every
+    // n-th frame that they move or that a view stays stale (every-n), when asked (on-demand).
+    bool movingDue = true;
+    if (frame.policy == ShadowCachePolicy::EveryN) {
+        const bool anyStale = std::any_of(m_views.begin(), m_views.end(), [](const View& v) { return v.stale; });
+        if (!fresh && (frame.castersMoved || anyStale)) {
+            movingDue = ++m_movedFrames >= frame.interval;
+            if (movingDue)
+                m_movedFrames = 0;
+        }
+    } else if (frame.policy == ShadowCachePolicy::OnDemand) {
+        movingDue = frame.requested;
+    }
+
+    std::vector<Decision> decisions(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        View& view = m_views[i];
+        const std::optional<LightVolume>& wanted = frame.wanted[i];
+        const bool touched = frame.castersMoved && ((i < frame.movingInside.size() && frame.movingInside[i]) || view.holdsMoving);
+        Decision& d = decisions[i];
+        if (fresh || view.volume != wanted) {
+            // A view that gains or loses its only casters as they move changes for them.
+            const bool byCasters = !fresh && frame.castersMoved && view.volume.has_value() != wanted.has_value();
+            d.cause = fresh ? frame.freshCause : byCasters ? ViewCause::Casters : ViewCause::Light;
+            d.work = !wanted ? Work::Clear : keeps ? Work::Refresh : Work::Draw;
+        } else if (wanted && keeps && (touched || view.stale)) {
+            d.work = movingDue ? Work::Restore : Work::Keep;
+            d.cause = movingDue ? ViewCause::Casters : ViewCause::Stale;
+            view.stale = !movingDue;
+        } else {
+            d.cause = view.stale ? ViewCause::Stale : ViewCause::Cached;
+        }
+    }
+    return decisions;
+}
+
+void ShadowCache::done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, bool holdsMoving)
+{
+    if (decision.work == Work::Keep || i >= m_views.size())
+        return;
+    View& view = m_views[i];
+    view.volume = volume;
+    view.holdsMoving = holdsMoving;
+    view.stale = false;
+}
+
+} // namespace shadowlab

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "FrameStats.h"
+#include "LightMath.h"
+#include "Settings.h"
+
+#include <optional>
+#include <vector>
+
+namespace shadowlab {
+
+// Whether `policy` keeps a copy of each view's still casters (static, every-n, on-demand), as
+// opposed to none (off) or a virtual map's pages (pages).
+inline bool keepsViews(ShadowCachePolicy policy)
+{
+    return policy == ShadowCachePolicy::Static || policy == ShadowCachePolicy::EveryN || policy == ShadowCachePolicy::OnDemand;
+}
+
+
+// shadow.cache for a light's views (one map, cascades, cube faces), without GL: what each view
+// does this frame, from why it would be drawn and the policy, and what each view holds. The
+// storages keep the copies (ShadowStorage::drawCached); the renderer runs the decisions. So a
+// moving light, a changed setting or a new fit draws everything, and a moving caster only the
+// views it touches (where it was, or where it is now), each from its copy of the still casters.
+class ShadowCache {
+public:
+    enum class Work {
+        Keep,           // nothing: the tile holds what it should (or, stale, what it held)
+        Clear,          // nothing to shadow: read lit
+        Draw,           // every caster, no copy (off)
+        Refresh,        // still casters, a copy of them, moving casters over it
+        Restore,        // the copy back, moving casters over it
+    };
+    struct Decision {
+        Work work = Work::Keep;
+        ViewCause cause = ViewCause::Cached;
+    };
+    // What a frame brings. `wanted[i]`: view i's volume, nullopt with nothing to shadow.
+    // `movingInside[i]`: a moving caster lies in view i now.
+    struct Frame {
+        ShadowCachePolicy policy = ShadowCachePolicy::Off;
+        int interval = 1;                   // every-n
+        bool fresh = false;                 // what every view shares changed: all are drawn
+        ViewCause freshCause = ViewCause::New;
+        bool castersMoved = false;          // a moving caster is elsewhere than last frame
+        bool requested = false;             // on-demand: draw what is stale (Renderer::requestShadowRedraw)
+        std::vector<std::optional<LightVolume>> wanted;
+        std::vector<bool> movingInside;
+    };
+    std::vector<Decision> decide(const Frame& frame);
+    // After view i's work: the volume it was drawn at (nullopt: cleared), and whether moving
+    // casters are in its tile now (a draw that drew any).
+    void done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, bool holdsMoving);
+    // Every view forgotten: the next frame draws all.
+    void reset() { m_views.clear(); }
+
+    // Each view's volume as drawn (nullopt: cleared).
+    std::optional<LightVolume> drawnVolume(std::size_t i) const { return i < m_views.size() ? m_views[i].volume : std::nullopt; }
+
+private:
+    struct View {
+        std::optional<LightVolume> volume;  // as drawn; nullopt: cleared
+        bool holdsMoving = false;           // moving casters were drawn into it
+        bool stale = false;                 // a moving caster moved since its last draw, and it was kept
+    };
+    std::vector<View> m_views;
+    int m_movedFrames = 0;                  // every-n: frames of moving casters since they were last drawn
+};
+
+} // namespace shadowlab
