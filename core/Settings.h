@@ -189,6 +189,9 @@ struct ShadowSettings {
     int virtualLodBias = 1;                 // levels finer than a texel per screen pixel
     ShadowCachePolicy cache = ShadowCachePolicy::Off;
     int cacheInterval = 4;                  // every-n: frames of moving casters between redraws
+    // Every view (or page) drawn every frame, as a moving light draws them: any cache's worst
+    // case, as Unreal's r.Shadow.Virtual.Cache.ForceInvalidateDirectional emulates a moving sun.
+    bool forceInvalidate = false;
 
     bool operator==(const ShadowSettings&) const = default;
 };

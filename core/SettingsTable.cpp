@@ -414,6 +414,11 @@ void cacheKeys(std::vector<Entry>& e)
                        .look = {.label = QStringLiteral("Redraw every"), .unit = QStringLiteral(" frames"), .sliderLow = 1.0, .sliderHigh = 60.0,
                                 .group = kShadowMap}},
                       [](auto& s) -> auto& { return s.shadow.cacheInterval; }));
+    e.push_back(toggle({.key = "shadow.force_invalidate",
+                        .help = "Draws every view (or virtual page) every frame, as a moving light does: what any shadow.cache costs at its "
+                                "worst (a moving sun), for benchmarks, as Unreal's ForceInvalidateDirectional",
+                        .look = {.label = QStringLiteral("Redraw every frame"), .group = kShadowMap}},
+                       [](auto& s) -> auto& { return s.shadow.forceInvalidate; }));
 }
 
 // Contact shadows, shading and the camera.

@@ -370,10 +370,30 @@ std::vector<SweepEntry> virtualSweep()
     };
 }
 
+// shadow.cache's policies over a moving scene (report --animation): the exact ones (static,
+// and pages on a virtual map) against off, the stale ones at their stalest, and each exact
+// one under a moving sun (shadow.force_invalidate), its worst case.
+std::vector<SweepEntry> cacheSweep(const Settings& base)
+{
+    const auto set = [](const char* value) { return QStringLiteral("shadow.cache=%1").arg(QLatin1String(value)); };
+    const QString sun = QStringLiteral("shadow.force_invalidate=true");
+    if (base.shadow.virtualMap)
+        return {{QStringLiteral("off: every page drawn again when a caster moves"), {set("off")}},
+                {QStringLiteral("pages: the pages a moved caster touches"), {set("pages")}},
+                {QStringLiteral("pages, moving sun"), {set("pages"), sun}}};
+    return {{QStringLiteral("off: every caster of every view"), {set("off")}},
+            {QStringLiteral("static: moving casters over a copy of the still ones"), {set("static")}},
+            {QStringLiteral("every-n, n = 4 (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=4")}},
+            {QStringLiteral("every-n, n = 16 (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=16")}},
+            {QStringLiteral("on-demand (drawn at the first instant)"), {set("on-demand")}},
+            {QStringLiteral("static, moving sun"), {set("static"), sun}}};
+}
+
 QStringList builtInSweeps()
 {
     return {QStringLiteral("default"), QStringLiteral("filters"), QStringLiteral("resolution"), QStringLiteral("bias"), QStringLiteral("lights"),
-            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("warp"), QStringLiteral("virtual"), QStringLiteral("around")};
+            QStringLiteral("penumbra"), QStringLiteral("cascades"), QStringLiteral("filterable"), QStringLiteral("warp"), QStringLiteral("virtual"),
+            QStringLiteral("cache"), QStringLiteral("around")};
 }
 
 std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& base)
@@ -398,6 +418,8 @@ std::vector<SweepEntry> loadSweep(const QString& nameOrFile, const Settings& bas
         return warpSweep(base);
     if (nameOrFile == u"virtual")
         return virtualSweep();
+    if (nameOrFile == u"cache")
+        return cacheSweep(base);
     if (nameOrFile == u"filterable")
         return filterableSweep();
     QByteArray bytes;

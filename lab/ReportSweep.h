@@ -19,7 +19,8 @@ struct SweepEntry {
 // The built-in sweeps: "default" (all of the below, plus the classic tutorial configuration),
 // "filters", "resolution", "bias", "lights", "filterable" (the moment techniques over blur
 // widths, both formats, with and without bleeding reduction), "virtual" (virtual shadow maps against
-// a map and cascades of the same memory), "around" (sweepAround()); or a JSON file: an array of {"label": ..., "set": {key: value}}
+// a map and cascades of the same memory), "cache" (shadow.cache's policies, for report --animation),
+// "around" (sweepAround()); or a JSON file: an array of {"label": ..., "set": {key: value}}
 // objects (or {"configurations": [...]}). Throws SettingsError with the file named.
 // The file is read once, within readInputFile()'s limits; every entry must be an object with
 // only "label" (a string) and "set" (an object of setting values).

@@ -52,20 +52,26 @@ public:
     }
 
     CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels, double*,
-                          CacheStep step) override
+                          CacheStep step, const std::vector<QRect>& areas) override
     {
         const BiasSettings& bias = plan.settings.bias;
         const bool cutouts = plan.settings.shadow.cutouts;
         CachedDraw drawn;
+        // Outside the restored areas nothing moved; the moving casters write only within them.
+        const std::optional<QRect> over = inTile(texels, tile);
         if (step == CacheStep::Refresh) {
-            drawn.draws = m_pass.renderTile(scene, light, bias, m_map, tile, inTile(texels, tile), cutouts, 1, CasterSet::Still);
+            drawn.draws = m_pass.renderTile(scene, light, bias, m_map, tile, over, cutouts, 1, CasterSet::Still);
             m_copy.save(m_map.framebuffer(), tile);
+            m_copiedTexels += qint64(tile.width()) * tile.height();
         } else {
-            m_copy.restore(m_map.framebuffer(), tile);
-            m_map.written().drew(tile);
+            for (const QRect& area : areas.empty() ? std::vector<QRect>{tile} : areas) {
+                const QRect copied = area & tile;
+                m_copy.restore(m_map.framebuffer(), copied);
+                m_map.written().drew(copied);
+                m_copiedTexels += qint64(copied.width()) * copied.height();
+            }
         }
-        m_copiedTexels += qint64(tile.width()) * tile.height();
-        drawn.movingDraws = m_pass.drawOver(scene, light, bias, m_map, tile, inTile(texels, tile), cutouts, CasterSet::Moving);
+        drawn.movingDraws = m_pass.drawOver(scene, light, bias, m_map, tile, over, cutouts, CasterSet::Moving);
         drawn.draws += drawn.movingDraws;
         return drawn;
     }

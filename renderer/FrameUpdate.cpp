@@ -54,6 +54,12 @@ FrameUpdate::Frame FrameUpdate::begin(Inputs inputs, const Bounds& sceneBounds) 
     frame.aspect = double(inputs.size.width()) / double(inputs.size.height());
     frame.camera = computeCameraFrame(inputs.settings.camera, frame.aspect, sceneBounds);
     frame.refit = !m_inputs || !(*m_inputs == inputs);
+    if (frame.refit && m_inputs) {
+        Inputs posed = *m_inputs;
+        posed.poseGeneration = inputs.poseGeneration;
+        // sdsm splits the depth range the camera draws, which moving objects change.
+        frame.reposeOnly = posed == inputs && !usesVisibleDepth(inputs.settings);
+    }
     if (frame.refit)
         frame.fitCamera = inputs.fitCamera ? computeCameraFrame(*inputs.fitCamera, frame.aspect, sceneBounds) : frame.camera;
     frame.inputs = std::move(inputs);
@@ -65,6 +71,11 @@ void FrameUpdate::fit(const Frame& frame, const Scene& scene, const SceneLayout&
     if (!frame.refit)
         return;
     const Settings& settings = frame.inputs.settings;
+    if (frame.reposeOnly) {
+        m_inputs = frame.inputs;
+        findReach(frame, scene, layout, sources);
+        return;
+    }
     ShadowViewFrames views;
     views.camera = frame.fitCamera;
     views.set = fitShadowViews(settings, fitObjects(scene, layout), views.camera, frame.aspect, sources.visibleRange);
@@ -94,7 +105,13 @@ void FrameUpdate::fit(const Frame& frame, const Scene& scene, const SceneLayout&
     m_fit = std::move(fitted);
     m_inputs = frame.inputs;
     ++m_fitCount;
-    // Where lookups can find a caster follows the fit, and so is kept with it.
+    findReach(frame, scene, layout, sources);
+}
+
+void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources)
+{
+    // Where lookups can find a caster follows the fit and the casters, and so is kept with them.
+    const Settings& settings = frame.inputs.settings;
     const int generation = m_reach.generation + 1;
     m_reach = ShadowReach{};
     m_casterTexels.clear();

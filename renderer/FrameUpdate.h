@@ -27,7 +27,8 @@ class FrameUpdate {
 public:
     // What the fit is computed from: when all of it is as last time, the fit stands.
     struct Inputs {
-        int sceneGeneration = 0;
+        int sceneGeneration = 0;                    // the scene's objects and shapes
+        int poseGeneration = 0;                     // ... and where its moving objects are
         Settings settings;
         std::optional<CameraSettings> fitCamera;    // fit to this instead of settings.camera
         QSize size;
@@ -41,6 +42,9 @@ public:
         CameraFrame fitCamera;      // the light is fitted to: the frame's, or Inputs::fitCamera's
         double aspect = 1.0;
         bool refit = false;         // an input changed since the last fit
+        // Only moving objects did: the views stand (fitted to everywhere they go), and only
+        // what depends on where casters are now (the reach, the casters' texels) follows.
+        bool reposeOnly = false;
     };
     // What a fit reads besides the scene: results of passes run for it, and the storage's culling.
     struct FitSources {
@@ -68,6 +72,8 @@ public:
     void describe(const Settings& settings, FrameStats& stats) const;
 
 private:
+    void findReach(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources);
+
     std::optional<Inputs> m_inputs;
     ShadowViewFrames m_views;
     FittedLight m_fit;

@@ -72,7 +72,7 @@ public:
     }
 
     CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
-                          double* blurWallMs, CacheStep step) override
+                          double* blurWallMs, CacheStep step, const std::vector<QRect>&) override
     {
         const Settings& settings = plan.settings;
         CachedDraw drawn;
@@ -80,6 +80,8 @@ public:
             drawn.draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile), CasterSet::Still);
             m_copy.save(m_map.framebuffer(), tile);
         } else {
+            // The whole tile: the blur reads the still casters' moments unblurred around the
+            // moving ones, and the map holds them blurred.
             m_copy.restore(m_map.framebuffer(), tile);
             m_map.written().drew(tile);
         }

@@ -107,7 +107,8 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // scene's generation: a still scene's time changes nothing).
     Settings fitted = settings;
     fitted.animation = {};
-    const FrameUpdate::Frame frame = m_update.begin({m_sceneGeneration, std::move(fitted), m_fitCamera, size, plan.reversedDepth}, m_scene->bounds());
+    const FrameUpdate::Frame frame =
+        m_update.begin({m_shapeGeneration, m_sceneGeneration, std::move(fitted), m_fitCamera, size, plan.reversedDepth}, m_scene->bounds());
     m_camera = frame.camera;
     if (frame.refit)
         refit(frame, plan, storage, stats);
@@ -252,6 +253,18 @@ ShadowStorage& Renderer::storageFor(const FramePlan& plan)
     return *m_depthStorage;
 }
 
+namespace {
+
+// Rectangles of a view's own square moved into its tile of the map.
+std::vector<QRect> inTile(std::vector<QRect> rects, const QRect& tile)
+{
+    for (QRect& rect : rects)
+        rect.translate(tile.topLeft());
+    return rects;
+}
+
+} // namespace
+
 int Renderer::keyGeneration(const FramePlan& plan) const
 {
     // A cache keeps what does not move through a caster's move; without one, it draws again.
@@ -262,8 +275,14 @@ bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, b
 {
     // What all views share: when it changes, every view is drawn or cleared again.
     const ShadowStorageKey shared = storage.key(plan, keyGeneration(plan));
-    if (m_shadowKey == shared)
-        return false;
+    if (m_shadowKey == shared) {
+        // shadow.force_invalidate: as if the light moved.
+        if (!plan.settings.shadow.forceInvalidate)
+            return false;
+        cause = ViewCause::Light;
+        m_viewCache.reset();
+        return true;
+    }
     // New settings start a new cycle of slices (map.slices): what a setting draws does not
     // depend on the draws before it. A moving light or camera keeps the key, and the cycle,
     // and so does invalidateShadowMap(), which stands for one.
@@ -279,18 +298,21 @@ bool Renderer::beginViews(const FramePlan& plan, const ShadowStorage& storage, b
     return true;
 }
 
-std::vector<bool> Renderer::movingInViews() const
+std::vector<std::vector<QRect>> Renderer::movingTexels(int mapSize) const
 {
-    // Which views a moving caster lies in now (where it was, the cache remembers).
+    // Where each moving caster lies in each view now (where they were, the cache remembers).
     const std::vector<LightFrame>& frames = m_update.views().frames;
-    std::vector<bool> inside(frames.size(), false);
+    std::vector<std::vector<QRect>> texels(frames.size());
     for (const DrawItem& item : m_scene->drawItems()) {
         if (!item.moves || !item.castsShadow)
             continue;
-        for (std::size_t i = 0; i < frames.size(); ++i)
-            inside[i] = inside[i] || !isOutsideFrustum(frames[i].viewProjection, item.bounds, true);
+        const std::vector<ReachObject> one{{.bounds = item.bounds, .box = std::nullopt, .casts = true, .receives = item.receivesShadow, .plane = std::nullopt}};
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            if (const QRect rect = casterTexels(frames[i], mapSize, one).drawn; !rect.isEmpty())
+                texels[i].push_back(rect);
+        }
     }
-    return inside;
+    return texels;
 }
 
 std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
@@ -325,11 +347,16 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
     frame.policy = plan.cache;
     frame.interval = plan.settings.shadow.cacheInterval;
     frame.fresh = beginViews(plan, storage, castersMoved, frame.freshCause);
+    // Another count of views (4 cascades to 3) in the same tiles is new too.
+    if (m_viewCache.viewCount() != count && !frame.fresh) {
+        frame.fresh = true;
+        frame.freshCause = ViewCause::New;
+    }
     frame.castersMoved = castersMoved;
     frame.requested = std::exchange(m_redrawRequested, false);
     frame.wanted = wantedVolumes();
-    if (castersMoved && keepsViews(plan.cache))
-        frame.movingInside = movingInViews();
+    if (keepsViews(plan.cache))
+        frame.movingTexels = movingTexels(m_shadowMap.size());
     const std::vector<ShadowCache::Decision> decisions = m_viewCache.decide(frame);
     bool any = false, draws = false;
     for (const ShadowCache::Decision& d : decisions) {
@@ -360,7 +387,8 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
         storage.clear(m_update.views().frames.front(), plan);
     for (std::size_t i = 0; i < count; ++i) {
         if (decisions[i].work != ShadowCache::Work::Keep)
-            drawView(i, decisions[i], frame.wanted[i], plan, storage, timing, stats);
+            drawView(i, decisions[i], frame.wanted[i], i < frame.movingTexels.size() ? frame.movingTexels[i] : std::vector<QRect>(), plan, storage, timing,
+                     stats);
     }
     ++m_mapGeneration;
     if (!draws)
@@ -376,8 +404,8 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
     }
 }
 
-void Renderer::drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const FramePlan& plan,
-                        ShadowStorage& storage, TimingMode timing, FrameStats& stats)
+void Renderer::drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const std::vector<QRect>& movingNow,
+                        const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats)
 {
     const ShadowView& view = m_update.views().set.views[i];
     const int size = m_shadowMap.size();
@@ -390,16 +418,18 @@ void Renderer::drawView(std::size_t i, const ShadowCache::Decision& decision, co
     QElapsedTimer wall;
     wall.start();
     int draws = 0;
-    bool holdsMoving = false;
+    std::vector<QRect> moving;
     using Work = ShadowCache::Work;
     if (decision.work == Work::Draw) {
         draws = storage.draw(*m_scene, light, plan, tile, casters, blurMs);
     } else if (decision.work == Work::Refresh || decision.work == Work::Restore) {
-        const ShadowStorage::CachedDraw drawn = storage.drawCached(*m_scene, light, plan, tile, casters, blurMs,
-                                                                   decision.work == Work::Refresh ? ShadowStorage::CacheStep::Refresh
-                                                                                                  : ShadowStorage::CacheStep::Restore);
+        const ShadowStorage::CachedDraw drawn = storage.drawCached(
+            *m_scene, light, plan, tile, casters, blurMs,
+            decision.work == Work::Refresh ? ShadowStorage::CacheStep::Refresh : ShadowStorage::CacheStep::Restore,
+            inTile(decision.areas, tile));
         draws = drawn.draws;
-        holdsMoving = drawn.movingDraws > 0;
+        if (drawn.movingDraws > 0)
+            moving = movingNow;
     } else {
         storage.clear(light, plan, tile);
     }
@@ -412,7 +442,7 @@ void Renderer::drawView(std::size_t i, const ShadowCache::Decision& decision, co
         stats.viewRendered[i] = decision.work != Work::Clear;
         stats.viewDraws[i] = draws;
     }
-    m_viewCache.done(i, decision, wanted, holdsMoving);
+    m_viewCache.done(i, decision, wanted, moving);
     stats.shadowDraws += draws;
 }
 
@@ -427,7 +457,7 @@ void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize 
 {
     const Settings& settings = plan.settings;
     const ShadowStorageKey shared = storage.key(plan, keyGeneration(plan));
-    const bool invalidate = m_shadowKey != shared;
+    const bool invalidate = m_shadowKey != shared || plan.settings.shadow.forceInvalidate;
     m_shadowKey = shared;
     m_viewCache.reset();
     GLint previousDraw = 0, previousRead = 0;

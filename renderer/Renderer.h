@@ -169,15 +169,16 @@ private:
     bool beginViews(const FramePlan& plan, const ShadowStorage& storage, bool castersMoved, ViewCause& cause);
     // The scene generation the stored views depend on: with a cache, not on where casters are.
     int keyGeneration(const FramePlan& plan) const;
-    // Per view, whether a moving caster lies in it now.
-    std::vector<bool> movingInViews() const;
+    // Per view, where in its square of `mapSize` texels each moving caster lies now.
+    std::vector<std::vector<QRect>> movingTexels(int mapSize) const;
     // Each view's volume as it should be drawn: nullopt where it has nothing to shadow.
     std::vector<std::optional<LightVolume>> wantedVolumes() const;
     // The share of a map of `count` views its casters may cover (DepthSlices::setCasterCoverage).
     double casterCoverage(std::size_t count) const;
     // View `i` drawn at `wanted`, or its tile cleared where it has nothing to shadow.
-    void drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const FramePlan& plan,
-                  ShadowStorage& storage, TimingMode timing, FrameStats& stats);
+    // `movingNow`: where the moving casters lie in it (shadow.cache).
+    void drawView(std::size_t i, const ShadowCache::Decision& decision, const std::optional<LightVolume>& wanted, const std::vector<QRect>& movingNow,
+                  const FramePlan& plan, ShadowStorage& storage, TimingMode timing, FrameStats& stats);
     // shadow.virtual's shadow pass: the pages the frame's pixels need, drawn where new.
     void renderPages(const FramePlan& plan, ShadowStorage& storage, QSize size, TimingMode timing, FrameStats& stats);
     // The storage of the plan's technique (built on first use).

@@ -21,6 +21,26 @@ QString toString(ViewCause cause)
     return {};
 }
 
+std::vector<QRect> mergedRects(std::vector<QRect> rects)
+{
+    rects.erase(std::remove_if(rects.begin(), rects.end(), [](const QRect& r) { return r.isEmpty(); }), rects.end());
+    // Until no two overlap or touch: each merge leaves one fewer.
+    for (bool merged = true; merged;) {
+        merged = false;
+        for (std::size_t a = 0; a < rects.size() && !merged; ++a) {
+            for (std::size_t b = a + 1; b < rects.size(); ++b) {
+                if (rects[a].adjusted(0, 0, 1, 1).intersects(rects[b])) {
+                    rects[a] |= rects[b];
+                    rects.erase(rects.begin() + std::ptrdiff_t(b));
+                    merged = true;
+                    break;
+                }
+            }
+        }
+    }
+    return rects;
+}
+
 std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
 {
     const std::size_t count = frame.wanted.size();
@@ -48,7 +68,9 @@ std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
     for (std::size_t i = 0; i < count; ++i) {
         View& view = m_views[i];
         const std::optional<LightVolume>& wanted = frame.wanted[i];
-        const bool touched = frame.castersMoved && ((i < frame.movingInside.size() && frame.movingInside[i]) || view.holdsMoving);
+        const std::vector<QRect> none;
+        const std::vector<QRect>& now = i < frame.movingTexels.size() ? frame.movingTexels[i] : none;
+        const bool touched = frame.castersMoved && (!now.empty() || !view.moving.empty());
         Decision& d = decisions[i];
         if (fresh || view.volume != wanted) {
             // A view that gains or loses its only casters as they move changes for them.
@@ -58,6 +80,9 @@ std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
         } else if (wanted && keeps && (touched || view.stale)) {
             d.work = movingDue ? Work::Restore : Work::Keep;
             d.cause = movingDue ? ViewCause::Casters : ViewCause::Stale;
+            std::vector<QRect> both = view.moving;
+            both.insert(both.end(), now.begin(), now.end());
+            d.areas = mergedRects(std::move(both));
             view.stale = !movingDue;
         } else {
             d.cause = view.stale ? ViewCause::Stale : ViewCause::Cached;
@@ -66,13 +91,13 @@ std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
     return decisions;
 }
 
-void ShadowCache::done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, bool holdsMoving)
+void ShadowCache::done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, const std::vector<QRect>& moving)
 {
     if (decision.work == Work::Keep || i >= m_views.size())
         return;
     View& view = m_views[i];
     view.volume = volume;
-    view.holdsMoving = holdsMoving;
+    view.moving = moving;
     view.stale = false;
 }
 

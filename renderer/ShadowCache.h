@@ -4,6 +4,8 @@
 #include "LightMath.h"
 #include "Settings.h"
 
+#include <QRect>
+
 #include <optional>
 #include <vector>
 
@@ -22,6 +24,9 @@ inline bool keepsViews(ShadowCachePolicy policy)
 // storages keep the copies (ShadowStorage::drawCached); the renderer runs the decisions. So a
 // moving light, a changed setting or a new fit draws everything, and a moving caster only the
 // views it touches (where it was, or where it is now), each from its copy of the still casters.
+// `rects` merged where they overlap or touch, so that no texel is in two of them.
+std::vector<QRect> mergedRects(std::vector<QRect> rects);
+
 class ShadowCache {
 public:
     enum class Work {
@@ -34,9 +39,14 @@ public:
     struct Decision {
         Work work = Work::Keep;
         ViewCause cause = ViewCause::Cached;
+        // Restore: the texels of the view's square (its own, [0, size)²) that moving casters
+        // left or reach now, as rectangles that do not overlap; everything else holds what it
+        // should already.
+        std::vector<QRect> areas;
     };
     // What a frame brings. `wanted[i]`: view i's volume, nullopt with nothing to shadow.
-    // `movingInside[i]`: a moving caster lies in view i now.
+    // `movingTexels[i]`: where each moving caster lies in view i now (core/CasterTexels.h;
+    // none: none there).
     struct Frame {
         ShadowCachePolicy policy = ShadowCachePolicy::Off;
         int interval = 1;                   // every-n
@@ -45,14 +55,16 @@ public:
         bool castersMoved = false;          // a moving caster is elsewhere than last frame
         bool requested = false;             // on-demand: draw what is stale (Renderer::requestShadowRedraw)
         std::vector<std::optional<LightVolume>> wanted;
-        std::vector<bool> movingInside;
+        std::vector<std::vector<QRect>> movingTexels;
     };
     std::vector<Decision> decide(const Frame& frame);
-    // After view i's work: the volume it was drawn at (nullopt: cleared), and whether moving
-    // casters are in its tile now (a draw that drew any).
-    void done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, bool holdsMoving);
+    // After view i's work: the volume it was drawn at (nullopt: cleared), and where moving
+    // casters are in its square now (empty: none drawn).
+    void done(std::size_t i, const Decision& decision, const std::optional<LightVolume>& volume, const std::vector<QRect>& moving);
     // Every view forgotten: the next frame draws all.
     void reset() { m_views.clear(); }
+    // The views it knows (0 after reset()).
+    std::size_t viewCount() const { return m_views.size(); }
 
     // Each view's volume as drawn (nullopt: cleared).
     std::optional<LightVolume> drawnVolume(std::size_t i) const { return i < m_views.size() ? m_views[i].volume : std::nullopt; }
@@ -60,7 +72,7 @@ public:
 private:
     struct View {
         std::optional<LightVolume> volume;  // as drawn; nullopt: cleared
-        bool holdsMoving = false;           // moving casters were drawn into it
+        std::vector<QRect> moving;          // where moving casters were drawn into it
         bool stale = false;                 // a moving caster moved since its last draw, and it was kept
     };
     std::vector<View> m_views;

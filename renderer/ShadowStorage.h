@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace shadowlab {
 
@@ -97,15 +98,16 @@ public:
     // shadow.cache's two draws of a view (renderer/ShadowCache.h), over a copy of the still
     // casters that the storage keeps beside its map: Refresh clears the tile, draws the still
     // casters, keeps a copy of the tile, then draws the moving casters over it; Restore copies
-    // the tile back and draws the moving casters over it. Either prefilters after, so the view
-    // holds what draw() would have drawn.
+    // `areas` of the tile back (texels of the map; none: all of it), where the moving casters
+    // were and are, and draws them over it. Either prefilters after, so the view holds what
+    // draw() would have drawn. A storage may restore more than `areas` (a blurred one must).
     enum class CacheStep { Refresh, Restore };
     struct CachedDraw {
         int draws = 0;              // casters drawn, the moving ones included
         int movingDraws = 0;        // of which moving
     };
     virtual CachedDraw drawCached(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
-                                  double* blurWallMs, CacheStep step) = 0;
+                                  double* blurWallMs, CacheStep step, const std::vector<QRect>& areas = {}) = 0;
     // Bytes of the copy kept for shadow.cache (0 without one).
     virtual qint64 cacheBytes() const = 0;
 

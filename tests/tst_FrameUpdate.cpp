@@ -8,6 +8,8 @@
 #include "SceneLibrary.h"
 #include "SceneNames.h"
 #include "SettingsKeys.h"
+#include "ShadowCache.h"
+#include "VirtualPages.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -60,7 +62,7 @@ struct Update {
     bool frame(const Settings& s, QSize size = QSize(320, 180), int sceneGeneration = 1, std::optional<CameraSettings> fitCamera = {},
                FrameUpdate::FitSources sources = {})
     {
-        const FrameUpdate::Frame f = update.begin({sceneGeneration, s, fitCamera, size, false}, layout.bounds());
+        const FrameUpdate::Frame f = update.begin({sceneGeneration, 0, s, fitCamera, size, false}, layout.bounds());
         update.fit(f, scene, layout, sources);
         return f.refit;
     }
@@ -321,6 +323,7 @@ private slots:
                                           << false << true;
         QTest::addRow("shadows off") << "seed" << QStringList{"shadow.enabled=false", "filter.mode=pcf", "filter.early_out=true"} << true << true << 4
                                     << 1 << 1 << false << false << false;
+        QTest::addRow("cached: never sliced") << "seed" << QStringList{"shadow.cache=static"} << true << true << 1 << 1 << 1 << false << false << false;
     }
 
     void plansTheFrame()
@@ -358,6 +361,124 @@ private slots:
         const FramePlan without = planFrame(s, softwareDriver, false);
         QCOMPARE(without.reversedDepthWanted, reversed);
         QVERIFY(!without.reversedDepth);
+        QVERIFY(plan.cache == (s.shadow.enabled ? s.shadow.cache : ShadowCachePolicy::Off));
+    }
+
+    // What each view does under each policy, from why it would be drawn: three views, a moving
+    // caster in the second. No context: the decisions are the cache's, the draws the storages'.
+    void cacheDecidesPerView()
+    {
+        using Work = ShadowCache::Work;
+        const LightVolume volume;
+        LightVolume moved = volume;
+        moved.left -= 1.0;
+        ShadowCache::Frame frame;
+        frame.policy = ShadowCachePolicy::Static;
+        frame.wanted = {volume, volume, std::nullopt};
+        const QRect there(10, 10, 5, 5);
+        const std::vector<QRect> none;
+        frame.movingTexels = {none, {there}, none};
+        ShadowCache cache;
+        const auto run = [&](ShadowCache::Frame f) {
+            const std::vector<ShadowCache::Decision> d = cache.decide(f);
+            for (std::size_t i = 0; i < d.size(); ++i)
+                cache.done(i, d[i], f.wanted[i], d[i].work != Work::Clear ? f.movingTexels[i] : std::vector<QRect>());
+            return d;
+        };
+        // The first frame draws every view with something to shadow, keeping a copy.
+        std::vector<ShadowCache::Decision> d = run(frame);
+        QVERIFY(d[0].work == Work::Refresh && d[0].cause == ViewCause::New);
+        QVERIFY(d[1].work == Work::Refresh);
+        QVERIFY(d[2].work == Work::Clear);
+        // A caster moves in the second view: only it comes back from its copy.
+        frame.castersMoved = true;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Cached);
+        QVERIFY(d[1].work == Work::Restore && d[1].cause == ViewCause::Casters);
+        QVERIFY(d[1].areas == std::vector<QRect>{there});
+        QVERIFY(d[2].work == Work::Keep);
+        // It leaves for the first: both are drawn (where it was, where it is).
+        const QRect here(40, 40, 6, 6);
+        frame.movingTexels = {{here}, none, none};
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore && d[1].work == Work::Restore);
+        QVERIFY(d[0].areas == std::vector<QRect>{here});
+        QVERIFY(d[1].areas == std::vector<QRect>{there});
+        // Where it was and is, overlapping: one rectangle; and another caster apart: two.
+        frame.movingTexels = {{here.translated(2, 0), there}, none, none};
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore && d[1].work == Work::Keep);
+        QCOMPARE(int(d[0].areas.size()), 2);
+        QVERIFY(std::find(d[0].areas.begin(), d[0].areas.end(), here | here.translated(2, 0)) != d[0].areas.end());
+        // The light moves: every view with a new volume is drawn from its still casters again.
+        frame.wanted = {moved, moved, std::nullopt};
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Refresh && d[0].cause == ViewCause::Light);
+        QVERIFY(d[1].work == Work::Refresh && d[1].cause == ViewCause::Light);
+        // Off draws every caster where it draws, and keeps no copy.
+        frame.policy = ShadowCachePolicy::Off;
+        frame.fresh = true;
+        frame.freshCause = ViewCause::Casters;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Draw && d[0].cause == ViewCause::Casters);
+        // every-n with n = 3: stale twice, then drawn.
+        frame.policy = ShadowCachePolicy::EveryN;
+        frame.interval = 3;
+        frame.freshCause = ViewCause::New;
+        run(frame);
+        frame.fresh = false;
+        for (int i = 0; i < 2; ++i) {
+            d = run(frame);
+            QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Stale);
+        }
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore && d[0].cause == ViewCause::Casters);
+        // on-demand: stale until asked, though the casters stop.
+        frame.policy = ShadowCachePolicy::OnDemand;
+        d = run(frame);
+        QVERIFY(d[0].cause == ViewCause::Stale);
+        frame.castersMoved = false;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Stale);
+        frame.requested = true;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore);
+        frame.requested = false;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Cached);
+    }
+
+    // A caster's square across the light overlaps the pages it can shadow, and no others.
+    void movedCastersTouchTheirPages()
+    {
+        LightSettings light;
+        light.position = {-4.0, 8.0, 3.0};
+        light.target = {0.0, 0.0, 0.0};
+        Bounds scene;
+        scene.min = {-10.0, 0.0, -10.0};
+        scene.max = {10.0, 4.0, 10.0};
+        const VirtualLayout layout = virtualLayout(light, scene, 8);
+        Bounds caster;
+        caster.min = {0.9, 0.0, 0.9};
+        caster.max = {1.1, 0.4, 1.1};
+        const AcrossLight area = acrossLight(layout, caster);
+        int touched = 0, pages = 0;
+        for (int level = 0; level < 3; ++level) {
+            for (int x = -20; x < 20; ++x) {
+                for (int y = -20; y < 20; ++y) {
+                    const VirtualPage page{level, x, y};
+                    ++pages;
+                    if (!pageOverlaps(layout, page, area))
+                        continue;
+                    ++touched;
+                    // The page's volume holds a corner of the caster, or the caster covers it.
+                    const LightFrame frame = computeLightFrame(light, virtualPageVolume(layout, page));
+                    QVERIFY(!isOutsideFrustum(frame.viewProjection, caster, true));
+                }
+            }
+        }
+        QVERIFY(touched >= 3);          // at least one page a level
+        QVERIFY(touched < pages / 100);
     }
 };
 

@@ -17,6 +17,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <numeric>
 #include <memory>
 #include <optional>
 
@@ -305,6 +306,15 @@ std::vector<Phase> makePhases(const BenchRequest& r)
     if (wantsMovingCasters(r)) {
         addPhase("moving-casters", "the scene playing, 1/60 s of scene.time a frame: the views its moving objects cross redrawn", r.settings, false);
         phases.back().timeStep = 1.0 / 60.0;
+        // A cache is timed against drawing every caster (its shadow pass), and against the
+        // casters standing still (its whole frame), interleaved with it.
+        if (r.settings.shadow.cache != ShadowCachePolicy::Off) {
+            Settings uncached = r.settings;
+            uncached.shadow.cache = ShadowCachePolicy::Off;
+            addPhase("moving-casters-uncached", "the same with shadow.cache=off: every caster of a view drawn again", uncached, false);
+            phases.back().timeStep = 1.0 / 60.0;
+            addPhase("casters-standing", "the same frame with the clock stopped: casters standing, map kept", r.settings, false);
+        }
     }
     if (r.baseline)
         addPhase("tutorial-baseline", "pcf 3x3, 1024 map, bias max(0.05 (1 - N.L), 0.005), shadow pass every frame",
@@ -393,6 +403,28 @@ std::optional<ShadowCost> shadowCost(const std::vector<Phase>& phases)
     return ShadowCost{summarize(on->litWall).median / summarize(off->litWall).median, roundRatios(*on, *off, &Phase::litWall)};
 }
 
+// shadow.cache with casters moving, round by round: its shadow pass over the same frames with
+// shadow.cache=off, and its frame over the casters standing still.
+// The shadow pass per frame is its time summed over the frames it ran in, over all frames (a
+// cache may leave it out of some).
+struct CacheGain {
+    double shadowPassPerFrame = 0.0;    // cached over uncached
+    double shadowPassMedian = 0.0;      // ... of the frames it ran in
+    SampleStats frame;
+};
+
+std::optional<CacheGain> cacheGain(const std::vector<Phase>& phases)
+{
+    const Phase* cached = findPhase(phases, "moving-casters");
+    const Phase* uncached = findPhase(phases, "moving-casters-uncached");
+    const Phase* standing = findPhase(phases, "casters-standing");
+    if (!cached || !uncached || !standing)
+        return std::nullopt;
+    const auto perFrame = [](const Phase& p) { return std::accumulate(p.shadowWall.begin(), p.shadowWall.end(), 0.0) / std::max<std::size_t>(p.wall.size(), 1); };
+    return CacheGain{perFrame(*cached) / std::max(perFrame(*uncached), 1e-9),
+                     summarize(cached->shadowWall).median / std::max(summarize(uncached->shadowWall).median, 1e-9), roundRatios(*cached, *standing)};
+}
+
 void printJson(const BenchRequest& request, const std::vector<Phase>& phases, const QString& rendererString)
 {
     QJsonArray phaseArray;
@@ -427,6 +459,16 @@ void printJson(const BenchRequest& request, const std::vector<Phase>& phases, co
                                     {QStringLiteral("round_median"), cost->rounds.median},
                                     {QStringLiteral("round_p10"), cost->rounds.p10},
                                     {QStringLiteral("round_p90"), cost->rounds.p90}});
+    if (const std::optional<CacheGain> gain = cacheGain(phases)) {
+        const auto ratios = [](const SampleStats& s) {
+            return QJsonObject{{QStringLiteral("rounds"), s.count}, {QStringLiteral("round_median"), s.median}, {QStringLiteral("round_p10"), s.p10},
+                               {QStringLiteral("round_p90"), s.p90}};
+        };
+        document.insert(QStringLiteral("cache"), QJsonObject{{QStringLiteral("policy"), toString(request.settings.shadow.cache)},
+                                                             {QStringLiteral("shadow_pass_per_frame_over_uncached"), gain->shadowPassPerFrame},
+                                                             {QStringLiteral("shadow_pass_median_over_uncached"), gain->shadowPassMedian},
+                                                             {QStringLiteral("frame_over_standing"), ratios(gain->frame)}});
+    }
     out() << QJsonDocument(document).toJson(QJsonDocument::Indented);
 }
 
@@ -506,6 +548,12 @@ void printRatios(const BenchRequest& request, const std::vector<Phase>& phases)
         const auto median = [&](const char* name) { return summarize(findPhase(phases, name)->wall).median; };
         out() << "median frame wall time, shadows on / off with the camera moving: "
               << QString::number(median("moving-camera") / median("moving-camera-no-shadows"), 'f', 2) << '\n';
+    }
+    if (const std::optional<CacheGain> gain = cacheGain(phases)) {
+        out() << "shadow.cache=" << toString(request.settings.shadow.cache) << ", casters moving: shadow pass / with shadow.cache=off "
+              << QString::number(gain->shadowPassPerFrame, 'f', 3) << " a frame (" << QString::number(gain->shadowPassMedian, 'f', 3)
+              << " of the medians where it ran); frame / casters standing " << QString::number(gain->frame.median, 'f', 3) << " (round by round, p10 "
+              << QString::number(gain->frame.p10, 'f', 3) << ", p90 " << QString::number(gain->frame.p90, 'f', 3) << ")\n";
     }
     if (const std::optional<ShadowCost> cost = shadowCost(phases)) {
         out() << "still lit pass, shadows on / off: " << QString::number(cost->ratioOfMedians, 'f', 3) << " (round by round: median "
