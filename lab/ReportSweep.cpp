@@ -383,8 +383,8 @@ std::vector<SweepEntry> cacheSweep(const Settings& base)
                 {QStringLiteral("pages, moving sun"), {set("pages"), sun}}};
     return {{QStringLiteral("off: every caster of every view"), {set("off")}},
             {QStringLiteral("static: moving casters over a copy of the still ones"), {set("static")}},
-            {QStringLiteral("every-n, n = 4 (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=4")}},
-            {QStringLiteral("every-n, n = 16 (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=16")}},
+            {QStringLiteral("every-n, every 4th frame (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=4")}},
+            {QStringLiteral("every-n, every 16th frame (at its stalest)"), {set("every-n"), QStringLiteral("shadow.cache_interval=16")}},
             {QStringLiteral("on-demand (drawn at the first instant)"), {set("on-demand")}},
             {QStringLiteral("static, moving sun"), {set("static"), sun}}};
 }

@@ -22,16 +22,29 @@ std::vector<FitObject> fitObjects(const Scene& scene, const SceneLayout& layout)
 
 } // namespace
 
-std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut)
+ReachObject sceneCaster(const Scene& scene, const SceneLayout& layout, std::size_t i, bool cullsFrontFaces, bool floorsLeftOut)
+{
+    const SceneObject& object = scene.objects[i];
+    const std::optional<WorldPlane> plane = layout.objectPlane(i);
+    // A floor is left out of the map as a culled plane is: from its front side.
+    return {.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
+            .frontFacesCulled = (cullsFrontFaces || (floorsLeftOut && layout.isFloor(i))) && plane};
+}
+
+std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut, CasterSet set)
 {
     std::vector<ReachObject> casters;
+    const std::vector<std::size_t>& moving = layout.movingObjects();
+    if (set == CasterSet::Moving) {
+        for (std::size_t i : moving)
+            casters.push_back(sceneCaster(scene, layout, i, cullsFrontFaces, floorsLeftOut));
+        return casters;
+    }
     casters.reserve(scene.objects.size());
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        const SceneObject& object = scene.objects[i];
-        const std::optional<WorldPlane> plane = layout.objectPlane(i);
-        // A floor is left out of the map as a culled plane is: from its front side.
-        casters.push_back({.bounds = layout.objectBounds(i), .box = layout.objectBox(i), .casts = object.castsShadow, .receives = object.receivesShadow, .plane = plane,
-                           .frontFacesCulled = (cullsFrontFaces || (floorsLeftOut && layout.isFloor(i))) && plane});
+        if (set == CasterSet::Still && layout.moves(i))
+            continue;
+        casters.push_back(sceneCaster(scene, layout, i, cullsFrontFaces, floorsLeftOut));
     }
     return casters;
 }
@@ -116,10 +129,26 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
     m_reach = ShadowReach{};
     m_casterTexels.clear();
     if (settings.shadow.enabled) {
-        const std::vector<ReachObject> casters = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut);
-        m_reach = sceneReach(settings, m_views.frames, casters, layout, frame.camera);
-        for (const LightFrame& view : m_views.frames)
-            m_casterTexels.push_back(shadowlab::casterTexels(view, settings.map.size, casters));
+        // The still casters' texels stand while only moving ones move: a frame of moving casters
+        // costs what they do, whatever the size of the still scene.
+        if (!frame.reposeOnly || m_stillTexels.size() != m_views.frames.size()) {
+            const std::vector<ReachObject> still = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Still);
+            m_stillTexels.clear();
+            for (const LightFrame& view : m_views.frames)
+                m_stillTexels.push_back(shadowlab::casterTexels(view, settings.map.size, still));
+        }
+        const std::vector<ReachObject> moving = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Moving);
+        for (std::size_t v = 0; v < m_views.frames.size(); ++v) {
+            CasterTexels texels = m_stillTexels[v];
+            if (!moving.empty())
+                texels.drawn |= shadowlab::casterTexels(m_views.frames[v], settings.map.size, moving).drawn;
+            m_casterTexels.push_back(texels);
+        }
+        // The reach is the software profile's (RasteriserTuning::skipsOutOfReach): found over
+        // every caster and receiver only where it is used.
+        if (sources.reach)
+            m_reach = sceneReach(settings, m_views.frames, sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut), layout,
+                                 frame.camera);
     }
     m_reach.generation = generation;
 }

@@ -52,6 +52,7 @@ public:
         std::optional<VirtualLayout> virtualLayout;        // shadow.virtual: one view, its coarsest level
         bool cullsFrontFaces = false;                      // the shadow pass culls front faces (for the reach)
         bool floorsLeftOut = false;                        // ... and leaves floors out (bias.skip_floors)
+        bool reach = true;                                 // the reach is read (the software profile's lookups and slices)
     };
 
     Frame begin(Inputs inputs, const Bounds& sceneBounds) const;
@@ -79,12 +80,16 @@ private:
     FittedLight m_fit;
     ShadowReach m_reach;
     std::vector<CasterTexels> m_casterTexels;
+    std::vector<CasterTexels> m_stillTexels;    // per view, of the casters that do not move
     int m_fitCount = 0;
 };
 
 // The scene's objects as casters, one by one: a flat one-sided one whose front faces the pass
-// culls (bias.cull_front), or a floor it leaves out (bias.skip_floors), with its plane.
-std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut);
+// culls (bias.cull_front), or a floor it leaves out (bias.skip_floors), with its plane; all of
+// them, or the still or the moving ones.
+ReachObject sceneCaster(const Scene& scene, const SceneLayout& layout, std::size_t i, bool cullsFrontFaces, bool floorsLeftOut);
+std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut,
+                                      CasterSet set = CasterSet::All);
 // Where the lookups of `views` can find `casters`, with the receivers as drawn.
 ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
                        const CameraFrame& camera);

@@ -221,6 +221,7 @@ void Renderer::refit(const FrameUpdate::Frame& frame, const FramePlan& plan, con
         sources.virtualLayout = m_virtual->layout(settings, m_scene->bounds());
     }
     sources.cullsFrontFaces = storage.cullsFrontFaces(plan);
+    sources.reach = plan.tuning.skipsOutOfReach || plan.tuning.depthSlices;
     sources.floorsLeftOut = storage.leavesOutFloors(plan);
     m_update.fit(frame, m_scene->scene(), m_scene->layout(), sources);
 }

@@ -53,6 +53,8 @@ SceneLayout::SceneLayout(const Scene& scene)
         m_objectModels.push_back(object.model);
         m_objectMeshes.push_back(object.mesh);
         m_swept.push_back(object.motion ? std::optional(object.motion->sweptBounds(local)) : std::nullopt);
+        if (m_swept.back())
+            m_moving.push_back(m_swept.size() - 1);
         m_sampled.push_back(object.motion ? std::optional(object.motion->sweptBounds(local, false)) : std::nullopt);
         m_bounds.extend(m_swept.back() ? *m_swept.back() : m_objectBounds.back());
     }

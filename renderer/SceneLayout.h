@@ -77,6 +77,8 @@ public:
     void pose(const Scene& scene, const std::vector<std::size_t>& moved);
     // Whether scene.objects[i] moves.
     bool moves(std::size_t i) const { return m_swept.at(i).has_value(); }
+    // The indices of the objects that move, in order.
+    const std::vector<std::size_t>& movingObjects() const { return m_moving; }
 
     // What the light is fitted to for scene.objects[i]: everywhere it goes, for one that moves,
     // so the map's volume and texel grid stand still while it moves (no swimming).
@@ -111,6 +113,7 @@ private:
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
     std::vector<std::optional<WorldPlane>> m_objectFloors;     // each object's plane, where it is a floor
     std::vector<std::optional<Bounds>> m_swept;                // where each moving object goes
+    std::vector<std::size_t> m_moving;                         // the objects that do
     std::vector<std::optional<Bounds>> m_sampled;              // ... at the sweep's samples (the floor test)
     std::vector<std::size_t> m_itemOf;                         // each object's draw item
     std::vector<DrawItem> m_items;

@@ -38,6 +38,7 @@ def cases(mesh, quick):
          ["moving-light"]),
         ("city, still", ["bench", "--scene", "city", "--phase", "steady"] + hd + frames, ["steady"]),
         ("city, moving camera", ["bench", "--scene", "city", "--phase", "moving-camera"] + hd + frames, ["moving-camera"]),
+        ("city, 50 vehicles moving", ["bench", "--scene", "city+50", "--phase", "moving-casters"] + hd + frames, ["moving-casters"]),
         ("10^6 triangles, still", ["bench", "--scene", mesh, "--phase", "steady", "--size", "960x540"] + frames, ["steady"]),
     ]
     whole = [
@@ -104,7 +105,19 @@ def anchor_ratios(binary, quick):
         tuned = phases(arguments + ["--phase", phase, "--set", "rasteriser.profile=software"])
         return median(plain[phase], "frame_wall") / median(tuned[phase], "frame_wall")
 
+    def cache(arguments):
+        """shadow.cache with casters moving (bench's cache phases, interleaved in one process): the
+        shadow pass per frame over shadow.cache=off's, and the frame over the casters standing."""
+        report = run_bench(binary, ["bench", "--phase", "moving-casters"] + arguments + frames)["cache"]
+        return report["shadow_pass_per_frame_over_uncached"], report["frame_over_standing"]["round_median"]
+
+    city_static = cache(["--scene", "city+50", "--set", "shadow.cache=static"])
+    city_pages = cache(["--scene", "city+50", "--set", "shadow.virtual=true", "--set", "shadow.cache=pages"])
     return {
+        "city+50, vehicles moving, shadow.cache=static: shadow pass / shadow.cache=off": city_static[0],
+        "the same: frame / vehicles standing": city_static[1],
+        "city+50, virtual map, shadow.cache=pages: shadow pass / shadow.cache=off": city_pages[0],
+        "the same, pages: frame / vehicles standing": city_pages[1],
         "seed, still: lit pass with shadows / without": shadow_cost(["--scene", "seed"]),
         "the same at a 1024 map (the issue's table)": shadow_cost(["--scene", "seed", "--set", "map.size=1024"]),
         "torus, still: lit pass with shadows / without (a third of the frame looked up)": shadow_cost(["--scene", "torus"]),

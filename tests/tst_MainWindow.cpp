@@ -171,6 +171,7 @@ private slots:
     void depthPaneFramesTheMapInWhatTheCameraSees_data();
     void depthPaneFramesTheMapInWhatTheCameraSees();
     void timelinePlaysScrubsAndSharesTheClock();
+    void onDemandCacheRedrawsWhenAsked();
 
 private:
     SliderSpinBox* field(const QString& key) const { return m_window->propertiesDock()->findChild<SliderSpinBox*>(key); }
@@ -1365,6 +1366,31 @@ void tst_MainWindow::timelinePlaysScrubsAndSharesTheClock()
     QCOMPARE(m_window->settings(Side::A).animation.time, paused);
 }
 
+// shadow.cache=on-demand: as the swing moves the map goes stale, and the status bar and the
+// depth pane say so; View > Redraw Cached Shadows draws it again once.
+void tst_MainWindow::onDemandCacheRedrawsWhenAsked()
+{
+    auto* redraw = m_window->findChild<QAction*>(QStringLiteral("redrawCachedShadowsAction"));
+    QVERIFY(redraw);
+    Settings s = presetSettings(QStringLiteral("swing"));
+    applySetting(s, QStringLiteral("shadow.cache"), QStringLiteral("on-demand"));
+    s.animation.time = 0.2;
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    s.animation.time = 0.9;
+    m_window->setSettings(Side::A, s);
+    QVERIFY(settle(*m_window));
+    const auto mapText = [&] { return m_window->findChild<QLabel*>(QStringLiteral("mapLabel"))->text(); };
+    QVERIFY2(mapText().contains(QStringLiteral("stale")), qPrintable(mapText()));
+    const DepthMapFacts stale = depthMapFacts(*m_window->sceneView(Side::A)->renderer(), std::nullopt);
+    QCOMPARE(int(stale.cacheTiles.size()), 1);
+    QVERIFY(stale.cacheTiles.front().cause == ViewCause::Stale);
+    const QImage before = scene();
+    redraw->trigger();
+    QVERIFY(settle(*m_window));
+    QVERIFY2(!mapText().contains(QStringLiteral("stale")), qPrintable(mapText()));
+    QVERIFY(differingPixels(scene(), before) > 20);
+}
 
 SHADOWLAB_TEST_MAIN(tst_MainWindow)
 

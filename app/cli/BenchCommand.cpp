@@ -9,6 +9,7 @@
 #include "SettingsKeys.h"
 #include "SettingsSummary.h"
 #include "ShadowTechnique.h"
+#include "ShadowViews.h"
 #include "TutorialAnchor.h"
 
 #include <QElapsedTimer>
@@ -487,8 +488,11 @@ void printPhase(const Phase& r, const BenchRequest& request, bool software)
     const bool shadows = r.settings.shadow.enabled;
     const QString runs = QStringLiteral("   run in %1/%2 frames").arg(r.shadowPassesRun).arg(frames)
                          + (r.shadowPassesRun == 0 ? QStringLiteral(" (cached)") : QStringLiteral(", %1 draws").arg(r.shadowDraws))
-                         + (r.shadowPassesRun > 0 && r.shadowMapClears < r.shadowPassesRun
+                         + (r.shadowPassesRun > 0 && r.shadowMapClears < r.shadowPassesRun && slicesDepth(r.settings)
                                 ? QStringLiteral(", map cleared in %1 (map.slices=%2)").arg(r.shadowMapClears).arg(r.settings.map.slices)
+                                : QString())
+                         + (r.settings.shadow.cache != ShadowCachePolicy::Off && r.shadowPassesRun > 0
+                                ? QStringLiteral(", shadow.cache=%1").arg(toString(r.settings.shadow.cache))
                                 : QString());
     if (!shadows)
         out() << "  " << QStringLiteral("shadow pass").leftJustified(kLabelWidth) << "   none: shadow.enabled=false\n";

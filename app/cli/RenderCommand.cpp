@@ -55,6 +55,11 @@ int runRender(const QStringList& arguments)
         parser.addOption({QStringLiteral("depth-out"),
                           QStringLiteral("PNG of the light's shadow map as the explorer shows it: colour ramp, legend, light volume and camera outline."),
                           QStringLiteral("file.png")});
+        parser.addOption({QStringLiteral("play"),
+                          QStringLiteral("Play the scene for n frames at 60 a second before the one written, ending at scene.time, as "
+                                         "the explorer would have drawn them: what shadow.cache kept and why shows in --depth-out's "
+                                         "colours and the cache line (default 0)."),
+                          QStringLiteral("n"), QStringLiteral("0")});
         if (!parseArguments(parser, QStringLiteral("render"), arguments))
             return kExitOk;
         const Settings settings = settingsFromOptions(parser);
@@ -71,13 +76,21 @@ int runRender(const QStringList& arguments)
         if (writeDepth && !settings.shadow.enabled)
             throw UsageError(QStringLiteral("--depth-out needs shadows; drop --set shadow.enabled=false"));
 
+        const int play = parseCount(parser.value(QStringLiteral("play")), QStringLiteral("play"), 0, 10000);
         HeadlessRenderer headless;
+        for (int k = play; k >= 1; --k) {
+            Settings before = settings;
+            before.animation.time = std::max(0.0, settings.animation.time - k / 60.0);
+            headless.renderFrame(before, size);
+        }
         const QImage scene = headless.renderScene(settings, size);
         out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
         if (const QString warp = warpStatusText(headless.renderer().lastFrame()); !warp.isEmpty())
             out() << warp << Qt::endl;
         if (const QString pages = virtualMapStatusText(headless.renderer().lastFrame()); !pages.isEmpty())
             out() << pages << Qt::endl;
+        if (const QString cache = cacheStatusText(headless.renderer().lastFrame()); !cache.isEmpty())
+            out() << cache << Qt::endl;
         if (const ShadowViewFrames& views = headless.renderer().shadowViews(); views.set.cascaded) {
             QStringList splits;
             for (const ShadowView& view : views.set.views)

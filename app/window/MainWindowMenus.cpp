@@ -142,6 +142,15 @@ void MainWindow::createViewMenu()
     frameFootprint->setIcon(DepthMapView::framingIcon(true));
     m_depthPane->addCaptionButton(fitMap);
     m_depthPane->addCaptionButton(frameFootprint);
+    QAction* redrawCache = view->addAction(tr("Redraw &Cached Shadows"), this, [this] {
+        for (SceneView* sceneView : m_views) {
+            if (sceneView)
+                sceneView->redrawCachedShadows();
+        }
+    });
+    redrawCache->setObjectName(QStringLiteral("redrawCachedShadowsAction"));
+    redrawCache->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    redrawCache->setToolTip(tr("With shadow.cache=on-demand, draw the moving casters where the shadow map is stale, once (Ctrl+Shift+R)"));
     view->addAction(m_densityAction);
     view->addAction(m_shadowOnlyAction);
     view->addAction(m_loupeAction);

@@ -439,6 +439,13 @@ void SceneView::keyPressEvent(QKeyEvent* event)
     QOpenGLWidget::keyPressEvent(event);
 }
 
+void SceneView::redrawCachedShadows()
+{
+    if (m_renderer)
+        m_renderer->requestShadowRedraw();
+    update();
+}
+
 void SceneView::redrawForMeasurement()
 {
     if (m_renderer)

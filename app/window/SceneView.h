@@ -69,6 +69,9 @@ public:
     int frameCount() const { return m_frameCount; }
     // Draws the frame again with the shadow map redrawn too, so the shadow pass is timed.
     void redrawForMeasurement();
+    // shadow.cache=on-demand (or every-n between redraws): draws the moving casters where the
+    // views are stale, once.
+    void redrawCachedShadows();
     double lastFrameMs() const { return m_lastFrameMs; }
 
     // Its width over its height, what a model's camera is framed for (16:9 before it has a size).
