@@ -97,6 +97,8 @@ QStringList countsLines(const FrameCounts& c)
     lines << tr("shadow pass: %1 draws, %2 triangles, %3 samples, %4 texels cleared, map %5")
                  .arg(c.shadow.draws)
                  .arg(countText(c.shadow.primitives), countText(c.shadow.samples), countText(c.clearedTexels), bytesText(c.mapBytes));
+    if (c.cacheBytes > 0)
+        lines << tr("  shadow.cache: %1 texels copied, copies %2").arg(countText(c.copiedTexels), bytesText(c.cacheBytes));
     if (c.blurTexels > 0)
         lines << tr("  of which blur: %1 texels written, %2 read and written").arg(countText(c.blurTexels), bytesText(c.blurBytes));
     QString lit = tr("lit pass: %1 draws, %2 triangles, %3 samples").arg(c.lit.draws).arg(countText(c.lit.primitives), countText(c.lit.samples));
@@ -119,6 +121,8 @@ QJsonObject countsJson(const FrameCounts& c)
             {QStringLiteral("blur_texels"), double(c.blurTexels)},
             {QStringLiteral("blur_bytes"), double(c.blurBytes)},
             {QStringLiteral("map_bytes"), double(c.mapBytes)},
+            {QStringLiteral("copied_texels"), double(c.copiedTexels)},
+            {QStringLiteral("cache_bytes"), double(c.cacheBytes)},
             {QStringLiteral("taps_per_lookup"), c.tapsPerLookup},
             {QStringLiteral("lookup_fragments"), counted(c.lookupFragments)},
             {QStringLiteral("taps"), counted(c.taps())}};

@@ -26,13 +26,22 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
     return meter.measure(buffer, *renderer.scene(), renderer.lightFrame(), settings, progress);
 }
 
-FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size)
+FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size, double timeStep)
 {
     Renderer& renderer = headless.renderer();
-    renderer.setCounting(true);
-    renderer.invalidateShadowMap();
-    try {
+    // A scene playing with the light still counts a frame of it, a step after one drawn whole:
+    // what a cache leaves out is not counted.
+    Settings counted = settings;
+    if (timeStep > 0.0) {
+        renderer.invalidateShadowMap();
         headless.renderFrame(settings, size, TimingMode::Finish);
+        counted.animation.time += timeStep;
+    } else {
+        renderer.invalidateShadowMap();
+    }
+    renderer.setCounting(true);
+    try {
+        headless.renderFrame(counted, size, TimingMode::Finish);
     } catch (...) {
         renderer.setCounting(false);
         throw;
@@ -57,7 +66,7 @@ void countRun(TimedRun& run, QSize size)
     Settings settings = run.settings;
     if (!run.cameraPath.empty())
         settings.camera = run.cameraPath.front();
-    run.samples.counts = countFrames(*run.headless, settings, size);
+    run.samples.counts = countFrames(*run.headless, settings, size, run.moving ? 0.0 : run.timeStep);
 }
 
 // One frame of `run`, the `index`th of its camera path.

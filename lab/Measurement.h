@@ -41,8 +41,10 @@ struct FrameSamples {
 
 // What a frame of `settings` at `size` asks of any GPU, its shadow pass drawn (FrameCounts):
 // counted in a frame of its own, since the counting queries slow a software rasteriser's
-// frame. A map drawn into slices clears its share of the cycle's one clear. Throws like render().
-FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size);
+// frame. A map drawn into slices clears its share of the cycle's one clear. With `timeStep`,
+// the scene playing with the light still: the frame `timeStep` after one drawn whole, what a
+// shadow.cache does a frame. Throws like render().
+FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QSize size, double timeStep = 0.0);
 
 // One configuration to time: where it renders, what, and whether the light "moves" (the
 // shadow map is redrawn every frame) or stands still (the cached map is reused).

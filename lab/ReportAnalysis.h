@@ -40,6 +40,9 @@ struct ReportRow {
     QStringList assignments;
     QString light;              // lightDescription(): rows of different lights are never compared
     SampleStats shadowPass;     // wall ms per pass, the shadow pass running every frame
+    // Its wall ms summed over the timed frames, a frame: less than a pass where a cache (or a
+    // still scene) leaves it out of some.
+    double shadowPerFrame = 0.0;
     SampleStats litPass;
     SampleStats frame;
     AccuracyResult accuracy;

@@ -52,6 +52,7 @@ struct FrameCounts {
     std::int64_t blurTexels = 0;        // texels the moments blur wrote, both axes
     std::int64_t blurBytes = 0;         // bytes it read and wrote
     std::int64_t copiedTexels = 0;      // texels shadow.cache copied to and from its copies
+    std::int64_t cacheBytes = 0;        // the memory of those copies
     std::int64_t mapBytes = 0;          // the shadow storage's memory (page pool and table for a virtual map)
     int tapsPerLookup = 0;              // the technique's texture reads per lookup, at most (ShadowTechnique::taps)
     std::int64_t lookupFragments = -1;  // lit fragments that looked the shadow up (counted frames)

@@ -522,6 +522,7 @@ void Renderer::countShadowPass(const FramePlan& plan, ShadowStorage& storage, Fr
     counts.blurTexels = done.blurTexels;
     counts.blurBytes = done.blurBytes;
     counts.copiedTexels = done.copiedTexels;
+    counts.cacheBytes = storage.cacheBytes();
     counts.mapBytes = !plan.shadows ? 0
         : plan.virtualMap && m_virtual ? std::int64_t(m_shadowMap.width()) * m_shadowMap.height() * 4 + m_virtual->pageTableBytes()
                                        : storage.bytes();

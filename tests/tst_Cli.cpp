@@ -138,6 +138,13 @@ private Q_SLOTS:
         QVERIFY2(depth.exitCode == 0, qPrintable(depth.err));
         QVERIFY(!QFile::exists(here.filePath("shadowlab-seed.png")));
 
+        // Played up to its time, a cached map says what it kept and why.
+        const Run played = shadowlab({"render", "--scene", "swing", "--size", "64x36", "--set", "shadow.cache=static", "--set", "scene.time=1",
+                                      "--play", "2", "--out", here.filePath("p.png")},
+                                     here.path());
+        QVERIFY2(played.exitCode == 0, qPrintable(played.err));
+        QVERIFY2(played.out.contains("cache: ") && played.out.contains("caster moved"), qPrintable(played.out));
+
         // A name safe in any shell or file system: no colon from city:N.
         const Run city = shadowlab({"render", "--scene", "city:20", "--size", "32x18"}, here.path());
         QVERIFY2(city.exitCode == 0, qPrintable(city.err));
@@ -337,6 +344,9 @@ private Q_SLOTS:
                                                   << "BoxTextured.gltf";
         QTest::newRow("unknown option") << QStringList{"render", "--frobnicate"} << "frobnicate";
         QTest::newRow("bench frames 0") << QStringList{"bench", "--frames", "0"} << "--frames";
+        QTest::newRow("play negative") << QStringList{"render", "--out", out, "--play", "-3"} << "--play";
+        QTest::newRow("pages without virtual") << QStringList{"render", "--out", out, "--set", "shadow.cache=pages"} << "shadow.virtual=true";
+        QTest::newRow("unknown cache") << QStringList{"render", "--out", out, "--set", "shadow.cache=sometimes"} << "on-demand";
         QTest::newRow("unknown command") << QStringList{"paint"} << "usage";
     }
 

@@ -246,6 +246,26 @@ private Q_SLOTS:
         }
     }
 
+    // shadow.force_invalidate, a moving sun: every view drawn every frame, the same pixels.
+    void aMovingSunDrawsEveryViewEveryFrame()
+    {
+        Settings s = presetSettings(m_traffic);
+        s.scene = m_traffic;
+        applyAssignment(s, QStringLiteral("shadow.cascades=2"));
+        applyAssignment(s, QStringLiteral("shadow.cache=static"));
+        applyAssignment(s, QStringLiteral("shadow.force_invalidate=true"));
+        Settings off = s;
+        off.shadow.cache = ShadowCachePolicy::Off;
+        for (int frame = 0; frame < 3; ++frame) {
+            off.animation.time = s.animation.time = 2.0;    // nothing moves: only the invalidation draws
+            const QImage image = m_cached->renderScene(s, kSize);
+            QCOMPARE(image, m_off->renderScene(off, kSize));
+            QVERIFY(m_cached->renderer().lastFrame().shadowPassRendered);
+            if (frame > 0)
+                QCOMPARE(count(m_cached->renderer().lastFrame().viewCauses, ViewCause::Light), 2);
+        }
+    }
+
     // every-n: the moving casters' shadows are those of the last redraw until the n-th frame,
     // which draws what off draws; the views in between are marked stale.
     void everyNIsStaleBetweenRedraws()

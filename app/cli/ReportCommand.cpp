@@ -20,6 +20,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <numeric>
 
 #include <unistd.h>
 
@@ -435,6 +436,8 @@ void timeAll(const ReportRequest& request, HeadlessRenderer& headless, ProgressB
                     [&](double f) { progress.show(kAccuracyShare + (1.0 - kAccuracyShare) * f, QStringLiteral("timing")); });
     for (std::size_t c = 0; c < request.sweep.size(); ++c) {
         rows[c].shadowPass = summarize(runs[c].samples.shadowWall);
+        const std::vector<double>& passes = runs[c].samples.shadowWall;
+        rows[c].shadowPerFrame = std::accumulate(passes.begin(), passes.end(), 0.0) / double(std::max<std::size_t>(runs[c].samples.wall.size(), 1));
         rows[c].litPass = summarize(runs[c].samples.litWall);
         rows[c].frame = summarize(runs[c].samples.wall);
         rows[c].counts = runs[c].samples.counts;

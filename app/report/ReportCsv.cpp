@@ -22,7 +22,7 @@ QStringList countFields(const FrameCounts& c)
     const auto count = [](std::int64_t n) { return n < 0 ? QString() : QString::number(n); };
     return {QString::number(c.shadow.draws), count(c.shadow.primitives), count(c.shadow.samples), count(c.clearedTexels), count(c.blurTexels),
             count(c.blurBytes), count(c.mapBytes), QString::number(c.lit.draws), count(c.lit.primitives), count(c.lit.samples),
-            QString::number(c.tapsPerLookup), count(c.lookupFragments), count(c.taps())};
+            QString::number(c.tapsPerLookup), count(c.lookupFragments), count(c.taps()), count(c.copiedTexels), count(c.cacheBytes)};
 }
 
 } // namespace
@@ -38,7 +38,8 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                                  "misclassified_pct,false_shadow_pct,false_light_pct,mae_pct,rmse_pct,area_mae_pct,area_rmse_pct,pareto,light,"
                                  "flicker_pct,flicker_change_pct,misclassified_px,misclassified_noise_px,area_pareto,area_mae_noise_pct,dssim,fine_texels_pct,"
                                  "shadow_draws,shadow_primitives,shadow_samples,cleared_texels,blur_texels,blur_bytes,map_bytes,"
-                                 "lit_draws,lit_primitives,lit_samples,taps_per_lookup,lookup_fragments,taps,renderer,machine\n");
+                                 "lit_draws,lit_primitives,lit_samples,taps_per_lookup,lookup_fragments,taps,copied_texels,cache_bytes,shadow_per_frame_ms,"
+                                 "renderer,machine\n");
     for (const ReportRow& r : rows) {
         const bool flickerMeasured = r.flicker.measured();
         const ErrorMetrics& h = r.accuracy.hard;
@@ -53,7 +54,7 @@ QByteArray reportCsv(const std::vector<ReportRow>& rows)
                            number(errorPixels(r, ErrorAxis::Misclassified), 0), number(errorNoisePixels(errorPixels(r, ErrorAxis::Misclassified)), 1),
                            r.areaFront ? QStringLiteral("1") : QStringLiteral("0"), number(areaNoisePercent(r), 4), number(dssim(r), 6),
                            number(100 * r.density.fineShare(), 3)}
-                   + countFields(r.counts) + QStringList{csvField(r.renderer), csvField(r.machine)})
+                   + countFields(r.counts) + QStringList{number(r.shadowPerFrame), csvField(r.renderer), csvField(r.machine)})
                    .join(QLatin1Char(','))
             + QLatin1Char('\n');
     }

@@ -119,6 +119,7 @@ QByteArray reportJson(const std::vector<ReportRow>& rows, const ReportFacts& fac
                                     {QStringLiteral("settings"), QJsonArray::fromStringList(r.assignments)},
                                     {QStringLiteral("light"), r.light},
                                     {QStringLiteral("shadow_pass_wall"), statsJson(r.shadowPass)},
+                                    {QStringLiteral("shadow_pass_per_frame_ms"), r.shadowPerFrame},
                                     {QStringLiteral("lit_pass_wall"), statsJson(r.litPass)},
                                     {QStringLiteral("frame_wall"), statsJson(r.frame)},
                                     {QStringLiteral("frames"), r.frame.count},

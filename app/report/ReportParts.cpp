@@ -148,6 +148,11 @@ FrameCounts readCounts(const JsonReader& json, const QJsonObject& object)
     c.blurTexels = json.bigCount(object, QStringLiteral("blur_texels"));
     c.blurBytes = json.bigCount(object, QStringLiteral("blur_bytes"));
     c.mapBytes = json.bigCount(object, QStringLiteral("map_bytes"));
+    // Reports from before shadow.cache have no copies.
+    if (object.contains(QStringLiteral("cache_bytes"))) {
+        c.copiedTexels = json.bigCount(object, QStringLiteral("copied_texels"));
+        c.cacheBytes = json.bigCount(object, QStringLiteral("cache_bytes"));
+    }
     c.tapsPerLookup = json.count(object, QStringLiteral("taps_per_lookup"));
     c.lookupFragments = json.bigCount(object, QStringLiteral("lookup_fragments"));
     return c;
@@ -171,6 +176,8 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
         r.assignments << assignment.toString();
     }
     r.shadowPass = readStats(json.within(QStringLiteral("shadow_pass_wall")), json.object(object, QStringLiteral("shadow_pass_wall")));
+    if (object.contains(QStringLiteral("shadow_pass_per_frame_ms")))
+        r.shadowPerFrame = json.number(object, QStringLiteral("shadow_pass_per_frame_ms"));
     r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
     r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
     r.counts = readCounts(json.within(QStringLiteral("counts")), json.object(object, QStringLiteral("counts")));
