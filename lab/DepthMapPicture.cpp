@@ -392,7 +392,7 @@ void drawCacheTiles(const Canvas& c, const DepthMapPicture& picture, const QRect
         QColor fill = cacheColour(tile.cause);
         const QRectF pixels = QRectF(picture.toPixel(tile.rect.topLeft(), visible), picture.toPixel(tile.rect.bottomRight(), visible)).normalized();
         QColor edge = fill;
-        fill.setAlpha(tile.cause == ViewCause::Cached ? 45 : 95);
+        fill.setAlpha(tile.cause == ViewCause::Cached ? 35 : 70);     // the depths stay readable under the tint
         c.painter.fillRect(pixels, fill);
         c.painter.setPen(QPen(edge, 1.5));
         c.painter.drawRect(pixels.adjusted(1, 1, -1, -1));

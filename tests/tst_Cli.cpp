@@ -473,7 +473,7 @@ private Q_SLOTS:
         QCOMPARE(lines.size(), 3);
         QVERIFY2(lines[0].endsWith(",area_mae_noise_pct,dssim,fine_texels_pct,shadow_draws,shadow_primitives,shadow_samples,cleared_texels,"
                                    "blur_texels,blur_bytes,map_bytes,lit_draws,lit_primitives,lit_samples,taps_per_lookup,lookup_fragments,"
-                                   "taps,renderer,machine"),
+                                   "taps,copied_texels,cache_bytes,shadow_per_frame_ms,renderer,machine"),
                  qPrintable(lines[0]));
         // Counts beside the times, the same on any GPU: every row drew, looked up and cleared.
         for (const char* count : {"shadow_primitives", "shadow_samples", "cleared_texels", "map_bytes", "lit_samples", "lookup_fragments", "taps"}) {

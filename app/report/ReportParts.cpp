@@ -176,8 +176,10 @@ ReportRow readRow(const JsonReader& file, const QJsonObject& object, const QDir&
         r.assignments << assignment.toString();
     }
     r.shadowPass = readStats(json.within(QStringLiteral("shadow_pass_wall")), json.object(object, QStringLiteral("shadow_pass_wall")));
-    if (object.contains(QStringLiteral("shadow_pass_per_frame_ms")))
-        r.shadowPerFrame = json.number(object, QStringLiteral("shadow_pass_per_frame_ms"));
+    // Reports from before shadow.cache ran the pass every frame.
+    const QJsonObject pass = json.object(object, QStringLiteral("shadow_pass_wall"));
+    r.shadowPerFrame = pass.contains(QStringLiteral("per_frame_ms")) ? json.within(QStringLiteral("shadow_pass_wall")).number(pass, QStringLiteral("per_frame_ms"))
+                                                                    : r.shadowPass.median;
     r.litPass = readStats(json.within(QStringLiteral("lit_pass_wall")), json.object(object, QStringLiteral("lit_pass_wall")));
     r.frame = readStats(json.within(QStringLiteral("frame_wall")), json.object(object, QStringLiteral("frame_wall")));
     r.counts = readCounts(json.within(QStringLiteral("counts")), json.object(object, QStringLiteral("counts")));
