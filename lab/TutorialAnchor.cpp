@@ -156,6 +156,23 @@ glm::mat4 lightSpace()
 
 } // namespace
 
+Settings tutorialSettings(Settings s)
+{
+    s.map.size = 1024;
+    s.map.format = DepthFormat::Depth24;
+    s.filter.mode = FilterMode::Pcf;
+    s.filter.kernel = 3;
+    s.filter.earlyOut = false;          // a tutorial filters every pixel
+    s.shadow.enabled = true;
+    s.bias = BiasSettings{};
+    s.bias.space = BiasSpace::Depth;    // the tutorial's bias is in depth units
+    s.bias.slope = 0.05;
+    s.bias.min = 0.005;
+    s.bias.cullFront = false;
+    s.light.fit = LightFit::Manual;     // the classic hand-set volume
+    return s;
+}
+
 TutorialAnchor::TutorialAnchor(GlFunctions* gl, QSize size) : m_gl(gl), m_size(size)
 {
     m_depthProgram = buildProgram(kDepthVertex, kDepthFragment, "depth");

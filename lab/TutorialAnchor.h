@@ -2,6 +2,7 @@
 
 #include "GlObject.h"
 #include "LightMath.h"
+#include "Settings.h"
 
 #include <QOpenGLShaderProgram>
 #include <QSize>
@@ -9,6 +10,11 @@
 #include <memory>
 
 namespace shadowlab {
+
+// The configuration of a typical tutorial implementation of the scene of `s`: 3 x 3 PCF on a
+// 1024 map, bias max(0.05 (1 - N.L), 0.005), the hand-set light volume, and a shadow pass every
+// frame (bench --baseline).
+Settings tutorialSettings(Settings s);
 
 // The anchor of `bench --anchor`: the frame of the LearnOpenGL 3.1.3 shadow-mapping tutorial as
 // its program draws it, in plain OpenGL 3.3 and none of ShadowLab's code, so ShadowLab's frame

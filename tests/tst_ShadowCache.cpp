@@ -219,12 +219,7 @@ private Q_SLOTS:
     // A moving light draws every view again from its still casters: the copies are the old light's.
     void aMovingLightDrawsEverything()
     {
-        Settings s = presetSettings(m_traffic);
-        s.scene = m_traffic;
-        applyAssignment(s, QStringLiteral("shadow.cascades=3"));
-        applyAssignment(s, QStringLiteral("shadow.cache=static"));
-        Settings off = s;
-        off.shadow.cache = ShadowCachePolicy::Off;
+        auto [s, off] = traffic({QStringLiteral("shadow.cascades=3"), QStringLiteral("shadow.cache=static")});
         for (Settings* settings : {&s, &off})
             settings->animation.time = 0.5;
         m_cached->renderScene(s, kSize);
@@ -249,13 +244,8 @@ private Q_SLOTS:
     // shadow.force_invalidate, a moving sun: every view drawn every frame, the same pixels.
     void aMovingSunDrawsEveryViewEveryFrame()
     {
-        Settings s = presetSettings(m_traffic);
-        s.scene = m_traffic;
-        applyAssignment(s, QStringLiteral("shadow.cascades=2"));
-        applyAssignment(s, QStringLiteral("shadow.cache=static"));
-        applyAssignment(s, QStringLiteral("shadow.force_invalidate=true"));
-        Settings off = s;
-        off.shadow.cache = ShadowCachePolicy::Off;
+        auto [s, off] = traffic({QStringLiteral("shadow.cascades=2"), QStringLiteral("shadow.cache=static"),
+                                 QStringLiteral("shadow.force_invalidate=true")});
         for (int frame = 0; frame < 3; ++frame) {
             off.animation.time = s.animation.time = 2.0;    // nothing moves: only the invalidation draws
             const QImage image = m_cached->renderScene(s, kSize);
@@ -270,12 +260,7 @@ private Q_SLOTS:
     // which draws what off draws; the views in between are marked stale.
     void everyNIsStaleBetweenRedraws()
     {
-        Settings s = presetSettings(m_traffic);
-        s.scene = m_traffic;
-        applyAssignment(s, QStringLiteral("shadow.cache=every-n"));
-        applyAssignment(s, QStringLiteral("shadow.cache_interval=3"));
-        Settings off = s;
-        off.shadow.cache = ShadowCachePolicy::Off;
+        auto [s, off] = traffic({QStringLiteral("shadow.cache=every-n"), QStringLiteral("shadow.cache_interval=3")});
         int stale = 0, same = 0, different = 0;
         for (int frame = 0; frame < 7; ++frame) {
             off.animation.time = s.animation.time = 1.0 + frame / 10.0;
@@ -297,12 +282,7 @@ private Q_SLOTS:
     // on-demand: stale until asked, then the same as off.
     void onDemandWaitsUntilAsked()
     {
-        Settings s = presetSettings(m_traffic);
-        s.scene = m_traffic;
-        applyAssignment(s, QStringLiteral("light.type=point"));
-        applyAssignment(s, QStringLiteral("shadow.cache=on-demand"));
-        Settings off = s;
-        off.shadow.cache = ShadowCachePolicy::Off;
+        auto [s, off] = traffic({QStringLiteral("light.type=point"), QStringLiteral("shadow.cache=on-demand")});
         s.animation.time = 0.2;
         m_cached->renderScene(s, kSize);
         off.animation.time = s.animation.time = 1.4;
@@ -358,6 +338,17 @@ private Q_SLOTS:
     }
 
 private:
+    // The traffic scene with `assignments`, and the same with shadow.cache=off.
+    std::pair<Settings, Settings> traffic(const QStringList& assignments) const
+    {
+        Settings cached = presetSettings(m_traffic);
+        for (const QString& a : assignments)
+            applyAssignment(cached, a);
+        Settings off = cached;
+        off.shadow.cache = ShadowCachePolicy::Off;
+        return {cached, off};
+    }
+
     QTemporaryDir m_dir;
     QString m_traffic;
     std::unique_ptr<HeadlessRenderer> m_off;

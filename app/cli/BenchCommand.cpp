@@ -52,25 +52,6 @@ struct Phase {
     bool anchor = false;    // the tutorial's own program (TutorialAnchor), not ShadowLab: frame times only
 };
 
-// The configuration of a typical tutorial implementation of the same scene: 3 x 3 PCF on a
-// 1024 map, bias max(0.05 (1 - N.L), 0.005), the hand-set light volume, and a shadow pass every frame.
-Settings tutorialSettings(Settings s)
-{
-    s.map.size = 1024;
-    s.map.format = DepthFormat::Depth24;
-    s.filter.mode = FilterMode::Pcf;
-    s.filter.kernel = 3;
-    s.filter.earlyOut = false;          // a tutorial filters every pixel
-    s.shadow.enabled = true;
-    s.bias = BiasSettings{};
-    s.bias.space = BiasSpace::Depth;    // the tutorial's bias is in depth units
-    s.bias.slope = 0.05;
-    s.bias.min = 0.005;
-    s.bias.cullFront = false;
-    s.light.fit = LightFit::Manual;     // the classic hand-set volume
-    return s;
-}
-
 // Each phase on its own context, timed by the one interleaved loop so a slow spell of a
 // shared machine hits every phase alike and their ratio stays fair.
 // The tutorial's program, when asked for, draws one frame after each round of the others, on

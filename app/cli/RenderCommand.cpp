@@ -37,6 +37,30 @@ void report(const QString& path, QSize size)
     out() << "wrote " << QFileInfo(path).absoluteFilePath() << " (" << size.width() << "x" << size.height() << ")" << Qt::endl;
 }
 
+// What the frame did, line by line: its texels, the warp, the virtual map's pages, the cache,
+// the cascades' splits, what the fit cut and the platform.
+void printFrameFacts(const Renderer& renderer)
+{
+    out() << formatTexelLine(renderer.lastFrame()) << Qt::endl;
+    if (const QString warp = warpStatusText(renderer.lastFrame()); !warp.isEmpty())
+        out() << warp << Qt::endl;
+    if (const QString pages = virtualMapStatusText(renderer.lastFrame()); !pages.isEmpty())
+        out() << pages << Qt::endl;
+    if (const QString cache = cacheStatusText(renderer.lastFrame()); !cache.isEmpty())
+        out() << cache << Qt::endl;
+    if (const ShadowViewFrames& views = renderer.shadowViews(); views.set.cascaded) {
+        QStringList splits;
+        for (const ShadowView& view : views.set.views)
+            splits << QString::number(view.splitNear, 'g', 4);
+        splits << QString::number(views.set.views.back().splitFar, 'g', 4);
+        out() << "cascades split at " << splits.join(QStringLiteral(", ")) << " world units from the camera"
+              << (renderer.visibleDepthRange() ? " (sdsm: the depths this frame draws)" : "") << Qt::endl;
+    }
+    printFitWarnings(renderer.lastFit());
+    if (const QString backend = activeHeadlessBackend(); !backend.isEmpty())
+        out() << "headless platform: " << backend << ", " << renderer.rendererString() << Qt::endl;
+}
+
 } // namespace
 
 int runRender(const QStringList& arguments)
@@ -84,24 +108,7 @@ int runRender(const QStringList& arguments)
             headless.renderFrame(before, size);
         }
         const QImage scene = headless.renderScene(settings, size);
-        out() << formatTexelLine(headless.renderer().lastFrame()) << Qt::endl;
-        if (const QString warp = warpStatusText(headless.renderer().lastFrame()); !warp.isEmpty())
-            out() << warp << Qt::endl;
-        if (const QString pages = virtualMapStatusText(headless.renderer().lastFrame()); !pages.isEmpty())
-            out() << pages << Qt::endl;
-        if (const QString cache = cacheStatusText(headless.renderer().lastFrame()); !cache.isEmpty())
-            out() << cache << Qt::endl;
-        if (const ShadowViewFrames& views = headless.renderer().shadowViews(); views.set.cascaded) {
-            QStringList splits;
-            for (const ShadowView& view : views.set.views)
-                splits << QString::number(view.splitNear, 'g', 4);
-            splits << QString::number(views.set.views.back().splitFar, 'g', 4);
-            out() << "cascades split at " << splits.join(QStringLiteral(", ")) << " world units from the camera"
-                  << (headless.renderer().visibleDepthRange() ? " (sdsm: the depths this frame draws)" : "") << Qt::endl;
-        }
-        printFitWarnings(headless.renderer().lastFit());
-        if (const QString backend = activeHeadlessBackend(); !backend.isEmpty())
-            out() << "headless platform: " << backend << ", " << headless.renderer().rendererString() << Qt::endl;
+        printFrameFacts(headless.renderer());
         QByteArray scenePng, depthPng;
         QSize depthSize;
         if (writeScene)
