@@ -10,10 +10,11 @@ GLint internalFormatOf(GlFunctions* gl, GLuint texture)
 {
     if (!texture)
         return 0;
-    GLint format = 0;
+    GLint format = 0, bound = 0;
+    gl->glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     gl->glBindTexture(GL_TEXTURE_2D, texture);
     gl->glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    gl->glBindTexture(GL_TEXTURE_2D, 0);
+    gl->glBindTexture(GL_TEXTURE_2D, GLuint(bound));
     return format;
 }
 
@@ -118,11 +119,15 @@ void CachedCopy::blit(GLuint from, GLuint to, const QRect& rect)
     m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
     const GLbitfield bits = (m_depth ? GL_DEPTH_BUFFER_BIT : 0u) | (m_colour ? GL_COLOR_BUFFER_BIT : 0u);
     const int x1 = rect.x() + rect.width(), y1 = rect.y() + rect.height();
-    // Nothing may clip or mask a copy: it restores every texel as it was.
+    // Nothing may clip or mask a copy: it restores every texel as it was. (The passes set their
+    // masks; the scissor is put back.)
+    const GLboolean scissor = m_gl->glIsEnabled(GL_SCISSOR_TEST);
     m_gl->glDisable(GL_SCISSOR_TEST);
     m_gl->glDepthMask(GL_TRUE);
     m_gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     m_gl->glBlitFramebuffer(rect.x(), rect.y(), x1, y1, rect.x(), rect.y(), x1, y1, bits, GL_NEAREST);
+    if (scissor)
+        m_gl->glEnable(GL_SCISSOR_TEST);
     m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousRead));
     m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));
 }

@@ -82,25 +82,24 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     ensureScene(settings);
     const bool newScene = m_sceneGeneration != sceneBefore;
     // Moving objects to where they are at the frame's time: everything that depends on where the
-    // casters are is due again, as for a new scene (its geometry stays uploaded).
-    // shadow.cache=pages draws again the pages where a moving caster was and where it is.
-    m_movedBounds.clear();
-    const auto movingBounds = [&] {
-        for (const DrawItem& item : m_scene->drawItems()) {
-            if (item.moves && item.castsShadow)
-                m_movedBounds.push_back(item.bounds);
-        }
-    };
-    if (plan.cache == ShadowCachePolicy::Pages)
-        movingBounds();
+    // casters are is due again, as for a new scene (its geometry stays uploaded). A move no
+    // shadow pass has seen (shadows off, a frame that failed) stays due until one does.
+    // (Collected with shadows off too: the pages wait for them.)
+    const bool pages = settings.shadow.virtualMap && settings.shadow.cache == ShadowCachePolicy::Pages;
+    const std::vector<Bounds> before = pages ? movingCasterBounds() : std::vector<Bounds>();
     const bool casterMoved = m_scene->pose(settings.animation.time);
-    if (casterMoved)
+    if (casterMoved) {
         ++m_sceneGeneration;
-    if (plan.cache == ShadowCachePolicy::Pages) {
-        if (casterMoved)
-            movingBounds();
-        else
-            m_movedBounds.clear();
+        m_castersMoved = true;
+        // shadow.cache=pages draws again the pages where a moving caster was and where it is.
+        if (!before.empty()) {
+            const std::vector<Bounds> after = movingCasterBounds();
+            m_movedBounds.resize(after.size());
+            for (std::size_t k = 0; k < after.size(); ++k) {
+                m_movedBounds[k].extend(before.at(k));
+                m_movedBounds[k].extend(after[k]);
+            }
+        }
     }
 
     // Update: the cameras, and the fit when one of its inputs changed (the clock through the
@@ -131,13 +130,27 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
         if (plan.virtualMap)
             renderPages(plan, storage, size, timing, stats);
         else if (plan.shadows)
-            renderViews(plan, storage, casterMoved, timing, stats);
+            renderViews(plan, storage, m_castersMoved, timing, stats);
+        if (plan.shadows) {
+            m_castersMoved = false;
+            m_movedBounds.clear();
+        }
     }
     countShadowPass(plan, storage, stats);
     buildDepthRange(plan, timing, stats);
     m_light = m_update.views().frames.front();
     stats.redraw = redrawReason(stats.shadowPassRendered, casterMoved, newScene, settings);
     m_plan = std::move(plan);
+}
+
+std::vector<Bounds> Renderer::movingCasterBounds() const
+{
+    std::vector<Bounds> bounds;
+    for (const DrawItem& item : m_scene->drawItems()) {
+        if (item.moves && item.castsShadow)
+            bounds.push_back(item.bounds);
+    }
+    return bounds;
 }
 
 FrameStats::Redraw Renderer::redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const

@@ -29,7 +29,9 @@ struct ShadowStorageKey {
     int columns = 1;
     int rows = 1;
     bool cutouts = true;            // shadow.cutouts: cut-out casters drawn through their mask
-    bool keepsCopy = false;         // shadow.cache keeps a copy of each view's still casters
+    // What shadow.cache keeps: nothing (0: drawn again when a caster moves), a copy of each
+    // view's still casters (1), or a virtual map's pages (2).
+    int cache = 0;
     // The depth pass's raster state against acne (depth storage only).
     bool cullFront = false;
     bool skipFloors = false;        // bias.skip_floors: floors the light is above left out
@@ -66,7 +68,7 @@ inline ShadowStorageKey commonStorageKey(const FramePlan& plan, int sceneGenerat
     key.columns = plan.grid.columns;
     key.rows = plan.grid.rows;
     key.cutouts = plan.settings.shadow.cutouts;
-    key.keepsCopy = plan.cache == ShadowCachePolicy::Static || plan.cache == ShadowCachePolicy::EveryN || plan.cache == ShadowCachePolicy::OnDemand;
+    key.cache = plan.cache == ShadowCachePolicy::Off ? 0 : plan.cache == ShadowCachePolicy::Pages ? 2 : 1;
     return key;
 }
 

@@ -256,6 +256,37 @@ private Q_SLOTS:
         }
     }
 
+    // Casters that moved while shadows were off are where they are when shadows come back, for
+    // a map of views and for a virtual map's pages.
+    void movesWhileShadowsAreOffAreNotLost_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::newRow("static, 2 cascades") << QStringList{QStringLiteral("shadow.cache=static"), QStringLiteral("shadow.cascades=2")};
+        QTest::newRow("pages") << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.cache=pages")};
+    }
+    void movesWhileShadowsAreOffAreNotLost()
+    {
+        QFETCH(QStringList, assignments);
+        auto [s, off] = traffic(assignments);
+        off.animation.time = s.animation.time = 0.5;
+        m_cached->renderScene(s, kSize);
+        for (const double t : {1.5, 2.5}) {
+            s.animation.time = t;
+            s.shadow.enabled = false;
+            m_cached->renderScene(s, kSize);
+        }
+        s.shadow.enabled = true;
+        off.animation.time = s.animation.time;
+        const QImage image = m_cached->renderScene(s, kSize), expected = m_off->renderScene(off, kSize);
+        if (s.shadow.virtualMap) {
+            const int same = samePages(*m_cached, *m_off), differing = differingPixels(image, expected);
+            QVERIFY(same >= 0);
+            QVERIFY(differing <= image.width() * image.height() / 2000);
+        } else {
+            QCOMPARE(image, expected);
+        }
+    }
+
     // every-n: the moving casters' shadows are those of the last redraw until the n-th frame,
     // which draws what off draws; the views in between are marked stale.
     void everyNIsStaleBetweenRedraws()
