@@ -227,6 +227,21 @@ std::optional<int> VirtualPageCache::slotOf(const VirtualPage& page) const
     return it == m_pages.end() ? std::nullopt : std::optional<int>(it->second.slot);
 }
 
+bool VirtualPageCache::inUse(const VirtualPage& page) const
+{
+    const auto it = m_pages.find(page.key());
+    return it != m_pages.end() && it->second.lastUsed == m_frame;
+}
+
+void VirtualPageCache::evict(const VirtualPage& page)
+{
+    const auto it = m_pages.find(page.key());
+    if (it == m_pages.end())
+        return;
+    m_free.push_back(it->second.slot);
+    m_pages.erase(it);
+}
+
 std::vector<std::uint16_t> VirtualPageCache::pageTable(const std::vector<glm::ivec2>& windows) const
 {
     constexpr int n = kVirtualLevelPages;

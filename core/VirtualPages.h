@@ -90,6 +90,11 @@ public:
     Update update(std::vector<VirtualPage> requests, int levels);
 
     std::optional<int> slotOf(const VirtualPage& page) const;
+    // Whether the last update() served `page`: the frame's pixels read it.
+    bool inUse(const VirtualPage& page) const;
+    // Gives up `page` and frees its slot (an out-of-date page no pixel reads: drawing it again
+    // would be work for nothing, and a later request draws it anew).
+    void evict(const VirtualPage& page);
     int resident() const { return int(m_pages.size()); }
     int poolSide() const { return m_poolSide; }
     int capacity() const { return m_poolSide * m_poolSide; }

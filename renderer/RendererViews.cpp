@@ -228,10 +228,13 @@ void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize 
         storage.clear(m_update.views().frames.front(), plan);    // every slot reads lit until a page is drawn there
     int draws = 0;
     stats.virtualMap = true;
+    if (m_castersMoved)
+        m_virtual->askAgain();
     stats.virtualPages = m_virtual->update(*m_scene, plan, m_camera, size, invalidate, storage, frameOf, &draws);
     if (plan.cache == ShadowCachePolicy::Pages) {
         stats.virtualPages.invalidated = m_virtual->redrawTouched(*m_scene, plan, m_movedBounds, storage, frameOf, &draws, stats.pageCauses);
         stats.virtualPages.drawn += stats.virtualPages.invalidated;
+        stats.virtualPages.resident = m_virtual->cache().resident();
     }
     m_shadowTimer.end();
     m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousDraw));

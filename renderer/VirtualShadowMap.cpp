@@ -421,12 +421,19 @@ int VirtualShadowMap::redrawTouched(const GpuScene& scene, const FramePlan& plan
     for (const Bounds& bounds : moved)
         areas.push_back(acrossLight(*m_layout, bounds));
     int drawn = 0;
+    bool evicted = false;
     for (const auto& [page, slot] : m_cache.residentPages()) {
         if (std::find(m_drawnSlots.begin(), m_drawnSlots.end(), slot) != m_drawnSlots.end()) {
             causes.emplace_back(slot, ViewCause::New);
             continue;
         }
         const bool touched = std::any_of(areas.begin(), areas.end(), [&](const AcrossLight& a) { return pageOverlaps(*m_layout, page, a); });
+        // A touched page this frame does not read is given up, not drawn.
+        if (touched && !m_cache.inUse(page)) {
+            m_cache.evict(page);
+            evicted = true;
+            continue;
+        }
         causes.emplace_back(slot, touched ? ViewCause::Casters : ViewCause::Cached);
         if (!touched)
             continue;
@@ -436,6 +443,8 @@ int VirtualShadowMap::redrawTouched(const GpuScene& scene, const FramePlan& plan
             *casterDraws += draws;
         ++drawn;
     }
+    if (evicted)
+        uploadPageTable();
     return drawn;
 }
 

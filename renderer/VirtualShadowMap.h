@@ -75,6 +75,10 @@ public:
         m_requestKey.reset();
     }
 
+    // Objects moved, receivers among them: the next update() asks again which pages the frame's
+    // pixels need (a cache of pages keeps the pages, not the requests).
+    void askAgain() { m_requestKey.reset(); }
+
     // The layout for the light of `settings` over the scene (kept while both stay the same).
     const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
 
@@ -87,9 +91,10 @@ public:
     VirtualMapStats update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                            ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws);
 
-    // shadow.cache=pages: draws again, in their slots, the resident pages that `moved` (where
-    // moving casters were last frame and where they are now) overlaps, except those update()
-    // drew this frame; every other page keeps what it holds, which no moved caster touches.
+    // shadow.cache=pages: draws again, in their slots, the resident pages the frame reads that
+    // `moved` (where moving casters were and are) overlaps, except those update() drew this
+    // frame, and gives up those it does not read; every other page keeps what it holds, which
+    // no moved caster touches.
     // Returns the pages drawn, and gives each resident page its cause in `causes`.
     int redrawTouched(const GpuScene& scene, const FramePlan& plan, const std::vector<Bounds>& moved, ShadowStorage& storage,
                       const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws, std::vector<std::pair<int, ViewCause>>& causes);
