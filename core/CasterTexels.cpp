@@ -6,49 +6,72 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
 
 namespace shadowlab {
 
 namespace {
 
-// The bounds in map uv of a box's image, or nothing where none of it lies inside the view's
-// sides. Corners all in front of the light project as they are (the image of the clipped box
-// is their hull, cut to the square); a box that reaches behind a perspective light is clipped
-// to the four side planes first, whose apex is the light: a box around the light covers all.
-std::optional<std::pair<glm::dvec2, glm::dvec2>> imageBounds(const std::array<glm::dvec3, 8>& corners, const LightFrame& view)
+// Widens [lo, hi] by the images of `points`; false where one lies at or behind a perspective
+// light's plane, whose image is not a point of the map.
+bool growImage(const convex::Polygon& points, const glm::dmat4& shadowMatrix, glm::dvec2& lo, glm::dvec2& hi)
 {
-    glm::dvec2 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-    bool inFront = true;
-    for (const glm::dvec3& c : corners) {
-        const glm::dvec4 p = view.shadowMatrix * glm::dvec4(c, 1.0);
-        if (!(p.w > 1e-9)) {
-            inFront = false;
-            break;
-        }
+    for (const glm::dvec3& c : points) {
+        const glm::dvec4 p = shadowMatrix * glm::dvec4(c, 1.0);
+        if (!(p.w > 1e-9))
+            return false;
         lo = glm::min(lo, glm::dvec2(p) / p.w);
         hi = glm::max(hi, glm::dvec2(p) / p.w);
     }
-    if (!inFront) {
-        const std::array<convex::Plane, 6> frustum = convex::frustumPlanes(view.viewProjection);
-        const std::vector<convex::Polygon> clipped =
-            convex::clipFaces(convex::hexahedronFaces(corners), {frustum[0], frustum[1], frustum[2], frustum[3]});
-        lo = glm::dvec2(std::numeric_limits<double>::max());
-        hi = glm::dvec2(std::numeric_limits<double>::lowest());
-        for (const convex::Polygon& face : clipped) {
-            for (const glm::dvec3& c : face) {
-                const glm::dvec4 p = view.shadowMatrix * glm::dvec4(c, 1.0);
-                if (!(p.w > 1e-9))
-                    return std::pair{glm::dvec2(0.0), glm::dvec2(1.0)};   // the light inside it
-                lo = glm::min(lo, glm::dvec2(p) / p.w);
-                hi = glm::max(hi, glm::dvec2(p) / p.w);
-            }
-        }
-    }
+    return true;
+}
+
+using UvBounds = std::optional<std::pair<glm::dvec2, glm::dvec2>>;
+
+// [lo, hi] where some of it lies inside the view's square, nothing otherwise.
+UvBounds insideSquare(const glm::dvec2& lo, const glm::dvec2& hi)
+{
     if (!(lo.x <= hi.x && lo.y <= hi.y) || hi.x < 0.0 || hi.y < 0.0 || lo.x > 1.0 || lo.y > 1.0)
         return std::nullopt;
     if (!std::isfinite(lo.x) || !std::isfinite(lo.y) || !std::isfinite(hi.x) || !std::isfinite(hi.y))
         return std::pair{glm::dvec2(0.0), glm::dvec2(1.0)};
     return std::pair{lo, hi};
+}
+
+constexpr glm::dvec2 kEmptyLo(std::numeric_limits<double>::max());
+constexpr glm::dvec2 kEmptyHi(std::numeric_limits<double>::lowest());
+
+// The bounds in map uv of a convex region's image (its faces), or nothing where none of it lies
+// inside the view's sides. A region that reaches behind a perspective light is clipped to the
+// four side planes first, whose apex is the light: a region around the light covers all.
+UvBounds faceImage(const std::vector<convex::Polygon>& faces, const LightFrame& view)
+{
+    glm::dvec2 lo = kEmptyLo, hi = kEmptyHi;
+    bool inFront = true;
+    for (const convex::Polygon& face : faces)
+        inFront = inFront && growImage(face, view.shadowMatrix, lo, hi);
+    if (!inFront) {
+        const std::array<convex::Plane, 6> frustum = convex::frustumPlanes(view.viewProjection);
+        lo = kEmptyLo;
+        hi = kEmptyHi;
+        for (const convex::Polygon& face : convex::clipFaces(faces, {frustum[0], frustum[1], frustum[2], frustum[3]})) {
+            if (!growImage(face, view.shadowMatrix, lo, hi))
+                return std::pair{glm::dvec2(0.0), glm::dvec2(1.0)};   // the light inside it
+        }
+    }
+    return insideSquare(lo, hi);
+}
+
+// The same for a box, its corners as Bounds::corners(): those all in front of the light project
+// as they are (the image of the clipped box is their hull, cut to the square).
+UvBounds imageBounds(const std::array<glm::dvec3, 8>& corners, const LightFrame& view)
+{
+    glm::dvec2 lo = kEmptyLo, hi = kEmptyHi;
+    if (growImage(convex::Polygon(corners.begin(), corners.end()), view.shadowMatrix, lo, hi))
+        return insideSquare(lo, hi);
+    return faceImage(convex::hexahedronFaces(corners), view);
 }
 
 QRect texelRect(const glm::dvec2& lo, const glm::dvec2& hi, int mapSize)
@@ -80,6 +103,20 @@ CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector
         result.drawn |= rect;
     }
     return result;
+}
+
+QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera, const Bounds& receivers, double margin)
+{
+    if (receivers.isEmpty() || mapSize <= 0)
+        return {};
+    const convex::Hull seen = convex::intersect(convex::frustumHull(camera.viewProjection), convex::boxHull(receivers));
+    if (seen.faces.empty())
+        return {};
+    const UvBounds bounds = faceImage(seen.faces, view);
+    if (!bounds)
+        return {};
+    const int grow = int(std::ceil(std::clamp(margin, 0.0, double(mapSize))));
+    return texelRect(bounds->first, bounds->second, mapSize).adjusted(-grow, -grow, grow, grow) & QRect(0, 0, mapSize, mapSize);
 }
 
 } // namespace shadowlab

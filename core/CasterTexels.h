@@ -24,4 +24,11 @@ struct CasterTexels {
 
 CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
 
+// Which texels of one view's map the camera's pixels may read: the image of the camera's
+// frustum cut to `receivers` (the box around every receiver), grown by `margin` texels for
+// how far a lookup reads around its point (lookupReachTexels). A moving caster's texels
+// outside it change no pixel of the frame, so shadow.cache may leave them for a frame that
+// reads them (renderer/ShadowCache.h). Empty: the frame reads nothing of the view.
+QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera, const Bounds& receivers, double margin);
+
 } // namespace shadowlab

@@ -128,6 +128,20 @@ std::optional<double> tapReachTexels(const Settings& settings)
     return 1.0 + *reach + 2.0;
 }
 
+std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view)
+{
+    const std::optional<double> taps = tapReachTexels(settings);
+    if (!taps || settings.bias.normal <= 0.0)
+        return taps;
+    if (view.perspective || view.volume.warped)
+        return std::nullopt;
+    // bias.normal texels of the wider axis: on the narrower one as many of its own as the
+    // axes' ratio.
+    const double wide = std::max(view.volume.width(), view.volume.height());
+    const double narrow = std::max(std::min(view.volume.width(), view.volume.height()), wide * 1e-9);
+    return *taps + settings.bias.normal * wide / narrow;
+}
+
 bool referencesStayNearer(const Settings& settings)
 {
     // A negative polygon offset pulls the stored depths toward the light, past the casters'.

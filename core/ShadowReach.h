@@ -23,6 +23,11 @@ namespace shadowlab {
 // with a margin for rounding; nullopt where the filter may read anywhere in the map (pcss's
 // blocker search) or reads lit only approximately where nothing was drawn (moments).
 std::optional<double> tapReachTexels(const Settings& settings);
+// How far from the point a pixel shades, in texels of `view`'s map, its lookup may read: the
+// taps' reach and the normal offset's shift; nullopt where it may read anywhere (as
+// tapReachTexels, and a normal offset off a perspective or warped view, whose shift has no
+// small bound).
+std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view);
 // Whether every tap of `settings` compares a reference no deeper than the receiver itself, so
 // that a receiver nearer the light than every caster is lit: false where the receiver's plane
 // or a grown bias moves a tap's reference (wide filters, pcss), for moments, and where a

@@ -66,6 +66,8 @@ QColor cacheColour(ViewCause cause)
         return {70, 190, 100};
     case ViewCause::Stale:
         return {235, 170, 40};
+    case ViewCause::Unseen:
+        return {170, 110, 230};
     case ViewCause::Casters:
         return {225, 60, 70};
     case ViewCause::Light:

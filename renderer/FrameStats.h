@@ -13,6 +13,7 @@ namespace shadowlab {
 enum class ViewCause {
     Cached,         // kept from an earlier frame, and right
     Stale,          // kept although a moving caster left it out of date (every-n, on-demand)
+    Unseen,         // kept although a moving caster left it out of date where no pixel reads it
     Casters,        // drawn again because a moving caster touched it
     Light,          // drawn again because its volume changed (the light moved, or the fit did)
     New,            // drawn because what every view shares changed (the scene, a setting) or first

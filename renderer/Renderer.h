@@ -173,6 +173,7 @@ private:
     int keyGeneration(const FramePlan& plan) const;
     // Per view, where in its square of `mapSize` texels each moving caster lies now.
     std::vector<std::vector<QRect>> movingTexels(int mapSize) const;
+    std::vector<QRect> readTexels(const Settings& settings) const;
     // Each view's volume as it should be drawn: nullopt where it has nothing to shadow.
     std::vector<std::optional<LightVolume>> wantedVolumes() const;
     // The share of a map of `count` views its casters may cover (DepthSlices::setCasterCoverage).

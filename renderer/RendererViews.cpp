@@ -72,6 +72,24 @@ std::vector<std::vector<QRect>> Renderer::movingTexels(int mapSize) const
     return texels;
 }
 
+std::vector<QRect> Renderer::readTexels(const Settings& settings) const
+{
+    // Where the frame's pixels may read each view: a moving caster elsewhere changes none of them.
+    Bounds receivers;
+    for (const DrawItem& item : m_scene->drawItems()) {
+        if (item.receivesShadow)
+            receivers.extend(item.bounds);
+    }
+    std::vector<QRect> read;
+    for (const LightFrame& frame : m_update.views().frames) {
+        const std::optional<double> margin = lookupReachTexels(settings, frame);
+        if (!margin)
+            return {};      // a lookup may read anywhere: every view is read everywhere
+        read.push_back(shadowlab::readTexels(frame, m_shadowMap.size(), m_camera, receivers, *margin));
+    }
+    return read;
+}
+
 std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
 {
     // Nothing to shadow, or no caster in the view: the tile reads lit, and stays so until the
@@ -112,8 +130,10 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
     frame.castersMoved = castersMoved;
     frame.requested = std::exchange(m_redrawRequested, false);
     frame.wanted = wantedVolumes();
-    if (keepsViews(plan.cache))
+    if (keepsViews(plan.cache)) {
         frame.movingTexels = movingTexels(m_shadowMap.size());
+        frame.readTexels = readTexels(plan.settings);
+    }
     const std::vector<ShadowCache::Decision> decisions = m_viewCache.decide(frame);
     bool any = false, draws = false;
     for (const ShadowCache::Decision& d : decisions) {

@@ -11,6 +11,8 @@ QString toString(ViewCause cause)
         return QStringLiteral("cached");
     case ViewCause::Stale:
         return QStringLiteral("stale");
+    case ViewCause::Unseen:
+        return QStringLiteral("out of sight");
     case ViewCause::Casters:
         return QStringLiteral("caster moved");
     case ViewCause::Light:
@@ -71,18 +73,29 @@ std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
         const std::vector<QRect> none;
         const std::vector<QRect>& now = i < frame.movingTexels.size() ? frame.movingTexels[i] : none;
         const bool touched = frame.castersMoved && (!now.empty() || !view.moving.empty());
+        const bool allRead = i >= frame.readTexels.size();
         Decision& d = decisions[i];
         if (fresh || view.volume != wanted) {
             // A view that gains or loses its only casters as they move changes for them.
             const bool byCasters = !fresh && frame.castersMoved && view.volume.has_value() != wanted.has_value();
             d.cause = fresh ? frame.freshCause : byCasters ? ViewCause::Casters : ViewCause::Light;
             d.work = !wanted ? Work::Clear : keeps ? Work::Refresh : Work::Draw;
-        } else if (wanted && keeps && (touched || view.stale)) {
-            d.work = movingDue ? Work::Restore : Work::Keep;
-            d.cause = movingDue ? ViewCause::Casters : ViewCause::Stale;
+        } else if (wanted && keeps && (touched || view.stale || view.unseen)) {
             std::vector<QRect> both = view.moving;
             both.insert(both.end(), now.begin(), now.end());
             d.areas = mergedRects(std::move(both));
+            const auto read = [&](const QRect& area) { return allRead || area.intersects(frame.readTexels[i]); };
+            if (!std::any_of(d.areas.begin(), d.areas.end(), read)) {
+                // Where moving casters were and are, no pixel of the frame reads: it stays
+                // as it is until one does (the camera turns there, or a caster moves in).
+                d.work = Work::Keep;
+                d.cause = ViewCause::Unseen;
+                d.areas.clear();
+                view.unseen = true;
+                continue;
+            }
+            d.work = movingDue ? Work::Restore : Work::Keep;
+            d.cause = movingDue ? ViewCause::Casters : ViewCause::Stale;
             view.stale = !movingDue;
         } else {
             d.cause = view.stale ? ViewCause::Stale : ViewCause::Cached;
@@ -99,6 +112,7 @@ void ShadowCache::done(std::size_t i, const Decision& decision, const std::optio
     view.volume = volume;
     view.moving = moving;
     view.stale = false;
+    view.unseen = false;
 }
 
 } // namespace shadowlab

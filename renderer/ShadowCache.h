@@ -56,6 +56,10 @@ public:
         bool requested = false;             // on-demand: draw what is stale (Renderer::requestShadowRedraw)
         std::vector<std::optional<LightVolume>> wanted;
         std::vector<std::vector<QRect>> movingTexels;
+        // `readTexels[i]`: the texels of view i the frame's pixels may read (core/CasterTexels.h
+        // readTexels); a view past its end is read everywhere. A moving caster's move that no
+        // pixel reads leaves the view as it is, marked unseen, until one does.
+        std::vector<QRect> readTexels;
     };
     std::vector<Decision> decide(const Frame& frame);
     // After view i's work: the volume it was drawn at (nullopt: cleared), and where moving
@@ -74,6 +78,7 @@ private:
         std::optional<LightVolume> volume;  // as drawn; nullopt: cleared
         std::vector<QRect> moving;          // where moving casters were drawn into it
         bool stale = false;                 // a moving caster moved since its last draw, and it was kept
+        bool unseen = false;                // ... where no pixel read it
     };
     std::vector<View> m_views;
     int m_movedFrames = 0;                  // every-n: frames of moving casters since they were last drawn

@@ -410,6 +410,27 @@ private slots:
         QVERIFY(d[0].work == Work::Restore && d[1].work == Work::Keep);
         QCOMPARE(int(d[0].areas.size()), 2);
         QVERIFY(std::find(d[0].areas.begin(), d[0].areas.end(), here | here.translated(2, 0)) != d[0].areas.end());
+        // Where no pixel reads, a move changes nothing: the view stays, out of sight, until a
+        // pixel reads where its casters were or are, even after they stop.
+        const QRect far(500, 500, 8, 8);
+        frame.readTexels = {QRect(0, 0, 100, 100), QRect(0, 0, 100, 100), QRect()};
+        frame.movingTexels = {{far}, none, none};
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore);        // it left the texels read
+        frame.movingTexels = {{far.translated(4, 0)}, none, none};
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Unseen && d[0].areas.empty());
+        frame.castersMoved = false;
+        d = run(frame);
+        QVERIFY(d[0].cause == ViewCause::Unseen);
+        frame.readTexels[0] = QRect(0, 0, 1000, 1000);
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore && d[0].cause == ViewCause::Casters);
+        QVERIFY(d[0].areas == std::vector<QRect>{far | far.translated(4, 0)});
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Cached);
+        frame.castersMoved = true;
+        frame.readTexels.clear();
         // The light moves: every view with a new volume is drawn from its still casters again.
         frame.wanted = {moved, moved, std::nullopt};
         d = run(frame);

@@ -371,6 +371,60 @@ private Q_SLOTS:
         QCOMPARE(first, m_off->renderScene(off, kSize));
     }
 
+    void movesOutOfSightWaitUntilSeen_data()
+    {
+        // A volume fitted to what the camera sees leaves such casters out of its views
+        // already; a volume as set (light.fit=manual), the cube's faces and a cascade's
+        // stabilised square keep them in.
+        QTest::addColumn<QStringList>("assignments");
+        const QString manual = QStringLiteral("light.fit=manual");
+        for (const char* light : {"directional", "spot", "point"})
+            QTest::addRow("%s, volume as set", light) << QStringList{QStringLiteral("light.type=%1").arg(light), manual};
+        QTest::addRow("3 cascades") << QStringList{QStringLiteral("shadow.cascades=3")};
+        QTest::addRow("pcf 5x5, normal offset") << QStringList{manual, QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=5"),
+                                                               QStringLiteral("bias.normal=1.5")};
+    }
+    // A caster that moves where no pixel of the frame can read its shadow draws nothing (the
+    // view stays, marked out of sight); when the camera turns to it, the view is repaired, and
+    // every frame is off's.
+    void movesOutOfSightWaitUntilSeen()
+    {
+        QFETCH(QStringList, assignments);
+        assignments << QStringLiteral("shadow.cache=static");
+        auto [s, off] = traffic(assignments);
+        // Into the corner toward the light, away from every moving caster and its shadow.
+        for (Settings* settings : {&s, &off}) {
+            settings->camera.position = glm::dvec3(-3.0, 1.5, 4.0);
+            settings->camera.target = glm::dvec3(-6.5, 0.0, 6.5);
+        }
+        int unseen = 0, awayDraws = 0;
+        for (int frame = 0; frame < 6; ++frame) {
+            off.animation.time = s.animation.time = 0.5 + frame / 30.0;
+            QVERIFY2(m_cached->renderScene(s, kSize) == m_off->renderScene(off, kSize), qPrintable(QStringLiteral("frame %1 differs from off").arg(frame)));
+            if (frame == 0)
+                continue;
+            unseen += count(m_cached->renderer().lastFrame().viewCauses, ViewCause::Unseen);
+            awayDraws += m_cached->renderer().lastFrame().shadowDraws;
+        }
+        QVERIFY2(unseen > 0, "no view was left out of sight");
+        QCOMPARE(awayDraws, 0);
+        // Back to the whole scene: the views the casters left are drawn where they are now.
+        int byCasters = 0;
+        for (int frame = 0; frame < 3; ++frame) {
+            for (Settings* settings : {&s, &off}) {
+                settings->camera.position = glm::dvec3(0.0, 6.0, 9.0);
+                settings->camera.target = glm::dvec3(0.0, 0.3, 0.0);
+                settings->animation.time = 0.8 + frame / 30.0;
+            }
+            QVERIFY2(m_cached->renderScene(s, kSize) == m_off->renderScene(off, kSize),
+                     qPrintable(QStringLiteral("frame %1 after the turn differs from off").arg(frame)));
+            const std::vector<ViewCause>& causes = m_cached->renderer().lastFrame().viewCauses;
+            QCOMPARE(count(causes, ViewCause::Unseen), 0);
+            byCasters += count(causes, ViewCause::Casters) + count(causes, ViewCause::Light);
+        }
+        QVERIFY(byCasters > 0);
+    }
+
     // A cache the map cannot keep is refused, naming the key and the way out.
     void policiesTheMapCannotKeepAreRefused()
     {
