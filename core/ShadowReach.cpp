@@ -1,5 +1,6 @@
 #include "ShadowReach.h"
 
+#include "MomentMath.h"
 #include "ShadowTechnique.h"
 
 #include <glm/common.hpp>
@@ -130,7 +131,11 @@ std::optional<double> tapReachTexels(const Settings& settings)
 
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view)
 {
-    const std::optional<double> taps = tapReachTexels(settings);
+    std::optional<double> taps = tapReachTexels(settings);
+    // A moments lookup is one bilinear tap of a map whose casters the blur spread by half its
+    // width; a mip chain or anisotropic taps read further, by the screen's footprint.
+    if (!taps && isMomentTechnique(settings.filter.mode) && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
+        taps = 1.0 + double(std::max(settings.moments.blur, 0) / 2) + 2.0;
     if (!taps || settings.bias.normal <= 0.0)
         return taps;
     if (view.perspective || view.volume.warped)
