@@ -119,4 +119,26 @@ QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera,
     return texelRect(bounds->first, bounds->second, mapSize).adjusted(-grow, -grow, grow, grow) & QRect(0, 0, mapSize, mapSize);
 }
 
+std::optional<QRect> windowPixels(const Bounds& box, const glm::dmat4& viewProjection, QSize size)
+{
+    if (box.isEmpty() || size.isEmpty())
+        return QRect();
+    if (isOutsideFrustum(viewProjection, box, false))
+        return QRect();
+    glm::dvec2 lo = kEmptyLo, hi = kEmptyHi;
+    for (const glm::dvec3& corner : box.corners()) {
+        const glm::dvec4 p = viewProjection * glm::dvec4(corner, 1.0);
+        if (!(p.w > 1e-9))
+            return std::nullopt;
+        lo = glm::min(lo, glm::dvec2(p) / p.w);
+        hi = glm::max(hi, glm::dvec2(p) / p.w);
+    }
+    if (!std::isfinite(lo.x) || !std::isfinite(lo.y) || !std::isfinite(hi.x) || !std::isfinite(hi.y))
+        return std::nullopt;
+    const glm::dvec2 pixels(size.width(), size.height());
+    const glm::dvec2 a = glm::clamp(glm::floor((lo * 0.5 + 0.5) * pixels) - 1.0, glm::dvec2(0.0), pixels);
+    const glm::dvec2 b = glm::clamp(glm::ceil((hi * 0.5 + 0.5) * pixels) + 1.0, glm::dvec2(0.0), pixels);
+    return b.x > a.x && b.y > a.y ? QRect(int(a.x), int(a.y), int(b.x - a.x), int(b.y - a.y)) : QRect();
+}
+
 } // namespace shadowlab

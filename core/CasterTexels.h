@@ -4,6 +4,9 @@
 #include "ShadowReach.h"
 
 #include <QRect>
+#include <QSize>
+
+#include <optional>
 
 #include <vector>
 
@@ -30,5 +33,10 @@ CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector
 // outside it change no pixel of the frame, so shadow.cache may leave them for a frame that
 // reads them (renderer/ShadowCache.h). Empty: the frame reads nothing of the view.
 QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera, const Bounds& receivers, double margin);
+
+// The pixels of a `size` viewport (OpenGL's window coordinates: x right, y up from the bottom
+// left) that `box` can cover through `viewProjection`, with a pixel of margin for rounding;
+// nullopt where it reaches behind the camera, so that any pixel may be. Empty: none.
+std::optional<QRect> windowPixels(const Bounds& box, const glm::dmat4& viewProjection, QSize size);
 
 } // namespace shadowlab

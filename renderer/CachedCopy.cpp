@@ -40,7 +40,7 @@ int texelBytes(GLint format)
 
 } // namespace
 
-void CachedCopy::ensure(QSize size, GLuint depth, GLuint colour)
+void CachedCopy::ensure(QSize size, GLuint depth, GLuint colour, const QString& label)
 {
     const GLint depthFormat = internalFormatOf(m_gl, depth);
     const GLint colourFormat = internalFormatOf(m_gl, colour);
@@ -58,9 +58,11 @@ void CachedCopy::ensure(QSize size, GLuint depth, GLuint colour)
         return t;
     };
     if (depthFormat)
-        m_depth = texture(depthFormat, GL_DEPTH_COMPONENT, GL_FLOAT, QStringLiteral("shadow cache: depth"));
-    if (colourFormat)
-        m_colour = texture(colourFormat, GL_RGBA, GL_FLOAT, QStringLiteral("shadow cache: moments"));
+        m_depth = texture(depthFormat, GL_DEPTH_COMPONENT, GL_FLOAT, label + QStringLiteral(": depth"));
+    if (colourFormat) {
+        const bool integer = colourFormat == GL_R32UI || colourFormat == GL_R16UI || colourFormat == GL_R8UI;
+        m_colour = texture(colourFormat, integer ? GL_RED_INTEGER : GL_RGBA, integer ? GL_UNSIGNED_INT : GL_FLOAT, label + QStringLiteral(": colour"));
+    }
     m_gl->glBindTexture(GL_TEXTURE_2D, 0);
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
@@ -75,14 +77,14 @@ void CachedCopy::ensure(QSize size, GLuint depth, GLuint colour)
         m_gl->glReadBuffer(GL_NONE);
     }
     const GLenum status = m_gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    labelGlObject(GlLabelKind::Framebuffer, m_framebuffer.id(), QStringLiteral("shadow cache"));
+    labelGlObject(GlLabelKind::Framebuffer, m_framebuffer.id(), label);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
     const GLenum error = m_gl->glGetError();
     if (status != GL_FRAMEBUFFER_COMPLETE || error != GL_NO_ERROR) {
         release();
-        throw RenderError(QStringLiteral("the driver cannot keep a %1 x %2 copy of the shadow map (status 0x%3, GL error 0x%4); choose a smaller "
-                                         "map.size or shadow.cache=off")
-                              .arg(size.width()).arg(size.height()).arg(status, 0, 16).arg(error, 0, 16));
+        throw RenderError(QStringLiteral("the driver cannot keep a %1 x %2 copy for the %3 (status 0x%4, GL error 0x%5); choose a smaller "
+                                         "map.size or window, or shadow.cache=off")
+                              .arg(size.width()).arg(size.height()).arg(label).arg(status, 0, 16).arg(error, 0, 16));
     }
     m_size = size;
     m_depthFormat = depthFormat;

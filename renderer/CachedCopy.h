@@ -3,20 +3,23 @@
 #include "GlObject.h"
 
 #include <QRect>
+#include <QString>
 #include <QSize>
 
 namespace shadowlab {
 
-// A copy of a shadow storage's render target, texel for texel: what shadow.cache keeps of the
-// still casters (renderer/ShadowCache.h). Its textures take the internal formats of the
-// source's, so glBlitFramebuffer copies them exactly, depth and colour alike (GL 3.3 core).
+// A copy of a render target, texel for texel: what shadow.cache keeps of the still casters
+// (renderer/ShadowCache.h), and of the still objects' page requests (VirtualShadowMap). Its
+// textures take the internal formats of the source's, so glBlitFramebuffer copies them
+// exactly, depth and colour (float or integer) alike (GL 3.3 core).
 class CachedCopy {
 public:
     explicit CachedCopy(GlFunctions* gl) : m_gl(gl) {}
 
     // Textures of the formats and size of `depth` and `colour` (0: none), reallocated when they
     // change. Throws RenderError when the driver cannot allocate them or render to them.
-    void ensure(QSize size, GLuint depth, GLuint colour);
+    // `label` names them in a debugger's list.
+    void ensure(QSize size, GLuint depth, GLuint colour, const QString& label = QStringLiteral("shadow cache"));
     // Copies `rect` (texels) of `framebuffer`'s attachments into the copy, and back.
     void save(GLuint framebuffer, const QRect& rect);
     void restore(GLuint framebuffer, const QRect& rect);

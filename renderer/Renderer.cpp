@@ -86,18 +86,20 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     // shadow pass has seen (shadows off, a frame that failed) stays due until one does.
     // (Collected with shadows off too: the pages wait for them.)
     const bool pages = settings.shadow.virtualMap && settings.shadow.cache == ShadowCachePolicy::Pages;
-    const std::vector<Bounds> before = pages ? movingCasterBounds() : std::vector<Bounds>();
+    const std::vector<MovingBounds> before = pages ? movingBounds() : std::vector<MovingBounds>();
     const bool casterMoved = m_scene->pose(settings.animation.time);
     if (casterMoved) {
         ++m_sceneGeneration;
         m_castersMoved = true;
-        // shadow.cache=pages draws again the pages where a moving caster was and where it is.
+        // shadow.cache=pages draws again the pages where a moving caster was and where it is,
+        // and asks again for the pages of the pixels where a moving object was and is.
         if (!before.empty()) {
-            const std::vector<Bounds> after = movingCasterBounds();
+            const std::vector<MovingBounds> after = movingBounds();
             m_movedBounds.resize(after.size());
             for (std::size_t k = 0; k < after.size(); ++k) {
-                m_movedBounds[k].extend(before.at(k));
-                m_movedBounds[k].extend(after[k]);
+                m_movedBounds[k].bounds.extend(before.at(k).bounds);
+                m_movedBounds[k].bounds.extend(after[k].bounds);
+                m_movedBounds[k].casts = after[k].casts;
             }
         }
     }
@@ -143,12 +145,12 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_plan = std::move(plan);
 }
 
-std::vector<Bounds> Renderer::movingCasterBounds() const
+std::vector<Renderer::MovingBounds> Renderer::movingBounds() const
 {
-    std::vector<Bounds> bounds;
+    std::vector<MovingBounds> bounds;
     for (const DrawItem& item : m_scene->drawItems()) {
-        if (item.moves && item.castsShadow)
-            bounds.push_back(item.bounds);
+        if (item.moves)
+            bounds.push_back({item.bounds, item.castsShadow});
     }
     return bounds;
 }

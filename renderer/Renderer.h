@@ -149,8 +149,12 @@ private:
     using SceneFile = std::pair<QString, std::shared_ptr<const Scene>>;
     // The file of `path` as last handed in, or as drawn now; null when neither.
     const SceneFile* fileFor(const QString& path) const;
-    // The bounds of the moving casters as posed now.
-    std::vector<Bounds> movingCasterBounds() const;
+    // The bounds of the moving objects as posed now, and whether each casts.
+    struct MovingBounds {
+        Bounds bounds;
+        bool casts = false;
+    };
+    std::vector<MovingBounds> movingBounds() const;
     // Why this frame's shadow pass drew, from what changed since the last frame's settings.
     FrameStats::Redraw redrawReason(bool drawn, bool casterMoved, bool sceneChanged, const Settings& settings) const;
     // The fit of `frame`, with what it reads from passes: sdsm's visible depth, the virtual layout.
@@ -222,10 +226,10 @@ private:
     // keeps of it; m_shadowKey holds what all views share.
     ShadowCache m_viewCache;
     bool m_redrawRequested = false;     // requestShadowRedraw()
-    // Moves of the casters since the last shadow pass: whether any, and for shadow.cache=pages
-    // each moving caster's bounds over where it was and is.
+    // Moves of the objects since the last shadow pass: whether any, and for shadow.cache=pages
+    // each moving object's bounds over where it was and is.
     bool m_castersMoved = false;
-    std::vector<Bounds> m_movedBounds;
+    std::vector<MovingBounds> m_movedBounds;
     FrameUpdate m_update;           // the camera, the fitted views and their reach
     std::optional<Scene> m_customScene;
     std::optional<std::pair<QString, std::shared_ptr<const Scene>>> m_sceneFile;     // setSceneFile's path and scene

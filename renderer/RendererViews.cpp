@@ -248,11 +248,26 @@ void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize 
         storage.clear(m_update.views().frames.front(), plan);    // every slot reads lit until a page is drawn there
     int draws = 0;
     stats.virtualMap = true;
-    if (m_castersMoved)
-        m_virtual->askAgain();
+    std::vector<Bounds> castersMoved;
+    if (m_castersMoved) {
+        // Under shadow.cache=pages only the pixels where moving objects were and are ask again.
+        std::optional<std::vector<QRect>> within;
+        if (plan.cache == ShadowCachePolicy::Pages && !m_movedBounds.empty())
+            within.emplace();
+        for (const MovingBounds& moved : m_movedBounds) {
+            if (moved.casts)
+                castersMoved.push_back(moved.bounds);
+            const std::optional<QRect> pixels = within ? windowPixels(moved.bounds, m_camera.viewProjection, size) : std::nullopt;
+            if (!pixels)
+                within.reset();
+            else if (!pixels->isEmpty())
+                within->push_back(*pixels);
+        }
+        m_virtual->askAgain(within);
+    }
     stats.virtualPages = m_virtual->update(*m_scene, plan, m_camera, size, invalidate, storage, frameOf, &draws);
     if (plan.cache == ShadowCachePolicy::Pages) {
-        stats.virtualPages.invalidated = m_virtual->redrawTouched(*m_scene, plan, m_movedBounds, storage, frameOf, &draws, stats.pageCauses);
+        stats.virtualPages.invalidated = m_virtual->redrawTouched(*m_scene, plan, castersMoved, storage, frameOf, &draws, stats.pageCauses);
         stats.virtualPages.drawn += stats.virtualPages.invalidated;
         stats.virtualPages.resident = m_virtual->cache().resident();
     }

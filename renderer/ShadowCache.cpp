@@ -1,6 +1,7 @@
 #include "ShadowCache.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace shadowlab {
 
@@ -39,6 +40,30 @@ std::vector<QRect> mergedRects(std::vector<QRect> rects)
                 }
             }
         }
+    }
+    return rects;
+}
+
+std::vector<QRect> fewRects(std::vector<QRect> rects, std::size_t most)
+{
+    const auto area = [](const QRect& r) { return qint64(r.width()) * r.height(); };
+    rects = mergedRects(std::move(rects));
+    while (rects.size() > std::max<std::size_t>(most, 1)) {
+        std::size_t bestA = 0, bestB = 1;
+        qint64 bestGrowth = std::numeric_limits<qint64>::max();
+        for (std::size_t a = 0; a < rects.size(); ++a) {
+            for (std::size_t b = a + 1; b < rects.size(); ++b) {
+                const qint64 growth = area(rects[a] | rects[b]) - area(rects[a]) - area(rects[b]);
+                if (growth < bestGrowth) {
+                    bestGrowth = growth;
+                    bestA = a;
+                    bestB = b;
+                }
+            }
+        }
+        rects[bestA] |= rects[bestB];
+        rects.erase(rects.begin() + std::ptrdiff_t(bestB));
+        rects = mergedRects(std::move(rects));
     }
     return rects;
 }

@@ -26,6 +26,9 @@ inline bool keepsViews(ShadowCachePolicy policy)
 // views it touches (where it was, or where it is now), each from its copy of the still casters.
 // `rects` merged where they overlap or touch, so that no texel is in two of them.
 std::vector<QRect> mergedRects(std::vector<QRect> rects);
+// The same, at most `most` of them (1 or more): where more are left, the two whose union grows
+// the covered area least are merged first.
+std::vector<QRect> fewRects(std::vector<QRect> rects, std::size_t most);
 
 class ShadowCache {
 public:

@@ -1,6 +1,8 @@
 #include "VirtualShadowMap.h"
 
+#include "CasterTexels.h"
 #include "PassState.h"
+#include "ShadowCache.h"
 #include "RenderError.h"
 #include "ShadowStorage.h"
 
@@ -12,7 +14,7 @@
 
 namespace shadowlab {
 
-VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl) {}
+VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl), m_stillRequests(gl) {}
 
 VirtualShadowMap::~VirtualShadowMap()
 {
@@ -33,6 +35,8 @@ const VirtualLayout& VirtualShadowMap::layout(const Settings& settings, const Bo
 
 void VirtualShadowMap::allocateTargets(QSize size)
 {
+    m_bufferKey.reset();
+    m_mirrored = false;
     m_requestFramebuffer.reset();
     m_gl->glActiveTexture(GL_TEXTURE0);
     m_requestTexture = makeTexture(m_gl);
@@ -98,7 +102,7 @@ VirtualMapUniforms VirtualShadowMap::uniforms(const CameraFrame& camera) const
     return u;
 }
 
-int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size)
+int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size, const std::vector<QRect>* within, bool keepStill)
 {
     if (!m_program) {
         m_program = std::make_unique<ShaderProgram>(m_gl, QStringLiteral("lit.vert"), QStringLiteral("virtual_request.frag"), QStringList());
@@ -113,16 +117,14 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     }
     if (!m_requestTexture || m_requestSize != size)
         allocateTargets(size);
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_requestFramebuffer.id());
+    const GLuint framebuffer = m_requestFramebuffer.id();
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    const QRect whole(QPoint(0, 0), size);
     PassState state;
-    state.viewport = QRect(QPoint(0, 0), size);
+    state.viewport = whole;
     state.depthTest = true;
     state.cullFace = GL_BACK;   // as the lit pass draws
     applyPassState(m_gl, state);
-    const GLuint none[4] = {0, 0, 0, 0};
-    m_gl->glClearBufferuiv(GL_COLOR, 0, none);
-    m_gl->glClearDepth(1.0);
-    m_gl->glClear(GL_DEPTH_BUFFER_BIT);
     const VirtualMapUniforms u = uniforms(camera);
     m_program->bind();
     m_program->set(m_light, u.light);
@@ -131,15 +133,44 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     m_gl->glUniform2fv(m_offsets, GLsizei(u.levelOffsets.size()), &u.levelOffsets[0][0]);
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     int draws = 0;
-    for (const DrawItem& item : scene.drawItems()) {
-        if (isOutsideFrustum(camera.viewProjection, item.bounds, false))
-            continue;
-        m_program->set(m_model, glm::mat4(toCamera * item.model));
-        m_program->set(m_normalMatrix, glm::mat3(item.normalMatrix));
-        m_program->set(m_mvp, glm::mat4(camera.viewProjection * item.model));
-        m_program->set(m_receives, int(item.receivesShadow));
-        scene.draw(item, false);
-        ++draws;
+    // The still objects or the moving ones, those that cover any of `areas`.
+    const auto drawObjects = [&](bool moving, const std::vector<QRect>& areas) {
+        for (const DrawItem& item : scene.drawItems()) {
+            if (item.moves != moving)
+                continue;
+            const std::optional<QRect> covers = windowPixels(item.bounds, camera.viewProjection, size);
+            if (covers && std::none_of(areas.begin(), areas.end(), [&](const QRect& area) { return covers->intersects(area); }))
+                continue;
+            m_program->set(m_model, glm::mat4(toCamera * item.model));
+            m_program->set(m_normalMatrix, glm::mat3(item.normalMatrix));
+            m_program->set(m_mvp, glm::mat4(camera.viewProjection * item.model));
+            m_program->set(m_receives, int(item.receivesShadow));
+            scene.draw(item, false);
+            ++draws;
+        }
+    };
+    if (within) {
+        // Where moving objects were and are: the still objects' requests and depths as they
+        // were drawn, and the moving objects over them, as one pass of both draws them. Every
+        // moving object lies inside the areas, so nothing outside them changes.
+        m_requestPixels = 0;
+        for (const QRect& area : *within) {
+            m_stillRequests.restore(framebuffer, area);
+            m_requestPixels += qint64(area.width()) * area.height();
+        }
+        drawObjects(true, *within);
+    } else {
+        const GLuint none[4] = {0, 0, 0, 0};
+        m_gl->glClearBufferuiv(GL_COLOR, 0, none);
+        m_gl->glClearDepth(1.0);
+        m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+        m_requestPixels = qint64(size.width()) * size.height();
+        drawObjects(false, {whole});
+        if (keepStill) {
+            m_stillRequests.ensure(size, m_requestDepth.id(), m_requestTexture.id(), QStringLiteral("virtual shadow map still objects' requests"));
+            m_stillRequests.save(framebuffer, whole);
+        }
+        drawObjects(true, {whole});
     }
     m_gl->glBindVertexArray(0);
     applyPassState(m_gl, PassState{});
@@ -258,11 +289,57 @@ std::vector<VirtualPage> VirtualShadowMap::decodeRequests(const RequestBytes& by
     return pages;
 }
 
-std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size)
+std::vector<VirtualPage> VirtualShadowMap::readRequests(QSize size, const std::vector<QRect>* within)
 {
+    if (within && m_reduction == Reduction::Cpu && m_mirrored)
+        return readRequestsWithin(size, *within);
     m_readback.resize((requestBytes(size) + sizeof(std::uint32_t) - 1) / sizeof(std::uint32_t));
     const RequestBytes bytes = readRequestBytes(size, m_readback.data());
+    m_mirrored = !bytes.flags;
+    m_pageCounts.clear();
     return decodeRequests(bytes, m_readback.data(), m_windows);
+}
+
+std::vector<VirtualPage> VirtualShadowMap::readRequestsWithin(QSize size, const std::vector<QRect>& within)
+{
+    // The software profile's reduction (RasteriserTuning::cpuVirtualRequests), where reading
+    // the whole buffer back costs as much as drawing the few pixels that changed.
+    const std::size_t pages = std::size_t(kVirtualLevelPages) * kVirtualLevelPages * m_windows.size();
+    if (m_pageCounts.size() != pages) {
+        m_pageCounts.assign(pages, 0);
+        for (const std::uint32_t word : m_readback) {
+            if (word != 0 && word - 1 < pages)
+                ++m_pageCounts[word - 1];
+        }
+    }
+    std::vector<std::uint32_t> words;
+    m_gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (const QRect& area : within) {
+        words.resize(std::size_t(area.width()) * std::size_t(area.height()));
+        m_gl->glReadPixels(area.x(), area.y(), area.width(), area.height(), GL_RED_INTEGER, GL_UNSIGNED_INT, words.data());
+        for (int y = 0; y < area.height(); ++y) {
+            for (int x = 0; x < area.width(); ++x) {
+                std::uint32_t& was = m_readback[std::size_t(area.y() + y) * std::size_t(size.width()) + std::size_t(area.x() + x)];
+                const std::uint32_t now = words[std::size_t(y) * std::size_t(area.width()) + std::size_t(x)];
+                if (now == was)
+                    continue;
+                if (was != 0 && was - 1 < pages)
+                    --m_pageCounts[was - 1];
+                if (now != 0 && now - 1 < pages)
+                    ++m_pageCounts[now - 1];
+                was = now;
+            }
+        }
+    }
+    // In the flags' order, as decodeRequests() gives them.
+    std::vector<VirtualPage> requested;
+    for (std::size_t i = 0; i < pages; ++i) {
+        if (m_pageCounts[i] == 0)
+            continue;
+        if (const std::optional<VirtualPage> page = decodePageRequest(std::uint32_t(i) + 1u, m_windows))
+            requested.push_back(*page);
+    }
+    return requested;
 }
 
 void VirtualShadowMap::startReadback(QSize size, const RequestKey& key)
@@ -272,6 +349,7 @@ void VirtualShadowMap::startReadback(QSize size, const RequestKey& key)
     m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, m_pixelPack.id());
     m_gl->glBufferData(GL_PIXEL_PACK_BUFFER, GLsizeiptr(requestBytes(size)), nullptr, GL_STREAM_READ);
     m_pendingBytes = readRequestBytes(size, nullptr);
+    m_mirrored = false;
     m_gl->glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     m_fence = m_gl->glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     m_gl->glFlush();
@@ -328,6 +406,8 @@ void VirtualShadowMap::resetPool(int poolSide)
     m_cacheLayoutGeneration = m_layoutGeneration;
     m_tableDirty = true;
     m_requestKey.reset();   // what the receivers ask for is asked again: they may have moved
+    m_bufferKey.reset();    // and the still objects may be others
+    m_stillKey.reset();
     if (m_fence) {          // pages of what is gone
         m_gl->glDeleteSync(m_fence);
         m_fence = nullptr;
@@ -356,15 +436,30 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     }
     // Requests read back asynchronously arrive a frame or more after their pass.
     bool arrived = m_fence && collectReadback(false);
-    const bool asked = !m_requestKey || !(*m_requestKey == key);
+    const bool asked = !m_requestKey || !(*m_requestKey == key) || m_askAgainWithin;
     if (asked && !(m_fence && m_pendingKey == key)) {
-        stats.requestDraws = drawRequests(scene, camera, requestSize);
+        // Only where objects moved, while the buffer and the still objects' copy hold this
+        // camera's requests. The copy is taken once the camera stands (a second pass at the
+        // same key): a moving camera asks everywhere anyway.
+        constexpr std::size_t kMostAreas = 8;
+        const std::vector<QRect> within = fewRects(m_askWithin, kMostAreas);
+        const bool pages = plan.cache == ShadowCachePolicy::Pages;
+        const bool partly = m_askAgainWithin && pages && m_bufferKey == key && m_stillKey == key;
+        const bool keepStill = pages && m_bufferKey == key;
+        stats.requestDraws = drawRequests(scene, camera, requestSize, partly ? &within : nullptr, keepStill);
+        if (!partly)
+            m_stillKey = keepStill ? std::optional<RequestKey>(key) : std::nullopt;
+        if (!pages)
+            m_stillRequests.release();
+        m_bufferKey = key;
+        m_askWithin.clear();
+        m_askAgainWithin = false;
         if (m_async && m_cache.resident() > 0) {
             if (m_fence)
                 arrived = collectReadback(true) || arrived;     // one read-back in flight at a time
             startReadback(requestSize, key);
         } else {
-            m_requests = readRequests(requestSize);
+            m_requests = readRequests(requestSize, partly ? &within : nullptr);
             m_requestKey = key;
             arrived = true;
         }

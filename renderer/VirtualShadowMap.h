@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CachedCopy.h"
 #include "FrameStats.h"
 #include "GpuScene.h"
 #include "LightMath.h"
@@ -76,8 +77,22 @@ public:
     }
 
     // Objects moved, receivers among them: the next update() asks again which pages the frame's
-    // pixels need (a cache of pages keeps the pages, not the requests).
-    void askAgain() { m_requestKey.reset(); }
+    // pixels need (a cache of pages keeps the pages, not the requests). With `within` (the
+    // pixels where moving objects were and are, windowPixels()), only those pixels ask again
+    // while the camera, the size and the layout stand: every other pixel sees what it saw.
+    void askAgain(const std::optional<std::vector<QRect>>& within = std::nullopt)
+    {
+        if (within) {
+            m_askWithin.insert(m_askWithin.end(), within->begin(), within->end());
+            m_askAgainWithin = m_askAgainWithin || !within->empty();    // none: no pixel sees another thing
+        } else {
+            m_requestKey.reset();
+            m_askWithin.clear();
+            m_askAgainWithin = false;
+        }
+    }
+    // The pixels the last request pass drew (all of them, or those it asked again).
+    qint64 requestPixels() const { return m_requestPixels; }
 
     // The layout for the light of `settings` over the scene (kept while both stay the same).
     const VirtualLayout& layout(const Settings& settings, const Bounds& sceneBounds);
@@ -109,7 +124,11 @@ public:
 private:
     // Every page dropped, for a pool of poolSide² slots.
     void resetPool(int poolSide);
-    int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size);
+    // Into the request buffer: every pixel, the still objects first (kept in m_stillRequests
+    // with `keepStill`), then the moving ones. With `within`, only those pixels: the still
+    // objects' requests copied back there and the moving objects drawn over them; the rest keep
+    // what the buffer holds for the same camera, size and layout.
+    int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size, const std::vector<QRect>* within, bool keepStill);
     // The request pass's result as bytes: a flag a page (reduced on the GPU) or a word a pixel.
     struct RequestBytes {
         bool flags = false;
@@ -121,7 +140,11 @@ private:
     // Into client memory `into`, or the bound pixel-pack buffer with nullptr.
     RequestBytes readRequestBytes(QSize size, void* into);
     static std::vector<VirtualPage> decodeRequests(const RequestBytes& bytes, const void* data, const std::vector<glm::ivec2>& windows);
-    std::vector<VirtualPage> readRequests(QSize size);
+    // With `within` (the pixels the last pass drew, under the CPU reduction of a buffer read
+    // whole before): only those pixels read back, and the pages from a count per page of the
+    // pixels asking for it.
+    std::vector<VirtualPage> readRequests(QSize size, const std::vector<QRect>* within = nullptr);
+    std::vector<VirtualPage> readRequestsWithin(QSize size, const std::vector<QRect>& within);
     void startReadback(QSize size, const RequestKey& key);
     // Takes the pending read-back's pages if it has arrived (or, with `wait`, once it has).
     bool collectReadback(bool wait);
@@ -136,6 +159,8 @@ private:
     GlFramebuffer m_requestFramebuffer;
     QSize m_requestSize;
     std::vector<std::uint32_t> m_readback;  // a synchronous read-back: request words, or page flags four to a word
+    bool m_mirrored = false;                // m_readback holds every word the request buffer holds
+    std::vector<std::uint32_t> m_pageCounts;    // readRequestsWithin(): pixels asking for each page (empty: not counted)
     Reduction m_reduction = Reduction::Gpu;
     std::unique_ptr<ShaderProgram> m_reduceProgram;
     GLint m_reduceWidth = -1, m_reduceLevels = -1, m_reduceRequests = -1;
@@ -175,6 +200,12 @@ private:
         bool operator==(const RequestKey&) const = default;
     };
     std::optional<RequestKey> m_requestKey;
+    std::optional<RequestKey> m_bufferKey;      // what the request buffer holds, every pixel of it
+    CachedCopy m_stillRequests;                 // shadow.cache=pages: the still objects' requests and depths
+    std::optional<RequestKey> m_stillKey;       // ... for what
+    std::vector<QRect> m_askWithin;             // askAgain()'s pixels since the last request pass
+    bool m_askAgainWithin = false;
+    qint64 m_requestPixels = 0;
     std::vector<VirtualPage> m_requests;
     bool m_async = false;
     GlBuffer m_pixelPack;

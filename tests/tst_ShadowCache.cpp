@@ -160,6 +160,9 @@ private Q_SLOTS:
         QTest::addRow("pages, motion capture (ASE)") << models + QStringLiteral("ASE/MotionCaptureROM.ase")
                                                      << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.cache=pages")};
         QTest::addRow("pages, virtual") << QStringLiteral("traffic") << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.cache=pages")};
+        QTest::addRow("pages, virtual, hardware profile")
+            << QStringLiteral("traffic")
+            << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.cache=pages"), QStringLiteral("rasteriser.profile=hardware")};
         QTest::addRow("pages, city traffic")
             << QStringLiteral("city:600+60")
             << QStringList{QStringLiteral("shadow.virtual=true"), QStringLiteral("shadow.cache=pages"), QStringLiteral("camera.position=-3,8,45"),
@@ -179,6 +182,7 @@ private Q_SLOTS:
         Settings off = cached;
         off.shadow.cache = ShadowCachePolicy::Off;
         int cachedDraws = 0, offDraws = 0, kept = 0, byCasters = 0, samePagesCompared = 0;
+        qint64 cachedRequestPixels = 0, offRequestPixels = 0;
         for (int frame = 0; frame < 8; ++frame) {
             off.animation.time = cached.animation.time = 0.7 + frame / 30.0;
             const QImage expected = m_off->renderScene(off, kSize);
@@ -190,6 +194,10 @@ private Q_SLOTS:
                 // The same pages asked for, moving receivers' included.
                 QVERIFY2(pageKeys(m_cached->renderer().virtualMap()->requests()) == pageKeys(m_off->renderer().virtualMap()->requests()),
                          qPrintable(QStringLiteral("frame %1: other pages asked for than with shadow.cache=off").arg(frame)));
+                if (frame > 0) {
+                    cachedRequestPixels += m_cached->renderer().virtualMap()->requestPixels();
+                    offRequestPixels += m_off->renderer().virtualMap()->requestPixels();
+                }
                 const int same = samePages(*m_cached, *m_off);
                 QVERIFY2(same >= 0, qPrintable(QStringLiteral("frame %1: a page's depths differ from shadow.cache=off").arg(frame)));
                 samePagesCompared += same;
@@ -216,6 +224,9 @@ private Q_SLOTS:
               qPrintable(QTest::currentDataTag()), cachedDraws, offDraws, kept, byCasters, samePagesCompared);
         QVERIFY2(byCasters > 0, "no view was drawn for its moving casters");
         QVERIFY2(!cached.shadow.virtualMap || samePagesCompared > 0, "no page sat in the same slot with and without the cache");
+        // Only the pixels where moving objects were and are ask for their pages again.
+        QVERIFY2(!cached.shadow.virtualMap || cachedRequestPixels < offRequestPixels, qPrintable(QStringLiteral("%1 pixels asked again, against %2 with shadow.cache=off")
+                                                                      .arg(cachedRequestPixels).arg(offRequestPixels)));
         // Fewer casters drawn where some stand still (more than a ground), and never more.
         const Scene built = buildScene(cached.scene);
         const auto still = std::count_if(built.objects.begin(), built.objects.end(), [](const SceneObject& o) { return o.castsShadow && !o.motion; });
