@@ -43,10 +43,11 @@ UvBounds insideSquare(const glm::dvec2& lo, const glm::dvec2& hi)
 constexpr glm::dvec2 kEmptyLo(std::numeric_limits<double>::max());
 constexpr glm::dvec2 kEmptyHi(std::numeric_limits<double>::lowest());
 
-// The bounds in map uv of a convex region's image (its faces), or nothing where none of it lies
-// inside the view's sides. A region that reaches behind a perspective light is clipped to the
-// four side planes first, whose apex is the light: a region around the light covers all.
-UvBounds faceImage(const std::vector<convex::Polygon>& faces, const LightFrame& view)
+// The bounds in map uv of a convex region's image (its faces), past the view's square too; the
+// whole square where the region reaches around the light, nothing where it lies wholly behind
+// it. A region that reaches behind a perspective light is clipped to the four side planes
+// first, whose apex is the light.
+std::optional<std::pair<glm::dvec2, glm::dvec2>> unclippedImage(const std::vector<convex::Polygon>& faces, const LightFrame& view)
 {
     glm::dvec2 lo = kEmptyLo, hi = kEmptyHi;
     bool inFront = true;
@@ -61,7 +62,18 @@ UvBounds faceImage(const std::vector<convex::Polygon>& faces, const LightFrame& 
                 return std::pair{glm::dvec2(0.0), glm::dvec2(1.0)};   // the light inside it
         }
     }
-    return insideSquare(lo, hi);
+    if (!(lo.x <= hi.x && lo.y <= hi.y))
+        return std::nullopt;
+    if (!std::isfinite(lo.x) || !std::isfinite(lo.y) || !std::isfinite(hi.x) || !std::isfinite(hi.y))
+        return std::pair{glm::dvec2(0.0), glm::dvec2(1.0)};
+    return std::pair{lo, hi};
+}
+
+// ... only where some of it lies inside the view's sides.
+UvBounds faceImage(const std::vector<convex::Polygon>& faces, const LightFrame& view)
+{
+    const auto image = unclippedImage(faces, view);
+    return image ? insideSquare(image->first, image->second) : std::nullopt;
 }
 
 // The same for a box, its corners as Bounds::corners(): those all in front of the light project
@@ -112,11 +124,14 @@ QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera,
     const convex::Hull seen = convex::intersect(convex::frustumHull(camera.viewProjection), convex::boxHull(receivers));
     if (seen.faces.empty())
         return {};
-    const UvBounds bounds = faceImage(seen.faces, view);
-    if (!bounds)
+    // Grown before it is cut to the square: a lookup moved off a receiver outside the map
+    // may land inside it.
+    const auto image = unclippedImage(seen.faces, view);
+    if (!image)
         return {};
-    const int grow = int(std::ceil(std::clamp(margin, 0.0, double(mapSize))));
-    return texelRect(bounds->first, bounds->second, mapSize).adjusted(-grow, -grow, grow, grow) & QRect(0, 0, mapSize, mapSize);
+    const double grow = std::ceil(std::clamp(margin, 0.0, double(mapSize))) / double(mapSize);
+    const UvBounds bounds = insideSquare(image->first - grow, image->second + grow);
+    return bounds ? texelRect(bounds->first, bounds->second, mapSize) : QRect();
 }
 
 std::optional<QRect> windowPixels(const Bounds& box, const glm::dmat4& viewProjection, QSize size)

@@ -1,6 +1,5 @@
 #include "ShadowReach.h"
 
-#include "MomentMath.h"
 #include "ShadowTechnique.h"
 
 #include <glm/common.hpp>
@@ -131,20 +130,20 @@ std::optional<double> tapReachTexels(const Settings& settings)
 
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view)
 {
-    std::optional<double> taps = tapReachTexels(settings);
-    // A moments lookup is one bilinear tap of a map whose casters the blur spread by half its
-    // width; a mip chain or anisotropic taps read further, by the screen's footprint.
-    if (!taps && isMomentTechnique(settings.filter.mode) && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
-        taps = 1.0 + double(std::max(settings.moments.blur, 0) / 2) + 2.0;
-    if (!taps || settings.bias.normal <= 0.0)
-        return taps;
-    if (view.perspective || view.volume.warped)
+    const std::optional<double> taps = tapReachTexels(settings);
+    if (!taps)
         return std::nullopt;
-    // bias.normal texels of the wider axis: on the narrower one as many of its own as the
-    // axes' ratio.
+    // A warped view's texels differ in shape over the map: no bound from its volume.
+    if (view.volume.warped && (settings.bias.normal > 0.0 || settings.bias.footprint))
+        return std::nullopt;
+    if (view.perspective && settings.bias.normal > 0.0)
+        return std::nullopt;
+    // The offsets are in texels of the wider axis: on the narrower one as many of its own as
+    // the axes' ratio. The footprint bias moves a lookup by up to half a texel.
     const double wide = std::max(view.volume.width(), view.volume.height());
     const double narrow = std::max(std::min(view.volume.width(), view.volume.height()), wide * 1e-9);
-    return *taps + settings.bias.normal * wide / narrow;
+    const double shift = std::max(settings.bias.normal, 0.0) + (settings.bias.footprint ? 0.5 : 0.0);
+    return *taps + shift * wide / narrow;
 }
 
 bool referencesStayNearer(const Settings& settings)

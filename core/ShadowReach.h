@@ -23,10 +23,11 @@ namespace shadowlab {
 // with a margin for rounding; nullopt where the filter may read anywhere in the map (pcss's
 // blocker search) or reads lit only approximately where nothing was drawn (moments).
 std::optional<double> tapReachTexels(const Settings& settings);
-// How far from the point a pixel shades, in texels of `view`'s map, a caster's texels may
-// change what its lookup reads: the taps' reach, the moments' blur and the normal offset's
-// shift; nullopt where it may be anywhere (pcss's blocker search, a moments map's mip chain,
-// a normal offset off a perspective or warped view, whose shift has no small bound).
+// How far from the point a pixel shades, in texels of `view`'s map, its lookup may read: the
+// taps' reach and the shifts of the normal offset and the footprint bias; nullopt where it may
+// read anywhere (as tapReachTexels: pcss's blocker search, the moments, whose blur spreads over
+// the box of every caster; a normal offset off a perspective view, or an offset on a warped
+// one, whose shift has no small bound).
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view);
 // Whether every tap of `settings` compares a reference no deeper than the receiver itself, so
 // that a receiver nearer the light than every caster is lit: false where the receiver's plane

@@ -27,6 +27,15 @@ QString toString(ViewCause cause)
 std::vector<QRect> mergedRects(std::vector<QRect> rects)
 {
     rects.erase(std::remove_if(rects.begin(), rects.end(), [](const QRect& r) { return r.isEmpty(); }), rects.end());
+    // Each merge scans the pairs again: past a few hundred (as many moving casters in one
+    // view), their bounding rectangle stands for them.
+    constexpr std::size_t kMostMerged = 256;
+    if (rects.size() > kMostMerged) {
+        QRect all;
+        for (const QRect& r : rects)
+            all |= r;
+        return {all};
+    }
     // Until no two overlap or touch: each merge leaves one fewer.
     for (bool merged = true; merged;) {
         merged = false;
@@ -48,6 +57,13 @@ std::vector<QRect> fewRects(std::vector<QRect> rects, std::size_t most)
 {
     const auto area = [](const QRect& r) { return qint64(r.width()) * r.height(); };
     rects = mergedRects(std::move(rects));
+    // Pairs scanned for each merge: beyond a few dozen, one rectangle.
+    if (rects.size() > 8 * std::max<std::size_t>(most, 1)) {
+        QRect all;
+        for (const QRect& r : rects)
+            all |= r;
+        return {all};
+    }
     while (rects.size() > std::max<std::size_t>(most, 1)) {
         std::size_t bestA = 0, bestB = 1;
         qint64 bestGrowth = std::numeric_limits<qint64>::max();
@@ -112,16 +128,19 @@ std::vector<ShadowCache::Decision> ShadowCache::decide(const Frame& frame)
             const auto read = [&](const QRect& area) { return allRead || area.intersects(frame.readTexels[i]); };
             if (!std::any_of(d.areas.begin(), d.areas.end(), read)) {
                 // Where moving casters were and are, no pixel of the frame reads: it stays
-                // as it is until one does (the camera turns there, or a caster moves in).
+                // as it is until one does (the camera turns there, or a caster moves in),
+                // and a redraw due now (every-n's frame, on-demand's request) is owed until then.
                 d.work = Work::Keep;
                 d.cause = ViewCause::Unseen;
                 d.areas.clear();
                 view.unseen = true;
+                view.owed = view.owed || movingDue;
                 continue;
             }
-            d.work = movingDue ? Work::Restore : Work::Keep;
-            d.cause = movingDue ? ViewCause::Casters : ViewCause::Stale;
-            view.stale = !movingDue;
+            const bool due = movingDue || view.owed;
+            d.work = due ? Work::Restore : Work::Keep;
+            d.cause = due ? ViewCause::Casters : ViewCause::Stale;
+            view.stale = !due;
         } else {
             d.cause = view.stale ? ViewCause::Stale : ViewCause::Cached;
         }
@@ -138,6 +157,7 @@ void ShadowCache::done(std::size_t i, const Decision& decision, const std::optio
     view.moving = moving;
     view.stale = false;
     view.unseen = false;
+    view.owed = false;
 }
 
 } // namespace shadowlab

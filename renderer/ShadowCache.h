@@ -82,6 +82,7 @@ private:
         std::vector<QRect> moving;          // where moving casters were drawn into it
         bool stale = false;                 // a moving caster moved since its last draw, and it was kept
         bool unseen = false;                // ... where no pixel read it
+        bool owed = false;                  // ... on a frame that was due to draw it (every-n, on-demand)
     };
     std::vector<View> m_views;
     int m_movedFrames = 0;                  // every-n: frames of moving casters since they were last drawn

@@ -436,7 +436,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
     }
     // Requests read back asynchronously arrive a frame or more after their pass.
     bool arrived = m_fence && collectReadback(false);
-    const bool asked = !m_requestKey || !(*m_requestKey == key) || m_askAgainWithin;
+    const bool asked = !m_requestKey || !(*m_requestKey == key) || m_askAgainWithin || m_askEverywhere;
     if (asked && !(m_fence && m_pendingKey == key)) {
         // Only where objects moved, while the buffer and the still objects' copy hold this
         // camera's requests. The copy is taken once the camera stands (a second pass at the
@@ -454,6 +454,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
         m_bufferKey = key;
         m_askWithin.clear();
         m_askAgainWithin = false;
+        m_askEverywhere = false;
         if (m_async && m_cache.resident() > 0) {
             if (m_fence)
                 arrived = collectReadback(true) || arrived;     // one read-back in flight at a time

@@ -86,7 +86,12 @@ public:
             m_askWithin.insert(m_askWithin.end(), within->begin(), within->end());
             m_askAgainWithin = m_askAgainWithin || !within->empty();    // none: no pixel sees another thing
         } else {
+            // Every pixel, on the next pass that runs (one read back later included): the
+            // buffer no longer holds what its pixels see.
+            m_askEverywhere = true;
             m_requestKey.reset();
+            m_bufferKey.reset();
+            m_stillKey.reset();
             m_askWithin.clear();
             m_askAgainWithin = false;
         }
@@ -205,6 +210,7 @@ private:
     std::optional<RequestKey> m_stillKey;       // ... for what
     std::vector<QRect> m_askWithin;             // askAgain()'s pixels since the last request pass
     bool m_askAgainWithin = false;
+    bool m_askEverywhere = false;               // askAgain() without pixels, until a pass runs
     qint64 m_requestPixels = 0;
     std::vector<VirtualPage> m_requests;
     bool m_async = false;

@@ -2,6 +2,7 @@
 // keep every vertex and the winding of mirrored placements) and the update (a fit only when an
 // input changed, the cameras it fits to, the reach kept with it, a virtual map's one view), and
 // the frame plan its settings resolve into (the rasteriser profile's optimisations included).
+#include "CasterTexels.h"
 #include "FramePlan.h"
 #include "FrameUpdate.h"
 #include "SceneLayout.h"
@@ -429,6 +430,20 @@ private slots:
         QVERIFY(d[0].areas == std::vector<QRect>{far | far.translated(4, 0)});
         d = run(frame);
         QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Cached);
+        // on-demand: a redraw asked for while out of sight is owed until a pixel reads there.
+        frame.policy = ShadowCachePolicy::OnDemand;
+        frame.castersMoved = true;
+        frame.readTexels[0] = QRect(0, 0, 100, 100);
+        frame.movingTexels = {{far.translated(8, 0)}, none, none};
+        frame.requested = true;
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Keep && d[0].cause == ViewCause::Unseen);
+        frame.requested = false;
+        frame.castersMoved = false;
+        frame.readTexels[0] = QRect(0, 0, 1000, 1000);
+        d = run(frame);
+        QVERIFY(d[0].work == Work::Restore && d[0].cause == ViewCause::Casters);
+        frame.policy = ShadowCachePolicy::Static;
         frame.castersMoved = true;
         frame.readTexels.clear();
         // The light moves: every view with a new volume is drawn from its still casters again.
@@ -470,6 +485,44 @@ private slots:
     }
 
     // A caster's square across the light overlaps the pages it can shadow, and no others.
+    // The texels a frame's pixels may read: the image of what the camera sees of the receivers,
+    // grown by how far a lookup reads, what lies past the map's square included (a lookup moved
+    // off a receiver outside the map may land inside it). Where a move is read, a cache draws it.
+    void readTexelsCoverWhatTheCameraSees()
+    {
+        LightSettings light;
+        light.position = {0.0, 10.0, 0.0};
+        light.target = {0.0, 0.0, 0.0};
+        LightVolume volume;
+        volume.origin = {0.0, 10.0, 0.0};
+        volume.left = volume.bottom = -2.0;
+        volume.right = volume.top = 2.0;
+        volume.farPlane = 20.0;
+        const LightFrame view = computeLightFrame(light, volume);
+        Bounds receivers;
+        receivers.min = {-10.0, 0.0, -10.0};
+        receivers.max = {10.0, 1.0, 10.0};
+        const int size = 256;   // 64 texels a world unit
+        const auto seen = [&](glm::dvec3 position, glm::dvec3 target, double margin) {
+            return readTexels(view, size, computeCameraFrame({.position = position, .target = target, .fov = 30.0}, 16.0 / 9.0, receivers), receivers,
+                              margin);
+        };
+        // Looking down at the middle: part of the square, and more with a wider margin.
+        const QRect middle = seen({0.0, 6.0, 0.1}, {0.0, 0.0, 0.0}, 3.0);
+        QVERIFY(!middle.isEmpty() && middle != QRect(0, 0, size, size));
+        const QRect wider = seen({0.0, 6.0, 0.1}, {0.0, 0.0, 0.0}, 20.0);
+        QVERIFY(wider.contains(middle) && wider != middle);
+        // Looking at ground a world unit or more past the square's side: nothing read, until
+        // the margin reaches over.
+        const glm::dvec3 away(3.5, 2.0, 0.0), there(3.5, 0.0, 0.0);
+        QVERIFY(seen(away, there, 3.0).isEmpty());
+        const QRect edge = seen(away, there, 200.0);
+        QVERIFY(!edge.isEmpty());
+        QVERIFY(edge.left() == 0 || edge.top() == 0 || edge.right() == size - 1 || edge.bottom() == size - 1);
+        // Behind the camera nothing is read.
+        QVERIFY(seen({0.0, 0.5, 30.0}, {0.0, 0.5, 60.0}, 3.0).isEmpty());
+    }
+
     void movedCastersTouchTheirPages()
     {
         LightSettings light;

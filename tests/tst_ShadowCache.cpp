@@ -392,8 +392,6 @@ private Q_SLOTS:
         for (const char* light : {"directional", "spot", "point"})
             QTest::addRow("%s, volume as set", light) << QStringList{QStringLiteral("light.type=%1").arg(light), manual};
         QTest::addRow("3 cascades") << QStringList{QStringLiteral("shadow.cascades=3")};
-        QTest::addRow("evsm4, blur 7, point") << QStringList{manual, QStringLiteral("light.type=point"), QStringLiteral("filter.mode=evsm4"),
-                                                             QStringLiteral("moments.blur=7")};
         QTest::addRow("pcf 5x5, normal offset") << QStringList{manual, QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=5"),
                                                                QStringLiteral("bias.normal=1.5")};
     }
