@@ -97,13 +97,15 @@ std::vector<SweepEntry> biasSweep()
 } // namespace
 
 // The tutorial most learners copy: 3 x 3 PCF on a 1024 map, bias 0.05/0.005 in depth units,
-// front faces, the hand-set volume.
+// front faces, the hand-set volume; one plain map drawn every frame, whatever rig the base has
+// (cascades, a virtual map, a warp and a cache need a fitted light or are not the tutorial's).
 QStringList tutorialAssignments()
 {
     return {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
             QStringLiteral("bias.space=depth"), QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"),
             QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual"),
-            QStringLiteral("filter.early_out=false")};
+            QStringLiteral("filter.early_out=false"), QStringLiteral("shadow.cascades=1"), QStringLiteral("shadow.virtual=false"),
+            QStringLiteral("light.warp=none"), QStringLiteral("shadow.cache=off")};
 }
 
 namespace {

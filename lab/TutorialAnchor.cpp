@@ -170,6 +170,10 @@ Settings tutorialSettings(Settings s)
     s.bias.min = 0.005;
     s.bias.cullFront = false;
     s.light.fit = LightFit::Manual;     // the classic hand-set volume
+    s.light.warp = LightWarp::None;     // one plain map, drawn every frame
+    s.shadow.cascades = 1;
+    s.shadow.virtualMap = false;
+    s.shadow.cache = ShadowCachePolicy::Off;
     return s;
 }
 

@@ -683,6 +683,21 @@ private Q_SLOTS:
         QVERIFY(!QFile::exists(m_dir.filePath("never")));
     }
 
+    // A report on a base of cascades or a virtual map keeps its tutorial row, a plain map: the
+    // tutorial's hand-set volume would be refused on either rig.
+    void reportOnAnyRigKeepsTheTutorialRow()
+    {
+        const QString sweep = m_dir.filePath("rig-sweep.json");
+        QVERIFY(writeFile(sweep, R"([{"label": "hard", "set": {"filter.mode": "hard"}}])"));
+        for (const char* rig : {"shadow.virtual=true", "shadow.cascades=4", "light.warp=lispsm"}) {
+            const QString dir = m_dir.filePath(QStringLiteral("rig-report-%1").arg(QString::fromLatin1(rig).section('=', 0, 0)));
+            const Run r = shadowlab({"report", "--scene", "seed", "--set", rig, "--size", "96x54", "--sweep", sweep, "--frames", "1", "--warmup",
+                                     "0", "--area-samples", "1", "--flicker-frames", "0", "--out", dir});
+            QVERIFY2(r.exitCode == 0, qPrintable(QStringLiteral("%1: %2").arg(QString::fromLatin1(rig), r.err)));
+            QVERIFY(QFile::exists(dir + "/report.json"));
+        }
+    }
+
     // Over an animation each row is measured at every instant; its error is the worst one's,
     // with the mean and each instant in report.json. A scene that does not move is refused.
     void reportOverAnAnimation()
