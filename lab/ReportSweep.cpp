@@ -101,7 +101,8 @@ std::vector<SweepEntry> biasSweep()
 // (cascades, a virtual map, a warp and a cache need a fitted light or are not the tutorial's).
 QStringList tutorialAssignments()
 {
-    return {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"), QStringLiteral("map.size=1024"),
+    return {QStringLiteral("shadow.enabled=true"), QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3"),
+            QStringLiteral("map.size=1024"), QStringLiteral("map.format=depth24"),
             QStringLiteral("bias.space=depth"), QStringLiteral("bias.slope=0.05"), QStringLiteral("bias.min=0.005"),
             QStringLiteral("bias.cull_front=false"), QStringLiteral("light.fit=manual"),
             QStringLiteral("filter.early_out=false"), QStringLiteral("shadow.cascades=1"), QStringLiteral("shadow.virtual=false"),

@@ -1,6 +1,8 @@
 #include "TutorialAnchor.h"
 
 #include "RenderError.h"
+#include "ReportSweep.h"
+#include "SettingsKeys.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -158,22 +160,9 @@ glm::mat4 lightSpace()
 
 Settings tutorialSettings(Settings s)
 {
-    s.map.size = 1024;
-    s.map.format = DepthFormat::Depth24;
-    s.filter.mode = FilterMode::Pcf;
-    s.filter.kernel = 3;
-    s.filter.earlyOut = false;          // a tutorial filters every pixel
-    s.shadow.enabled = true;
-    s.bias = BiasSettings{};
-    s.bias.space = BiasSpace::Depth;    // the tutorial's bias is in depth units
-    s.bias.slope = 0.05;
-    s.bias.min = 0.005;
-    s.bias.cullFront = false;
-    s.light.fit = LightFit::Manual;     // the classic hand-set volume
-    s.light.warp = LightWarp::None;     // one plain map, drawn every frame
-    s.shadow.cascades = 1;
-    s.shadow.virtualMap = false;
-    s.shadow.cache = ShadowCachePolicy::Off;
+    s.bias = BiasSettings{};            // what the tutorial does not set, as the defaults
+    for (const QString& assignment : tutorialAssignments())
+        applyAssignment(s, assignment);
     return s;
 }
 

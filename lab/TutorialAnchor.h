@@ -13,7 +13,8 @@ namespace shadowlab {
 
 // The configuration of a typical tutorial implementation of the scene of `s`: 3 x 3 PCF on a
 // 1024 map, bias max(0.05 (1 - N.L), 0.005), the hand-set light volume, and a shadow pass every
-// frame (bench --baseline).
+// frame (bench --baseline): the report's tutorial row (tutorialAssignments), the rest of the
+// bias at its defaults.
 Settings tutorialSettings(Settings s);
 
 // The anchor of `bench --anchor`: the frame of the LearnOpenGL 3.1.3 shadow-mapping tutorial as
