@@ -1,5 +1,7 @@
 #include "FrameUpdate.h"
 
+#include "FramePlan.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -153,12 +155,12 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
     m_reach.generation = generation;
 }
 
-void FrameUpdate::describe(const Settings& settings, FrameStats& stats) const
+void FrameUpdate::describe(const FramePlan& plan, FrameStats& stats) const
 {
     stats.texelWorldSizeBeforeFit = m_fit.texelBefore;
     stats.texelWorldSize = m_fit.texelAfter;
     stats.lightFitted = m_fit.fitted;
-    if (!settings.shadow.enabled || !usesLightWarp(settings))
+    if (!plan.shadows || !plan.lightWarp)
         return;
     stats.warpViews = int(m_views.set.views.size());
     for (const ShadowView& view : m_views.set.views) {

@@ -17,6 +17,8 @@
 
 namespace shadowlab {
 
+struct FramePlan;
+
 // The frame's pure half, as Filament splits update() from render(): from the settings, the
 // frame's size and the scene's layout, the cameras, the light's views fitted to what the fitting
 // camera sees, and where lookups can find a caster. The fit is a pure function of its inputs,
@@ -70,7 +72,7 @@ public:
     // How many times the views were fitted.
     int fitCount() const { return m_fitCount; }
     // The fit's half of the frame's statistics: texel sizes before and after, and the warp.
-    void describe(const Settings& settings, FrameStats& stats) const;
+    void describe(const FramePlan& plan, FrameStats& stats) const;
 
 private:
     void findReach(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources);

@@ -113,7 +113,7 @@ void Renderer::prepareFrame(const Settings& settings, QSize size, TimingMode tim
     m_camera = frame.camera;
     if (frame.refit)
         refit(frame, plan, storage, stats);
-    m_update.describe(settings, stats);
+    m_update.describe(plan, stats);
     stats.reversedDepth = plan.reversedDepth;
     stats.softwareProfile = plan.tuning.software;
 
