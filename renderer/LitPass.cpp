@@ -2,6 +2,7 @@
 
 #include "PassState.h"
 #include "RenderError.h"
+#include "ShadowViewBlock.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -46,6 +47,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       alphaCutoff(program.uniform("uAlphaCutoff")),
       depthSlices(defines.contains(QStringLiteral("DEPTH_SLICES")))
 {
+    program.bindUniformBlock("ShadowViewBlock", kShadowViewBlockBinding);
 }
 
 GLint LitPass::Program::techniqueUniform(const QByteArray& name)
@@ -161,10 +163,8 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
 {
     const ShadowViewFrames& views = *m_views;
     const int count = int(std::min<std::size_t>(views.frames.size(), kMaxShadowViews));
-    std::vector<glm::mat4> matrices;
-    std::vector<glm::vec4> tiles;
-    std::vector<glm::vec2> uvWorld, depthRange;
-    std::vector<float> texels, rayDepths;
+    ShadowViewBlockStd140 block;
+    block.count = count;
     const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), camera.position);
     const glm::dvec2 tileUv(1.0 / map.columns(), 1.0 / map.rows());
     for (int i = 0; i < count; ++i) {
@@ -178,22 +178,23 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
         toTile[3][0] = view.column * tileUv.x;
         toTile[3][1] = view.row * tileUv.y;
         const glm::dmat4 shadowMatrix = slice * frame.depthShadowMatrix;
-        matrices.emplace_back(toTile * shadowMatrix * fromCamera);
-        tiles.emplace_back(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
+        ShadowViewStd140& v = block.views[i];
+        v.matrix = glm::mat4(toTile * shadowMatrix * fromCamera);
+        v.tile = glm::vec4(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
                            float((view.row + 1) * tileUv.y));
-        uvWorld.emplace_back(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()));
-        depthRange.emplace_back(float(frame.volume.nearPlane), float(frame.volume.farPlane));
-        texels.push_back(float(texelWorldSize(frame.volume, map.size())));
+        v.uvWorldDepth = glm::vec4(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()),
+                                   float(frame.volume.nearPlane), float(frame.volume.farPlane));
         // An ortho view's depth change per world unit toward the light (AFFINE_VIEW), in double.
-        rayDepths.push_back(float((shadowMatrix * glm::dvec4(-frame.direction, 0.0)).z));
+        v.texelRay = glm::vec4(float(texelWorldSize(frame.volume, map.size())), float((shadowMatrix * glm::dvec4(-frame.direction, 0.0)).z), 0.0f,
+                               0.0f);
     }
-    p.program.set(p.techniqueUniform("uShadowViewCount"), count);
-    m_gl->glUniformMatrix4fv(p.techniqueUniform("uShadowViews"), count, GL_FALSE, &matrices[0][0][0]);
-    m_gl->glUniform4fv(p.techniqueUniform("uShadowTiles"), count, &tiles[0][0]);
-    m_gl->glUniform2fv(p.techniqueUniform("uShadowViewUvWorld"), count, &uvWorld[0][0]);
-    m_gl->glUniform2fv(p.techniqueUniform("uShadowViewDepth"), count, &depthRange[0][0]);
-    m_gl->glUniform1fv(p.techniqueUniform("uShadowViewTexel"), count, texels.data());
-    m_gl->glUniform1fv(p.techniqueUniform("uShadowViewRayDepth"), count, rayDepths.data());
+    // One upload, read from its binding by every variant that looks the views up.
+    if (!m_viewBlock)
+        m_viewBlock = makeBuffer(m_gl);
+    m_gl->glBindBuffer(GL_UNIFORM_BUFFER, m_viewBlock.id());
+    m_gl->glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(sizeof(block)), &block, GL_STREAM_DRAW);
+    m_gl->glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    m_gl->glBindBufferBase(GL_UNIFORM_BUFFER, kShadowViewBlockBinding, m_viewBlock.id());
     p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));   // several views
     if (views.set.cascaded) {
         glm::vec4 far(0.0f), blendStart(0.0f);

@@ -134,6 +134,7 @@ private:
     Fragments m_fragments;
     ProgramCache<Program> m_programs;
     const ShadowViewFrames* m_views = nullptr;
+    GlBuffer m_viewBlock;               // the views' std140 block (ShadowViewBlock.h)
     // This frame's conventional-to-stored depth of the map (DepthSlice::matrix), folded into
     // the shadow matrices of the variants compiled with DEPTH_SLICES.
     glm::dmat4 m_sliceMatrix{1.0};

@@ -84,6 +84,15 @@ GLint ShaderProgram::uniform(const char* name) const
     return m_program->uniformLocation(name);
 }
 
+bool ShaderProgram::bindUniformBlock(const char* name, GLuint binding)
+{
+    const GLuint index = m_gl->glGetUniformBlockIndex(id(), name);
+    if (index == GL_INVALID_INDEX)
+        return false;
+    m_gl->glUniformBlockBinding(id(), index, binding);
+    return true;
+}
+
 void ShaderProgram::set(GLint location, float value) { m_gl->glUniform1f(location, value); }
 void ShaderProgram::set(GLint location, int value) { m_gl->glUniform1i(location, value); }
 void ShaderProgram::set(GLint location, const glm::vec2& value) { m_gl->glUniform2fv(location, 1, glm::value_ptr(value)); }

@@ -29,6 +29,10 @@ public:
 
     void bind() { m_program->bind(); }
     GLint uniform(const char* name) const;
+    GLuint id() const { return m_program->programId(); }
+    // Reads the uniform block `name` from uniform buffer binding `binding`; false where the
+    // program has no such active block (a variant that does not read it).
+    bool bindUniformBlock(const char* name, GLuint binding);
 
     void set(GLint location, float value);
     void set(GLint location, int value);

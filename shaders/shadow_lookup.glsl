@@ -8,18 +8,23 @@ uniform float uBiasMin;             // the same units
 #ifdef FOOTPRINT_BIAS
 uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
 #endif
-uniform int uShadowViewCount;
-uniform mat4 uShadowViews[kMaxShadowViews];         // camera-relative world -> map uv (of the whole map) and the view's depth
-uniform vec4 uShadowTiles[kMaxShadowViews];         // each view's tile in map uv: min xy, max xy
-uniform vec2 uShadowViewUvWorld[kMaxShadowViews];   // world size of the whole map's uv square at the view's scale (perspective: at unit distance)
-uniform vec2 uShadowViewDepth[kMaxShadowViews];     // near and far of each view's volume
-uniform float uShadowViewTexel[kMaxShadowViews];    // world size of one of its texels (perspective: at unit distance)
+// The views, one std140 block uploaded whole (renderer/ShadowViewBlock.h mirrors it field for
+// field). Perspective views' world sizes are at unit distance.
+struct ShadowViewData {
+    mat4 matrix;                // camera-relative world -> map uv (of the whole map) and the view's depth
+    vec4 tile;                  // the view's tile in map uv: min xy, max xy
+    vec4 uvWorldDepth;          // world size of the whole map's uv square at the view's scale (xy); near and far (zw)
+    vec4 texelRay;              // world size of one of its texels; depth change per world unit toward the light (ortho)
+};
+layout(std140) uniform ShadowViewBlock {
+    ShadowViewData uShadowViewData[kMaxShadowViews];
+    int uShadowViewCount;
+};
 // An ortho view is affine (w = 1) and sees one direction to the light, so the bias's step along
 // the ray to the light is a constant change of depth per world unit: no division by w and no
 // matrix product per pixel.
 #if !defined(LIGHT_PERSPECTIVE) && !defined(LIGHT_WARP)
 #define AFFINE_VIEW
-uniform float uShadowViewRayDepth[kMaxShadowViews];   // each view's depth change per world unit toward the light
 #endif
 // Several views, or a warped one (light.warp = lispsm), take the pixel's position in the map
 // here, per pixel; one plain view takes it from the vertex stage.
@@ -58,12 +63,13 @@ struct ShadowViewLookup {
 
 ShadowViewLookup shadowView(int i)
 {
+    ShadowViewData d = uShadowViewData[i];
 #ifdef AFFINE_VIEW
-    float rayDepth = uShadowViewRayDepth[i];
+    float rayDepth = d.texelRay.y;
 #else
     float rayDepth = 0.0;
 #endif
-    return ShadowViewLookup(uShadowViews[i], uShadowTiles[i], uShadowViewUvWorld[i], uShadowViewDepth[i], uShadowViewTexel[i], rayDepth);
+    return ShadowViewLookup(d.matrix, d.tile, d.uvWorldDepth.xy, d.uvWorldDepth.zw, d.texelRay.x, rayDepth);
 }
 
 #ifdef LIGHT_WARP
@@ -420,7 +426,7 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     float texel = uVirtualTexel0 * exp2(float(level));
     // The slot's matrix leaves depth as the light's: its step toward the light is the light's.
     ShadowViewLookup view = ShadowViewLookup(toSlot * uVirtualLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlotTexels)) / atlas),
-                                             atlas * texel, uShadowViewDepth[0], texel, (uVirtualLight * vec4(toLight, 0.0)).z);
+                                             atlas * texel, uShadowViewData[0].uvWorldDepth.zw, texel, (uVirtualLight * vec4(toLight, 0.0)).z);
     return viewVisibility(view, normal, toLight, dx, dy);
 }
 #endif
