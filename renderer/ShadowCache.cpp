@@ -24,18 +24,26 @@ QString toString(ViewCause cause)
     return {};
 }
 
+namespace {
+
+QRect boundingRect(const std::vector<QRect>& rects)
+{
+    QRect all;
+    for (const QRect& r : rects)
+        all |= r;
+    return all;
+}
+
+} // namespace
+
 std::vector<QRect> mergedRects(std::vector<QRect> rects)
 {
     rects.erase(std::remove_if(rects.begin(), rects.end(), [](const QRect& r) { return r.isEmpty(); }), rects.end());
     // Each merge scans the pairs again: past a few hundred (as many moving casters in one
     // view), their bounding rectangle stands for them.
     constexpr std::size_t kMostMerged = 256;
-    if (rects.size() > kMostMerged) {
-        QRect all;
-        for (const QRect& r : rects)
-            all |= r;
-        return {all};
-    }
+    if (rects.size() > kMostMerged)
+        return {boundingRect(rects)};
     // Until no two overlap or touch: each merge leaves one fewer.
     for (bool merged = true; merged;) {
         merged = false;
@@ -58,12 +66,8 @@ std::vector<QRect> fewRects(std::vector<QRect> rects, std::size_t most)
     const auto area = [](const QRect& r) { return qint64(r.width()) * r.height(); };
     rects = mergedRects(std::move(rects));
     // Pairs scanned for each merge: beyond a few dozen, one rectangle.
-    if (rects.size() > 8 * std::max<std::size_t>(most, 1)) {
-        QRect all;
-        for (const QRect& r : rects)
-            all |= r;
-        return {all};
-    }
+    if (rects.size() > 8 * std::max<std::size_t>(most, 1))
+        return {boundingRect(rects)};
     while (rects.size() > std::max<std::size_t>(most, 1)) {
         std::size_t bestA = 0, bestB = 1;
         qint64 bestGrowth = std::numeric_limits<qint64>::max();
