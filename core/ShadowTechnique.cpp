@@ -13,7 +13,7 @@ namespace shadowlab {
 namespace {
 
 QStringList noDefines(const Settings&) { return {}; }
-std::vector<TechniqueUniform> noUniforms(const Settings&) { return {}; }
+TechniqueShaderValues noShaderValues(const Settings&) { return {}; }
 
 std::function<QString(const FilterSettings&)> plainLabel(const char* key)
 {
@@ -21,31 +21,27 @@ std::function<QString(const FilterSettings&)> plainLabel(const char* key)
 }
 
 // What every moment technique's GLSL reads: the moments format decides the variant (16-bit
-// quantisation), the rest are uniforms, so tuning them needs neither a new variant nor a new
-// moments pass.
+// quantisation), the rest are parameters (and the warp's exponents, momentWarp, which the moments
+// pass reads too), so tuning them needs neither a new variant nor a new moments pass.
 QStringList momentDefines(const Settings& s)
 {
     return s.moments.format == MomentFormat::Rgba16F ? QStringList{QStringLiteral("MOMENTS_16BIT")} : QStringList{};
 }
 
-std::vector<TechniqueUniform> momentUniforms(const Settings& s)
+TechniqueShaderValues momentShaderValues(const Settings& s)
 {
-    const MomentWarp warp = momentWarp(s);
-    return {{"uBleeding", float(s.filter.bleeding)},
-            {"uMomentBias", float(s.filter.momentBias)},
-            {"uExponentPositive", float(warp.positive)},
-            {"uExponentNegative", float(warp.negative)}};
+    return {.bleeding = float(s.filter.bleeding), .momentBias = float(s.filter.momentBias)};
 }
 
 // The disk light's size for the blocker searches (pcss, dpcf): a directional light has the
 // angular size the disk has seen from the target, as the area reference traces it
 // (accuracy/ShadowReference.cpp).
-std::vector<TechniqueUniform> lightSizeUniform(const Settings& s)
+TechniqueShaderValues lightSizeShaderValue(const Settings& s)
 {
     double size = s.reference.lightRadius;
     if (s.light.projection == LightProjection::Ortho)
         size /= std::max(glm::length(s.light.position - s.light.target), 1e-12);
-    return {{"uLightSize", float(size)}};
+    return {.lightSize = float(size)};
 }
 
 TechniqueVariation momentVariation(const QString& label, const QString& key, QStringList more = {})
@@ -73,7 +69,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 2,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = plainLabel("vsm"),
         .sweep = {momentVariation(QStringLiteral("vsm"), QStringLiteral("vsm")),
             momentVariation(QStringLiteral("vsm 16-bit"), QStringLiteral("vsm"), {QStringLiteral("moments.format=16")})},
@@ -90,7 +86,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 2,
         .parameters = {bleeding, bias, positive},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = [](const FilterSettings& f) { return QStringLiteral("evsm2 c%1").arg(f.positiveExponent); },
         .sweep = {momentVariation(QStringLiteral("evsm2"), QStringLiteral("evsm2"))},
     });
@@ -106,7 +102,7 @@ void addVarianceTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 4,
         .parameters = {bleeding, bias, positive, negative},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = [](const FilterSettings& f) { return QStringLiteral("evsm4 c%1/%2").arg(f.positiveExponent).arg(f.negativeExponent); },
         .sweep = {momentVariation(QStringLiteral("evsm4"), QStringLiteral("evsm4")),
             momentVariation(QStringLiteral("evsm4 16-bit"), QStringLiteral("evsm4"), {QStringLiteral("moments.format=16")})},
@@ -130,7 +126,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 4,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = plainLabel("msm"),
         .sweep = {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
             momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})},
@@ -147,7 +143,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 4,
         .parameters = {bleeding, bias},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = plainLabel("msm-hausdorff"),
         .sweep = {momentVariation(QStringLiteral("msm-hausdorff"), QStringLiteral("msm-hausdorff")),
             momentVariation(QStringLiteral("msm-hausdorff 16-bit"), QStringLiteral("msm-hausdorff"), {QStringLiteral("moments.format=16")})},
@@ -164,7 +160,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .momentChannels = 1,
         .parameters = {positive},
         .defines = momentDefines,
-        .uniforms = momentUniforms,
+        .shaderValues = momentShaderValues,
         .describe = [](const FilterSettings& f) { return QStringLiteral("esm c%1").arg(f.positiveExponent); },
         .sweep = {momentVariation(QStringLiteral("esm"), QStringLiteral("esm"))},
     });
@@ -183,7 +179,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest},
         .parameters = {},
         .defines = noDefines,
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = plainLabel("hard"),
         .sweep = {{QStringLiteral("hard"), {QStringLiteral("filter.mode=hard")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 0.0; },
@@ -199,7 +195,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest},
         .parameters = {QStringLiteral("filter.kernel")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("PCF_KERNEL %1").arg(s.filter.kernel)}; },
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = [](const FilterSettings& f) { return QStringLiteral("pcf %1×%1").arg(f.kernel); },
         .sweep = {{QStringLiteral("pcf 1x1"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=1")}},
             {QStringLiteral("pcf 3x3"), {QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=3")}},
@@ -221,7 +217,7 @@ void addHardAndBoxTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareLinear},
         .parameters = {QStringLiteral("filter.kernel")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("PCF_KERNEL %1").arg(optimizedPcfKernel(s.filter))}; },
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = [](const FilterSettings& f) { return QStringLiteral("pcf-optimized %1×%1").arg(optimizedPcfKernel(f)); },
         .sweep = {{QStringLiteral("pcf-optimized 3x3"), {QStringLiteral("filter.mode=pcf-optimized"), QStringLiteral("filter.kernel=3")}},
             {QStringLiteral("pcf-optimized 5x5"), {QStringLiteral("filter.mode=pcf-optimized"), QStringLiteral("filter.kernel=5")}},
@@ -247,7 +243,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest},
         .parameters = {},
         .defines = noDefines,
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = plainLabel("pcf-dither4"),
         .sweep = {{QStringLiteral("pcf-dither4"), {QStringLiteral("filter.mode=pcf-dither4")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 2.5; },
@@ -264,7 +260,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest},
         .parameters = {},
         .defines = noDefines,
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = plainLabel("pcf64"),
         .sweep = {{QStringLiteral("pcf64"), {QStringLiteral("filter.mode=pcf64")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return kPcf64TapReach; },
@@ -281,7 +277,7 @@ void addFixedKernelTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareLinear},
         .parameters = {},
         .defines = noDefines,
-        .uniforms = noUniforms,
+        .shaderValues = noShaderValues,
         .describe = plainLabel("hw-bilinear"),
         .sweep = {{QStringLiteral("hw-bilinear"), {QStringLiteral("filter.mode=hw-bilinear")}}},
         .tapReach = [](const FilterSettings&) -> std::optional<double> { return 0.0; },
@@ -303,7 +299,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest},
         .parameters = {QStringLiteral("filter.taps"), QStringLiteral("filter.radius")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-        .uniforms = [](const Settings& s) { return std::vector<TechniqueUniform>{{"uPoissonRadius", float(s.filter.radius)}}; },
+        .shaderValues = [](const Settings& s) { return TechniqueShaderValues{.poissonRadius = float(s.filter.radius)}; },
         .describe = [](const FilterSettings& f) { return QStringLiteral("poisson %1 r%2").arg(f.taps).arg(f.radius); },
         .sweep = {{QStringLiteral("poisson 16 r2.5"), {QStringLiteral("filter.mode=poisson"), QStringLiteral("filter.taps=16"),
             QStringLiteral("filter.radius=2.5")}},
@@ -324,7 +320,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
         .parameters = {QStringLiteral("filter.taps")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-        .uniforms = lightSizeUniform,
+        .shaderValues = lightSizeShaderValue,
         .describe = [](const FilterSettings& f) { return QStringLiteral("pcss %1").arg(f.taps); },
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
@@ -342,7 +338,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .samplers = {ShadowSampler::CompareNearest, ShadowSampler::RawNearest},
         .parameters = {QStringLiteral("filter.taps")},
         .defines = [](const Settings& s) { return QStringList{QStringLiteral("POISSON_TAPS %1").arg(s.filter.taps)}; },
-        .uniforms = lightSizeUniform,
+        .shaderValues = lightSizeShaderValue,
         .describe = [](const FilterSettings& f) { return QStringLiteral("dpcf %1").arg(f.taps); },
         .sweep = {{QStringLiteral("dpcf 16"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("dpcf 32"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=32")}}},

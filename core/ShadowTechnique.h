@@ -45,11 +45,14 @@ struct TechniqueParameter {
     int decimals = 2;       // the dock's precision for a number
 };
 
-// A uniform a technique's GLSL reads, with its value for the current settings (a radius, a
-// light size): set on every frame, so changing it needs no new shader variant.
-struct TechniqueUniform {
-    QByteArray name;        // "uPoissonRadius"
-    float value = 0.0f;
+// What a technique's GLSL reads at run time, for the current settings (a radius, a light size):
+// set every frame in the lit pass's frame block (renderer/UniformBlocks.h), so changing one
+// needs no new shader variant. A technique leaves what it does not read at 0.
+struct TechniqueShaderValues {
+    float bleeding = 0.0f;      // moments: filter.bleeding
+    float momentBias = 0.0f;    // moments: filter.moment_bias
+    float lightSize = 0.0f;     // blocker searches (pcss, dpcf): the disk light's size
+    float poissonRadius = 0.0f; // poisson: filter.radius, in texels
 };
 
 // One configuration a sweep tries for a technique: its label and the settings it changes.
@@ -74,8 +77,8 @@ struct ShadowTechnique {
     QStringList parameters;         // keys of techniqueParameters() it reads
     // Extra #defines of the lit pass's variant (compile-time parameters such as a kernel width).
     std::function<QStringList(const Settings&)> defines;
-    // Uniforms it reads (run-time parameters); empty for most.
-    std::function<std::vector<TechniqueUniform>(const Settings&)> uniforms;
+    // What its GLSL reads at run time; nothing for most.
+    std::function<TechniqueShaderValues(const Settings&)> shaderValues;
     // The short name of a configuration, with its parameters ("pcf 3×3"); labels everywhere.
     std::function<QString(const FilterSettings&)> describe;
     std::vector<TechniqueVariation> sweep;  // what `report --sweep filters` and the dock try

@@ -1,5 +1,7 @@
 #include "VirtualPages.h"
 
+#include "SharedShaderCode.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -272,13 +274,11 @@ std::optional<VirtualPage> decodePageRequest(std::uint32_t value, const std::vec
 {
     if (value == 0)
         return std::nullopt;
-    constexpr std::uint32_t n = kVirtualLevelPages;
-    const std::uint32_t v = value - 1;
-    const std::uint32_t level = v / (n * n);
-    if (level >= windows.size())
+    const glm::ivec3 request = glsl::virtualUnpackRequest(value);
+    if (std::size_t(request.x) >= windows.size())
         return std::nullopt;
-    const glm::ivec2 w = windows[level];
-    return VirtualPage{int(level), w.x + int(v % n), w.y + int((v / n) % n)};
+    const glm::ivec2 w = windows[std::size_t(request.x)];
+    return VirtualPage{request.x, w.x + request.y, w.y + request.z};
 }
 
 } // namespace shadowlab

@@ -1,5 +1,7 @@
 #include "TexelDensity.h"
 
+#include "SharedShaderCode.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -17,20 +19,18 @@ std::optional<std::size_t> viewOf(const ShadowViewFrames& views, const LightFram
     if (set.empty() || views.frames.size() != set.size())
         return std::nullopt;
     if (views.set.cube) {
-        const glm::dvec3 d = p - light.position;
-        const glm::dvec3 a = glm::abs(d);
-        const std::size_t face = a.x >= a.y && a.x >= a.z ? (d.x >= 0 ? 0 : 1) : a.y >= a.z ? (d.y >= 0 ? 2 : 3) : (d.z >= 0 ? 4 : 5);
+        const std::size_t face = std::size_t(glsl::cubeFace(glm::vec3(p - light.position)));
         return face < set.size() ? std::optional(face) : std::nullopt;
     }
     if (views.set.cascaded) {
         const glm::dmat4& v = views.camera.view;
         const glm::dvec3 forward = -glm::dvec3(v[0][2], v[1][2], v[2][2]);
-        const double depth = glm::dot(p - views.camera.position, forward);
-        for (std::size_t i = 0; i < set.size(); ++i) {
-            if (depth <= set[i].splitFar)
-                return i;
-        }
-        return std::nullopt;        // beyond shadow.distance: no lookup
+        glm::vec4 far(0.0f);
+        const int count = int(std::min<std::size_t>(set.size(), 4));
+        for (int i = 0; i < count; ++i)
+            far[i] = float(set[std::size_t(i)].splitFar);
+        const int i = glsl::cascadeIndex(float(glm::dot(p - views.camera.position, forward)), far, count);
+        return i >= 0 ? std::optional(std::size_t(i)) : std::nullopt;     // beyond shadow.distance: no lookup
     }
     return 0;
 }
@@ -136,25 +136,26 @@ TexelDensity measureVirtualTexelDensity(const VisibilityBuffer& buffer, const Vi
         const glm::dvec3 p = glm::dvec3(layout->view * glm::dvec4(buffer.worldPosition(i), 1.0));
         return glm::dvec2(p) / page0 * double(kVirtualPageTexels);
     };
+    // The page of `level` that holds level-0 texel `texel0`, where the level's window does
+    // (shaders/shared/virtual_levels.glsl, on the grid's own origin).
     const auto inWindow = [&](int level, const glm::dvec2& texel0, glm::ivec2& page) {
-        const glm::dvec2 pages = texel0 / double(kVirtualPageTexels) * std::ldexp(1.0, -level);
-        page = glm::ivec2(glm::floor(pages));
         const glm::ivec2 w = windows[std::size_t(level)];
-        return page.x >= w.x && page.x < w.x + kVirtualLevelPages && page.y >= w.y && page.y < w.y + kVirtualLevelPages;
+        const glm::vec2 q = glsl::virtualLevelPosition(level, glm::vec2(texel0 / double(kVirtualPageTexels)), -glm::vec2(w));
+        page = glm::ivec2(glm::floor(q)) + w;
+        return glsl::virtualWindowHolds(q);
     };
     const auto texelOf = [&](int, int i) -> std::optional<glm::dvec2> { return gridTexel(i); };
     // The level the pixel asks for, then the one finer or the nearest coarser one resident.
     const auto adjust = [&](int i, double level0) -> std::optional<double> {
         const glm::dvec2 t = gridTexel(i);
-        int asked = (level0 > 1.0 ? int(std::floor(std::log2(level0))) : 0) - map.lodBias();
-        asked = std::clamp(asked, 0, layout->levels - 1);
+        int asked = glsl::virtualDensityLevel(float(level0), map.lodBias(), layout->levels);
         glm::ivec2 page;
         while (asked < layout->levels && !inWindow(asked, t, page))
             ++asked;
         if (asked >= layout->levels)
             return std::nullopt;
         for (int k = -1; k < layout->levels; ++k) {
-            const int level = k < 0 ? asked : (k == 0 ? asked - 1 : asked + k);
+            const int level = glsl::virtualFallbackLevel(asked, k);
             if (level < 0 || level >= layout->levels || !inWindow(level, t, page))
                 continue;
             if (map.cache().slotOf({level, page.x, page.y}))

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "SharedShaderCode.h"
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -20,8 +22,8 @@ struct DepthSlice {
     double emptyFrom = 1.0;
 
     double stored(double depth) const { return offset + depth * scale; }
-    // A stored value as conventional depth, at most 1 (shaders/depth_slice.glsl).
-    double depth(double storedValue) const { return storedValue >= emptyFrom ? 1.0 : std::min((storedValue - offset) / scale, 1.0); }
+    // A stored value as conventional depth, at most 1, as the shaders read it.
+    float depth(float storedValue) const { return glsl::sliceDepthOf(storedValue, uniform()); }
     // For the shaders' uShadowSlice.
     glm::vec3 uniform() const { return {float(offset), float(scale), float(emptyFrom)}; }
     // Conventional depth to stored, on homogeneous coordinates: folded into the lit pass's

@@ -2,7 +2,7 @@
 
 #include "PassState.h"
 #include "RenderError.h"
-#include "ShadowViewBlock.h"
+#include "MomentMath.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -29,37 +29,30 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       normalMatrix(program.uniform("uNormalMatrix")),
       modelViewProjection(program.uniform("uModelViewProjection")),
       shadowModel(program.uniform("uShadowModel")),
-      shadowWorld(program.uniform("uShadowWorld")),
-      normalOffset(program.uniform("uNormalOffset")),
-      diffuse(program.uniform("uDiffuse")),
       receives(program.uniform("uReceives")),
       selfShadowing(program.uniform("uSelfShadowing")),
+      alphaCutoff(program.uniform("uAlphaCutoff")),
+      shadowWorld(program.uniform("uShadowWorld")),
+      normalOffset(program.uniform("uNormalOffset")),
+      biasSlope(program.uniform("uBiasSlope")),
+      biasMin(program.uniform("uBiasMin")),
+      shadowSlice(program.uniform("uShadowSlice")),
+      exponentPositive(program.uniform("uExponentPositive")),
+      exponentNegative(program.uniform("uExponentNegative")),
+      diffuse(program.uniform("uDiffuse")),
       shadowMap(program.uniform("uShadowMap")),
       shadowDepth(program.uniform("uShadowDepth")),
       shadowMoments(program.uniform("uShadowMoments")),
-      shadowTexel(program.uniform("uShadowTexel")),
       depthRange(program.uniform("uDepthRange")),
-      depthRangeLevels(program.uniform("uDepthRangeLevels")),
-      lightPosition(program.uniform("uLightPosition")),
-      lightDirection(program.uniform("uLightDirection")),
-      biasSlope(program.uniform("uBiasSlope")),
-      biasMin(program.uniform("uBiasMin")),
-      alphaCutoff(program.uniform("uAlphaCutoff")),
+      cameraDepths(program.uniform("uCameraDepths")),
+      virtualPageTable(program.uniform("uVirtualPageTable")),
       depthSlices(defines.contains(QStringLiteral("DEPTH_SLICES")))
 {
-    program.bindUniformBlock("ShadowViewBlock", kShadowViewBlockBinding);
-}
-
-GLint LitPass::Program::techniqueUniform(const QByteArray& name)
-{
-    auto it = techniqueUniforms.find(name);
-    if (it == techniqueUniforms.end())
-        it = techniqueUniforms.emplace(name, program.uniform(name.constData())).first;
-    return it->second;
 }
 
 LitPass::LitPass(GlFunctions* gl)
-    : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_programs(gl), m_reachDraws(gl)
+    : m_gl(gl), m_lookupSamples(gl, GL_SAMPLES_PASSED), m_plainSamples(gl, GL_SAMPLES_PASSED), m_programs(gl), m_viewBlock(gl), m_frameBlock(gl),
+      m_virtualBlock(gl), m_reachDraws(gl)
 {
 }
 
@@ -159,15 +152,14 @@ LitPass::Programs LitPass::programsFor(const GpuScene& scene, const FramePlan& p
     return p;
 }
 
-void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map, const glm::dmat4& slice)
+void LitPass::uploadViews(const CameraFrame& camera, const ShadowMap& map, const glm::dmat4& slice)
 {
     const ShadowViewFrames& views = *m_views;
-    const int count = int(std::min<std::size_t>(views.frames.size(), kMaxShadowViews));
-    ShadowViewBlockStd140 block;
-    block.count = count;
+    ShadowViewBlock block;
+    block.uShadowViewCount = int(std::min<std::size_t>(views.frames.size(), kMaxShadowViews));
     const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), camera.position);
     const glm::dvec2 tileUv(1.0 / map.columns(), 1.0 / map.rows());
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < block.uShadowViewCount; ++i) {
         const ShadowView& view = views.set.views[std::size_t(i)];
         const LightFrame& frame = views.frames[std::size_t(i)];
         // The view's [0, 1] square to its tile of the map; on homogeneous coordinates, so it
@@ -178,114 +170,119 @@ void LitPass::setViewUniforms(Program& p, const CameraFrame& camera, const Setti
         toTile[3][0] = view.column * tileUv.x;
         toTile[3][1] = view.row * tileUv.y;
         const glm::dmat4 shadowMatrix = slice * frame.depthShadowMatrix;
-        ShadowViewStd140& v = block.views[i];
-        v.matrix = glm::mat4(toTile * shadowMatrix * fromCamera);
-        v.tile = glm::vec4(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
-                           float((view.row + 1) * tileUv.y));
-        v.uvWorldDepth = glm::vec4(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()),
-                                   float(frame.volume.nearPlane), float(frame.volume.farPlane));
+        block.uShadowViewMatrix[i] = glm::mat4(toTile * shadowMatrix * fromCamera);
+        block.uShadowViewTile[i] = glm::vec4(float(view.column * tileUv.x), float(view.row * tileUv.y), float((view.column + 1) * tileUv.x),
+                                             float((view.row + 1) * tileUv.y));
+        block.uShadowViewUvWorldDepth[i] = glm::vec4(float(frame.volume.width() * map.columns()), float(frame.volume.height() * map.rows()),
+                                                     float(frame.volume.nearPlane), float(frame.volume.farPlane));
         // An ortho view's depth change per world unit toward the light (AFFINE_VIEW), in double.
-        v.texelRay = glm::vec4(float(texelWorldSize(frame.volume, map.size())), float((shadowMatrix * glm::dvec4(-frame.direction, 0.0)).z), 0.0f,
-                               0.0f);
+        block.uShadowViewTexelRay[i] = glm::vec4(float(texelWorldSize(frame.volume, map.size())),
+                                                 float((shadowMatrix * glm::dvec4(-frame.direction, 0.0)).z), 0.0f, 0.0f);
     }
-    // One upload, read from its binding by every variant that looks the views up.
-    if (!m_viewBlock)
-        m_viewBlock = makeBuffer(m_gl);
-    m_gl->glBindBuffer(GL_UNIFORM_BUFFER, m_viewBlock.id());
-    m_gl->glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(sizeof(block)), &block, GL_STREAM_DRAW);
-    m_gl->glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    m_gl->glBindBufferBase(GL_UNIFORM_BUFFER, kShadowViewBlockBinding, m_viewBlock.id());
-    p.program.set(p.techniqueUniform("uNormalOffsetTexels"), float(settings.bias.normal));   // several views
-    if (views.set.cascaded) {
-        glm::vec4 far(0.0f), blendStart(0.0f);
-        for (int i = 0; i < count && i < 4; ++i) {
-            const ShadowView& view = views.set.views[std::size_t(i)];
-            far[i] = float(view.splitFar);
-            blendStart[i] = float(view.splitFar - settings.shadow.blend * (view.splitFar - view.splitNear));
+    m_viewBlock.upload(block);
+}
+
+void LitPass::uploadFrame(const CameraFrame& camera, const LightFrame& light, const FramePlan& plan, const ShadowMap* map, bool readsRange,
+                          const DepthRangePass* depthRange)
+{
+    const Settings& settings = plan.settings;
+    LitFrameBlock f;
+    // Camera-relative: differences of large coordinates are taken in double here, not in float
+    // on the GPU.
+    f.uLightPosition = glm::vec3(light.position - camera.position);
+    f.uLightDirection = glm::vec3(light.direction);
+    if (settings.light.type == LightType::Spot) {
+        const double half = glm::radians(settings.light.fov) * 0.5;
+        f.uSpotCone = glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff))));
+    }
+    if (map != nullptr) {
+        if (m_views == nullptr || m_views->frames.empty())
+            throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
+        f.uShadowTexel = glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height()));
+        f.uNormalOffsetTexels = float(settings.bias.normal);   // several views
+        const TechniqueShaderValues t = plan.technique->shaderValues(settings);
+        f.uBleeding = t.bleeding;
+        f.uMomentBias = t.momentBias;
+        f.uLightSize = t.lightSize;
+        f.uPoissonRadius = t.poissonRadius;
+        const ShadowViewFrames& views = *m_views;
+        if (views.set.cascaded) {
+            for (std::size_t i = 0; i < views.set.views.size() && i < 4; ++i) {
+                const ShadowView& view = views.set.views[i];
+                f.uCascadeFar[int(i)] = float(view.splitFar);
+                f.uCascadeBlendStart[int(i)] = float(view.splitFar - settings.shadow.blend * (view.splitFar - view.splitNear));
+            }
+            // Cascades are slices of the view depth of the camera they were fitted to.
+            const CameraFrame& fitted = views.camera;
+            f.uViewForward = glm::vec3(-glm::dvec3(fitted.view[0][2], fitted.view[1][2], fitted.view[2][2]));
+            f.uViewOrigin = glm::vec3(fitted.position - camera.position);
         }
-        m_gl->glUniform4fv(p.techniqueUniform("uCascadeFar"), 1, &far[0]);
-        m_gl->glUniform4fv(p.techniqueUniform("uCascadeBlendStart"), 1, &blendStart[0]);
-        // Cascades are slices of the view depth of the camera they were fitted to.
-        const CameraFrame& fitted = views.camera;
-        const glm::dvec3 forward = -glm::dvec3(fitted.view[0][2], fitted.view[1][2], fitted.view[2][2]);
-        p.program.set(p.techniqueUniform("uViewForward"), glm::vec3(forward));
-        p.program.set(p.techniqueUniform("uViewOrigin"), glm::vec3(fitted.position - camera.position));
+    }
+    if (plan.contactShadows) {
+        f.uCameraViewProjection = glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), camera.position));
+        f.uCameraForward = glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]);
+        f.uContactLength = float(settings.contact.length);
+        f.uContactThickness = float(settings.contact.thickness);
+        f.uContactSteps = settings.contact.steps;
+    }
+    if (readsRange) {
+        f.uDepthRangeLevels = std::min(depthRange->levels(), kMaxDepthRangeLevels);
+        for (int level = 0; level < f.uDepthRangeLevels; ++level) {
+            const QPoint at = depthRange->levelOrigin(level);
+            const QSize size = depthRange->levelSize(level);
+            f.uDepthRangeLevel[level] = glm::ivec4(at.x(), at.y(), size.width(), size.height());
+        }
+    }
+    m_frameBlock.upload(f);
+    if (map != nullptr && m_virtualMap && plan.virtualMap) {
+        if (m_virtualMap->block.uVirtualLevels == 0)
+            throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
+        m_virtualBlock.upload(m_virtualMap->block);
     }
 }
 
-void LitPass::setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
-                               const ShadowMap* map, bool readsRange, const DepthRangePass* depthRange)
+void LitPass::setVariantUniforms(const Programs& programs, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
+                                 const ShadowMap* map, bool readsRange)
 {
     const Settings& settings = plan.settings;
-    p.program.bind();
-    p.program.set(p.diffuse, int(kDiffuseUnit));
-    // Camera-relative: differences of large coordinates are taken in double here, not in float
-    // on the GPU.
-    p.program.set(p.lightPosition, glm::vec3(light.position - camera.position));
-    p.program.set(p.lightDirection, glm::vec3(light.direction));
-    if (settings.light.type == LightType::Spot) {
-        const double half = glm::radians(settings.light.fov) * 0.5;
-        p.program.set(p.techniqueUniform("uSpotCone"), glm::vec2(float(std::cos(half)), float(std::cos(half * (1.0 - settings.light.falloff)))));
-    }
     // A variant compiled with DEPTH_SLICES compares in the slice's stored depth; any other in
-    // conventional depth (one without lookups still takes one for a measurement).
-    const glm::dmat4 slice = p.depthSlices ? m_sliceMatrix : glm::dmat4(1.0);
-    p.shadowMatrix = slice * light.depthShadowMatrix;
-    if (map == nullptr)
-        return;
-    // The bias as set: a bias in texels is scaled by each view's texel in the shader, one in
-    // depth units by the slice the lookups compare in.
-    const double depthUnit = settings.bias.space == BiasSpace::Depth ? slice[2][2] : 1.0;
-    p.program.set(p.biasSlope, float(settings.bias.slope * depthUnit));
-    p.program.set(p.biasMin, float(settings.bias.min * depthUnit));
-    for (const TechniqueUniform& u : plan.technique->uniforms(settings))
-        p.program.set(p.techniqueUniform(u.name), u.value);
-    p.program.set(p.shadowTexel, glm::vec2(1.0f / float(map->width()), 1.0f / float(map->height())));
-    p.program.set(p.techniqueUniform("uShadowSlice"), map->slice().uniform());
-    // One view's position is taken in the vertex stage, with the normal offset in world units
-    // from its texel (at unit distance for a perspective light), the wider axis.
-    p.program.set(p.normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));
-    p.program.set(p.shadowWorld, glm::mat4(p.shadowMatrix));
-    if (m_views == nullptr || m_views->frames.empty())
-        throw RenderError(QStringLiteral("the light's views were not fitted before the lit pass"));
-    setViewUniforms(p, camera, settings, *map, slice);
-    const std::vector<ShadowSampler>& samplers = plan.technique->samplers;
-    for (std::size_t i = 0; i < samplers.size(); ++i) {
-        const bool readsMoments = samplers[i] == ShadowSampler::Moments;
-        p.program.set(readsMoments ? p.shadowMoments : samplers[i] == ShadowSampler::RawNearest ? p.shadowDepth : p.shadowMap,
-                      int(kShadowUnit + GLuint(i)));
-    }
-    if (m_virtualMap && plan.virtualMap) {
-        const VirtualMapUniforms& v = *m_virtualMap;
-        if (v.levelOffsets.empty())
-            throw RenderError(QStringLiteral("shadow.virtual's pages were not requested before the lit pass"));
-        p.program.set(p.techniqueUniform("uVirtualLight"), v.light);
-        p.program.set(p.techniqueUniform("uVirtualLevels"), v.levels);
-        p.program.set(p.techniqueUniform("uVirtualLodBias"), v.lodBias);
-        m_gl->glUniform2fv(p.techniqueUniform("uVirtualLevelOffset"), GLsizei(v.levelOffsets.size()), &v.levelOffsets[0][0]);
-        m_gl->glUniform2iv(p.techniqueUniform("uVirtualWrap"), GLsizei(v.wraps.size()), &v.wraps[0][0]);
-        p.program.set(p.techniqueUniform("uVirtualPoolSide"), v.poolSide);
-        p.program.set(p.techniqueUniform("uVirtualTexel0"), v.finestTexel);
-        p.program.set(p.techniqueUniform("uVirtualPageTable"), int(kPageTableUnit));
-    }
-    if (plan.contactShadows) {
-        p.program.set(p.techniqueUniform("uCameraDepths"), int(kContactUnit));
-        p.program.set(p.techniqueUniform("uCameraViewProjection"), glm::mat4(camera.viewProjection * glm::translate(glm::dmat4(1.0), camera.position)));
-        p.program.set(p.techniqueUniform("uCameraForward"), glm::vec3(-camera.view[0][2], -camera.view[1][2], -camera.view[2][2]));
-        p.program.set(p.techniqueUniform("uContactLength"), float(settings.contact.length));
-        p.program.set(p.techniqueUniform("uContactThickness"), float(settings.contact.thickness));
-        p.program.set(p.techniqueUniform("uContactSteps"), settings.contact.steps);
-    }
-    if (readsRange) {
-        p.program.set(p.depthRange, int(kShadowUnit + GLuint(samplers.size())));
-        p.program.set(p.depthRangeLevels, depthRange->levels());
-        std::vector<GLint> levels;
-        for (int level = 0; level < depthRange->levels(); ++level) {
-            const QPoint at = depthRange->levelOrigin(level);
-            const QSize size = depthRange->levelSize(level);
-            levels.insert(levels.end(), {at.x(), at.y(), size.width(), size.height()});
+    // conventional depth (one without lookups still takes one for a measurement). Both of a
+    // frame's programs (plain and cut-out) are compiled alike there.
+    const glm::dmat4 slice = programs.plain->depthSlices ? m_sliceMatrix : glm::dmat4(1.0);
+    if (map != nullptr)
+        uploadViews(camera, *map, slice);
+    const MomentWarp warp = momentWarp(settings);
+    for (Program* p : {programs.plain, programs.cutout}) {
+        if (p == nullptr)
+            continue;
+        p->program.bind();
+        p->program.set(p->diffuse, int(kDiffuseUnit));
+        p->shadowMatrix = slice * light.depthShadowMatrix;
+        if (map == nullptr)
+            continue;
+        // The bias as set: a bias in texels is scaled by each view's texel in the shader, one in
+        // depth units by the slice the lookups compare in.
+        const double depthUnit = settings.bias.space == BiasSpace::Depth ? slice[2][2] : 1.0;
+        p->program.set(p->biasSlope, float(settings.bias.slope * depthUnit));
+        p->program.set(p->biasMin, float(settings.bias.min * depthUnit));
+        p->program.set(p->shadowSlice, map->slice().uniform());
+        p->program.set(p->exponentPositive, float(warp.positive));
+        p->program.set(p->exponentNegative, float(warp.negative));
+        // One view's position is taken in the vertex stage, with the normal offset in world units
+        // from its texel (at unit distance for a perspective light), the wider axis.
+        p->program.set(p->normalOffset, float(settings.bias.normal * texelWorldSize(light.volume, map->size())));
+        p->program.set(p->shadowWorld, glm::mat4(p->shadowMatrix));
+        const std::vector<ShadowSampler>& samplers = plan.technique->samplers;
+        for (std::size_t i = 0; i < samplers.size(); ++i) {
+            const GLint sampler = samplers[i] == ShadowSampler::Moments      ? p->shadowMoments
+                                  : samplers[i] == ShadowSampler::RawNearest ? p->shadowDepth
+                                                                             : p->shadowMap;
+            p->program.set(sampler, int(kShadowUnit + GLuint(i)));
         }
-        m_gl->glUniform4iv(p.techniqueUniform("uDepthRangeLevel"), depthRange->levels(), levels.data());
+        if (readsRange)
+            p->program.set(p->depthRange, int(kShadowUnit + GLuint(samplers.size())));
+        p->program.set(p->virtualPageTable, int(kPageTableUnit));
+        p->program.set(p->cameraDepths, int(kContactUnit));
     }
 }
 
@@ -466,13 +463,11 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
         for (const LightFrame& frame : m_views->frames)
             variant.warped = variant.warped || frame.volume.warped;
     }
+    uploadFrame(camera, light, plan, shadowMap, readsRange, depthRange);
     const ReachDraws& r = m_reachDraws;
     if (!r.lookup().empty() || !r.maskedLookup().empty()) {
         const Programs lookup = programsFor(scene, plan, variant);
-        for (Program* p : {lookup.plain, lookup.cutout}) {
-            if (p)
-                setFrameUniforms(*p, camera, light, plan, shadowMap, readsRange, depthRange);
-        }
+        setVariantUniforms(lookup, camera, light, plan, shadowMap, readsRange);
         if (m_counting)
             m_lookupSamples.begin();
         drawMaskedOrder(lookup, scene, camera, r.lookup(), r.maskedLookup(), GL_EQUAL, &lookupRects);
@@ -482,10 +477,7 @@ int LitPass::render(const GpuScene& scene, const CameraFrame& camera, const Ligh
     if (!r.plain().empty() || !r.maskedPlain().empty()) {
         variant.outOfReach = true;
         const Programs plain = programsFor(scene, plan, variant);
-        for (Program* p : {plain.plain, plain.cutout}) {
-            if (p)
-                setFrameUniforms(*p, camera, light, plan, shadowMap, readsRange, depthRange);
-        }
+        setVariantUniforms(plain, camera, light, plan, shadowMap, readsRange);
         if (m_counting)
             m_plainSamples.begin();
         drawMaskedOrder(plain, scene, camera, r.plain(), r.maskedPlain(), GL_NOTEQUAL, nullptr);

@@ -13,9 +13,9 @@
 #include "ShadowMap.h"
 #include "ShadowReach.h"
 #include "ShadowViewFrames.h"
+#include "UniformBlocks.h"
 #include "VirtualShadowMap.h"
 
-#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -92,16 +92,19 @@ public:
     Fragments lastFragments() const { return m_fragments; }
 
 private:
+    // A variant's program and the uniforms it reads outside the blocks (UniformBlocks.h).
     struct Program {
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
-        GLint model, normalMatrix, modelViewProjection, shadowModel, shadowWorld, normalOffset;
-        GLint diffuse, receives, selfShadowing, shadowMap, shadowDepth, shadowMoments, shadowTexel, depthRange, depthRangeLevels;
-        GLint lightPosition, lightDirection, biasSlope, biasMin, alphaCutoff;
+        // Per draw.
+        GLint model, normalMatrix, modelViewProjection, shadowModel, receives, selfShadowing, alphaCutoff;
+        // Per variant: what depends on whether it compares in a slice's stored depth, and what
+        // other programs read too (the slice, the moments' warp).
+        GLint shadowWorld, normalOffset, biasSlope, biasMin, shadowSlice, exponentPositive, exponentNegative;
+        // Samplers' texture units.
+        GLint diffuse, shadowMap, shadowDepth, shadowMoments, depthRange, cameraDepths, virtualPageTable;
         bool depthSlices;               // compiled with DEPTH_SLICES: its lookups compare in stored depth
         glm::dmat4 shadowMatrix{1.0};   // this frame's world -> map, the slice folded in where it reads one
-        std::map<QByteArray, GLint> techniqueUniforms;  // the technique's own, looked up on first use
-        GLint techniqueUniform(const QByteArray& name);
     };
 
     // A frame's variant for opaque objects and, in a scene with cut-outs, the one for those.
@@ -112,9 +115,15 @@ private:
 
     Program& programFor(const FramePlan& plan, const Variant& variant);
     Programs programsFor(const GpuScene& scene, const FramePlan& plan, Variant variant);
-    void setViewUniforms(Program& p, const CameraFrame& camera, const Settings& settings, const ShadowMap& map, const glm::dmat4& slice);
-    void setFrameUniforms(Program& p, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan, const ShadowMap* map,
-                          bool readsRange, const DepthRangePass* depthRange);
+    // The frame's blocks, the same for every variant.
+    void uploadFrame(const CameraFrame& camera, const LightFrame& light, const FramePlan& plan, const ShadowMap* map, bool readsRange,
+                     const DepthRangePass* depthRange);
+    // The views' block, with `slice` folded into their matrices (a variant compiled with
+    // DEPTH_SLICES compares in stored depth).
+    void uploadViews(const CameraFrame& camera, const ShadowMap& map, const glm::dmat4& slice);
+    // The uniforms of `programs` outside the blocks, and with shadows the views' block for them.
+    void setVariantUniforms(const Programs& programs, const CameraFrame& camera, const LightFrame& light, const FramePlan& plan,
+                            const ShadowMap* map, bool readsRange);
     // Whether the framebuffer bound now has stencil bits.
     bool boundTargetHasStencil() const;
     void drawObjects(const Programs& p, const GpuScene& scene, const CameraFrame& camera, const ReachDraws::Order& order);
@@ -134,7 +143,9 @@ private:
     Fragments m_fragments;
     ProgramCache<Program> m_programs;
     const ShadowViewFrames* m_views = nullptr;
-    GlBuffer m_viewBlock;               // the views' std140 block (ShadowViewBlock.h)
+    UniformBuffer<ShadowViewBlock> m_viewBlock;
+    UniformBuffer<LitFrameBlock> m_frameBlock;
+    UniformBuffer<VirtualMapBlock> m_virtualBlock;
     // This frame's conventional-to-stored depth of the map (DepthSlice::matrix), folded into
     // the shadow matrices of the variants compiled with DEPTH_SLICES.
     glm::dmat4 m_sliceMatrix{1.0};

@@ -2,6 +2,7 @@
 
 #include "RenderError.h"
 #include "ShaderConstants.h"
+#include "UniformBlocks.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -35,18 +36,24 @@ QString includedByDefine(const QString& name, const QStringList& defines, const 
     throw RenderError(QStringLiteral("'%1' includes %2, which the variant does not define as a file").arg(file, name));
 }
 
-QByteArray expandIncludes(const QString& file, const QString& includedFrom, const QStringList& defines, int depth)
+// `#include NAME` of a uniform block (UniformBlocks.h) gives its declaration, once per program:
+// several files that read a block each say so. `blocks` holds those given so far.
+QByteArray expandIncludes(const QString& file, const QString& includedFrom, const QStringList& defines, int depth, QStringList& blocks)
 {
     if (depth > 8)
         throw RenderError(QStringLiteral("shader includes nest too deep at '%1' (a cycle?)").arg(file));
-    static const QRegularExpression include(QStringLiteral(R"re(^\s*#include\s+(?:"([^"]+)"|(\w+))\s*$)re"));
+    static const QRegularExpression include(QStringLiteral(R"re(^\s*#include\s+(?:"([^"]+)"|(\w+))\s*(?://.*)?$)re"));
     QByteArray out;
     const QList<QByteArray> lines = readResource(file, includedFrom).split('\n');
     for (const QByteArray& line : lines) {
         const QRegularExpressionMatch m = include.match(QString::fromUtf8(line));
-        if (m.hasMatch()) {
+        if (m.hasMatch() && uniformBlock(m.captured(2))) {
+            if (!blocks.contains(m.captured(2)))
+                out += uniformBlock(m.captured(2))->glsl;
+            blocks << m.captured(2);
+        } else if (m.hasMatch()) {
             const QString included = m.captured(1).isEmpty() ? includedByDefine(m.captured(2), defines, file) : m.captured(1);
-            out += expandIncludes(included, file, defines, depth + 1);
+            out += expandIncludes(included, file, defines, depth + 1, blocks);
         } else {
             out += line + '\n';
         }
@@ -63,7 +70,8 @@ QByteArray loadShaderSource(const QString& file, const QStringList& defines)
         if (!define.endsWith(QLatin1Char('"')))    // file names are for #include, not for GLSL
             source += "#define " + define.toUtf8() + '\n';
     }
-    return source + expandIncludes(file, QString(), defines, 0);
+    QStringList blocks;
+    return source + expandIncludes(file, QString(), defines, 0, blocks);
 }
 
 ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines)
@@ -77,6 +85,9 @@ ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const Q
     if (!m_program->link())
         throw RenderError(QStringLiteral("%1 + %2%3 do not link:\n%4").arg(vertexFile, fragmentFile, variant, m_program->log()));
     labelGlObject(GlLabelKind::Program, m_program->programId(), vertexFile + QStringLiteral(" + ") + fragmentFile + variant);
+    // Each block the program reads, at the binding its buffer is uploaded to (UniformBuffer).
+    for (const UniformBlockDeclaration& block : uniformBlocks())
+        bindUniformBlock(block.name, block.binding);
 }
 
 GLint ShaderProgram::uniform(const char* name) const

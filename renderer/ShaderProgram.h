@@ -15,14 +15,16 @@
 namespace shadowlab {
 
 // Reads a shader from the :/shaders resource, expanding `#include "file"` lines and
-// `#include NAME` lines whose file an entry `NAME "file"` of `defines` names, and puts
+// `#include NAME` lines whose file an entry `NAME "file"` of `defines` names or that name a
+// uniform block (UniformBlocks.h: its declaration, once per program), and puts
 // `#version 330 core`, the constants shared with C++ (core/ShaderConstants.h) and one `#define`
 // per other entry in front ("NAME" or "NAME VALUE").
 // Throws RenderError naming the file when it or an include is missing.
 QByteArray loadShaderSource(const QString& file, const QStringList& defines);
 
-// A linked program built from a vertex and a fragment file with injected defines. Compile and
-// link failures throw RenderError with the file names and the driver's log.
+// A linked program built from a vertex and a fragment file with injected defines, each uniform
+// block it declares read from the block's binding. Compile and link failures throw RenderError
+// with the file names and the driver's log.
 class ShaderProgram {
 public:
     ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines);
@@ -30,9 +32,6 @@ public:
     void bind() { m_program->bind(); }
     GLint uniform(const char* name) const;
     GLuint id() const { return m_program->programId(); }
-    // Reads the uniform block `name` from uniform buffer binding `binding`; false where the
-    // program has no such active block (a variant that does not read it).
-    bool bindUniformBlock(const char* name, GLuint binding);
 
     void set(GLint location, float value);
     void set(GLint location, int value);
@@ -42,6 +41,10 @@ public:
     void set(GLint location, const glm::mat4& value);
 
 private:
+    // Reads the uniform block `name` from uniform buffer binding `binding`; false where the
+    // program has no such active block (a variant that does not read it).
+    bool bindUniformBlock(const char* name, GLuint binding);
+
     GlFunctions* m_gl;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
 };

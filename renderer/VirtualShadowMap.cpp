@@ -14,7 +14,7 @@
 
 namespace shadowlab {
 
-VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl), m_stillRequests(gl) {}
+VirtualShadowMap::VirtualShadowMap(GlFunctions* gl) : m_gl(gl), m_block(gl), m_stillRequests(gl) {}
 
 VirtualShadowMap::~VirtualShadowMap()
 {
@@ -86,18 +86,18 @@ VirtualMapUniforms VirtualShadowMap::uniforms(const CameraFrame& camera) const
     const glm::dmat4 depth = m_depthMatrix * glm::translate(glm::dmat4(1.0), camera.position);
     for (int column = 0; column < 4; ++column)
         m[column][2] = depth[column][2];
-    u.light = glm::mat4(m);
-    u.levels = layout.levels;
-    u.lodBias = m_lodBias;
-    for (int level = 0; level < layout.levels; ++level) {
-        const glm::dvec2 w(m_windows[std::size_t(level)]);
-        const glm::dvec2 offset = origin0 * std::ldexp(1.0, -level) - w;
-        u.levelOffsets.emplace_back(glm::vec2(offset));
-        u.wraps.emplace_back(((m_windows[std::size_t(level)].x % kVirtualLevelPages) + kVirtualLevelPages) % kVirtualLevelPages,
-                             ((m_windows[std::size_t(level)].y % kVirtualLevelPages) + kVirtualLevelPages) % kVirtualLevelPages);
+    VirtualMapBlock& b = u.block;
+    b.uVirtualLight = glm::mat4(m);
+    b.uVirtualLevels = std::min(layout.levels, kMaxVirtualLevels);
+    b.uVirtualLodBias = m_lodBias;
+    for (int level = 0; level < b.uVirtualLevels; ++level) {
+        const glm::ivec2 window = m_windows[std::size_t(level)];
+        const glm::dvec2 offset = origin0 * std::ldexp(1.0, -level) - glm::dvec2(window);
+        b.uVirtualLevelOffset[level] = glm::vec4(glm::vec2(offset), 0.0f, 0.0f);
+        b.uVirtualWrap[level] = glm::ivec4(((window % kVirtualLevelPages) + kVirtualLevelPages) % kVirtualLevelPages, 0, 0);
     }
-    u.poolSide = m_cache.poolSide();
-    u.finestTexel = float(layout.finestTexel);
+    b.uVirtualPoolSide = m_cache.poolSide();
+    b.uVirtualTexel0 = float(layout.finestTexel);
     u.pageTable = m_pageTable.id();
     return u;
 }
@@ -110,10 +110,6 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
         m_normalMatrix = m_program->uniform("uNormalMatrix");
         m_mvp = m_program->uniform("uModelViewProjection");
         m_receives = m_program->uniform("uReceives");
-        m_light = m_program->uniform("uVirtualLight");
-        m_levels = m_program->uniform("uVirtualLevels");
-        m_offsets = m_program->uniform("uVirtualLevelOffset");
-        m_lodBiasUniform = m_program->uniform("uVirtualLodBias");
     }
     if (!m_requestTexture || m_requestSize != size)
         allocateTargets(size);
@@ -125,12 +121,8 @@ int VirtualShadowMap::drawRequests(const GpuScene& scene, const CameraFrame& cam
     state.depthTest = true;
     state.cullFace = GL_BACK;   // as the lit pass draws
     applyPassState(m_gl, state);
-    const VirtualMapUniforms u = uniforms(camera);
+    m_block.upload(uniforms(camera).block);
     m_program->bind();
-    m_program->set(m_light, u.light);
-    m_program->set(m_levels, u.levels);
-    m_program->set(m_lodBiasUniform, u.lodBias);
-    m_gl->glUniform2fv(m_offsets, GLsizei(u.levelOffsets.size()), &u.levelOffsets[0][0]);
     const glm::dmat4 toCamera = glm::translate(glm::dmat4(1.0), -camera.position);
     int draws = 0;
     // The still objects or the moving ones, those that cover any of `areas`.

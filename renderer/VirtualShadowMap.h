@@ -6,6 +6,7 @@
 #include "LightMath.h"
 #include "Settings.h"
 #include "ShaderProgram.h"
+#include "UniformBlocks.h"
 #include "VirtualPages.h"
 
 #include <glm/vec2.hpp>
@@ -24,15 +25,10 @@ class ShadowMap;
 class ShadowStorage;
 struct FramePlan;
 
-// The uniforms the lit pass's VIRTUAL_MAP lookup reads (shadow_lookup.glsl).
+// What the request pass and the lit pass's VIRTUAL_MAP lookup read of a virtual map: its
+// clipmap (no levels before pages were requested) and its page table.
 struct VirtualMapUniforms {
-    glm::mat4 light{1.0f};                      // camera-relative world -> (level-0 pages, depth)
-    int levels = 1;
-    int lodBias = 0;
-    std::vector<glm::vec2> levelOffsets;
-    std::vector<glm::ivec2> wraps;
-    int poolSide = 1;
-    float finestTexel = 1.0f;
+    VirtualMapBlock block;
     GLuint pageTable = 0;
 };
 
@@ -158,7 +154,8 @@ private:
 
     GlFunctions* m_gl;
     std::unique_ptr<ShaderProgram> m_program;
-    GLint m_model = -1, m_normalMatrix = -1, m_mvp = -1, m_receives = -1, m_light = -1, m_levels = -1, m_offsets = -1, m_lodBiasUniform = -1;
+    GLint m_model = -1, m_normalMatrix = -1, m_mvp = -1, m_receives = -1;
+    UniformBuffer<VirtualMapBlock> m_block;
     GlTexture m_requestTexture;
     GlTexture m_requestDepth;
     GlFramebuffer m_requestFramebuffer;

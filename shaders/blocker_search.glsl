@@ -2,7 +2,7 @@
 // receiver (shadow/pcss.glsl, shadow/dpcf.glsl): the raw depths, the light's size, and where
 // the light's disk lies on the map as seen from the receiver.
 uniform sampler2D uShadowDepth; // the same map, raw depth
-uniform float uLightSize;       // ortho: light.radius / distance to the target; perspective: light.radius
+#include LitFrameBlock           // uLightSize
 
 bool isBlocker(float depth, float reference)
 {

@@ -7,11 +7,7 @@
 // no back faces (an open mesh). What the screen does not show is not known: the march stops at
 // its edges. The lit pass takes the smaller of this and the map's visibility.
 uniform sampler2D uCameraDepths;    // the casters' distance along the view: nearest front faces (r), back faces (g); kNoCasterDepth none
-uniform mat4 uCameraViewProjection; // camera-relative world -> clip
-uniform vec3 uCameraForward;        // unit view direction
-uniform float uContactLength;       // world units
-uniform float uContactThickness;    // world units
-uniform int uContactSteps;
+#include LitFrameBlock               // uCameraViewProjection, uCameraForward, uContact*
 
 // 1 lit, 0 in a caster's contact shadow. Called in uniform control flow: it takes derivatives.
 float contactVisibility(vec3 position, vec3 toLight)

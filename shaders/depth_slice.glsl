@@ -4,10 +4,12 @@
 // (0, 1, 1): a map cleared every draw.
 uniform vec3 uShadowSlice;
 
+#include "shared/depth_slice_decode.glsl"
+
 // A stored value as conventional depth; at most 1.
 float sliceDepth(float stored)
 {
-    return stored >= uShadowSlice.z ? 1.0 : min((stored - uShadowSlice.x) / uShadowSlice.y, 1.0);
+    return sliceDepthOf(stored, uShadowSlice);
 }
 
 vec4 sliceDepth(vec4 stored)

@@ -30,12 +30,7 @@ uniform sampler2D uDiffuse;
 uniform float uAlphaCutoff;     // a cut-out object's (textureAlphaCutoff): below it the surface is not there
 #endif
 uniform bool uReceives;     // false: the object is always lit
-uniform vec3 uLightPosition;    // camera-relative
-uniform vec3 uLightDirection;   // unit, from the light toward its target
-
-#ifdef LIGHT_SPOT
-uniform vec2 uSpotCone;         // cosines of the cone's half-angle and of where its falloff starts
-#endif
+#include LitFrameBlock
 #ifdef SHADOWS
 #include "shadow_lookup.glsl"
 #endif

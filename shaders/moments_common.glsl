@@ -23,8 +23,7 @@ float unwarpDepth(float warped, float exponent)
 
 #if !defined(MOMENTS_PASS) && !defined(MOMENTS_VIEW)
 uniform sampler2D uShadowMoments;   // filtered: bilinear, trilinear with mips, anisotropic if asked
-uniform float uBleeding;            // [0, 0.95]: visibility below it reads as shadow
-uniform float uMomentBias;          // least variance (vsm; evsm relative to the warped depth squared) or the blend toward 0.5 (msm)
+#include LitFrameBlock               // uBleeding, uMomentBias
 
 // The receiver's depth as the moments pass stores it: linear in [0, 1] between the light
 // volume's near and far planes (for a perspective light, distance along its axis).

@@ -13,12 +13,5 @@ vec3 depthRamp(float t)
     return clamp(l + amplitude * vec3(-0.14861 * c + 1.78277 * s, -0.29227 * c - 0.90649 * s, 1.97294 * c), 0.0, 1.0);
 }
 
-// densityRamp: screen pixels per shadow texel on a log scale: blue under 1 (the map is finer
-// than the screen), green 1 to 2, yellow about 4, red from 8 up (blocky edges).
-vec3 densityRamp(float pixelsPerTexel)
-{
-    float k = clamp(log2(max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);   // -1: 1/8, 0: 1, 1: 8 pixels
-    if (k < 0.0)
-        return mix(kDensityGreen, kDensityBlue, clamp(-k * 3.0, 0.0, 1.0));
-    return k < 0.5 ? mix(kDensityGreen, kDensityYellow, (k - 0.1) / 0.4 * step(0.1, k)) : mix(kDensityYellow, kDensityRed, (k - 0.5) * 2.0);
-}
+// densityRamp: the texel density tint, written once for the shader and the window's legend.
+#include "shared/density_ramp.glsl"

@@ -6,7 +6,7 @@
 // Outside the map the border depth of 1.0 makes every tap lit.
 
 uniform sampler2DShadow uShadowMap;
-uniform vec2 uShadowTexel;      // 1 / map size
+#include LitFrameBlock           // uShadowTexel, the map's texel in uv; uDepthRangeLevel
 #ifdef DEPTH_SLICES
 #include "depth_slice.glsl"
 #endif
@@ -142,8 +142,6 @@ const vec2 kPoissonDisk[64] = vec2[64](
 // An atlas of every level (renderer/DepthRangePass.h), read at its level 0: level k holds the
 // min (r) and max (g) depth of 2^(k+2) x 2^(k+2) map texels.
 uniform sampler2D uDepthRange;
-uniform int uDepthRangeLevels;
-uniform ivec4 uDepthRangeLevel[kMaxDepthRangeLevels];  // each level's origin in the atlas and its size
 
 // Level `level`'s texel `p` (clamped to the level), in the atlas's layout.
 vec2 rangeTexel(int level, ivec2 p)

@@ -3,23 +3,15 @@
 // A pixel picks its view (the light rig, below: the one view, by view depth, or by the major
 // axis of its direction from the light), takes its position in that view, and runs the bias and
 // the technique's own filterShadow inside that view's tile.
+#include "shared/view_choice.glsl"
 uniform float uBiasSlope;           // per unit of (1 - N.L); world units (texels with BIAS_TEXEL, depth units with BIAS_DEPTH)
 uniform float uBiasMin;             // the same units
 #ifdef FOOTPRINT_BIAS
 uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
 #endif
-// The views, one std140 block uploaded whole (renderer/ShadowViewBlock.h mirrors it field for
-// field). Perspective views' world sizes are at unit distance.
-struct ShadowViewData {
-    mat4 matrix;                // camera-relative world -> map uv (of the whole map) and the view's depth
-    vec4 tile;                  // the view's tile in map uv: min xy, max xy
-    vec4 uvWorldDepth;          // world size of the whole map's uv square at the view's scale (xy); near and far (zw)
-    vec4 texelRay;              // world size of one of its texels; depth change per world unit toward the light (ortho)
-};
-layout(std140) uniform ShadowViewBlock {
-    ShadowViewData uShadowViewData[kMaxShadowViews];
-    int uShadowViewCount;
-};
+// The views (renderer/UniformBlocks.h declares them), and the frame's bias, cascades and light.
+#include ShadowViewBlock
+#include LitFrameBlock
 // An ortho view is affine (w = 1) and sees one direction to the light, so the bias's step along
 // the ray to the light is a constant change of depth per world unit: no division by w and no
 // matrix product per pixel.
@@ -30,23 +22,13 @@ layout(std140) uniform ShadowViewBlock {
 // here, per pixel; one plain view takes it from the vertex stage.
 #if defined(SHADOW_VIEWS) || defined(LIGHT_WARP) || defined(VIRTUAL_MAP)
 #define VIEW_PER_PIXEL
-uniform float uNormalOffsetTexels;  // bias.normal (one view's is in vShadowCoord, from the vertex stage)
-#endif
-#ifdef CASCADES
-uniform vec4 uCascadeFar;           // view depth where each cascade ends (the last: shadow.distance)
-uniform vec4 uCascadeBlendStart;    // view depth where each cascade starts fading into the next
-uniform vec3 uViewForward;          // unit view direction of the camera the cascades were fitted to
-uniform vec3 uViewOrigin;           // ... and its position, camera-relative
 #endif
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
 
 #ifdef VIRTUAL_MAP
 #include "virtual_pages.glsl"
-uniform usampler2D uVirtualPageTable;           // per level a window's rows of pages: slot + 1 of the page there, 0 none
-uniform ivec2 uVirtualWrap[kMaxVirtualLevels];  // each level's window origin, mod its width (the table wraps)
-uniform int uVirtualPoolSide;                   // slots per side of the pool (the map)
-uniform float uVirtualTexel0;                   // world size of a level-0 texel
+uniform usampler2D uVirtualPageTable;   // per level a window's rows of pages: slot + 1 of the page there, 0 none
 #endif
 
 // What the lookup needs of a view: its matrix (camera-relative world to map uv and depth), its
@@ -63,13 +45,13 @@ struct ShadowViewLookup {
 
 ShadowViewLookup shadowView(int i)
 {
-    ShadowViewData d = uShadowViewData[i];
 #ifdef AFFINE_VIEW
-    float rayDepth = d.texelRay.y;
+    float rayDepth = uShadowViewTexelRay[i].y;
 #else
     float rayDepth = 0.0;
 #endif
-    return ShadowViewLookup(d.matrix, d.tile, d.uvWorldDepth.xy, d.uvWorldDepth.zw, d.texelRay.x, rayDepth);
+    return ShadowViewLookup(uShadowViewMatrix[i], uShadowViewTile[i], uShadowViewUvWorldDepth[i].xy, uShadowViewUvWorldDepth[i].zw,
+                            uShadowViewTexelRay[i].x, rayDepth);
 }
 
 #ifdef LIGHT_WARP
@@ -386,7 +368,7 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
 // The page table's entry for level `level` at its window-relative position q: slot + 1, or 0.
 uint virtualPageEntry(int level, vec2 q)
 {
-    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1)) + uVirtualWrap[level]) % kVirtualLevelPages;
+    ivec2 at = (clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1)) + uVirtualWrap[level].xy) % kVirtualLevelPages;
     return texelFetch(uVirtualPageTable, ivec2(at.x, at.y + level * kVirtualLevelPages), 0).r;
 }
 
@@ -404,7 +386,7 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     int level = -1;
     uint entry = 0u;
     for (int k = -1; k < uVirtualLevels && entry == 0u; ++k) {
-        int l = k < 0 ? asked : (k == 0 ? asked - 1 : asked + k);
+        int l = virtualFallbackLevel(asked, k);
         if (l < 0 || l >= uVirtualLevels || !virtualInWindow(l, q0, q))
             continue;
         entry = virtualPageEntry(l, q);
@@ -422,11 +404,11 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
     mat4 toSlot = mat4(1.0);
     toSlot[0][0] = float(kVirtualPageTexels) * scale / atlas.x;
     toSlot[1][1] = float(kVirtualPageTexels) * scale / atlas.y;
-    toSlot[3].xy = (slotOrigin + float(kVirtualPageBorder) + float(kVirtualPageTexels) * (uVirtualLevelOffset[level] - page)) / atlas;
+    toSlot[3].xy = (slotOrigin + float(kVirtualPageBorder) + float(kVirtualPageTexels) * (uVirtualLevelOffset[level].xy - page)) / atlas;
     float texel = uVirtualTexel0 * exp2(float(level));
     // The slot's matrix leaves depth as the light's: its step toward the light is the light's.
     ShadowViewLookup view = ShadowViewLookup(toSlot * uVirtualLight, vec4(slotOrigin / atlas, (slotOrigin + float(kVirtualSlotTexels)) / atlas),
-                                             atlas * texel, uShadowViewData[0].uvWorldDepth.zw, texel, (uVirtualLight * vec4(toLight, 0.0)).z);
+                                             atlas * texel, uShadowViewUvWorldDepth[0].zw, texel, (uVirtualLight * vec4(toLight, 0.0)).z);
     return viewVisibility(view, normal, toLight, dx, dy);
 }
 #endif
@@ -443,25 +425,21 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     vec3 dx = dFdx(mapCoord), dy = dFdy(mapCoord);
 #endif
 #if defined(LIGHT_POINT)
-    vec3 d = vPosition - uLightPosition;
-    vec3 a = abs(d);
-    int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y >= 0.0 ? 2 : 3) : (d.z >= 0.0 ? 4 : 5));
+    int face = cubeFace(vPosition - uLightPosition);
     gViewIndex = face;
     return viewVisibility(shadowView(face), normal, toLight, dx, dy);
 #elif defined(CASCADES)
     float depth = dot(vPosition - uViewOrigin, uViewForward);
-    for (int i = 0; i < uShadowViewCount; ++i) {
-        if (depth <= uCascadeFar[i]) {
-            gViewIndex = i;
-            float v = viewVisibility(shadowView(i), normal, toLight, dx, dy);
-            if (i + 1 < uShadowViewCount && depth > uCascadeBlendStart[i]) {
-                float t = (depth - uCascadeBlendStart[i]) / max(uCascadeFar[i] - uCascadeBlendStart[i], 1e-30);
-                v = mix(v, viewVisibility(shadowView(i + 1), normal, toLight, dx, dy), t);
-            }
-            return v;
-        }
+    int i = cascadeIndex(depth, uCascadeFar, uShadowViewCount);
+    if (i < 0)
+        return 1.0;             // beyond shadow.distance
+    gViewIndex = i;
+    float v = viewVisibility(shadowView(i), normal, toLight, dx, dy);
+    if (i + 1 < uShadowViewCount && depth > uCascadeBlendStart[i]) {
+        float t = (depth - uCascadeBlendStart[i]) / max(uCascadeFar[i] - uCascadeBlendStart[i], 1e-30);
+        v = mix(v, viewVisibility(shadowView(i + 1), normal, toLight, dx, dy), t);
     }
-    return 1.0;                 // beyond shadow.distance
+    return v;
 #elif defined(VIRTUAL_MAP)
     return virtualVisibility(normal, toLight, dx, dy);
 #else

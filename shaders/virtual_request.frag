@@ -1,7 +1,6 @@
 // Page requests of a virtual shadow map: each receiver pixel the camera sees writes the page it
-// needs (virtual_pages.glsl), packed as 1 + level * n² + y * n + x on its level's window of n²
-// pages (n = kVirtualLevelPages); 0 where nothing that receives a shadow is seen. Read back and
-// deduplicated on the CPU.
+// needs (virtual_pages.glsl), packed by virtualPackRequest (shared/virtual_levels.glsl); 0 where
+// nothing that receives a shadow is seen. Read back and deduplicated on the CPU.
 #include "virtual_pages.glsl"
 
 in vec3 vPosition;
@@ -25,5 +24,5 @@ void main()
         return;
     }
     ivec2 page = clamp(ivec2(floor(q)), ivec2(0), ivec2(kVirtualLevelPages - 1));
-    request = 1u + uint(level * kVirtualLevelPages * kVirtualLevelPages + page.y * kVirtualLevelPages + page.x);
+    request = virtualPackRequest(level, page);
 }

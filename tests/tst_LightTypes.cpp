@@ -12,7 +12,6 @@
 #include "SceneNames.h"
 #include "SettingsKeys.h"
 #include "ShaderProgram.h"
-#include "ShadowViewBlock.h"
 #include "ShadowViews.h"
 #include "RayTracer.h"
 #include "ShadowReference.h"
@@ -87,43 +86,6 @@ public:
 private Q_SLOTS:
     void initTestCase() { m_headless = std::make_unique<HeadlessRenderer>(); }
     void cleanupTestCase() { m_headless.reset(); }
-
-    // The views' std140 block: the offsets the driver gives each field of the shader's
-    // declaration are those of the C++ struct the lit pass uploads (renderer/ShadowViewBlock.h).
-    void shadowViewBlockMatchesTheShader_data()
-    {
-        QTest::addColumn<QStringList>("defines");
-        const QStringList common{QStringLiteral("SHADOW_TECHNIQUE \"shadow/hard.glsl\""), QStringLiteral("SHADOWS")};
-        QTest::newRow("cascades") << common + QStringList{QStringLiteral("SHADOW_VIEWS"), QStringLiteral("CASCADES")};
-        QTest::newRow("one view, footprint bias") << common + QStringList{QStringLiteral("FOOTPRINT_BIAS")};
-    }
-    void shadowViewBlockMatchesTheShader()
-    {
-        QFETCH(QStringList, defines);
-        m_headless->makeCurrent();
-        GlFunctions* gl = m_headless->functions();
-        ShaderProgram program(gl, QStringLiteral("lit.vert"), QStringLiteral("lit.frag"), defines);
-        const GLuint block = gl->glGetUniformBlockIndex(program.id(), "ShadowViewBlock");
-        QVERIFY2(block != GL_INVALID_INDEX, "the lit pass does not read the views' block");
-        GLint size = 0;
-        gl->glGetActiveUniformBlockiv(program.id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
-        QCOMPARE(size, GLint(sizeof(ShadowViewBlockStd140)));
-        const auto offsetOf = [&](const char* name) {
-            GLuint index = GL_INVALID_INDEX;
-            gl->glGetUniformIndices(program.id(), 1, &name, &index);
-            GLint offset = -1;
-            if (index != GL_INVALID_INDEX)
-                gl->glGetActiveUniformsiv(program.id(), 1, &index, GL_UNIFORM_OFFSET, &offset);
-            return offset;
-        };
-        const std::size_t view = sizeof(ShadowViewStd140);
-        QCOMPARE(offsetOf("uShadowViewData[0].matrix"), GLint(offsetof(ShadowViewStd140, matrix)));
-        QCOMPARE(offsetOf("uShadowViewData[0].tile"), GLint(offsetof(ShadowViewStd140, tile)));
-        QCOMPARE(offsetOf("uShadowViewData[0].uvWorldDepth"), GLint(offsetof(ShadowViewStd140, uvWorldDepth)));
-        QCOMPARE(offsetOf("uShadowViewData[0].texelRay"), GLint(offsetof(ShadowViewStd140, texelRay)));
-        QCOMPARE(offsetOf("uShadowViewData[1].matrix"), GLint(view));
-        QCOMPARE(offsetOf("uShadowViewCount"), GLint(offsetof(ShadowViewBlockStd140, count)));
-    }
 
     void eachTypeAgreesWithTheReference_data()
     {

@@ -418,10 +418,9 @@ private Q_SLOTS:
         applyAssignment(s, "filter.mode=pcss");
         applyAssignment(s, "light.projection=" + projection);
         applyAssignment(s, QString("light.radius=%1").arg(radius));
-        const std::vector<TechniqueUniform> uniforms = shadowTechnique(FilterMode::Pcss).uniforms(s);
-        QCOMPARE(uniforms.size(), std::size_t(1));
-        QCOMPARE(uniforms[0].name, QByteArray("uLightSize"));
-        QVERIFY(std::abs(uniforms[0].value - expected) < 1e-6);
+        const TechniqueShaderValues values = shadowTechnique(FilterMode::Pcss).shaderValues(s);
+        QVERIFY(std::abs(values.lightSize - expected) < 1e-6);
+        QCOMPARE(values.poissonRadius, 0.0f);
         QVERIFY(usesParameter(s.filter, "filter.taps"));
         QVERIFY(!usesParameter(s.filter, "filter.radius"));
         QCOMPARE(filterLabel(s.filter), QStringLiteral("pcss 16"));

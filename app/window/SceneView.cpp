@@ -10,7 +10,7 @@
 #include "SceneLibrary.h"
 #include "SceneSupply.h"
 #include "SettingsError.h"
-#include "ShaderConstants.h"
+#include "SharedShaderCode.h"
 
 #include <QElapsedTimer>
 #include <QKeyEvent>
@@ -33,18 +33,11 @@ namespace {
 
 constexpr double kDegreesPerPixel = 0.4;
 
-// lit.frag's densityRamp (shaders/ramp.glsl), for the legend: screen pixels per shadow texel on
-// a log scale, blue under 1, green 1 to 2, yellow about 4, red from 8 up.
+// The lit pass's density tint (shaders/shared/density_ramp.glsl), for the legend.
 QColor densityColour(double pixelsPerTexel)
 {
-    const double k = std::clamp(std::log2(std::max(pixelsPerTexel, 1e-6)) / 3.0, -1.0, 1.0);
-    const auto mix = [](const Rgb& a, const Rgb& b, double t) {
-        t = std::clamp(t, 0.0, 1.0);
-        return QColor::fromRgbF(float(a[0] + (b[0] - a[0]) * t), float(a[1] + (b[1] - a[1]) * t), float(a[2] + (b[2] - a[2]) * t));
-    };
-    if (k < 0.0)
-        return mix(kDensityGreen, kDensityBlue, -k * 3.0);
-    return k < 0.5 ? mix(kDensityGreen, kDensityYellow, k < 0.1 ? 0.0 : (k - 0.1) / 0.4) : mix(kDensityYellow, kDensityRed, (k - 0.5) * 2.0);
+    const glm::vec3 c = glsl::densityRamp(float(pixelsPerTexel));
+    return QColor::fromRgbF(c.r, c.g, c.b);
 }
 
 // What the texel-density tint means, in the view's bottom-left corner.

@@ -1,7 +1,7 @@
 // poisson: POISSON_TAPS taps of a Poisson disk of uPoissonRadius texels, rotated per pixel by
 // interleaved gradient noise: a round kernel whose sparse taps give fine noise, not bands.
 // Each tap's bias grows with its distance (tapReference), so a wide disk keeps lit slopes lit.
-uniform float uPoissonRadius;   // texels (filter.radius)
+#include LitFrameBlock           // uPoissonRadius
 
 float filterShadow(vec2 uv, float reference)
 {
