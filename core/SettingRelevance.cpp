@@ -71,15 +71,17 @@ QString ignoredBecause(const Settings& s, const QString& key)
         }
         return QStringLiteral("Only %1 skip their taps outside penumbrae; %2 does not.").arg(skipping.join(QStringLiteral(", ")), techniqueKey(s));
     }
-    if (key == u"map.slices" && s.shadow.cache != ShadowCachePolicy::Off)
+    if (key == u"map.slice_coverage" && s.map.slices <= 1)
+        return QStringLiteral("Read only where a map is drawn into slices; set map.slices above 1.");
+    if ((key == u"map.slices" || key == u"map.slice_coverage") && s.shadow.cache != ShadowCachePolicy::Off)
         return QStringLiteral("A cached map starts each frame from its copy, which writes every texel as a clear does, so there is nothing for "
                               "slices to save; set shadow.cache to off to draw into slices.");
-    if (key == u"map.slices" && (moments || !slicesDepth(s) || s.map.format != DepthFormat::Depth24))
+    if ((key == u"map.slices" || key == u"map.slice_coverage") && (moments || !slicesDepth(s) || s.map.format != DepthFormat::Depth24))
         return QStringLiteral("Only one plain ortho depth24 map is drawn into slices; perspective and warped maps, cascades, virtual pages, "
                               "depth32f and moments clear every time.");
     if (key == u"shadow.cache_interval" && s.shadow.cache != ShadowCachePolicy::EveryN)
         return QStringLiteral("Only shadow.cache=every-n redraws moving casters at an interval; set shadow.cache to every-n.");
-    if (key == u"map.slices" && s.rasteriser.profile == RasteriserProfile::Hardware)
+    if ((key == u"map.slices" || key == u"map.slice_coverage") && s.rasteriser.profile == RasteriserProfile::Hardware)
         return QStringLiteral("Depth slices save a software rasteriser its clears; with rasteriser.profile=hardware every draw clears. "
                               "Set rasteriser.profile to software (or auto, on a software rasteriser).");
 

@@ -72,6 +72,7 @@ struct MapSettings {
     int size = 2048;                        // texels per side
     DepthFormat format = DepthFormat::Depth24;
     int slices = 4;                         // redraws between clears of a depth24 map (DepthSlices::beginDraw)
+    double sliceCoverage = 0.85;            // slices only while the casters may cover at most this share of the map
 
     bool operator==(const MapSettings&) const = default;
 };

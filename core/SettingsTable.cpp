@@ -223,6 +223,12 @@ void mapKeys(std::vector<Entry>& e)
                                "A software rasteriser's optimisation: on under rasteriser.profile=software (auto on llvmpipe), every draw clears on a GPU",
                        .look = {.label = QStringLiteral("Slices"), .sliderLow = 1.0, .sliderHigh = 8.0, .group = kShadowMap}},
                       [](auto& s) -> auto& { return s.map.slices; }));
+    e.push_back(number({.key = "map.slice_coverage",
+                        .range = {.lo = 0.0, .hi = 1.0},
+                        .help = "Slices (map.slices) only while the casters may cover at most this share of the map (the area of their reach): a draw into a slice reads each texel "
+                                "it covers from memory, where after a clear it finds it in the cache, so past it a clear is cheaper; 1 slices whatever they cover, 0 never",
+                        .look = {.label = QStringLiteral("Slice coverage"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 1.0, .group = kShadowMap}},
+                       [](auto& s) -> auto& { return s.map.sliceCoverage; }));
     e.push_back(choice<BiasSpace>({.key = "bias.space",
                                    .help = "Unit of bias.slope and bias.min: world units along the ray to the light (same offset for any near/far, map size or fit), texels of the map (follows the resolution), or depth-buffer units (the classic form, whose world offset grows with far - near)",
                                    .look = {.label = QStringLiteral("Unit"), .group = kBias}},

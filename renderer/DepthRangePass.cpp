@@ -13,13 +13,21 @@ constexpr GLuint kSourceUnit = 0;
 
 } // namespace
 
+DepthRangePass::Program::Program(GlFunctions* gl, const QStringList& defines)
+    : program(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"), defines),
+      source(program.uniform("uSource")),
+      sourceSize(program.uniform("uSourceSize")),
+      shadowSlice(program.uniform("uShadowSlice")),
+      empty(program.uniform("uEmpty"))
+{
+}
+
 DepthRangePass::DepthRangePass(GlFunctions* gl, Contents contents)
     : m_gl(gl),
       m_contents(contents),
-      m_fromDepth(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"),
-                                                  contents == Contents::Written ? QStringList{QStringLiteral("FROM_DEPTH"), QStringLiteral("WRITTEN_ONLY")}
-                                                                                : QStringList{QStringLiteral("FROM_DEPTH")})),
-      m_fromRange(std::make_unique<ShaderProgram>(gl, QStringLiteral("fullscreen.vert"), QStringLiteral("depthrange.frag"), QStringList{})),
+      m_fromDepth(std::make_unique<Program>(gl, contents == Contents::Written ? QStringList{QStringLiteral("FROM_DEPTH"), QStringLiteral("WRITTEN_ONLY")}
+                                                                               : QStringList{QStringLiteral("FROM_DEPTH")})),
+      m_fromRange(std::make_unique<Program>(gl, QStringList{})),
       m_emptyVertexArray(makeVertexArray(gl)),
       m_framebuffer(makeFramebuffer(gl)),
       m_atlasFramebuffer(makeFramebuffer(gl))
@@ -101,15 +109,15 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
         PassState state;
         state.viewport = QRect(QPoint(0, 0), size);
         applyPassState(m_gl, state);
-        ShaderProgram& program = level == 0 ? *m_fromDepth : *m_fromRange;
-        program.bind();
-        program.set(program.uniform("uSource"), int(kSourceUnit));
+        Program& p = level == 0 ? *m_fromDepth : *m_fromRange;
+        p.program.bind();
+        p.program.set(p.source, int(kSourceUnit));
         const QSize source = level == 0 ? mapSize : levelSize(level - 1);
-        m_gl->glUniform2i(program.uniform("uSourceSize"), source.width(), source.height());
+        m_gl->glUniform2i(p.sourceSize, source.width(), source.height());
         if (level == 0)
-            program.set(program.uniform("uShadowSlice"), map.slice().uniform());
+            p.program.set(p.shadowSlice, map.slice().uniform());
         if (level == 0 && m_contents == Contents::Written)
-            program.set(program.uniform("uEmpty"), reversedDepth ? 0.0f : 1.0f);
+            p.program.set(p.empty, reversedDepth ? 0.0f : 1.0f);
         if (level == 0) {
             m_gl->glBindTexture(GL_TEXTURE_2D, map.texture());
             m_gl->glBindSampler(kSourceUnit, map.sampler(ShadowSampler::RawNearest));

@@ -60,10 +60,17 @@ public:
 private:
     void allocate(QSize mapSize);
 
+    // depthrange.frag, from the map (level 0) or from the level below, and its uniforms.
+    struct Program {
+        Program(GlFunctions* gl, const QStringList& defines);
+        ShaderProgram program;
+        GLint source, sourceSize, shadowSlice, empty;
+    };
+
     GlFunctions* m_gl;
     Contents m_contents;
-    std::unique_ptr<ShaderProgram> m_fromDepth;
-    std::unique_ptr<ShaderProgram> m_fromRange;
+    std::unique_ptr<Program> m_fromDepth;
+    std::unique_ptr<Program> m_fromRange;
     GlVertexArray m_emptyVertexArray;   // core profile draws need a bound VAO
     GlFramebuffer m_framebuffer;
     GlFramebuffer m_atlasFramebuffer;

@@ -72,12 +72,14 @@ public:
     // The share of the map the next draw's casters may cover (the area of their reach boxes,
     // ShadowReach, which bound their footprints). A draw into a slice reads each texel its
     // casters cover from memory, where after a clear it finds it in the cache, so a draw whose
-    // boxes cover more than kSlicedCoverage clears (docs/performance.md has the figures).
-    void setCasterCoverage(double share) { m_casterCoverage = share; }
+    // boxes cover more than `limit` (map.slice_coverage) clears (docs/performance.md has the
+    // figures).
+    void setCasterCoverage(double share, double limit)
+    {
+        m_casterCoverage = share;
+        m_coverageLimit = limit;
+    }
     double casterCoverage() const { return m_casterCoverage; }
-    static constexpr double kSlicedCoverage = 0.85;
-    // Tests: slice whatever the coverage (1), or at the default.
-    void setCoverageLimit(double limit) { m_coverageLimit = limit; }
 
 private:
     static constexpr int kUnknown = 1 << 30;    // draws since the last whole clear: not known
@@ -85,7 +87,7 @@ private:
     int m_slicesSinceClear = 0;     // the slice count of the draws since then
     bool m_restart = false;         // restart(): the next draw clears
     double m_casterCoverage = 1.0;
-    double m_coverageLimit = kSlicedCoverage;
+    double m_coverageLimit = 1.0;
     DepthSlice m_slice;
 };
 

@@ -115,9 +115,6 @@ public:
     const VirtualShadowMap* virtualMap() const { return m_virtual.get(); }
     // Whether the virtual map reads its requests back a frame later (VirtualShadowMap::setAsyncRequests).
     void setVirtualAsyncRequests(bool async);
-    // Tests: draw a one-view map into slices whatever share of it the casters cover
-    // (DepthSlices::setCoverageLimit), so every technique's lookups are checked on slices.
-    void setSlicedCoverageLimit(double limit) { m_shadowMap.depthSlices().setCoverageLimit(limit); }
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }

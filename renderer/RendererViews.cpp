@@ -153,7 +153,7 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
         stats.viewWallMs.assign(count, 0.0);
     }
     const int clearsBefore = m_shadowMap.clearCount();
-    m_shadowMap.depthSlices().setCasterCoverage(casterCoverage(count));
+    m_shadowMap.depthSlices().setCasterCoverage(casterCoverage(count), plan.settings.map.sliceCoverage);
     // Only a frame that draws a view is a shadow pass, timed; clearing a tile is not.
     if (draws)
         m_shadowTimer.begin();

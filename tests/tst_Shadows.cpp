@@ -886,6 +886,10 @@ private Q_SLOTS:
         if (sliced.map.slices == 1)
             sliced.map.slices = 4;
         sliced.rasteriser.profile = RasteriserProfile::Software;   // slices are its optimisation, on any driver
+        // Sliced whatever share of the map the casters cover (a wide filter's or a blocker
+        // search's reach covers all of it), so every technique's lookups are checked on slices:
+        // the next test checks where slices are left out.
+        sliced.map.sliceCoverage = 1.0;
         Settings cleared = sliced;
         cleared.map.slices = 1;
         // Around the target and up and down, a step the slices do not divide: the map wraps.
@@ -899,10 +903,6 @@ private Q_SLOTS:
             return s;
         };
         Renderer& r = m_headless->renderer();
-        // Sliced whatever share of the map the casters cover (a wide filter's or a blocker
-        // search's reach covers all of it): the next test checks where slices are left out.
-        r.setSlicedCoverageLimit(1.0);
-        const auto restore = qScopeGuard([&] { r.setSlicedCoverageLimit(DepthSlices::kSlicedCoverage); });
         std::vector<QImage> expected, expectedMaps;
         for (int step = 0; step < steps; ++step) {
             expected.push_back(m_headless->renderScene(at(cleared, step), kSize));
@@ -961,24 +961,38 @@ private Q_SLOTS:
     // A draw into a slice reads what its casters cover from memory, where after a clear it
     // finds it in the cache: where they may cover most of the map (the ground drawn into it)
     // each draw clears; where they cover a third (seed's cubes), one in map.slices does.
+    void slicesOnlyWhereCastersCoverLittleOfTheMap_data()
+    {
+        QTest::addColumn<bool>("groundInMap");
+        QTest::addColumn<double>("sliceCoverage");  // map.slice_coverage
+        QTest::addColumn<int>("clears");            // in 8 draws of 4 slices
+        QTest::newRow("cubes only") << false << 0.85 << 2;
+        QTest::newRow("the ground too") << true << 0.85 << 8;
+        // map.slice_coverage moves the line: whatever the casters cover, or never.
+        QTest::newRow("the ground too, sliced at any coverage") << true << 1.0 << 2;
+        QTest::newRow("cubes only, never sliced") << false << 0.0 << 8;
+    }
+
     void slicesOnlyWhereCastersCoverLittleOfTheMap()
     {
+        QFETCH(bool, groundInMap);
+        QFETCH(double, sliceCoverage);
+        QFETCH(int, clears);
         Renderer& r = m_headless->renderer();
-        for (const bool groundInMap : {false, true}) {
-            Settings s = groundInMap ? seedWith({"bias.cull_front=false", "bias.skip_floors=false"}) : seedWith({"bias.cull_front=true"});
-            const LightAngles start = lightAngles(s.light.position, s.light.target);
-            int clears = 0;
-            for (int step = 0; step < 8; ++step) {
-                LightAngles a = start;
-                a.azimuth += 5.0 * step;
-                s.light.position = lightPosition(s.light.target, a);
-                m_headless->renderFrame(s, kSize);
-                QVERIFY(r.lastFrame().shadowPassRendered);
-                clears += r.lastFrame().shadowMapCleared;
-                QCOMPARE(r.shadowMap().depthSlices().casterCoverage() > DepthSlices::kSlicedCoverage, groundInMap);
-            }
-            QCOMPARE(clears, groundInMap ? 8 : 2);
+        Settings s = groundInMap ? seedWith({"bias.cull_front=false", "bias.skip_floors=false"}) : seedWith({"bias.cull_front=true"});
+        s.map.sliceCoverage = sliceCoverage;
+        const LightAngles start = lightAngles(s.light.position, s.light.target);
+        int cleared = 0;
+        for (int step = 0; step < 8; ++step) {
+            LightAngles a = start;
+            a.azimuth += 5.0 * step;
+            s.light.position = lightPosition(s.light.target, a);
+            m_headless->renderFrame(s, kSize);
+            QVERIFY(r.lastFrame().shadowPassRendered);
+            cleared += r.lastFrame().shadowMapCleared;
+            QCOMPARE(r.shadowMap().depthSlices().casterCoverage() > 0.85, groundInMap);
         }
+        QCOMPARE(cleared, clears);
     }
 
     void everyPresetRenders()
