@@ -406,6 +406,41 @@ void VirtualShadowMap::resetPool(int poolSide)
     }
 }
 
+bool VirtualShadowMap::askForPages(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, const RequestKey& key, int& requestDraws)
+{
+    // Requests read back asynchronously arrive a frame or more after their pass.
+    bool arrived = m_fence && collectReadback(false);
+    const bool asked = !m_requestKey || !(*m_requestKey == key) || m_askAgainWithin || m_askEverywhere;
+    if (!asked || (m_fence && m_pendingKey == key))
+        return arrived;
+    // Only where objects moved, while the buffer and the still objects' copy hold this camera's
+    // requests. The copy is taken once the camera stands (a second pass at the same key): a
+    // moving camera asks everywhere anyway.
+    constexpr std::size_t kMostAreas = 8;
+    const std::vector<QRect> within = fewRects(m_askWithin, kMostAreas);
+    const bool pages = plan.cache == ShadowCachePolicy::Pages;
+    const bool partly = m_askAgainWithin && pages && m_bufferKey == key && m_stillKey == key;
+    const bool keepStill = pages && m_bufferKey == key;
+    requestDraws = drawRequests(scene, camera, key.size, partly ? &within : nullptr, keepStill);
+    if (!partly)
+        m_stillKey = keepStill ? std::optional<RequestKey>(key) : std::nullopt;
+    if (!pages)
+        m_stillRequests.release();
+    m_bufferKey = key;
+    m_askWithin.clear();
+    m_askAgainWithin = false;
+    m_askEverywhere = false;
+    if (m_async && m_cache.resident() > 0) {
+        if (m_fence)
+            arrived = collectReadback(true) || arrived;     // one read-back in flight at a time
+        startReadback(key.size, key);
+        return arrived;
+    }
+    m_requests = readRequests(key.size, partly ? &within : nullptr);
+    m_requestKey = key;
+    return true;
+}
+
 VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, QSize size, bool invalidate,
                                          ShadowStorage& storage, const std::function<LightFrame(const LightVolume&)>& frameOf, int* casterDraws)
 {
@@ -426,37 +461,7 @@ VirtualMapStats VirtualShadowMap::update(const GpuScene& scene, const FramePlan&
         m_windows = std::move(windows);
         m_tableDirty = true;
     }
-    // Requests read back asynchronously arrive a frame or more after their pass.
-    bool arrived = m_fence && collectReadback(false);
-    const bool asked = !m_requestKey || !(*m_requestKey == key) || m_askAgainWithin || m_askEverywhere;
-    if (asked && !(m_fence && m_pendingKey == key)) {
-        // Only where objects moved, while the buffer and the still objects' copy hold this
-        // camera's requests. The copy is taken once the camera stands (a second pass at the
-        // same key): a moving camera asks everywhere anyway.
-        constexpr std::size_t kMostAreas = 8;
-        const std::vector<QRect> within = fewRects(m_askWithin, kMostAreas);
-        const bool pages = plan.cache == ShadowCachePolicy::Pages;
-        const bool partly = m_askAgainWithin && pages && m_bufferKey == key && m_stillKey == key;
-        const bool keepStill = pages && m_bufferKey == key;
-        stats.requestDraws = drawRequests(scene, camera, requestSize, partly ? &within : nullptr, keepStill);
-        if (!partly)
-            m_stillKey = keepStill ? std::optional<RequestKey>(key) : std::nullopt;
-        if (!pages)
-            m_stillRequests.release();
-        m_bufferKey = key;
-        m_askWithin.clear();
-        m_askAgainWithin = false;
-        m_askEverywhere = false;
-        if (m_async && m_cache.resident() > 0) {
-            if (m_fence)
-                arrived = collectReadback(true) || arrived;     // one read-back in flight at a time
-            startReadback(requestSize, key);
-        } else {
-            m_requests = readRequests(requestSize, partly ? &within : nullptr);
-            m_requestKey = key;
-            arrived = true;
-        }
-    }
+    const bool arrived = askForPages(scene, plan, camera, key, stats.requestDraws);
     if (!arrived && !m_tableDirty) {
         // The same requests over the same pages and windows: nothing to place, draw or upload.
         const int requestDraws = stats.requestDraws;

@@ -130,12 +130,16 @@ private:
     // objects' requests copied back there and the moving objects drawn over them; the rest keep
     // what the buffer holds for the same camera, size and layout.
     int drawRequests(const GpuScene& scene, const CameraFrame& camera, QSize size, const std::vector<QRect>* within, bool keepStill);
+    struct RequestKey;
+    // The request pass where the pages must be asked for again (everywhere, or where objects
+    // moved), its requests read back now or a read-back started: whether requests arrived
+    // this frame. `requestDraws` gets the pass's draws.
+    bool askForPages(const GpuScene& scene, const FramePlan& plan, const CameraFrame& camera, const RequestKey& key, int& requestDraws);
     // The request pass's result as bytes: a flag a page (reduced on the GPU) or a word a pixel.
     struct RequestBytes {
         bool flags = false;
         std::size_t bytes = 0;
     };
-    struct RequestKey;
     void reducePass(QSize size);
     std::size_t requestBytes(QSize size) const;
     // Into client memory `into`, or the bound pixel-pack buffer with nullptr.
