@@ -137,10 +137,14 @@ TexelDensity measureVirtualTexelDensity(const VisibilityBuffer& buffer, const Vi
         return glm::dvec2(p) / page0 * double(kVirtualPageTexels);
     };
     // The page of `level` that holds level-0 texel `texel0`, where the level's window does
-    // (shaders/shared/virtual_levels.glsl, on the grid's own origin).
+    // (shaders/shared/virtual_levels.glsl): as the lookup takes it, from level 0's window, with
+    // the windows' offsets taken in double (VirtualShadowMap::uniforms).
+    const glm::dvec2 origin0(windows.front());
     const auto inWindow = [&](int level, const glm::dvec2& texel0, glm::ivec2& page) {
         const glm::ivec2 w = windows[std::size_t(level)];
-        const glm::vec2 q = glsl::virtualLevelPosition(level, glm::vec2(texel0 / double(kVirtualPageTexels)), -glm::vec2(w));
+        const glm::vec2 q0(texel0 / double(kVirtualPageTexels) - origin0);
+        const glm::vec2 offset(origin0 * std::ldexp(1.0, -level) - glm::dvec2(w));
+        const glm::vec2 q = glsl::virtualLevelPosition(level, q0, offset);
         page = glm::ivec2(glm::floor(q)) + w;
         return glsl::virtualWindowHolds(q);
     };

@@ -1,12 +1,19 @@
 #include "DepthSlices.h"
 
+#include "SharedShaderCode.h"
+
 #include <utility>
 
 namespace shadowlab {
 
+float DepthSlice::depth(float storedValue) const
+{
+    return glsl::sliceDepthOf(storedValue, uniform());
+}
+
 DepthSlices::Draw DepthSlices::beginDraw(int slices, bool sliceable)
 {
-    if (!sliceable || slices <= 1 || m_casterCoverage > m_coverageLimit) {
+    if (!sliceable || slices <= 1 || m_coverageLimit <= 0.0 || m_casterCoverage > m_coverageLimit) {
         m_drawsSinceClear = kUnknown;
         m_slice = {};
         m_restart = false;

@@ -1,7 +1,5 @@
 #pragma once
 
-#include "SharedShaderCode.h"
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -23,7 +21,7 @@ struct DepthSlice {
 
     double stored(double depth) const { return offset + depth * scale; }
     // A stored value as conventional depth, at most 1, as the shaders read it.
-    float depth(float storedValue) const { return glsl::sliceDepthOf(storedValue, uniform()); }
+    float depth(float storedValue) const;
     // For the shaders' uShadowSlice.
     glm::vec3 uniform() const { return {float(offset), float(scale), float(emptyFrom)}; }
     // Conventional depth to stored, on homogeneous coordinates: folded into the lit pass's

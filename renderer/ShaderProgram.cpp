@@ -36,9 +36,9 @@ QString includedByDefine(const QString& name, const QStringList& defines, const 
     throw RenderError(QStringLiteral("'%1' includes %2, which the variant does not define as a file").arg(file, name));
 }
 
-// `#include NAME` of a uniform block (UniformBlocks.h) gives its declaration, once per program:
-// several files that read a block each say so. `blocks` holds those given so far.
-QByteArray expandIncludes(const QString& file, const QString& includedFrom, const QStringList& defines, int depth, QStringList& blocks)
+// `#include NAME` of a uniform block (UniformBlocks.h) gives its declaration behind an include
+// guard: several files that read a block each say so, some inside an #ifdef.
+QByteArray expandIncludes(const QString& file, const QString& includedFrom, const QStringList& defines, int depth)
 {
     if (depth > 8)
         throw RenderError(QStringLiteral("shader includes nest too deep at '%1' (a cycle?)").arg(file));
@@ -47,13 +47,12 @@ QByteArray expandIncludes(const QString& file, const QString& includedFrom, cons
     const QList<QByteArray> lines = readResource(file, includedFrom).split('\n');
     for (const QByteArray& line : lines) {
         const QRegularExpressionMatch m = include.match(QString::fromUtf8(line));
-        if (m.hasMatch() && uniformBlock(m.captured(2))) {
-            if (!blocks.contains(m.captured(2)))
-                out += uniformBlock(m.captured(2))->glsl;
-            blocks << m.captured(2);
+        if (const UniformBlockDeclaration* block = m.hasMatch() ? uniformBlock(m.captured(2)) : nullptr) {
+            const QByteArray guard = QByteArray("SHADOWLAB_BLOCK_") + block->name;
+            out += "#ifndef " + guard + "\n#define " + guard + '\n' + block->glsl + "#endif\n";
         } else if (m.hasMatch()) {
             const QString included = m.captured(1).isEmpty() ? includedByDefine(m.captured(2), defines, file) : m.captured(1);
-            out += expandIncludes(included, file, defines, depth + 1, blocks);
+            out += expandIncludes(included, file, defines, depth + 1);
         } else {
             out += line + '\n';
         }
@@ -70,8 +69,7 @@ QByteArray loadShaderSource(const QString& file, const QStringList& defines)
         if (!define.endsWith(QLatin1Char('"')))    // file names are for #include, not for GLSL
             source += "#define " + define.toUtf8() + '\n';
     }
-    QStringList blocks;
-    return source + expandIncludes(file, QString(), defines, 0, blocks);
+    return source + expandIncludes(file, QString(), defines, 0);
 }
 
 ShaderProgram::ShaderProgram(GlFunctions* gl, const QString& vertexFile, const QString& fragmentFile, const QStringList& defines)

@@ -16,7 +16,7 @@ namespace shadowlab {
 
 // Reads a shader from the :/shaders resource, expanding `#include "file"` lines and
 // `#include NAME` lines whose file an entry `NAME "file"` of `defines` names or that name a
-// uniform block (UniformBlocks.h: its declaration, once per program), and puts
+// uniform block (UniformBlocks.h: its declaration, guarded to appear once), and puts
 // `#version 330 core`, the constants shared with C++ (core/ShaderConstants.h) and one `#define`
 // per other entry in front ("NAME" or "NAME VALUE").
 // Throws RenderError naming the file when it or an include is missing.

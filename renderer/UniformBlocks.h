@@ -20,13 +20,13 @@ namespace shadowlab {
 
 // The shaders' uniform blocks, each declared once, here: one list of fields makes both the C++
 // struct a pass fills and uploads whole, and the GLSL declaration a shader pulls in with
-// `#include BlockName` (ShaderProgram; once per program however often it is included). Every
+// `#include BlockName` (ShaderProgram; guarded, so that every file that reads it says so). Every
 // program is linked with each block it declares at the block's binding.
 //
 // The layout is std140, which C++ follows member for member because each member is aligned as
 // std140 aligns it (4 bytes for a scalar, 8 for a vec2, 16 for a vec3, vec4 and mat4). std140
 // gives an array a stride of 16 bytes whatever its element, so arrays here are of 16-byte
-// elements only. tst_UniformBlocks compares every offset with the driver's.
+// elements only. tst_SharedShaderCode compares every offset with the driver's.
 namespace std140 {
 using Float = float;
 using Int = int;
@@ -66,7 +66,7 @@ constexpr const char* glslType()
         return "mat4";
 }
 
-// A member as the driver lays it out: its name as GLSL queries it ("uViews[0]" for an array),
+// A member as the driver lays it out: its name as GLSL queries it ("uShadowViewMatrix[0]" for an array),
 // its offset in bytes and, for an array, the stride between elements (0 otherwise).
 struct Member {
     const char* name;

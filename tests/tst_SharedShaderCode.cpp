@@ -57,7 +57,8 @@ void main()
     } else if (uFunction == 3) {
         result = vec4(float(cascadeIndex(t * 48.0f, vec4(5.0f, 10.0f, 20.0f, 40.0f), 1 + y % 4)), 0.0f, 0.0f, 0.0f);
     } else if (uFunction == 4) {
-        result = vec4(float(virtualDensityLevel(t * 300.0f, y % 3, 8)), float(virtualFallbackLevel(x % 8, y % 10 - 1)), 0.0f, 0.0f);
+        result = vec4(float(virtualDensityLevel(t * 300.0f, y % 3, 8)), float(virtualFallbackLevel(x % 8, y % 10 - 1)),
+                      float(virtualDensityLevel(float(1 << (x % 12)), y % 3, 12)), 0.0f);
     } else if (uFunction == 5) {
         vec2 q = virtualLevelPosition(x % 4, vec2(float(x) * 3.5f, float(y) * 9.25f - 200.0f), vec2(-10.5f, 3.25f));
         result = vec4(q, virtualWindowHolds(q) ? 1.0f : 0.0f, 0.0f);
@@ -83,7 +84,9 @@ glm::vec4 expected(Function f, const Inputs& in)
     case Function::Cascade:
         return {float(glsl::cascadeIndex(t * 48.0f, glm::vec4(5.0f, 10.0f, 20.0f, 40.0f), 1 + y % 4)), 0.0f, 0.0f, 0.0f};
     case Function::VirtualLevels:
-        return {float(glsl::virtualDensityLevel(t * 300.0f, y % 3, 8)), float(glsl::virtualFallbackLevel(x % 8, y % 10 - 1)), 0.0f, 0.0f};
+        // The third at exact powers of two, where floor(log2) rounds either way if log2 is not exact.
+        return {float(glsl::virtualDensityLevel(t * 300.0f, y % 3, 8)), float(glsl::virtualFallbackLevel(x % 8, y % 10 - 1)),
+                float(glsl::virtualDensityLevel(float(1 << (x % 12)), y % 3, 12)), 0.0f};
     case Function::VirtualWindow: {
         const glm::vec2 q = glsl::virtualLevelPosition(x % 4, glm::vec2(float(x) * 3.5f, float(y) * 9.25f - 200.0f), glm::vec2(-10.5f, 3.25f));
         return {q, glsl::virtualWindowHolds(q) ? 1.0f : 0.0f, 0.0f};
