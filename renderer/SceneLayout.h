@@ -90,8 +90,6 @@ public:
     std::array<glm::dvec3, 8> objectBox(std::size_t i) const;
     // The scene's bounds, with everywhere its moving objects go: Scene::bounds() visits every vertex.
     const Bounds& bounds() const { return m_bounds; }
-    // flatPlane() of scene.meshes[mesh].
-    const std::optional<MeshPlane>& meshPlane(int mesh) const { return m_meshPlanes.at(std::size_t(mesh)); }
     // The world plane scene.objects[i] lies in, if its mesh is flat.
     std::optional<WorldPlane> objectPlane(std::size_t i) const;
     // Whether scene.objects[i] is a floor (DrawItem::floor).

@@ -73,9 +73,6 @@ public:
     // The views it knows (0 after reset()).
     std::size_t viewCount() const { return m_views.size(); }
 
-    // Each view's volume as drawn (nullopt: cleared).
-    std::optional<LightVolume> drawnVolume(std::size_t i) const { return i < m_views.size() ? m_views[i].volume : std::nullopt; }
-
 private:
     struct View {
         std::optional<LightVolume> volume;  // as drawn; nullopt: cleared
