@@ -58,6 +58,12 @@ const Renderer::SceneFile* Renderer::fileFor(const QString& path) const
     return m_drawnFile && m_drawnFile->first == path ? &*m_drawnFile : nullptr;
 }
 
+bool Renderer::holdsOlderSceneFile(const QString& path, const std::shared_ptr<const Scene>& latest) const
+{
+    const SceneFile* file = m_customScene ? nullptr : fileFor(path);
+    return file != nullptr && file->second != latest;
+}
+
 bool Renderer::needsSceneFile(const Settings& settings) const
 {
     // The file drawn now needs nothing either: going back to it after another file's frame

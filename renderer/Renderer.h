@@ -83,6 +83,9 @@ public:
     // resources, and reads no file and starts no process itself. A frame whose settings name a
     // file other than the last one handed in throws RenderError.
     void setSceneFile(const QString& path, std::shared_ptr<const Scene> scene);
+    // Whether the renderer holds file `path` as another load than `latest` (it changed on disk
+    // since): a custom scene (setScene) holds none.
+    bool holdsOlderSceneFile(const QString& path, const std::shared_ptr<const Scene>& latest) const;
     // Whether settings.scene is a file this renderer has not been handed (setSceneFile).
     bool needsSceneFile(const Settings& settings) const;
     // The light volume of the last frame after light.fit (the passes' volume), with what it cut.

@@ -215,6 +215,13 @@ std::shared_ptr<const Scene> loadSceneFile(const QString& path, const ImportCont
     return cached(path, control).scene;
 }
 
+std::shared_ptr<const Scene> loadedSceneFile(const QString& path)
+{
+    std::lock_guard lock(g_cacheMutex);
+    const auto it = g_cache.find(QFileInfo(path).absoluteFilePath());
+    return it == g_cache.end() ? nullptr : it->second.loaded.scene;
+}
+
 Settings sceneFileSettings(const QString& path)
 {
     const Loaded loaded = cached(path, ImportControl{});

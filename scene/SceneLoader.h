@@ -25,6 +25,10 @@ namespace shadowlab {
 // (IsolatedImport.h). Throws SceneFileError naming the file, what is wrong and how to fix it.
 std::shared_ptr<const Scene> loadSceneFile(const QString& path, const ImportControl& control = {});
 
+// The last load of `path` in that cache, as it was read, without looking at the file (null:
+// never loaded): a file read again after it changed on disk gives its new scene here.
+std::shared_ptr<const Scene> loadedSceneFile(const QString& path);
+
 // The settings a loaded scene starts with: defaults, the light, camera, bias and reference
 // radius derived from its bounds, then the scene file's own keys. Throws like loadSceneFile().
 Settings sceneFileSettings(const QString& path);

@@ -745,6 +745,58 @@ private Q_SLOTS:
         onOpen->setChecked(true);
     }
 
+    // A shown model saved again by another program is read again and drawn with the settings as
+    // they are: no undo step, the camera kept. An editor that writes a new file and renames it over
+    // the old one is followed as well as one that writes in place. Saved broken, the last good
+    // version stays and the status bar says why.
+    void aShownFileChangedOnDiskIsReadAgain()
+    {
+        using Side = MainWindow::Side;
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("part.obj"));
+        const auto save = [&](const QString& from, bool renamedOver) {
+            QFile source(from);
+            QVERIFY(source.open(QIODevice::ReadOnly));
+            const QByteArray bytes = source.readAll();
+            const QString written = renamedOver ? dir.filePath(QStringLiteral("part.obj.tmp")) : path;
+            QFile out(written);
+            QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            QCOMPARE(out.write(bytes), qint64(bytes.size()));
+            out.close();
+            if (renamedOver) {
+                QVERIFY(QFile::remove(path));
+                QVERIFY(QFile::rename(written, path));
+            }
+        };
+        save(model("OBJ/box.obj"), false);
+        const std::unique_ptr<MainWindow> shown = shownWindow();
+        MainWindow& window = *shown;
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QCOMPARE(window.openScene(path), QString());
+        const Renderer* renderer = window.sceneView(Side::A)->renderer();
+        const auto drawnTriangles = [&] { return renderer && renderer->scene() ? triangleCount(*renderer->scene()) : std::size_t(0); };
+        QTRY_COMPARE(drawnTriangles(), triangleCount(*loadSceneFile(model("OBJ/box.obj"))));
+        const Settings before = window.settings(Side::A);
+        const int undoSteps = window.undoStack(Side::A)->count();
+
+        save(model("OBJ/WusonOBJ.obj"), true);
+        QTRY_COMPARE_WITH_TIMEOUT(drawnTriangles(), triangleCount(*loadSceneFile(model("OBJ/WusonOBJ.obj"))), 30000);
+        QCOMPARE(window.settings(Side::A), before);
+        QCOMPARE(window.undoStack(Side::A)->count(), undoSteps);
+        QVERIFY2(window.statusMessage().contains(QStringLiteral("part.obj changed on disk")), qPrintable(window.statusMessage()));
+
+        save(model("OBJ/concave_polygon.obj"), false);    // still watched after the rename
+        QTRY_COMPARE_WITH_TIMEOUT(drawnTriangles(), triangleCount(*loadSceneFile(model("OBJ/concave_polygon.obj"))), 30000);
+
+        const std::size_t good = drawnTriangles();
+        save(model("invalid/empty.obj"), false);
+        QTRY_VERIFY_WITH_TIMEOUT(window.statusMessage().contains(QStringLiteral("the last good version stays")), 30000);
+        window.sceneView(Side::A)->update();
+        QTest::qWait(100);
+        QCOMPARE(drawnTriangles(), good);
+        QCOMPARE(window.settings(Side::A), before);
+    }
+
     void windowKeepsItsSceneOnABadFile()
     {
         MainWindow window(MainWindow::Persistence::None);

@@ -168,6 +168,30 @@ void ImportController::queueRestore(std::size_t side, const Settings& settings)
         m_restoreQueue << settings.scene;
 }
 
+void ImportController::reload(const QString& path)
+{
+    // A file the user or the session is opening now is read anyway.
+    if (m_opener->isBusy())
+        return;
+    if (!m_reloading.contains(path))
+        m_reloading << path;
+    m_opener->open(path);
+}
+
+void ImportController::finishReload(const QString& path, const QString& error, bool cancelled)
+{
+    m_reloading.removeAll(path);
+    const QString name = QFileInfo(path).fileName();
+    if (cancelled)
+        emit message(tr("Cancelled: %1 changed on disk and was not read again").arg(name), 8000);
+    else if (!error.isEmpty())
+        emit message(tr("%1 changed on disk and cannot be read now: %2 — the last good version stays").arg(name, error), 15000);
+    else {
+        emit message(tr("%1 changed on disk: read again").arg(name), 5000);
+        emit sceneReloaded(path);
+    }
+}
+
 void ImportController::startRestore()
 {
     if (!m_restoreQueue.isEmpty())
@@ -247,6 +271,10 @@ void ImportController::finished(const QString& path, const QString& error, bool 
     emit readingEnded();
     if (m_restoreQueue.contains(path)) {
         finishRestore(path, error, cancelled);
+        return;
+    }
+    if (m_reloading.contains(path)) {
+        finishReload(path, error, cancelled);
         return;
     }
     if (cancelled) {

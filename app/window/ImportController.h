@@ -43,6 +43,10 @@ public:
     // Loads a model or scene file onto the selected side at once (MainWindow::openScene()).
     QString open(const QString& path);
     void openInBackground(const QString& path);
+    // Reads a shown file again in the background after it changed on disk (SceneFileWatcher):
+    // the views draw its new contents with their settings as they are; a file that cannot be read
+    // now leaves the last good contents, and the status bar says why.
+    void reload(const QString& path);
     void openInteractively();
     void cancel();
     // File > Import Limits…: how long and how much memory the importer may take on one file,
@@ -78,11 +82,14 @@ signals:
     void warningsFound(const QStringList& warnings);
     // Sides of the restored session took their saved settings (or stayed, on a refusal).
     void restoredSidesChanged();
+    // A shown file was read again (reload()): the views draw it anew.
+    void sceneReloaded(const QString& path);
     void message(const QString& text, int timeoutMs);
 
 private:
     void finished(const QString& path, const QString& error, bool cancelled);
     void finishRestore(const QString& path, const QString& error, bool cancelled);
+    void finishReload(const QString& path, const QString& error, bool cancelled);
     // `limit`: the import limit that stopped `path`, which the box offers to raise and try again.
     void showOpenError(const QString& path, const QString& error, SceneFileError::Limit limit = SceneFileError::Limit::None);
     void updateRecentMenu();
@@ -97,6 +104,7 @@ private:
     // Sides of the restored session waiting for their scene file, and the files still to read.
     std::array<std::optional<Settings>, 2> m_pendingRestore;
     QStringList m_restoreQueue;
+    QStringList m_reloading;        // files read again after they changed on disk
     QStringList m_recentScenes;     // newest first
     QMenu* m_recentMenu = nullptr;
 };

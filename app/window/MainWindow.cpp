@@ -9,6 +9,7 @@
 #include "Loupe.h"
 #include "PropertiesDock.h"
 #include "Renderer.h"
+#include "SceneFileWatcher.h"
 #include "SceneLibrary.h"
 #include "SceneView.h"
 #include "SettingsError.h"
@@ -130,6 +131,14 @@ void MainWindow::createControllers()
     m_session = new PersistenceController(*this, m_sides, *m_import, m_persistence == Persistence::Restore);
     connect(m_import, &ImportController::restoredSidesChanged, this, &MainWindow::showSides);
     connect(m_import, &ImportController::message, this, &MainWindow::showStatusMessage);
+    // A shown file saved again (by a modelling tool) is read again and drawn with the settings as
+    // they are.
+    m_fileWatcher = new SceneFileWatcher(this);
+    connect(m_fileWatcher, &SceneFileWatcher::changed, m_import, &ImportController::reload);
+    connect(m_import, &ImportController::sceneReloaded, this, [this] {
+        for (SceneView* view : m_views)
+            view->update();
+    });
     connect(m_session, &PersistenceController::message, this, &MainWindow::showStatusMessage);
     connect(m_session, &PersistenceController::sessionRestored, this, [this] {
         pushSettings();
@@ -329,6 +338,7 @@ void MainWindow::pushSettings()
     }
     for (std::size_t i = 0; i < 2; ++i)
         m_views[i]->setSettings(m_sides.settings(i));
+    m_fileWatcher->watch({m_sides.settings(0).scene, m_sides.settings(1).scene});
     // A file's warnings are the file's: another scene shown (a preset, an undo) takes them off.
     if (!m_warnedScene.isEmpty() && m_sides.settings(0).scene != m_warnedScene && m_sides.settings(1).scene != m_warnedScene) {
         m_warnedScene.clear();

@@ -27,6 +27,7 @@ class DepthMapView;
 class LightAnimation;
 class TimelineBar;
 class PropertiesDock;
+class SceneFileWatcher;
 class SceneOpener;
 class SceneView;
 class TimingController;
@@ -166,6 +167,7 @@ private:
     UndoController* m_undo = nullptr;
     TimingController* m_timing = nullptr;
     ImportController* m_import = nullptr;
+    SceneFileWatcher* m_fileWatcher = nullptr;
     PersistenceController* m_session = nullptr;
     const Persistence m_persistence;
 
