@@ -60,10 +60,14 @@ bool isSceneFile(const QString& path)
 }
 
 // The cache: path -> (size, modified, load). Shared by threads (tracing runs off the GUI thread).
+// A file that was read and then saved in a form that cannot be read keeps its last good load,
+// served while the file stays as it failed: only the first read of the bad file says why.
 struct CacheEntry {
     qint64 size = -1;
     QDateTime modified;
     Loaded loaded;
+    qint64 failedSize = -1;
+    QDateTime failedModified;
 };
 std::mutex g_cacheMutex;
 std::map<QString, CacheEntry> g_cache;
@@ -79,12 +83,25 @@ Loaded cached(const QString& path, const ImportControl& control)
     {
         std::lock_guard lock(g_cacheMutex);
         const auto it = g_cache.find(key);
-        if (it != g_cache.end() && it->second.size == info.size() && it->second.modified == info.lastModified())
+        const auto stampIs = [&](qint64 size, const QDateTime& modified) { return size == info.size() && modified == info.lastModified(); };
+        if (it != g_cache.end() && (stampIs(it->second.size, it->second.modified) || stampIs(it->second.failedSize, it->second.failedModified)))
             return it->second.loaded;
     }
-    Loaded loaded = load(key, control);
+    Loaded loaded;
+    try {
+        loaded = load(key, control);
+    } catch (const ImportCancelled&) {
+        throw;
+    } catch (const SceneFileError&) {
+        std::lock_guard lock(g_cacheMutex);
+        if (const auto it = g_cache.find(key); it != g_cache.end()) {
+            it->second.failedSize = info.size();
+            it->second.failedModified = info.lastModified();
+        }
+        throw;
+    }
     std::lock_guard lock(g_cacheMutex);
-    g_cache[key] = {info.size(), info.lastModified(), loaded};
+    g_cache[key] = {info.size(), info.lastModified(), loaded, -1, {}};
     return loaded;
 }
 

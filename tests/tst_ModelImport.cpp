@@ -795,6 +795,11 @@ private Q_SLOTS:
         QTest::qWait(100);
         QCOMPARE(drawnTriangles(), good);
         QCOMPARE(window.settings(Side::A), before);
+        // Whoever reads it next (a wipe, a measurement) gets the last good version too, until
+        // the file is saved again.
+        QCOMPARE(triangleCount(*loadSceneFile(path)), good);
+        save(model("OBJ/box.obj"), false);
+        QTRY_COMPARE_WITH_TIMEOUT(drawnTriangles(), triangleCount(*loadSceneFile(model("OBJ/box.obj"))), 30000);
     }
 
     void windowKeepsItsSceneOnABadFile()

@@ -107,6 +107,10 @@ public:
     static constexpr int kMaxMeasureSide = 960;
     static constexpr int kTimedFrames = 5;
 
+    // Drops every result and stops the work under way (a new scene, or the scene's file read
+    // again), with the signals that make the dock show their absence.
+    void withdrawResults();
+
 signals:
     void busyChanged(bool busy);
     // Progress of the trace or the sweep, `value` of `maximum`.
@@ -139,9 +143,8 @@ private:
         LightFrame light;
     };
 
-    // Drops every result (a new scene), or the tuning alone (another side selected), with
-    // the signals that make the dock show their absence.
-    void withdrawResults();
+    // Drops the tuning alone (another side selected), with the signals that make the dock
+    // show its absence.
     void withdrawTuning();
     void startMeasurement(bool thenSweep);
     // Measures the waiting captures whose reference is cached, and starts the trace of the

@@ -172,6 +172,13 @@ void AccuracyDock::setSides(const Settings& a, const std::optional<Settings>& b,
     m_chart->setCurrentSettings(m_controller->settings());
 }
 
+void AccuracyDock::sceneContentsChanged()
+{
+    m_controller->withdrawResults();
+    m_metrics->showMeasurement(*m_controller);
+    updateOverlay();
+}
+
 void AccuracyDock::setFrameTimes(const std::vector<FrameTimeHistory::Summary>& sides, bool cpuTime)
 {
     m_metrics->showFrameTimes(sides, cpuTime);

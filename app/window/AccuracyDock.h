@@ -54,6 +54,9 @@ public:
 
     // Whether a reference trace or a sweep is under way.
     bool isBusy() const;
+    // The scene's file was read again (it changed on disk): what was measured of its old
+    // contents is withdrawn, and work under way stopped, so no sweep mixes the two.
+    void sceneContentsChanged();
 
     // A model was opened: with "Tune when a model opens" checked (the default, kept between
     // sessions), tune its bias against the reference in the background, at the dock's small

@@ -26,6 +26,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTimer>
 
 namespace shadowlab {
 
@@ -151,14 +152,16 @@ QWidget* ImportController::createProgressBox()
         m_openLabel->setToolTip(path);
         m_openProgress->setValue(0);
         m_openBox->setVisible(true);
-        emit readingStarted(QFileInfo(path).absoluteFilePath());
+        // A file read again is the one drawn already: no suspect for the session's recovery.
+        if (path != m_reloading)
+            emit readingStarted(QFileInfo(path).absoluteFilePath());
     });
     return m_openBox;
 }
 
 bool ImportController::userOpening() const
 {
-    return m_opener->isBusy() && !m_restoreQueue.contains(m_opener->path());
+    return m_opener->isBusy() && !m_restoreQueue.contains(m_opener->path()) && m_opener->path() != m_reloading;
 }
 
 void ImportController::queueRestore(std::size_t side, const Settings& settings)
@@ -170,20 +173,27 @@ void ImportController::queueRestore(std::size_t side, const Settings& settings)
 
 void ImportController::reload(const QString& path)
 {
-    // A file the user or the session is opening now is read anyway.
-    if (m_opener->isBusy())
+    // One read at a time: a change noticed while the opener reads (another file, or this one
+    // still being written) is read once it is done.
+    if (!m_reloadQueue.contains(path))
+        m_reloadQueue << path;
+    startReload();
+}
+
+void ImportController::startReload()
+{
+    if (m_opener->isBusy() || m_reloadQueue.isEmpty())
         return;
-    if (!m_reloading.contains(path))
-        m_reloading << path;
-    m_opener->open(path);
+    m_reloading = m_reloadQueue.takeFirst();
+    m_opener->open(m_reloading);
 }
 
 void ImportController::finishReload(const QString& path, const QString& error, bool cancelled)
 {
-    m_reloading.removeAll(path);
+    m_reloading.clear();
     const QString name = QFileInfo(path).fileName();
     if (cancelled)
-        emit message(tr("Cancelled: %1 changed on disk and was not read again").arg(name), 8000);
+        emit message(tr("%1 changed on disk: reading it again was cancelled").arg(name), 8000);
     else if (!error.isEmpty())
         emit message(tr("%1 changed on disk and cannot be read now: %2 — the last good version stays").arg(name, error), 15000);
     else {
@@ -269,12 +279,15 @@ void ImportController::finished(const QString& path, const QString& error, bool 
 {
     m_openBox->setVisible(false);
     emit readingEnded();
-    if (m_restoreQueue.contains(path)) {
-        finishRestore(path, error, cancelled);
+    if (!m_reloading.isEmpty() && path == m_reloading) {
+        finishReload(path, error, cancelled);
+        startReload();
         return;
     }
-    if (m_reloading.contains(path)) {
-        finishReload(path, error, cancelled);
+    // Changes noticed while another file was read are read once it is handled.
+    QTimer::singleShot(0, this, &ImportController::startReload);
+    if (m_restoreQueue.contains(path)) {
+        finishRestore(path, error, cancelled);
         return;
     }
     if (cancelled) {

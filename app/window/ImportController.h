@@ -89,6 +89,7 @@ signals:
 private:
     void finished(const QString& path, const QString& error, bool cancelled);
     void finishRestore(const QString& path, const QString& error, bool cancelled);
+    void startReload();
     void finishReload(const QString& path, const QString& error, bool cancelled);
     // `limit`: the import limit that stopped `path`, which the box offers to raise and try again.
     void showOpenError(const QString& path, const QString& error, SceneFileError::Limit limit = SceneFileError::Limit::None);
@@ -104,7 +105,8 @@ private:
     // Sides of the restored session waiting for their scene file, and the files still to read.
     std::array<std::optional<Settings>, 2> m_pendingRestore;
     QStringList m_restoreQueue;
-    QStringList m_reloading;        // files read again after they changed on disk
+    QStringList m_reloadQueue;      // files to read again after they changed on disk
+    QString m_reloading;            // the one being read again now
     QStringList m_recentScenes;     // newest first
     QMenu* m_recentMenu = nullptr;
 };

@@ -136,6 +136,8 @@ void MainWindow::createControllers()
     m_fileWatcher = new SceneFileWatcher(this);
     connect(m_fileWatcher, &SceneFileWatcher::changed, m_import, &ImportController::reload);
     connect(m_import, &ImportController::sceneReloaded, this, [this] {
+        m_sizedScene.clear();   // the dock's sliders, object lists and clip follow the new contents
+        m_accuracyDock->sceneContentsChanged();
         for (SceneView* view : m_views)
             view->update();
     });

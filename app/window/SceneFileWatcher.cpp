@@ -21,13 +21,14 @@ void SceneFileWatcher::watch(const QStringList& scenes)
         if (!scene.isEmpty() && !isPresetName(scene) && !files.contains(QFileInfo(scene).absoluteFilePath()))
             files << QFileInfo(scene).absoluteFilePath();
     }
-    if (files == m_watched)
-        return;
-    if (!m_watcher.files().isEmpty())
-        m_watcher.removePaths(m_watcher.files());
-    m_watched = files;
+    if (files != m_watched) {
+        if (!m_watcher.files().isEmpty())
+            m_watcher.removePaths(m_watcher.files());
+        m_watched = files;
+    }
+    // Again where a file was missing when it was first watched, or for longer than its tries.
     for (const QString& file : std::as_const(m_watched)) {
-        if (QFileInfo::exists(file))
+        if (!m_watcher.files().contains(file) && QFileInfo::exists(file))
             m_watcher.addPath(file);
     }
     for (auto it = m_changed.begin(); it != m_changed.end();)

@@ -20,7 +20,6 @@ public:
     // The scenes shown now (settings.scene of each side): the files among them are watched, the
     // rest no longer.
     void watch(const QStringList& scenes);
-    QStringList watched() const { return m_watched; }
 
     static constexpr int kSettleMs = 300;
     // A file gone when it settles (removed, to be written anew) is looked for this many times more.
