@@ -93,13 +93,10 @@ GLint ShaderProgram::uniform(const char* name) const
     return m_program->uniformLocation(name);
 }
 
-bool ShaderProgram::bindUniformBlock(const char* name, GLuint binding)
+void ShaderProgram::bindUniformBlock(const char* name, GLuint binding)
 {
-    const GLuint index = m_gl->glGetUniformBlockIndex(id(), name);
-    if (index == GL_INVALID_INDEX)
-        return false;
-    m_gl->glUniformBlockBinding(id(), index, binding);
-    return true;
+    if (const GLuint index = m_gl->glGetUniformBlockIndex(id(), name); index != GL_INVALID_INDEX)
+        m_gl->glUniformBlockBinding(id(), index, binding);
 }
 
 void ShaderProgram::set(GLint location, float value) { m_gl->glUniform1f(location, value); }

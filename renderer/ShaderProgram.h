@@ -41,9 +41,9 @@ public:
     void set(GLint location, const glm::mat4& value);
 
 private:
-    // Reads the uniform block `name` from uniform buffer binding `binding`; false where the
-    // program has no such active block (a variant that does not read it).
-    bool bindUniformBlock(const char* name, GLuint binding);
+    // Reads the uniform block `name` from uniform buffer binding `binding`, where the program
+    // has it active (a variant may not read it).
+    void bindUniformBlock(const char* name, GLuint binding);
 
     GlFunctions* m_gl;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
