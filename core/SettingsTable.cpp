@@ -219,14 +219,15 @@ void mapKeys(std::vector<Entry>& e)
     e.push_back(whole({.key = "map.slices",
                        .range = {.lo = 1, .hi = 8},
                        .help = "Redraws of a depth24 map between clears: each writes a nearer 1/n of the depth range, so what earlier ones left reads lit, as cleared texels do (the same shadows, one clear in n); "
-                               "costs log2(n) of the 24 bits; 1 clears every redraw. Ortho maps only: perspective maps, cascades, virtual pages and depth32f clear every time. "
+                               "costs log2(n) of the 24 bits; 1 clears every redraw. Ortho maps and a point light's faces (while a slice keeps their depth steps under an eighth of a texel); spot and warped maps, cascades, virtual pages and depth32f clear every time. "
                                "A software rasteriser's optimisation: on under rasteriser.profile=software (auto on llvmpipe), every draw clears on a GPU",
                        .look = {.label = QStringLiteral("Slices"), .sliderLow = 1.0, .sliderHigh = 8.0, .group = kShadowMap}},
                       [](auto& s) -> auto& { return s.map.slices; }));
     e.push_back(number({.key = "map.slice_coverage",
                         .range = {.lo = 0.0, .hi = 1.0},
                         .help = "Slices (map.slices) only while the casters may cover at most this share of the map (the area of their reach): a draw into a slice reads each texel "
-                                "it covers from memory, where after a clear it finds it in the cache, so past it a clear is cheaper; 1 slices whatever they cover, 0 never",
+                                "it covers from memory, where after a clear it finds it in the cache, so past it a clear is cheaper; 1 slices whatever they cover, 0 never. "
+                                "A point light's faces, whose clears are scissored and as dear as a slice, slice at any coverage but 0",
                         .look = {.label = QStringLiteral("Slice coverage"), .decimals = 2, .sliderLow = 0.0, .sliderHigh = 1.0, .group = kShadowMap}},
                        [](auto& s) -> auto& { return s.map.sliceCoverage; }));
     e.push_back(choice<BiasSpace>({.key = "bias.space",

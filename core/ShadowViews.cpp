@@ -78,8 +78,11 @@ bool usesLightWarp(const Settings& settings)
 
 bool slicesDepth(const Settings& settings)
 {
-    return settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings) && !usesShadowViews(settings) && !settings.shadow.virtualMap
-        && settings.shadow.cache == ShadowCachePolicy::Off;
+    if (settings.shadow.virtualMap || settings.shadow.cache != ShadowCachePolicy::Off)
+        return false;
+    if (settings.light.type == LightType::Point)
+        return true;
+    return settings.light.projection == LightProjection::Ortho && !usesLightWarp(settings) && !usesShadowViews(settings);
 }
 
 bool usesVisibleDepth(const Settings& settings)

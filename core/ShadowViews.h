@@ -42,11 +42,13 @@ bool usesLightWarp(const Settings& settings);
 // on a directional light's cascades, shadows on), which a depth prepass measures.
 bool usesVisibleDepth(const Settings& settings);
 // Whether a map of `settings` may be drawn into depth slices (map.slices, DepthSlices::beginDraw):
-// one plain ortho view, whose depth is linear in distance. A perspective or warped map's depth
-// is not: its steps are spent near the light (or the warp's centre), with none to spare where
-// the scene lies. Cascades and cube faces are tiles drawn apart, and a virtual map's pool clears
-// each page it draws. A cached map (shadow.cache) starts each frame from its copy, which writes
-// every texel as a clear does.
+// one plain ortho view, whose depth is linear in distance, or a point light's six faces, which
+// clear a tile each under a scissor otherwise (as dear to a software rasteriser as a draw over
+// its texels); the renderer clears them instead where a face's far / near leaves a slice too
+// few depth steps (Renderer::slicesViews). A spot or warped map's depth steps are spent near
+// the light (or the warp's centre), and its one view clears whole, the fast clear. Cascades
+// are drawn as the camera moves, a virtual map's pool clears each page it draws, and a cached
+// map (shadow.cache) starts each frame from its copy, which writes every texel as a clear does.
 bool slicesDepth(const Settings& settings);
 
 // The tiles of the shared texture the light's views need: 3 x 2 cube faces, cascades two to a

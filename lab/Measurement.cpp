@@ -39,6 +39,7 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     } else {
         renderer.invalidateShadowMap();
     }
+    renderer.restartDepthSlices();
     renderer.setCounting(true);
     try {
         headless.renderFrame(counted, size, TimingMode::Finish);
@@ -48,13 +49,13 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     }
     renderer.setCounting(false);
     FrameCounts counts = renderer.lastFrame().counts;
-    // A map drawn into slices (map.slices) is cleared whole once in that many passes: a pass
-    // clears that share of it, whichever of the cycle this one was.
+    // A map drawn into slices (map.slices) is cleared once in that many passes, by the first of
+    // the cycle, which the counted one was: a pass clears that share of what it cleared.
     const ShadowMap& map = renderer.shadowMap();
     const FramePlan& plan = renderer.lastPlan();
     const bool depthMap = plan.shadows && !plan.virtualMap && !plan.moments;
     if (depthMap && renderer.lastFrame().shadowPassRendered && map.slice().scale < 1.0)
-        counts.clearedTexels = std::int64_t(map.width()) * map.height() / std::max(1, plan.slices);
+        counts.clearedTexels /= std::max(1, plan.slices);
     return counts;
 }
 

@@ -68,12 +68,13 @@ int DepthPass::renderTile(const GpuScene& scene, const LightFrame& light, const 
     const DepthSlices::Draw slice = map.beginDraw(tile, slices);
     // A sliced draw keeps what earlier slices left; any other clears what was written and what
     // it draws, and draws only where its casters are.
-    const bool sliced = slice.slice.scale < 1.0;
-    const QRect area = sliced ? tile : drawn.value_or(tile) & tile;
-    // A map of one view is cleared whole, which is the fast clear of any rasteriser; a tile of
-    // several only where it was or will be written.
     const bool oneView = tile == QRect(0, 0, map.width(), map.height());
-    const QRect clear = sliced || oneView ? tile : map.written().toClear(tile, area);
+    const bool sliced = slice.slice.scale < 1.0;
+    const QRect area = sliced && oneView ? tile : drawn.value_or(tile) & tile;
+    // A map of one view is cleared whole, which is the fast clear of any rasteriser; a tile of
+    // several only where it was or will be written (in a sliced pass, by the slices since the
+    // last clear).
+    const QRect clear = oneView ? tile : map.written().toClear(tile, area);
     if (slice.clear && !clear.isEmpty()) {
         clearTileOnly(map, reversed, clear);
         map.written().cleared(clear);

@@ -42,10 +42,11 @@ struct DepthSlice {
 // draws: draw k after a clear writes its depth into the k-th slice of [0, 1] from the top, 1/n
 // wide less a gap at its top, nearer than every slice before it, so what the earlier draws left
 // compares as beyond the far plane, lit, exactly as a cleared texel does. It costs log2(n) bits
-// of the 24. Maps of several tiles (cascades, cube faces, virtual pages), reversed (float)
-// depth, whose precision lies near 0, and perspective maps (core's slicesDepth) clear every
-// draw. The cycle of one map's draws and clears; the lit pass, the depth range and the depth
-// view read the map through current().
+// of the 24. A point light's six faces move to the next slice together, once per pass
+// (ShadowMap::beginPass), so one slice still reads the whole map. Cascades, virtual pages,
+// reversed (float) depth, whose precision lies near 0, and spot and warped maps (core's
+// slicesDepth) clear every draw. The cycle of one map's draws and clears; the lit pass, the
+// depth range and the depth view read the map through current().
 class DepthSlices {
 public:
     struct Draw {

@@ -21,7 +21,8 @@ struct RasteriserTuning {
     // The shadow reach (core/ShadowReach.h): the lit pass shades the receivers that no caster can
     // reach without a lookup, through stencil masks and its draw orders (LitPass).
     bool skipsOutOfReach = false;
-    // Depth slices (map.slices): a plain depth24 map cleared once in n draws (DepthSlices::beginDraw).
+    // Depth slices (map.slices): a plain depth24 map, or a point light's faces, cleared once in n
+    // passes (DepthSlices::beginDraw, ShadowMap::beginPass).
     bool depthSlices = false;
     // Two moments (vsm, evsm2) stored in RGBA rather than RG: llvmpipe blurs a 2048² RGBA32F map
     // faster than an RG32F one, where a GPU reads half the bytes from RG.

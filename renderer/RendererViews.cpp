@@ -106,13 +106,42 @@ std::vector<std::optional<LightVolume>> Renderer::wantedVolumes() const
 
 double Renderer::casterCoverage(std::size_t count) const
 {
-    // How much of a one-view map its casters may cover (DepthSlices::setCasterCoverage).
-    double coverage = count == 1 ? 0.0 : 1.0;
+    // How much of a one-view map its casters may cover (DepthSlices::setCasterCoverage). A map of
+    // several tiles clears each under a scissor, which a rasteriser runs as a draw over the
+    // cleared texels, as dear as a slice's reads of them: it slices whatever its casters cover.
+    if (count > 1)
+        return 0.0;
+    double coverage = 0.0;
     for (const ReachBox& box : m_update.reach().boxes) {
         const glm::dvec2 size = glm::clamp(box.uvMax, 0.0, 1.0) - glm::clamp(box.uvMin, 0.0, 1.0);
         coverage += std::max(size.x, 0.0) * std::max(size.y, 0.0);
     }
     return std::min(coverage, 1.0);
+}
+
+bool Renderer::slicesViews(const FramePlan& plan, std::vector<ShadowCache::Decision>& decisions, const std::vector<std::optional<LightVolume>>& wanted) const
+{
+    // A map of several tiles moves to its next slice (map.slices) with each pass that draws, after
+    // which what earlier passes left reads as empty: every view with casters is drawn again then
+    // (without a cache, which core's slicesDepth requires, a pass draws them all anyway).
+    const std::vector<LightFrame>& frames = m_update.views().frames;
+    if (plan.slices <= 1 || decisions.size() < 2)
+        return false;
+    const bool draws = std::any_of(decisions.begin(), decisions.end(), [](const ShadowCache::Decision& d) { return d.work == ShadowCache::Work::Draw; });
+    if (!draws)
+        return false;
+    for (std::size_t i = 0; i < decisions.size(); ++i) {
+        if (decisions[i].work == ShadowCache::Work::Keep && wanted[i])
+            decisions[i].work = ShadowCache::Work::Draw;
+    }
+    // A perspective view's depth steps widen with distance: a slice keeps log2(n) bits fewer of
+    // the 24, so a view whose steps at its far plane would then span more than an eighth of a
+    // texel there (far / near beyond about 500 at 2048² and 4 slices) is drawn after a clear.
+    const double step = double(plan.slices) / double(1 << 24);
+    return std::all_of(frames.begin(), frames.end(), [&](const LightFrame& frame) {
+        const LightVolume& v = frame.volume;
+        return !v.perspective || step * (v.farPlane - v.nearPlane) / v.nearPlane <= texelWorldSize(v, m_shadowMap.size()) / 8.0;
+    });
 }
 
 void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool castersMoved, TimingMode timing, FrameStats& stats)
@@ -134,7 +163,8 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
         frame.movingTexels = movingTexels(m_shadowMap.size());
         frame.readTexels = readTexels(plan.settings);
     }
-    const std::vector<ShadowCache::Decision> decisions = m_viewCache.decide(frame);
+    std::vector<ShadowCache::Decision> decisions = m_viewCache.decide(frame);
+    const bool sliced = slicesViews(plan, decisions, frame.wanted);
     bool any = false, draws = false;
     for (const ShadowCache::Decision& d : decisions) {
         if (plan.cache != ShadowCachePolicy::Off)
@@ -162,6 +192,8 @@ void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool c
     // A fresh map reads lit everywhere first, tiles no view uses included (3 cascades in 2 x 2).
     if (frame.fresh && count < std::size_t(plan.grid.columns * plan.grid.rows))
         storage.clear(m_update.views().frames.front(), plan);
+    if (draws)
+        m_shadowMap.beginPass(sliced ? plan.slices : 1);
     for (std::size_t i = 0; i < count; ++i) {
         if (decisions[i].work != ShadowCache::Work::Keep)
             drawView(i, decisions[i], frame.wanted[i], i < frame.movingTexels.size() ? frame.movingTexels[i] : std::vector<QRect>(), plan, storage, timing,

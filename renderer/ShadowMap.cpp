@@ -53,21 +53,31 @@ void ShadowMap::ensureTiles(int size, int columns, int rows, DepthFormat format,
         m_reversedDepth = reversedDepth;
         m_written.reset(m_size, m_columns, m_rows);    // its far depth is now near
         m_slices.reset();
+        m_pass = {};
     }
 }
 
 DepthSlices::Draw ShadowMap::beginDraw(const QRect& tile, int slices)
 {
+    const bool tiles = m_columns * m_rows > 1;
     const bool sliceable = tile == QRect(0, 0, width(), height()) && ShadowMap::slices(slices, m_format, m_reversedDepth);
-    const DepthSlices::Draw draw = m_slices.beginDraw(slices, sliceable);
+    const DepthSlices::Draw draw = tiles ? m_pass : m_slices.beginDraw(slices, sliceable);
     m_clearCount += draw.clear;
     return draw;
+}
+
+void ShadowMap::beginPass(int slices)
+{
+    if (m_columns * m_rows > 1)
+        m_pass = m_slices.beginDraw(slices, ShadowMap::slices(slices, m_format, m_reversedDepth));
 }
 
 void ShadowMap::cleared(const QRect& tile)
 {
     m_written.cleared(tile);
-    m_slices.cleared(tile == QRect(0, 0, width(), height()));
+    const bool whole = tile == QRect(0, 0, width(), height());
+    if (whole || m_columns * m_rows == 1)
+        m_slices.cleared(whole);
     ++m_clearCount;
 }
 
@@ -144,6 +154,7 @@ void ShadowMap::allocate(int size, int columns, int rows, DepthFormat format)
     m_format = format;
     m_written.reset(size, columns, rows);
     m_slices.reset();
+    m_pass = {};
 }
 
 } // namespace shadowlab

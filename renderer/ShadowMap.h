@@ -44,15 +44,23 @@ public:
     GLuint sampler(ShadowSampler kind) const;
 
     // Depth slices (DepthSlices, map.slices): before a draw into `tile` (texels), whether to
-    // clear it first and the slice to write; `slices` as the plan asks (FramePlan::slices).
+    // clear it first and the slice to write; `slices` as the plan asks (FramePlan::slices). A
+    // map of one view moves to its next slice with each draw; a map of several tiles with each
+    // pass (beginPass), whose draws all write into that pass's slice.
     DepthSlices::Draw beginDraw(const QRect& tile, int slices);
+    // Before the draws of a pass into a map of several tiles: the slice they write, or none
+    // (`slices` 1: each draw clears its tile first). Every tile that holds casters must be drawn
+    // in a sliced pass, as what earlier passes left reads beyond the far plane after it.
+    void beginPass(int slices);
     DepthSlices& depthSlices() { return m_slices; }
     const DepthSlices& depthSlices() const { return m_slices; }
     // Where the last draw wrote: how lookups read the map now.
     const DepthSlice& slice() const { return m_slices.current(); }
     // Whether a draw asking for `slices` draws into slices: the lit pass's DEPTH_SLICES variant.
     static bool slices(int slices, DepthFormat format, bool reversedDepth) { return slices > 1 && format == DepthFormat::Depth24 && !reversedDepth; }
-    // After a clear of `tile` (a whole tile, or the part of one WrittenTexels names).
+    // After a clear of `tile` (a whole tile, or the part of one WrittenTexels names). A cleared
+    // texel reads beyond the far plane in any slice, so a clear of one tile of several leaves the
+    // pass's slice as it is.
     void cleared(const QRect& tile);
     // Which texels draws since their clear may have written.
     WrittenTexels& written() { return m_written; }
@@ -75,6 +83,7 @@ private:
     bool m_reversedDepth = false;
     int m_clearCount = 0;
     DepthSlices m_slices;
+    DepthSlices::Draw m_pass;       // a map of several tiles: the slice of this pass's draws
     WrittenTexels m_written;
 };
 

@@ -314,7 +314,7 @@ private slots:
                                                   << false << false;
         QTest::addRow("warped: never sliced") << "city" << QStringList{"light.warp=lispsm"} << true << true << 1 << 1 << 1 << false << false << false;
         QTest::addRow("3 cascades in 2 x 2") << "city" << QStringList{"shadow.cascades=3"} << true << true << 1 << 2 << 2 << false << false << false;
-        QTest::addRow("point: 3 x 2 faces") << "seed" << QStringList{"light.type=point"} << true << true << 1 << 3 << 2 << false << false << false;
+        QTest::addRow("point: 3 x 2 faces, sliced") << "seed" << QStringList{"light.type=point"} << true << true << 4 << 3 << 2 << false << false << false;
         QTest::addRow("virtual: a slot per page") << "city" << QStringList{"shadow.virtual=true", "shadow.virtual_pool=12"} << false << false << 1 << 12
                                                  << 12 << false << false << false;
         QTest::addRow("depth32f reversed") << "seed" << QStringList{"map.format=depth32f"} << true << true << 4 << 1 << 1 << true << false << false;

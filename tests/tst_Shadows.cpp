@@ -837,8 +837,9 @@ private Q_SLOTS:
     // map.slices: a map drawn into the next slice of its depth range instead of cleared shades
     // as one cleared before every draw, while the light walks around the scene, so each draw
     // lands where the last ones drew nothing and stands over what they left; the depth pane
-    // shows the same map. Every technique that reads the depth map, every bias and scene; spot
-    // and perspective lights keep their map's every bit and clear every draw.
+    // shows the same map. Every technique that reads the depth map, every bias and scene, a
+    // point light's six faces; spot and perspective lights keep their map's every bit and clear
+    // every draw.
     void slicedMapsShadeAsClearedOnes_data()
     {
         QTest::addColumn<QString>("scene");
@@ -867,6 +868,14 @@ private Q_SLOTS:
         QTest::newRow("3 slices") << "seed" << QStringList{"map.slices=3"};
         QTest::newRow("slices changed mid-way") << "seed" << QStringList{"map.slices=3", "raise slices"};
         QTest::newRow("lispsm") << "city" << QStringList{"light.warp=lispsm"};
+        // A point light's faces move to the next slice together: a face that gains or loses its
+        // casters as the light walks, and its neighbours', read through one slice.
+        QTest::newRow("point") << "seed" << QStringList{"light.type=point"};
+        QTest::newRow("point, pcf 5") << "seed" << QStringList{"light.type=point", "filter.mode=pcf", "filter.kernel=5"};
+        QTest::newRow("point, pcss early out") << "seed" << QStringList{"light.type=point", "filter.mode=pcss", "filter.early_out=true"};
+        QTest::newRow("point, depth units") << "seed" << QStringList{"light.type=point", "bias.space=depth", "bias.slope=0.002", "bias.min=0.0005"};
+        QTest::newRow("point, ground in the map") << "seed" << QStringList{"light.type=point", "bias.cull_front=false", "bias.skip_floors=false"};
+        QTest::newRow("point, cubes") << "cubes" << QStringList{"light.type=point"};
         for (const QString& name : sceneNames()) {
             if (name != QLatin1String("seed"))
                 QTest::newRow(qPrintable(name)) << name << QStringList{};
@@ -939,11 +948,15 @@ private Q_SLOTS:
             QVERIFY2(worst <= 1 && paneDiffer <= map.width() * map.height() / 100,
                      qPrintable(QString("step %1: %2 depth-pane pixels differ, by up to %3 of 255").arg(step).arg(paneDiffer).arg(worst)));
         }
-        // One clear in map.slices draws, the first included; a perspective or warped map clears
-        // every draw.
+        // One clear in map.slices draws, the first included; a spot, perspective or warped map
+        // clears every draw.
         const int n = r.lastPlan().slices;
-        QCOMPARE(n > 1, sliced.light.projection == LightProjection::Ortho && sliced.light.warp == LightWarp::None);
-        QCOMPARE(clears, raise ? 3 : (steps + n - 1) / n);     // raised: draws 0 and 3 of 3, then 4 of 8
+        const bool point = sliced.light.type == LightType::Point;
+        QCOMPARE(n > 1, point || (sliced.light.projection == LightProjection::Ortho && sliced.light.warp == LightWarp::None));
+        if (point)      // and a face whose casters left it is cleared where they were
+            QVERIFY2(clears >= (steps + n - 1) / n && clears < steps, qPrintable(QString("%1 passes of %2 cleared").arg(clears).arg(steps)));
+        else
+            QCOMPARE(clears, raise ? 3 : (steps + n - 1) / n);     // raised: draws 0 and 3 of 3, then 4 of 8
         // A measurement draws into the first slice after a clear, whatever came before: the
         // same settings measure the same. The walk ended in a later slice (its last draw is the
         // third of a cycle, or the fifth after the raise).
@@ -993,6 +1006,39 @@ private Q_SLOTS:
             QCOMPARE(r.shadowMap().depthSlices().casterCoverage() > 0.85, groundInMap);
         }
         QCOMPARE(cleared, clears);
+    }
+
+    // A point light's faces are sliced while a slice keeps their depth steps under an eighth of
+    // a texel at the far plane: not where far / near is 10^4, whose steps a slice would widen
+    // to half a texel.
+    void pointFacesSliceWhileTheirDepthStepsAllow_data()
+    {
+        QTest::addColumn<QStringList>("assignments");
+        QTest::addColumn<bool>("sliced");
+        QTest::newRow("fitted") << QStringList{} << true;
+        QTest::newRow("near 0.5, far 100") << QStringList{"light.fit=manual", "light.near=0.5", "light.far=100"} << true;
+        QTest::newRow("near 0.01, far 100") << QStringList{"light.fit=manual", "light.near=0.01", "light.far=100"} << false;
+    }
+
+    void pointFacesSliceWhileTheirDepthStepsAllow()
+    {
+        QFETCH(QStringList, assignments);
+        QFETCH(bool, sliced);
+        Renderer& r = m_headless->renderer();
+        Settings s = seedWith(assignments + QStringList{"light.type=point"});
+        s.rasteriser.profile = RasteriserProfile::Software;
+        const LightAngles start = lightAngles(s.light.position, s.light.target);
+        int cleared = 0;
+        for (int step = 0; step < 8; ++step) {
+            LightAngles a = start;
+            a.azimuth += 5.0 * step;
+            s.light.position = lightPosition(s.light.target, a);
+            m_headless->renderFrame(s, kSize);
+            QVERIFY(r.lastFrame().shadowPassRendered);
+            cleared += r.lastFrame().shadowMapCleared;
+            QCOMPARE(r.shadowMap().slice().scale < 1.0, sliced);
+        }
+        QCOMPARE(cleared, sliced ? 2 : 8);
     }
 
     void everyPresetRenders()
