@@ -39,7 +39,6 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     } else {
         renderer.invalidateShadowMap();
     }
-    renderer.restartDepthSlices();
     renderer.setCounting(true);
     try {
         headless.renderFrame(counted, size, TimingMode::Finish);
@@ -49,13 +48,26 @@ FrameCounts countFrames(HeadlessRenderer& headless, const Settings& settings, QS
     }
     renderer.setCounting(false);
     FrameCounts counts = renderer.lastFrame().counts;
-    // A map drawn into slices (map.slices) is cleared once in that many passes, by the first of
-    // the cycle, which the counted one was: a pass clears that share of what it cleared.
+    // A map drawn into slices (map.slices) is cleared once in that many passes: a pass clears that
+    // share of the map of one view, and of what a pass draws into a point light's faces (the
+    // first of a cycle clears, in each face, what the cycle drew: about that, as the light
+    // moves).
     const ShadowMap& map = renderer.shadowMap();
     const FramePlan& plan = renderer.lastPlan();
     const bool depthMap = plan.shadows && !plan.virtualMap && !plan.moments;
-    if (depthMap && renderer.lastFrame().shadowPassRendered && map.slice().scale < 1.0)
-        counts.clearedTexels /= std::max(1, plan.slices);
+    if (depthMap && renderer.lastFrame().shadowPassRendered && map.slice().scale < 1.0) {
+        std::int64_t cleared = std::int64_t(map.width()) * map.height();
+        if (map.columns() * map.rows() > 1) {
+            cleared = 0;
+            for (int row = 0; row < map.rows(); ++row) {
+                for (int column = 0; column < map.columns(); ++column) {
+                    const QRect drawn = map.written().written(QRect(column * map.size(), row * map.size(), map.size(), map.size()));
+                    cleared += std::int64_t(drawn.width()) * drawn.height();
+                }
+            }
+        }
+        counts.clearedTexels = cleared / std::max(1, plan.slices);
+    }
     return counts;
 }
 

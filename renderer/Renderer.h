@@ -121,9 +121,6 @@ public:
     // Forces the next render() to redraw the shadow map, as a moving light does (a map drawn
     // into slices, map.slices, goes on to its next one).
     void invalidateShadowMap() { m_shadowKey.reset(); }
-    // The next draw of a map drawn into slices clears and starts its cycle again: what it
-    // clears is what the cycle's clears come to.
-    void restartDepthSlices() { m_shadowMap.depthSlices().restart(); }
     // shadow.cache=on-demand: the next frame draws the moving casters where its views are stale.
     void requestShadowRedraw() { m_redrawRequested = true; }
 
@@ -185,8 +182,8 @@ private:
     std::vector<std::optional<LightVolume>> wantedVolumes() const;
     // The share of a map of `count` views its casters may cover (DepthSlices::setCasterCoverage).
     double casterCoverage(std::size_t count) const;
-    // Whether this pass into a map of several tiles draws into a slice (map.slices); turns a kept
-    // view with casters into a drawn one then.
+    // Whether this pass into a map of several tiles draws into a slice (map.slices); a kept view
+    // with casters is drawn too where the pass moves the map to another slice.
     bool slicesViews(const FramePlan& plan, std::vector<ShadowCache::Decision>& decisions, const std::vector<std::optional<LightVolume>>& wanted) const;
     // View `i` drawn at `wanted`, or its tile cleared where it has nothing to shadow.
     // `movingNow`: where the moving casters lie in it (shadow.cache).

@@ -121,27 +121,31 @@ double Renderer::casterCoverage(std::size_t count) const
 
 bool Renderer::slicesViews(const FramePlan& plan, std::vector<ShadowCache::Decision>& decisions, const std::vector<std::optional<LightVolume>>& wanted) const
 {
-    // A map of several tiles moves to its next slice (map.slices) with each pass that draws, after
-    // which what earlier passes left reads as empty: every view with casters is drawn again then
-    // (without a cache, which core's slicesDepth requires, a pass draws them all anyway).
-    const std::vector<LightFrame>& frames = m_update.views().frames;
-    if (plan.slices <= 1 || decisions.size() < 2)
+    const auto drawn = [](const ShadowCache::Decision& d) { return d.work == ShadowCache::Work::Draw; };
+    if (decisions.size() < 2 || std::none_of(decisions.begin(), decisions.end(), drawn))
         return false;
-    const bool draws = std::any_of(decisions.begin(), decisions.end(), [](const ShadowCache::Decision& d) { return d.work == ShadowCache::Work::Draw; });
-    if (!draws)
-        return false;
-    for (std::size_t i = 0; i < decisions.size(); ++i) {
-        if (decisions[i].work == ShadowCache::Work::Keep && wanted[i])
-            decisions[i].work = ShadowCache::Work::Draw;
-    }
+    bool sliced = plan.slices > 1 && !plan.moments && ShadowMap::slices(plan.slices, plan.settings.map.format, plan.reversedDepth);
     // A perspective view's depth steps widen with distance: a slice keeps log2(n) bits fewer of
-    // the 24, so a view whose steps at its far plane would then span more than an eighth of a
-    // texel there (far / near beyond about 500 at 2048² and 4 slices) is drawn after a clear.
+    // the 24, so where a view with casters would then have steps at its far plane wider than an
+    // eighth of a texel there (far / near beyond 512 at 2048² and 4 slices), the pass clears.
     const double step = double(plan.slices) / double(1 << 24);
-    return std::all_of(frames.begin(), frames.end(), [&](const LightFrame& frame) {
-        const LightVolume& v = frame.volume;
-        return !v.perspective || step * (v.farPlane - v.nearPlane) / v.nearPlane <= texelWorldSize(v, m_shadowMap.size()) / 8.0;
-    });
+    const std::vector<LightFrame>& frames = m_update.views().frames;
+    for (std::size_t i = 0; i < frames.size() && i < wanted.size(); ++i) {
+        const LightVolume& v = frames[i].volume;
+        if (wanted[i] && v.perspective && step * (v.farPlane - v.nearPlane) / v.nearPlane > texelWorldSize(v, m_shadowMap.size()) / 8.0)
+            sliced = false;
+    }
+    // A pass that draws moves the whole map to another slice (or out of slices), where what a
+    // kept view holds would read as empty: every view with casters is drawn then. Without a
+    // cache, which core's slicesDepth requires, every pass that draws is fresh and draws them
+    // all already; this holds it whatever decides.
+    if (sliced || m_shadowMap.slice().scale < 1.0) {
+        for (std::size_t i = 0; i < decisions.size() && i < wanted.size(); ++i) {
+            if (decisions[i].work == ShadowCache::Work::Keep && wanted[i])
+                decisions[i].work = ShadowCache::Work::Draw;
+        }
+    }
+    return sliced;
 }
 
 void Renderer::renderViews(const FramePlan& plan, ShadowStorage& storage, bool castersMoved, TimingMode timing, FrameStats& stats)

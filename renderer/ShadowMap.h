@@ -64,6 +64,7 @@ public:
     void cleared(const QRect& tile);
     // Which texels draws since their clear may have written.
     WrittenTexels& written() { return m_written; }
+    const WrittenTexels& written() const { return m_written; }
     // Clears of the map or of a tile so far, whether asked for or before a draw.
     int clearCount() const { return m_clearCount; }
 

@@ -79,16 +79,6 @@ float tapReference(vec2 offset, float reference)
 #endif
 }
 
-// The centre's reference on the receiver's plane with RECEIVER_PLANE, else the centre's own.
-float centreReference(vec2 offset, float reference)
-{
-#ifdef RECEIVER_PLANE
-    return reference + dot(gReceiverSlope, offset);
-#else
-    return reference;
-#endif
-}
-
 // The comparison of the tap `offset` (uv) away from the receiver at `uv`, against that tap's
 // own reference: what every filter sums.
 float footprintTap(vec2 uv, vec2 offset, float reference)

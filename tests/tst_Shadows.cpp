@@ -1009,15 +1009,17 @@ private Q_SLOTS:
     }
 
     // A point light's faces are sliced while a slice keeps their depth steps under an eighth of
-    // a texel at the far plane: not where far / near is 10^4, whose steps a slice would widen
-    // to half a texel.
+    // a texel at the far plane, (far - near) / near up to 512 at 2048² and 4 slices: not where
+    // it is 10^4, whose steps a slice would widen to 2.4 texels.
     void pointFacesSliceWhileTheirDepthStepsAllow_data()
     {
         QTest::addColumn<QStringList>("assignments");
         QTest::addColumn<bool>("sliced");
         QTest::newRow("fitted") << QStringList{} << true;
-        QTest::newRow("near 0.5, far 100") << QStringList{"light.fit=manual", "light.near=0.5", "light.far=100"} << true;
-        QTest::newRow("near 0.01, far 100") << QStringList{"light.fit=manual", "light.near=0.01", "light.far=100"} << false;
+        QTest::newRow("far / near 400") << QStringList{"light.fit=manual", "light.near=0.25", "light.far=100"} << true;
+        QTest::newRow("far / near 600") << QStringList{"light.fit=manual", "light.near=0.166", "light.far=100"} << false;
+        QTest::newRow("far / near 600 at 1024²") << QStringList{"light.fit=manual", "light.near=0.166", "light.far=100", "map.size=1024"} << true;
+        QTest::newRow("far / near 10^4") << QStringList{"light.fit=manual", "light.near=0.01", "light.far=100"} << false;
     }
 
     void pointFacesSliceWhileTheirDepthStepsAllow()
