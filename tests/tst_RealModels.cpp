@@ -7,11 +7,14 @@
 //   - no visible moiré or acne: DSSIM of the frame at most 0.01 against the frame shaded with
 //     the hard reference (a moiré of partial shadow stays under a misclassified count; only the
 //     picture shows it), for every hard-edged depth-compare filter;
-//   - misclassified pixels at most 0.5 % for those filters, and 2 % for pcss and dpcf (against
-//     the area reference, whose soft edges the hard one calls wrong) and the moment filters from
-//     the model's camera. The goal is 0.10 %: the coarse sphere's terminator, the
-//     rock's crest and the spider's legs still miss it (0.13-0.46 %, docs/techniques.md#bias),
-//     so these bounds hold what is reached and catch any step back; every figure is printed.
+//   - misclassified pixels at most 0.10 % on the median model, for every technique and camera
+//     (the goal, which the coarse sphere's terminator, the rock's crest and the spider's legs
+//     still miss: 0.13-0.46 %, docs/techniques.md#bias), and on three models in four for the
+//     hard-edged depth-compare filters;
+//   - on every model, at most 0.5 % for those filters, and 2 % for pcss and dpcf (against the
+//     area reference, whose soft edges the hard one calls wrong) and the moment filters from
+//     the model's camera. These hold what is reached and catch any step back; every figure is
+//     printed.
 #include "AccuracyMeter.h"
 #include "Application.h"
 #include "HeadlessRenderer.h"
@@ -28,12 +31,15 @@
 #include <QDirIterator>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 using namespace shadowlab;
 
 namespace {
 
+constexpr double kGoalMisclassified = 0.001;
 constexpr double kMaxMisclassified = 0.005;
 constexpr double kMaxMisclassifiedOpen = 0.02;
 constexpr double kMaxDssim = 0.01;
@@ -182,6 +188,7 @@ private Q_SLOTS:
                 QVERIFY(m.pixels > 0);
                 const double bound = open ? kMaxMisclassifiedOpen : kMaxMisclassified;
                 qInfo("%s, %s: %.3f %% misclassified, DSSIM %.4f", qPrintable(t.key), qPrintable(cameraName), 100 * m.misclassified, dssim);
+                m_misclassified[{t.key, cameraName}].push_back(m.misclassified);
                 if (m.misclassified > bound || (!soft && !open && dssim > kMaxDssim))
                     failures << QString("%1, %2: %3 % misclassified (%4 acne, %5 leaks), DSSIM %6")
                                     .arg(t.key, cameraName)
@@ -191,11 +198,35 @@ private Q_SLOTS:
                                     .arg(dssim, 0, 'f', 4);
             }
         }
+        ++m_modelsMeasured;
         QVERIFY2(failures.isEmpty(), qPrintable(QString("%1 of %2 over the bounds:\n  ").arg(failures.size()).arg(measured) + failures.join("\n  ")));
+    }
+
+    // The goal on the typical model: the median of each technique's misclassified share over
+    // every model (and the upper quartile for the hard-edged filters) within 0.10 %.
+    void theTypicalModelMeetsTheGoal()
+    {
+        QVERIFY2(m_modelsMeasured == m_models.size(), "the goal is over every model: run everyTechniqueIsCleanOnEveryModel whole first");
+        QStringList failures;
+        for (auto& [row, shares] : m_misclassified) {
+            std::sort(shares.begin(), shares.end());
+            const double median = shares[shares.size() / 2];
+            const double upperQuartile = shares[(3 * shares.size()) / 4];
+            const bool hardEdged = std::any_of(shadowTechniques().begin(), shadowTechniques().end(),
+                                               [&](const ShadowTechnique& t) { return t.key == row.first && !stillOpen(t); });
+            qInfo("%s, %s: median %.3f %%, upper quartile %.3f %% misclassified over %d models", qPrintable(row.first), qPrintable(row.second), 100 * median,
+                  100 * upperQuartile, int(shares.size()));
+            if (median > kGoalMisclassified || (hardEdged && upperQuartile > kGoalMisclassified))
+                failures << QString("%1, %2: median %3 %, upper quartile %4 %").arg(row.first, row.second).arg(100 * median, 0, 'f', 3).arg(100 * upperQuartile, 0, 'f', 3);
+        }
+        QVERIFY(!m_misclassified.empty());
+        QVERIFY2(failures.isEmpty(), qPrintable("over the goal of 0.10 %:\n  " + failures.join("\n  ")));
     }
 
 private:
     std::vector<RealModel> m_models;
+    std::size_t m_modelsMeasured = 0;
+    std::map<std::pair<QString, QString>, std::vector<double>> m_misclassified;     // (technique, camera): per model
 };
 
 QTEST_MAIN(TestRealModels)
