@@ -282,6 +282,7 @@ void Renderer::renderPages(const FramePlan& plan, ShadowStorage& storage, QSize 
     const auto frameOf = [&](const LightVolume& volume) { return computeLightFrame(settings.light, volume, m_shadowMap.reversedDepth()); };
     if (invalidate)
         storage.clear(m_update.views().frames.front(), plan);    // every slot reads lit until a page is drawn there
+    m_shadowMap.beginPass(1);   // a page's slot is cleared as it is drawn: no slices
     int draws = 0;
     stats.virtualMap = true;
     std::vector<Bounds> castersMoved;
