@@ -173,6 +173,30 @@ private:
         return compare(samples, shadowed, unshadowed);
     }
 
+    // Eight passes of `s` with the light 5 degrees further round its target each: how many drew
+    // the map, cleared it and were drawn into a slice, and the casters' coverage each time.
+    struct LightWalk {
+        int drawn = 0, cleared = 0, sliced = 0;
+        std::vector<double> casterCoverage;
+    };
+    LightWalk walkTheLight(Settings s)
+    {
+        const Renderer& r = m_headless->renderer();
+        const LightAngles start = lightAngles(s.light.position, s.light.target);
+        LightWalk walk;
+        for (int step = 0; step < 8; ++step) {
+            LightAngles a = start;
+            a.azimuth += 5.0 * step;
+            s.light.position = lightPosition(s.light.target, a);
+            m_headless->renderFrame(s, kSize);
+            walk.drawn += r.lastFrame().shadowPassRendered;
+            walk.cleared += r.lastFrame().shadowMapCleared;
+            walk.sliced += r.shadowMap().slice().scale < 1.0;
+            walk.casterCoverage.push_back(r.shadowMap().depthSlices().casterCoverage());
+        }
+        return walk;
+    }
+
 private Q_SLOTS:
     void initTestCase()
     {
@@ -991,21 +1015,13 @@ private Q_SLOTS:
         QFETCH(bool, groundInMap);
         QFETCH(double, sliceCoverage);
         QFETCH(int, clears);
-        Renderer& r = m_headless->renderer();
         Settings s = groundInMap ? seedWith({"bias.cull_front=false", "bias.skip_floors=false"}) : seedWith({"bias.cull_front=true"});
         s.map.sliceCoverage = sliceCoverage;
-        const LightAngles start = lightAngles(s.light.position, s.light.target);
-        int cleared = 0;
-        for (int step = 0; step < 8; ++step) {
-            LightAngles a = start;
-            a.azimuth += 5.0 * step;
-            s.light.position = lightPosition(s.light.target, a);
-            m_headless->renderFrame(s, kSize);
-            QVERIFY(r.lastFrame().shadowPassRendered);
-            cleared += r.lastFrame().shadowMapCleared;
-            QCOMPARE(r.shadowMap().depthSlices().casterCoverage() > 0.85, groundInMap);
-        }
-        QCOMPARE(cleared, clears);
+        const LightWalk walk = walkTheLight(s);
+        QCOMPARE(walk.drawn, 8);
+        QCOMPARE(walk.cleared, clears);
+        for (const double coverage : walk.casterCoverage)
+            QCOMPARE(coverage > 0.85, groundInMap);
     }
 
     // A point light's faces are sliced while a slice keeps their depth steps under an eighth of
@@ -1026,21 +1042,12 @@ private Q_SLOTS:
     {
         QFETCH(QStringList, assignments);
         QFETCH(bool, sliced);
-        Renderer& r = m_headless->renderer();
         Settings s = seedWith(assignments + QStringList{"light.type=point"});
         s.rasteriser.profile = RasteriserProfile::Software;
-        const LightAngles start = lightAngles(s.light.position, s.light.target);
-        int cleared = 0;
-        for (int step = 0; step < 8; ++step) {
-            LightAngles a = start;
-            a.azimuth += 5.0 * step;
-            s.light.position = lightPosition(s.light.target, a);
-            m_headless->renderFrame(s, kSize);
-            QVERIFY(r.lastFrame().shadowPassRendered);
-            cleared += r.lastFrame().shadowMapCleared;
-            QCOMPARE(r.shadowMap().slice().scale < 1.0, sliced);
-        }
-        QCOMPARE(cleared, sliced ? 2 : 8);
+        const LightWalk walk = walkTheLight(s);
+        QCOMPARE(walk.drawn, 8);
+        QCOMPARE(walk.cleared, sliced ? 2 : 8);
+        QCOMPARE(walk.sliced, sliced ? 8 : 0);
     }
 
     void everyPresetRenders()
