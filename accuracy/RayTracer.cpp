@@ -67,6 +67,10 @@ bool RayTracer::CutoutMask::solidAt(unsigned primitive, float u, float v) const
 
 RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(origin)
 {
+    if (const Bounds bounds = scene.bounds(); !bounds.isEmpty()) {
+        for (const glm::dvec3& corner : bounds.corners())
+            m_reach = std::max(m_reach, glm::length(corner - origin));
+    }
     m_device = rtcNewDevice(nullptr);
     if (!m_device)
         throw TraceError(QStringLiteral("Embree could not start (error %1)").arg(int(rtcGetDeviceError(nullptr))));

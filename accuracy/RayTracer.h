@@ -41,6 +41,9 @@ public:
     int movingCasterCount() const { return int(m_instances.size()); }
 
     const glm::dvec3& origin() const { return m_origin; }
+    // How far the scene reaches from the origin: the farthest corner of its bounds. A float
+    // coordinate of the traced triangles rounds by about 1e-7 of it.
+    double reach() const { return m_reach; }
     int triangleCount() const { return m_triangles; }
     // Casters traced through a mask (cut-outs whose texture has an alpha that can fall below
     // the cut-off).
@@ -73,6 +76,7 @@ private:
     void place(const Instance& instance, const glm::dmat4& model) const;
 
     glm::dvec3 m_origin;
+    double m_reach = 0.0;
     std::vector<Instance> m_instances;
     RTCDevice m_device = nullptr;
     RTCScene m_scene = nullptr;

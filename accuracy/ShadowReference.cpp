@@ -103,8 +103,13 @@ std::int64_t traceRow(const Tracing& t, int y)
         const glm::dvec3 p = t.buffer.worldPosition(i);
         const glm::dvec3 normal = t.buffer.normal(i);
         // Off the surface by a distance that scales with the coordinates' magnitude relative
-        // to the tracer's origin, so float rounding cannot put the origin behind the surface.
-        const double scale = std::max(1.0, glm::length(p - t.tracer.origin()));
+        // to the tracer's origin, so float rounding cannot put the origin behind the surface:
+        // at least 1 unit's worth, or a hundredth of the scene's reach where that is less (a
+        // model of a few centimetres), whose coordinates round by 1e-7 of it. A floor of 1 unit
+        // moved the rays off a sphere of radius 0.017 by 1.2 % of its radius, past the facets
+        // that shadow its terminator.
+        const double floor = std::min(1.0, 0.01 * t.tracer.reach());
+        const double scale = std::max(floor, glm::length(p - t.tracer.origin()));
         const glm::dvec3 from = p + normal * (2e-4 * scale);
         if (outsideSpotCone(light, p))
             continue;

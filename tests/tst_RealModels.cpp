@@ -8,9 +8,9 @@
 //     the hard reference (a moiré of partial shadow stays under a misclassified count; only the
 //     picture shows it), for every hard-edged depth-compare filter;
 //   - misclassified pixels at most 0.10 % on the median model, for every technique and camera
-//     (the goal, which the coarse sphere's terminator, the rock's crest and the spider's legs
-//     still miss: 0.13-0.46 %, docs/techniques.md#bias), and on three models in four for the
-//     hard-edged depth-compare filters;
+//     (the goal, which the rock's crest and the spider's legs still miss: 0.13-0.46 %,
+//     docs/techniques.md#bias), and on three models in four for the hard-edged depth-compare
+//     filters;
 //   - on every model, at most 0.5 % for those filters, and 2 % for pcss and dpcf (against the
 //     area reference, whose soft edges the hard one calls wrong) and the moment filters from
 //     the model's camera. These hold what is reached and catch any step back; every figure is
