@@ -97,7 +97,9 @@ RayTracer::RayTracer(const Scene& scene, const glm::dvec3& origin) : m_origin(or
         // instance); a still one is baked into the scene in world space around the origin.
         const bool moving = object.motion.has_value();
         const glm::dmat4 toSpace = moving ? glm::dmat4(1.0) : glm::translate(glm::dmat4(1.0), -m_origin) * object.model;
+        const glm::dmat3 linear(object.model);
         for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+            m_reach = std::max(m_reach, glm::length(linear * glm::dvec3(mesh.vertices[i].position)));
             const glm::dvec3 world = glm::dvec3(toSpace * glm::dvec4(glm::dvec3(mesh.vertices[i].position), 1.0));
             vertices[3 * i + 0] = float(world.x);
             vertices[3 * i + 1] = float(world.y);

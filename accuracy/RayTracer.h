@@ -41,8 +41,10 @@ public:
     int movingCasterCount() const { return int(m_instances.size()); }
 
     const glm::dvec3& origin() const { return m_origin; }
-    // How far the scene reaches from the origin: the farthest corner of its bounds. A float
-    // coordinate of the traced triangles rounds by about 1e-7 of it.
+    // The scale of the coordinates a surface point of the scene carries: how far the scene
+    // reaches from the origin (the farthest corner of its bounds), or a mesh from its own
+    // object's origin where that is more. A float coordinate of the traced triangles, or of a
+    // point the GPU placed on them, rounds by about 1e-7 of it.
     double reach() const { return m_reach; }
     int triangleCount() const { return m_triangles; }
     // Casters traced through a mask (cut-outs whose texture has an alpha that can fall below

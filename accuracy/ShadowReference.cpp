@@ -89,6 +89,19 @@ float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, std::vecto
     return float(unoccluded) / float(n * n);
 }
 
+} // namespace
+
+glm::dvec3 shadowRayStart(const RayTracer& tracer, const glm::dvec3& p, const glm::dvec3& normal)
+{
+    // The floor of 1 unit alone moved the rays off a sphere of radius 0.017 by 1.2 % of its
+    // radius, past the facets that shadow its terminator; a hundredth of the reach keeps 100
+    // times the rounding of the coordinates there (RayTracer::reach).
+    const double floor = std::min(1.0, 0.01 * tracer.reach());
+    return p + normal * (2e-4 * std::max(floor, glm::length(p - tracer.origin())));
+}
+
+namespace {
+
 // Traces every pixel of row `y` that faces the light; returns the rays it took.
 std::int64_t traceRow(const Tracing& t, int y)
 {
@@ -102,15 +115,7 @@ std::int64_t traceRow(const Tracing& t, int y)
             continue;
         const glm::dvec3 p = t.buffer.worldPosition(i);
         const glm::dvec3 normal = t.buffer.normal(i);
-        // Off the surface by a distance that scales with the coordinates' magnitude relative
-        // to the tracer's origin, so float rounding cannot put the origin behind the surface:
-        // at least 1 unit's worth, or a hundredth of the scene's reach where that is less (a
-        // model of a few centimetres), whose coordinates round by 1e-7 of it. A floor of 1 unit
-        // moved the rays off a sphere of radius 0.017 by 1.2 % of its radius, past the facets
-        // that shadow its terminator.
-        const double floor = std::min(1.0, 0.01 * t.tracer.reach());
-        const double scale = std::max(floor, glm::length(p - t.tracer.origin()));
-        const glm::dvec3 from = p + normal * (2e-4 * scale);
+        const glm::dvec3 from = shadowRayStart(t.tracer, p, normal);
         if (outsideSpotCone(light, p))
             continue;
         if (light.perspective)

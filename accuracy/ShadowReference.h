@@ -54,6 +54,13 @@ struct ReferenceOptions {
     int samplesPerAxis = 16;        // the area reference traces samplesPerAxis^2 rays per pixel
 };
 
+// Where a shadow ray from surface point `p`, of geometric normal `normal`, starts: off the
+// surface along the normal by 2e-4 of the point's distance from the tracer's origin, and at
+// least of 1 unit, or of a hundredth of the tracer's reach where that is less (a model a few
+// centimetres across is traced as one a few metres across), so float rounding cannot put it
+// behind the surface.
+glm::dvec3 shadowRayStart(const RayTracer& tracer, const glm::dvec3& p, const glm::dvec3& normal);
+
 // Visibility of the light for every pixel of `buffer` that faces it (others stay 0). Rays
 // start a small distance off the surface along the geometric normal. Directional (ortho)
 // lights trace parallel rays, and for the area reference a disk of the light's angular size

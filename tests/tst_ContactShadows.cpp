@@ -59,7 +59,7 @@ Reference reference(Renderer& renderer, const VisibilityBuffer& buffer, double l
         if (buffer.mask(i) != VisibilityBuffer::FacingLight || r.hard[std::size_t(i)] >= 0.5f)
             continue;
         const glm::dvec3 p = buffer.worldPosition(i);
-        const glm::dvec3 from = p + buffer.normal(i) * (2e-4 * std::max(1.0, glm::length(p - tracer.origin())));
+        const glm::dvec3 from = shadowRayStart(tracer, p, buffer.normal(i));
         const glm::dvec3 toLight = light.perspective ? glm::normalize(light.position - from) : -light.direction;
         r.nearContact[std::size_t(i)] = tracer.occluded(from, toLight, length);
     }
