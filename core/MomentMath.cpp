@@ -38,4 +38,22 @@ MomentWarp momentWarp(const Settings& settings)
     return w;
 }
 
+bool blursInLookup(const Settings& settings)
+{
+    const MomentSettings& m = settings.moments;
+    if (m.blur <= 1 || m.mipmaps || m.blurAt == MomentBlurAt::Map)
+        return false;
+    return m.blurAt == MomentBlurAt::Lookup || m.blur <= kWidestLookupBlur;
+}
+
+int mapBlurWidth(const Settings& settings)
+{
+    return blursInLookup(settings) ? 0 : settings.moments.blur;
+}
+
+int lookupBlurRadius(const Settings& settings)
+{
+    return blursInLookup(settings) ? (settings.moments.blur - 1) / 2 : 0;
+}
+
 } // namespace shadowlab

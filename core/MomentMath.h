@@ -25,4 +25,16 @@ double maxExponent(FilterMode mode, MomentFormat format);
 // The settings' exponents clamped by maxExponent().
 MomentWarp momentWarp(const Settings& settings);
 
+// The widest blur moments.blur_at=auto applies in the lookup: (5 + 1)² / 4 = 9 bilinear reads a
+// pixel, fewer than the 2 × 5 of a blur pass for each texel of the map.
+constexpr int kWidestLookupBlur = 5;
+
+// Where the settings' blur runs (moments.blur_at, auto resolved): in the lookup or as a pass
+// over the map. Lookup with no blur to apply, or where the map has mipmaps, is the map's.
+bool blursInLookup(const Settings& settings);
+// The width of the blur pass over the map: moments.blur, or 0 where the lookup applies it.
+int mapBlurWidth(const Settings& settings);
+// The radius the lookup's blur reads around its texel, 0 for none (moments.blur_at).
+int lookupBlurRadius(const Settings& settings);
+
 } // namespace shadowlab

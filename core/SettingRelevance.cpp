@@ -55,8 +55,14 @@ QString ignoredBecause(const Settings& s, const QString& key)
     }
     if (key.startsWith(u"moments.") && !moments)
         return QStringLiteral("%1 stores depth, not moments; the moment filters (%2) read it.").arg(techniqueKey(s), momentTechniques().join(QStringLiteral(", ")));
+    if (moments && key == u"moments.blur_at" && s.moments.blur <= 1)
+        return QStringLiteral("moments.blur=%1 blurs nothing; a width of 3 or more runs where this says.").arg(s.moments.blur);
+    if (moments && key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage)
+        return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, floors too; "
+                              "vsm, evsm2 and esm leave floors out.")
+            .arg(techniqueKey(s));
     if (moments && (key == u"bias.cull_front" || key == u"bias.polygon_factor" || key == u"bias.polygon_units" || key == u"bias.footprint"
-                    || key == u"bias.receiver_plane" || key == u"bias.skip_floors"))
+                    || key == u"bias.receiver_plane"))
         return QStringLiteral("%1 draws every face into a moments map with no offset and compares no depths: filter.moment_bias holds "
                               "its acne off. Depth-compare filters read it.")
             .arg(techniqueKey(s));

@@ -29,6 +29,10 @@ enum class DepthFormat { Depth24, Depth32F };
 enum class BiasSpace { World, Texel, Depth };
 enum class FilterMode { Hard, Pcf, PcfOptimized, PcfDither4, Pcf64, HwBilinear, Poisson, Pcss, Dpcf, Vsm, Evsm2, Evsm4, Msm, MsmHausdorff, Esm };
 enum class MomentFormat { Rgba16F, Rgba32F };
+// Where the moments blur runs: a pass over the map after the moments pass, or the lit pass's
+// lookup applying the same kernel to the map as drawn; auto picks the lookup for a narrow blur
+// over a map without mips.
+enum class MomentBlurAt { Auto, Lookup, Map };
 enum class ShadingModel { Phong, BlinnPhong };
 // Which kind of rasteriser the renderer's optimisations are chosen for (RasteriserTuning): auto
 // from GL_RENDERER, or forced. Frames are the same under each; only what they cost differs.
@@ -142,6 +146,7 @@ struct FilterSettings {
 struct MomentSettings {
     MomentFormat format = MomentFormat::Rgba32F;
     int blur = 3;                           // separable Gaussian width in texels, odd; 0: none
+    MomentBlurAt blurAt = MomentBlurAt::Auto;
     bool mipmaps = false;                   // trilinear lookups from a mip chain built after the blur
     int anisotropy = 1;                     // 1 is off; clamped to what the driver offers
     int view = 1;                           // the moment the depth-map view shows

@@ -86,5 +86,6 @@ QString toString(ShadingModel value);
 QString toString(RasteriserProfile value);
 QString toString(ShadowCachePolicy value);
 QString toString(MomentFormat value);
+QString toString(MomentBlurAt value);
 
 } // namespace shadowlab

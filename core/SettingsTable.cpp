@@ -36,6 +36,7 @@ const QStringList kFilterNames = [] {
     return names;
 }();
 const QStringList kMomentFormatNames{QStringLiteral("16"), QStringLiteral("32")};
+const QStringList kBlurAtNames{QStringLiteral("auto"), QStringLiteral("lookup"), QStringLiteral("map")};
 const QStringList kShadingNames{QStringLiteral("phong"), QStringLiteral("blinn-phong")};
 const QStringList kRasteriserNames{QStringLiteral("auto"), QStringLiteral("software"), QStringLiteral("hardware")};
 const QStringList kCacheNames{QStringLiteral("off"), QStringLiteral("static"), QStringLiteral("pages"), QStringLiteral("every-n"),
@@ -112,7 +113,7 @@ Entry blurKey(const SettingPresentation& look)
     const QString rangeText = QStringLiteral("0 | odd in [1, %1]").arg(kMaxMomentBlur);
     const KeySpec spec{.key = "moments.blur",
                        .help = "Separable Gaussian blur of the moments map, its width in texels (moment techniques): wider "
-                               "softens the penumbra and hides aliasing for two full-map passes of that many taps, and "
+                               "softens the penumbra and hides aliasing for more reads (moments.blur_at says where), and "
                                "spreads light bleeding further; 0 leaves the map as rendered",
                        .look = look};
     auto check = [](int v) -> std::optional<QString> {
@@ -301,6 +302,15 @@ void filterKeys(std::vector<Entry>& e)
                                      kMomentFormatNames,
                                      [](auto& s) -> auto& { return s.moments.format; }));
     e.push_back(blurKey({.label = QStringLiteral("Blur"), .unit = QStringLiteral(" texels"), .sliderLow = 0.0, .sliderHigh = 31.0, .group = kMomentsMap}));
+    e.push_back(choice<MomentBlurAt>({.key = "moments.blur_at",
+                                      .help = "Where moments.blur runs (moment techniques), the same kernel either way: map is a pass over "
+                                              "every texel the casters reach, two reads of its width each; lookup applies it in the lit "
+                                              "pass to the map as drawn, (width + 1)^2 / 4 bilinear reads for each pixel that looks up and "
+                                              "none for texels no pixel reads; auto: lookup up to a width of 5 without mipmaps, map "
+                                              "otherwise (mipmaps are built from the blurred map)",
+                                      .look = {.label = QStringLiteral("Blur runs in"), .group = kMomentsMap}},
+                                     kBlurAtNames,
+                                     [](auto& s) -> auto& { return s.moments.blurAt; }));
     e.push_back(toggle({.key = "moments.mipmaps",
                         .help = "Mipmaps of the moments map (moment techniques), built after each moments pass: trilinear lookups keep "
                                 "distant and grazing shadows smooth instead of aliased, at the cost of a mip build and blurrier far shadows",
@@ -315,7 +325,8 @@ void filterKeys(std::vector<Entry>& e)
     e.push_back(whole({.key = "moments.view",
                        .range = {.lo = 1, .hi = 4},
                        .help = "Which stored moment the depth-map view shows for a moment technique: 1 is depth (unwarped for esm and "
-                               "evsm, linear for a perspective light), 2 to 4 the higher ones as stored (exponential ones on a log scale)",
+                               "evsm, linear for a perspective light), 2 to 4 the higher ones as stored (exponential ones on a log scale); "
+                               "for vsm and evsm2 3, for esm 2, is the share of the texel casters cover",
                        .look = {.label = QStringLiteral("Moment shown"), .sliderLow = 1.0, .sliderHigh = 4.0, .group = kMomentsMap}},
                       [](auto& s) -> auto& { return s.moments.view; }));
 }
@@ -574,5 +585,6 @@ QString toString(ShadingModel value) { return kShadingNames.value(int(value)); }
 QString toString(RasteriserProfile value) { return kRasteriserNames.value(int(value)); }
 QString toString(ShadowCachePolicy value) { return kCacheNames.value(int(value)); }
 QString toString(MomentFormat value) { return kMomentFormatNames.value(int(value)); }
+QString toString(MomentBlurAt value) { return kBlurAtNames.value(int(value)); }
 
 } // namespace shadowlab

@@ -137,6 +137,9 @@ void warnOfSubstitutes(const Settings& s, Issues& issues)
                                             .arg(optimizedPcfKernel(s.filter)).arg(s.filter.kernel));
     if (!isMomentTechnique(s.filter.mode))
         return;
+    if (s.moments.blurAt == MomentBlurAt::Lookup && s.moments.mipmaps && s.moments.blur > 1)
+        issues.warning("moments.blur_at", QStringLiteral("moments.blur_at=lookup: a map with mipmaps is blurred by its own pass, so that its "
+                                                         "mips hold the blur; set moments.mipmaps=false to blur in the lookup"));
     const double limit = maxExponent(s.filter.mode, s.moments.format);
     for (const auto& [key, value] : {std::pair{"filter.exponent_positive", s.filter.positiveExponent},
                                      std::pair{"filter.exponent_negative", s.filter.negativeExponent}}) {

@@ -120,7 +120,10 @@ bool culledFrom(const ReachObject& object, const LightFrame& view)
 
 std::optional<double> tapReachTexels(const Settings& settings)
 {
-    const std::optional<double> reach = shadowTechnique(settings.filter.mode).tapReach(settings.filter);
+    const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
+    std::optional<double> reach = technique.tapReach(settings.filter);
+    if (technique.coverage && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
+        reach = double(std::max(settings.moments.blur - 1, 0) / 2);     // its blur, in the map or the lookup
     if (!reach)
         return std::nullopt;
     // A nearest tap may round to the neighbour, a bilinear one reads 2 x 2; and two texels of

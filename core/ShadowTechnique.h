@@ -71,9 +71,15 @@ struct ShadowTechnique {
     QString shaderFile;             // under shaders/: defines float filterShadow(vec2 uv, float reference)
     ShadowMapKind map = ShadowMapKind::DepthCompare;   // the renderer refuses kinds it does not build
     std::vector<ShadowSampler> samplers;    // in texture-unit order
-    // Moments it stores (1, 2 or 4): the moments map's channels (R, RG or RGBA), so that a
-    // technique of fewer writes, blurs and reads no more. 0 for depth maps.
+    // Channels it stores (1 to 4), its coverage included: the moments map's (R, RG or RGBA; three
+    // take RGBA, which GPUs render to), so that a technique of fewer writes, blurs and reads no
+    // more. 0 for depth maps.
     int momentChannels = 0;
+    // Whether its last channel is the share of the texel casters cover, its moments weighted by
+    // it (shaders/moments_common.glsl): a receiver then needs no place in the map, so floors are
+    // left out (bias.skip_floors) and the map is cleared to zeros. Only where a channel is free
+    // after the moments: vsm, evsm2, esm.
+    bool coverage = false;
     QStringList parameters;         // keys of techniqueParameters() it reads
     // Extra #defines of the lit pass's variant (compile-time parameters such as a kernel width).
     std::function<QStringList(const Settings&)> defines;

@@ -65,9 +65,11 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
     // code is compiled, so every technique shares that variant.
     const bool lookups = plan.shadows && !outOfReach;
     const ShadowTechnique& technique = *plan.technique;
-    if (lookups)
+    if (lookups) {
         defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
-    else
+        if (const int radius = plan.moments ? lookupBlurRadius(settings) : 0)
+            defines << QStringLiteral("MOMENTS_LOOKUP_BLUR %1").arg(radius);
+    } else
         defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"") << QStringLiteral("OUT_OF_REACH");
     if (plan.shadows)
         defines << QStringLiteral("SHADOWS");

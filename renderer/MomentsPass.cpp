@@ -2,6 +2,7 @@
 
 #include "MomentMath.h"
 #include "PassState.h"
+#include "SceneLayout.h"
 #include "SettingsKeys.h"
 #include "ShadowTechnique.h"
 
@@ -33,6 +34,11 @@ QStringList MomentsPass::variantDefines(const Settings& settings, bool perspecti
     if (perspective)
         defines << QStringLiteral("LIGHT_PERSPECTIVE");
     return defines;
+}
+
+bool MomentsPass::leavesOutFloors(const Settings& settings)
+{
+    return shadowTechnique(settings.filter.mode).coverage && settings.bias.skipFloors;
 }
 
 MomentsPass::Program& MomentsPass::program(const LightFrame& light, const Settings& settings, bool cutout)
@@ -75,13 +81,21 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     // The far plane's moments, computed by the technique's own encoding: drawn over what is
     // cleared, or, over a whole map, cleared to the value that drawing gave last time (a
     // rasteriser clears a whole surface fastest: docs/performance.md).
+    // Coverage makes them zeros, cleared anywhere without drawing.
     const QString key = encoding(light, settings);
     const bool whole = clear == QRect(0, 0, map.width(), map.height());
+    const bool zeros = shadowTechnique(settings.filter.mode).coverage;
     const auto known = m_farMoments.find(key);
     m_gl->glClearDepth(1.0);
-    if (whole && known != m_farMoments.end()) {
-        m_gl->glClearBufferfv(GL_COLOR, 0, known->second.data());
+    if (zeros || (whole && known != m_farMoments.end())) {
+        const std::array<GLfloat, 4> value = zeros ? std::array<GLfloat, 4>{} : known->second;
+        if (!whole) {
+            m_gl->glEnable(GL_SCISSOR_TEST);
+            m_gl->glScissor(clear.x(), clear.y(), clear.width(), clear.height());
+        }
+        m_gl->glClearBufferfv(GL_COLOR, 0, value.data());
         m_gl->glClear(GL_DEPTH_BUFFER_BIT);
+        m_gl->glDisable(GL_SCISSOR_TEST);
     } else {
         // Only what is cleared: the rest of the tile, and the other views' tiles, keep theirs.
         m_gl->glEnable(GL_SCISSOR_TEST);
@@ -122,17 +136,18 @@ void MomentsPass::clear(const LightFrame& light, const Settings& settings, Momen
 int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile,
                         const std::optional<QRect>& drawn, CasterSet casters, bool clear)
 {
-    // Every face: the moments must hold the nearest surface, receivers included, so a lit
-    // receiver's filtered footprint is its own depth (front-face culling, the depth map's cure
-    // for acne, would leave the far plane behind receivers, and the exponential warps read
-    // that gap as light).
+    // Every face: without coverage the moments must hold the nearest surface, receivers
+    // included, so a lit receiver's filtered footprint is its own depth (front-face culling,
+    // the depth map's cure for acne, would leave the far plane behind receivers, and the
+    // exponential warps read that gap as light). With coverage, floors are left out.
+    const bool floorsOut = leavesOutFloors(settings);
     map.encodedBy(encoding(light, settings));
     const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
     const QRect area = drawn.value_or(whole) & whole;
-    // A map of one view is cleared whole (the fast clear), a tile of several only where it was
-    // or will be written.
+    // A map of one view is cleared whole (a GPU's fast clear), a tile of several, or any map
+    // under RasteriserTuning::clearsWrittenMoments, only where it was or will be written.
     const bool oneView = whole == QRect(0, 0, map.width(), map.height());
-    Program& plain = begin(light, settings, map, !clear ? QRect() : oneView ? whole : map.written().toClear(whole, area));
+    Program& plain = begin(light, settings, map, !clear ? QRect() : oneView && !m_clearsWritten ? whole : map.written().toClear(whole, area));
     PassState state;
     state.viewport = whole;
     state.depthTest = true;
@@ -148,7 +163,8 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     m_gl->glActiveTexture(GL_TEXTURE0);
     int draws = 0;
     for (const DrawItem& item : scene.drawItems()) {
-        if (!item.castsShadow || !drawsItem(casters, item) || isOutsideFrustum(light.viewProjection, item.bounds, true))
+        if (!item.castsShadow || !drawsItem(casters, item) || (floorsOut && shadowsNothing(item, light))
+            || isOutsideFrustum(light.viewProjection, item.bounds, true))
             continue;
         const bool cutout = settings.shadow.cutouts && item.alphaCutoff > 0.0f;
         if (cutout && !cutoutProgram) {

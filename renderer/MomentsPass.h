@@ -18,10 +18,11 @@ namespace shadowlab {
 
 // Moments pass: renders the casters from the light into a moments map, each fragment encoded by
 // the selected moment technique's GLSL (its row's file with MOMENTS_PASS), over a map first
-// filled with the far plane's moments. Depth clamping and caster culling as in the depth pass;
-// every face is drawn and no polygon offset applied (bias.cull_front and the offsets are the
-// depth map's cures for acne, which moments do not need). Cut-out casters leave their holes out
-// (their ALPHA_CUTOUT variant) unless shadow.cutouts is off.
+// filled with the far plane's moments (zeros for a technique that stores coverage). Depth
+// clamping and caster culling as in the depth pass; every face is drawn and no polygon offset
+// applied (bias.cull_front and the offsets are the depth map's cures for acne, which moments do
+// not need). Cut-out casters leave their holes out (their ALPHA_CUTOUT variant) unless
+// shadow.cutouts is off.
 class MomentsPass {
 public:
     explicit MomentsPass(GlFunctions* gl);
@@ -37,8 +38,18 @@ public:
     // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
     void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
 
+    // Whether a map of one view is cleared only where it was or will be written, not whole
+    // (RasteriserTuning::clearsWrittenMoments).
+    void clearWrittenOnly(bool on) { m_clearsWritten = on; }
+
     // Texels cleared and filled with the far plane's moments since the last call.
     qint64 takeClearedTexels() { return std::exchange(m_clearedTexels, 0); }
+
+    // Whether the pass leaves out floors the light is above (bias.skip_floors): only for a
+    // technique that stores coverage. Without it a receiver must be in the map, as its own
+    // depth, for its footprint to read lit (the far plane behind it reads as a gap of light
+    // to the exponential warps, and halves a caster's penumbra over it).
+    static bool leavesOutFloors(const Settings& settings);
 
     // The #defines of the variant for `settings` (exposed for tests).
     static QStringList variantDefines(const Settings& settings, bool perspective);
@@ -65,6 +76,7 @@ private:
     GlVertexArray m_emptyVertexArray;   // for the far-plane triangle
     ProgramCache<Program> m_programs;
     qint64 m_clearedTexels = 0;
+    bool m_clearsWritten = false;
     // The far plane's moments per variant and exponents, as its encoding drew them.
     std::map<QString, std::array<GLfloat, 4>> m_farMoments;
 };

@@ -26,7 +26,8 @@ public:
     void ensure(const FramePlan& plan) override
     {
         const Settings& settings = plan.settings;
-        m_channels = plan.technique->momentChannels;
+        m_channels = plan.technique->momentChannels == 3 ? 4 : plan.technique->momentChannels;     // RGB takes RGBA
+        m_pass.clearWrittenOnly(plan.tuning.clearsWrittenMoments);
         m_map.ensureTiles(plan.tileSize, plan.grid.columns, plan.grid.rows, settings.moments.format, storedChannels(plan), settings.moments.mipmaps,
                           settings.moments.anisotropy);
         // The copy holds the moments before the blur, with the pass's depth, so the moving
@@ -48,14 +49,13 @@ public:
         key.momentChannels = storedChannels(plan);
         key.exponentPositive = warp.positive;
         key.exponentNegative = warp.negative;
-        key.blur = settings.moments.blur;
+        key.blur = mapBlurWidth(settings);     // a blur in the lookup leaves the map as it is
         key.mipmaps = settings.moments.mipmaps;
         return key;
     }
 
     bool cullsFrontFaces(const FramePlan&) const override { return false; }
-    // The moments hold every surface, floors too (MomentsPass::render).
-    bool leavesOutFloors(const FramePlan&) const override { return false; }
+    bool leavesOutFloors(const FramePlan& plan) const override { return MomentsPass::leavesOutFloors(plan.settings); }
 
     void clear(const LightFrame& light, const FramePlan& plan, const QRect& tile) override
     {
@@ -107,9 +107,10 @@ private:
             m_gl->glFinish();
             blur.start();
         }
-        m_blur.render(m_map, settings.moments.blur, tile, inTile(texels, tile));
+        const int width = mapBlurWidth(settings);
+        m_blur.render(m_map, width, tile, inTile(texels, tile));
         m_map.written().drew(m_blur.lastWritten());     // the blur spreads the casters by its radius
-        countBlur(settings.moments.blur);
+        countBlur(width);
         if (blurWallMs) {
             m_gl->glFinish();
             *blurWallMs += double(blur.nsecsElapsed()) * 1e-6;
@@ -152,7 +153,7 @@ private:
     MomentsPass m_pass;
     MomentsBlurPass m_blur;
     CachedCopy m_copy;
-    int m_channels = 4;         // the technique's, which the counts use
+    int m_channels = 4;         // the technique's as a GPU stores them, which the counts use
 };
 
 } // namespace

@@ -23,7 +23,8 @@ RasteriserTuning RasteriserTuning::of(RasteriserProfile profile, const QString& 
 RasteriserTuning RasteriserTuning::of(RasteriserProfile profile, bool softwareDriver)
 {
     const bool software = profile == RasteriserProfile::Software || (profile == RasteriserProfile::Auto && softwareDriver);
-    return {.software = software, .skipsOutOfReach = software, .depthSlices = software, .wideTwoChannelMoments = software, .cpuVirtualRequests = software};
+    return {.software = software, .skipsOutOfReach = software, .depthSlices = software, .wideTwoChannelMoments = software,
+            .clearsWrittenMoments = software, .cpuVirtualRequests = software};
 }
 
 QString profileName(const RasteriserTuning& tuning)

@@ -27,6 +27,10 @@ struct RasteriserTuning {
     // Two moments (vsm, evsm2) stored in RGBA rather than RG: llvmpipe blurs a 2048² RGBA32F map
     // faster than an RG32F one, where a GPU reads half the bytes from RG.
     bool wideTwoChannelMoments = false;
+    // A moments map of one view cleared only where its last passes wrote, not whole: llvmpipe
+    // clears a surface texel by texel, where a GPU clears a whole one fastest. Pays where the
+    // casters cover less than the map: with coverage (vsm, evsm2, esm), which leaves floors out.
+    bool clearsWrittenMoments = false;
     // A virtual map's page requests deduplicated on the CPU from the read-back, rather than by a
     // point per requesting pixel on the GPU, which costs a software rasteriser six times as much.
     bool cpuVirtualRequests = false;

@@ -49,9 +49,9 @@ float safeDivide(float a, float b)
 
 // The filtered moments at `uv`, dequantised and blended toward a flat distribution by
 // filter.moment_bias, which keeps their Hankel matrix positive definite.
-vec4 filteredMoments(vec2 uv)
+vec4 biasedMoments(vec2 uv)
 {
-    vec4 stored = texture(uShadowMoments, momentsUv(uv));
+    vec4 stored = filteredMoments(uv);
 #ifdef MOMENTS_16BIT
     stored.x -= kQuantiseOffset;
     stored = kDequantise * stored;

@@ -5,6 +5,7 @@
 #include "CasterTexels.h"
 #include "FramePlan.h"
 #include "FrameUpdate.h"
+#include "MomentMath.h"
 #include "SceneLayout.h"
 #include "SceneLibrary.h"
 #include "SceneNames.h"
@@ -347,7 +348,7 @@ private slots:
         const RasteriserTuning& t = plan.tuning;
         QCOMPARE(t.software, tuned);
         // All or nothing: each optimisation is the profile's.
-        for (const bool on : {t.skipsOutOfReach, t.depthSlices, t.wideTwoChannelMoments, t.cpuVirtualRequests})
+        for (const bool on : {t.skipsOutOfReach, t.depthSlices, t.wideTwoChannelMoments, t.clearsWrittenMoments, t.cpuVirtualRequests})
             QCOMPARE(on, tuned);
         QCOMPARE(plan.slices, slices);
         QCOMPARE(plan.grid.columns, columns);
@@ -357,7 +358,9 @@ private slots:
         QCOMPARE(plan.moments, moments);
         QCOMPARE(plan.depthRange, depthRange);
         QVERIFY(plan.technique->mode == s.filter.mode);
-        QCOMPARE(plan.tapsPerLookup, s.shadow.enabled ? plan.technique->taps(s.filter) : 0);
+        // A blur in the lookup reads (r + 1)² bilinear taps (shaders/moments_common.glsl).
+        const int radius = plan.moments ? lookupBlurRadius(s) : 0;
+        QCOMPARE(plan.tapsPerLookup, !s.shadow.enabled ? 0 : radius > 0 ? (radius + 1) * (radius + 1) : plan.technique->taps(s.filter));
         // A driver without clip control: asked for, not given.
         const FramePlan without = planFrame(s, softwareDriver, false);
         QCOMPARE(without.reversedDepthWanted, reversed);

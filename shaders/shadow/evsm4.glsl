@@ -20,7 +20,7 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    vec4 moments = texture(uShadowMoments, momentsUv(uv));
+    vec4 moments = filteredMoments(uv);
     vec2 w = warpDepth(momentDepth(reference));
     vec2 minVariance = uMomentBias * w * w;  // relative to the warped depth squared, as in evsm2
     float positive = chebyshevUpperBound(moments.xy, w.x, minVariance.x);

@@ -24,6 +24,6 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    return reduceBleeding(1.0 - hausdorff(filteredMoments(uv), momentDepth(reference)));
+    return reduceBleeding(1.0 - hausdorff(biasedMoments(uv), momentDepth(reference)));
 }
 #endif

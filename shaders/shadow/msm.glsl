@@ -10,7 +10,7 @@ float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    vec4 b = filteredMoments(uv);
+    vec4 b = biasedMoments(uv);
     return reduceBleeding(1.0 - threeDepthShadow(b, momentDepths(b, momentDepth(reference))));
 }
 #endif

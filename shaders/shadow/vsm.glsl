@@ -1,25 +1,29 @@
 // vsm: variance shadow maps (Donnelly and Lauritzen 2006). The moments pass stores depth and
-// depth squared; filtered, they give the footprint's mean and variance, and Chebyshev's bound
-// how much of it lies behind the receiver. One filtered tap; light bleeds where a receiver
-// sees two occluders at different depths.
+// depth squared, and the coverage (moments_common.glsl); filtered, they give the casters' share
+// of the footprint, their mean and variance, and Chebyshev's bound how much of them lies behind
+// the receiver. One filtered tap; light bleeds where a receiver sees two occluders at different
+// depths.
 #include "moments_common.glsl"
 
 #ifdef MOMENTS_PASS
 vec4 encodeMoments(float depth)
 {
-    return vec4(depth, depth * depth, 0.0, 0.0);
+    return vec4(depth, depth * depth, 1.0, 0.0);
 }
 #elif defined(MOMENTS_VIEW)
 vec4 viewMoments(vec4 stored)
 {
-    return stored;              // depth and depth squared, both in [0, 1]
+    // Depth and depth squared of the casters, both in [0, 1] (the far plane where none is), and
+    // the share they cover.
+    if (stored.z < kLeastCoverage)
+        return vec4(1.0, 1.0, 0.0, 0.0);
+    return vec4(stored.xy / stored.z, stored.z, 0.0);
 }
 #else
 float filterShadow(vec2 uv, float reference)
 {
     if (outsideMap(uv))
         return 1.0;
-    vec2 moments = texture(uShadowMoments, momentsUv(uv)).rg;
-    return chebyshevUpperBound(moments, momentDepth(reference), uMomentBias);
+    return coveredChebyshev(filteredMoments(uv).rgb, momentDepth(reference), uMomentBias);
 }
 #endif
