@@ -144,10 +144,12 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     map.encodedBy(encoding(light, settings));
     const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
     const QRect area = drawn.value_or(whole) & whole;
-    // A map of one view is cleared whole (a GPU's fast clear), a tile of several, or any map
-    // under RasteriserTuning::clearsWrittenMoments, only where it was or will be written.
+    // A map of one view is cleared whole (a GPU's fast clear), a tile of several, or a map of
+    // coverage under RasteriserTuning::clearsWrittenMoments, only where it was or will be
+    // written (without coverage the floors cover the map anyway).
     const bool oneView = whole == QRect(0, 0, map.width(), map.height());
-    Program& plain = begin(light, settings, map, !clear ? QRect() : oneView && !m_clearsWritten ? whole : map.written().toClear(whole, area));
+    const bool clearsWhole = oneView && !(m_clearsWritten && shadowTechnique(settings.filter.mode).coverage);
+    Program& plain = begin(light, settings, map, !clear ? QRect() : clearsWhole ? whole : map.written().toClear(whole, area));
     PassState state;
     state.viewport = whole;
     state.depthTest = true;

@@ -38,8 +38,8 @@ public:
     // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
     void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
 
-    // Whether a map of one view is cleared only where it was or will be written, not whole
-    // (RasteriserTuning::clearsWrittenMoments).
+    // Whether a map of one view that stores coverage is cleared only where it was or will be
+    // written, not whole (RasteriserTuning::clearsWrittenMoments).
     void clearWrittenOnly(bool on) { m_clearsWritten = on; }
 
     // Texels cleared and filled with the far plane's moments since the last call.
