@@ -41,7 +41,7 @@ MomentWarp momentWarp(const Settings& settings)
 bool blursInLookup(const Settings& settings)
 {
     const MomentSettings& m = settings.moments;
-    if (m.blur <= 1 || m.mipmaps || m.blurAt == MomentBlurAt::Map)
+    if (m.blur <= 1 || m.mipmaps || m.anisotropy > 1 || m.blurAt == MomentBlurAt::Map)
         return false;
     return m.blurAt == MomentBlurAt::Lookup || m.blur <= kWidestLookupBlur;
 }

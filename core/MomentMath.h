@@ -30,7 +30,8 @@ MomentWarp momentWarp(const Settings& settings);
 constexpr int kWidestLookupBlur = 5;
 
 // Where the settings' blur runs (moments.blur_at, auto resolved): in the lookup or as a pass
-// over the map. Lookup with no blur to apply, or where the map has mipmaps, is the map's.
+// over the map. Lookup with no blur to apply, or where the map has mipmaps or is read
+// anisotropically (a footprint the kernel's fixed taps do not follow), is the map's.
 bool blursInLookup(const Settings& settings);
 // The width of the blur pass over the map: moments.blur, or 0 where the lookup applies it.
 int mapBlurWidth(const Settings& settings);

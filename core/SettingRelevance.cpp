@@ -57,6 +57,8 @@ QString ignoredBecause(const Settings& s, const QString& key)
         return QStringLiteral("%1 stores depth, not moments; the moment filters (%2) read it.").arg(techniqueKey(s), momentTechniques().join(QStringLiteral(", ")));
     if (moments && key == u"moments.blur_at" && s.moments.blur <= 1)
         return QStringLiteral("moments.blur=%1 blurs nothing; a width of 3 or more runs where this says.").arg(s.moments.blur);
+    if (moments && key == u"moments.blur_at" && (s.moments.mipmaps || s.moments.anisotropy > 1))
+        return QStringLiteral("The blur runs as a pass over the map while moments.mipmaps is on or moments.anisotropy is above 1.");
     if (moments && key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage)
         return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, floors too; "
                               "vsm, evsm2 and esm leave floors out.")

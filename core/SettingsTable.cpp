@@ -306,8 +306,8 @@ void filterKeys(std::vector<Entry>& e)
                                       .help = "Where moments.blur runs (moment techniques), the same kernel either way: map is a pass over "
                                               "every texel the casters reach, two reads of its width each; lookup applies it in the lit "
                                               "pass to the map as drawn, (width + 1)^2 / 4 bilinear reads for each pixel that looks up and "
-                                              "none for texels no pixel reads; auto: lookup up to a width of 5 without mipmaps, map "
-                                              "otherwise (mipmaps are built from the blurred map)",
+                                              "none for texels no pixel reads; auto: lookup up to a width of 5, map otherwise; always "
+                                              "map with mipmaps (built from the blurred map) or anisotropy above 1",
                                       .look = {.label = QStringLiteral("Blur runs in"), .group = kMomentsMap}},
                                      kBlurAtNames,
                                      [](auto& s) -> auto& { return s.moments.blurAt; }));

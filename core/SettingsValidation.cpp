@@ -137,9 +137,11 @@ void warnOfSubstitutes(const Settings& s, Issues& issues)
                                             .arg(optimizedPcfKernel(s.filter)).arg(s.filter.kernel));
     if (!isMomentTechnique(s.filter.mode))
         return;
-    if (s.moments.blurAt == MomentBlurAt::Lookup && s.moments.mipmaps && s.moments.blur > 1)
-        issues.warning("moments.blur_at", QStringLiteral("moments.blur_at=lookup: a map with mipmaps is blurred by its own pass, so that its "
-                                                         "mips hold the blur; set moments.mipmaps=false to blur in the lookup"));
+    if (s.moments.blurAt == MomentBlurAt::Lookup && (s.moments.mipmaps || s.moments.anisotropy > 1) && s.moments.blur > 1)
+        issues.warning("moments.blur_at", QStringLiteral("moments.blur_at=lookup: a map with mipmaps or anisotropic lookups is blurred by its "
+                                                         "own pass (the mips must hold the blur, and an anisotropic footprint is not the "
+                                                         "lookup's kernel); set moments.mipmaps=false and moments.anisotropy=1 to blur in "
+                                                         "the lookup"));
     const double limit = maxExponent(s.filter.mode, s.moments.format);
     for (const auto& [key, value] : {std::pair{"filter.exponent_positive", s.filter.positiveExponent},
                                      std::pair{"filter.exponent_negative", s.filter.negativeExponent}}) {

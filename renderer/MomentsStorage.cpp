@@ -51,6 +51,7 @@ public:
         key.exponentNegative = warp.negative;
         key.blur = mapBlurWidth(settings);     // a blur in the lookup leaves the map as it is
         key.mipmaps = settings.moments.mipmaps;
+        key.skipFloors = leavesOutFloors(plan);
         return key;
     }
 

@@ -97,7 +97,9 @@ vec4 filteredMoments(vec2 uv)
     vec4 sum = vec4(0.0);
     for (int m = 0; m <= r; ++m) {
         for (int n = 0; n <= r; ++n)
-            sum += weight[m].x * weight[n].y * texture(uShadowMoments, momentsUv(vec2(at[m].x, at[n].y)));
+            // Level 0, never a level from derivatives: the taps' pairing shifts between a quad's
+            // pixels, which would read as minification.
+            sum += weight[m].x * weight[n].y * textureLod(uShadowMoments, momentsUv(vec2(at[m].x, at[n].y)), 0.0);
     }
     return sum;
 #else

@@ -297,16 +297,19 @@ private Q_SLOTS:
             QCOMPARE(counts.blurTexels, std::int64_t(0));   // a blur in the lookup, or none: no pass over the map
     }
 
-    // A moments map keeps the far plane's moments where nothing was drawn; another technique of
-    // as many channels reads them in its own encoding (vsm's (1, 1) is shadow to evsm2), so a
-    // switch between them, or of an exponent, gives the frame a fresh map gives, where casters
-    // moved away from a tile as well.
+    // A moments map keeps the far plane's moments where nothing was drawn (zeros with coverage);
+    // another technique of as many channels reads them in its own encoding (msm's far plane is
+    // no evsm4 moment, and four moments without coverage are none of vsm's), so a switch between
+    // them, or of an exponent, gives the frame a fresh map gives, where casters moved away from
+    // a tile as well.
     void switchingTheMomentEncodingKeepsFramesRight_data()
     {
         QTest::addColumn<QStringList>("first");
         QTest::addColumn<QStringList>("then");
         QTest::newRow("point: vsm, then evsm2") << QStringList{"light.type=point", "filter.mode=vsm"}
                                                 << QStringList{"light.type=point", "filter.mode=evsm2"};
+        QTest::newRow("point: msm, then vsm") << QStringList{"light.type=point", "filter.mode=msm"}
+                                              << QStringList{"light.type=point", "filter.mode=vsm"};
         QTest::newRow("cascades: msm, then evsm4") << QStringList{"shadow.cascades=4", "filter.mode=msm"}
                                                    << QStringList{"shadow.cascades=4", "filter.mode=evsm4"};
         QTest::newRow("cascades: esm c40, then c20") << QStringList{"shadow.cascades=4", "filter.mode=esm", "filter.exponent_positive=40"}

@@ -272,7 +272,8 @@ void DepthMapView::reportTexel(QPointF widgetPosition)
         return;
     }
     if (showsMoments()) {
-        // The moments as stored (after the blur), which the lit pass filters.
+        // The moments as stored (after the blur pass, where moments.blur_at runs one), which the
+        // lit pass filters.
         if (const auto m = readMoments(x, y))
             emit texelHovered(QStringLiteral("texel %1, %2 · moments %3, %4, %5, %6")
                                   .arg(x).arg(y).arg((*m)[0], 0, 'g', 5).arg((*m)[1], 0, 'g', 5).arg((*m)[2], 0, 'g', 5).arg((*m)[3], 0, 'g', 5));
