@@ -36,6 +36,24 @@ QString techniqueKey(const Settings& s)
     return shadowTechnique(s.filter.mode).key;
 }
 
+// What a moment technique leaves unread: the depth map's cures for acne, and where its blur runs.
+QString ignoredWithMoments(const Settings& s, const QString& key)
+{
+    if (key == u"moments.blur_at" && s.moments.blur <= 1)
+        return QStringLiteral("moments.blur=%1 blurs nothing; a width of 3 or more runs where this says.").arg(s.moments.blur);
+    if (key == u"moments.blur_at" && (s.moments.mipmaps || s.moments.anisotropy > 1))
+        return QStringLiteral("The blur runs as a pass over the map while moments.mipmaps is on or moments.anisotropy is above 1.");
+    if (key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage)
+        return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, floors too; "
+                              "vsm, evsm2 and esm leave floors out.")
+            .arg(techniqueKey(s));
+    if (key == u"bias.cull_front" || key == u"bias.polygon_factor" || key == u"bias.polygon_units" || key == u"bias.footprint" || key == u"bias.receiver_plane")
+        return QStringLiteral("%1 draws every face into a moments map with no offset and compares no depths: filter.moment_bias holds "
+                              "its acne off. Depth-compare filters read it.")
+            .arg(techniqueKey(s));
+    return {};
+}
+
 } // namespace
 
 QString ignoredBecause(const Settings& s, const QString& key)
@@ -55,19 +73,10 @@ QString ignoredBecause(const Settings& s, const QString& key)
     }
     if (key.startsWith(u"moments.") && !moments)
         return QStringLiteral("%1 stores depth, not moments; the moment filters (%2) read it.").arg(techniqueKey(s), momentTechniques().join(QStringLiteral(", ")));
-    if (moments && key == u"moments.blur_at" && s.moments.blur <= 1)
-        return QStringLiteral("moments.blur=%1 blurs nothing; a width of 3 or more runs where this says.").arg(s.moments.blur);
-    if (moments && key == u"moments.blur_at" && (s.moments.mipmaps || s.moments.anisotropy > 1))
-        return QStringLiteral("The blur runs as a pass over the map while moments.mipmaps is on or moments.anisotropy is above 1.");
-    if (moments && key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage)
-        return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, floors too; "
-                              "vsm, evsm2 and esm leave floors out.")
-            .arg(techniqueKey(s));
-    if (moments && (key == u"bias.cull_front" || key == u"bias.polygon_factor" || key == u"bias.polygon_units" || key == u"bias.footprint"
-                    || key == u"bias.receiver_plane"))
-        return QStringLiteral("%1 draws every face into a moments map with no offset and compares no depths: filter.moment_bias holds "
-                              "its acne off. Depth-compare filters read it.")
-            .arg(techniqueKey(s));
+    if (moments) {
+        if (const QString why = ignoredWithMoments(s, key); !why.isEmpty())
+            return why;
+    }
     if (key == u"bias.receiver_plane" && (s.filter.mode == FilterMode::Hard || s.filter.mode == FilterMode::HwBilinear))
         return QStringLiteral("%1 takes one lookup, with no taps to place on the receiver's plane; the wide filters (pcf, poisson, pcss, …) read it.")
             .arg(techniqueKey(s));

@@ -9,24 +9,22 @@
 namespace shadowlab {
 
 // The moments texture of the moment techniques (vsm, evsm, msm, esm) and what renders into it:
-// a colour texture of the technique's one, two or four channels (R, RG or RGBA), 16- or 32-bit
-// float, with a depth texture for the moments pass, a second colour texture of the same format
-// for the blur's first axis, and the filtered sampler the lit pass reads it through (bilinear;
-// trilinear with mipmaps; anisotropic where asked and offered).
+// a colour texture of the technique's one, two or four channels (R, RG or RGBA; three take
+// RGBA), 16- or 32-bit float, with a depth texture for the moments pass, a second colour texture
+// of the same format for the blur pass's first axis (only while a blur pass runs), and the
+// filtered sampler the lit pass reads it through (bilinear; trilinear with mipmaps; anisotropic
+// where asked and offered).
 class MomentsMap {
 public:
     explicit MomentsMap(GlFunctions* gl);
 
     // (Re)allocates when size, tiles, format or mipmaps differ and sets the sampler's
     // anisotropy. `columns` x `rows` tiles of `size` texels side by side hold several views
-    // (cascades, cube faces), as ShadowMap's tiles do. Throws SettingsError when the texture
+    // (cascades, cube faces), as ShadowMap's tiles do. The blur's scratch texture exists while
+    // `blurPass` says a blur pass runs (moments.blur_at). Throws SettingsError when the texture
     // would exceed GL_MAX_TEXTURE_SIZE and RenderError when the driver cannot allocate or render
     // to it; the previous map is kept then.
-    void ensure(int size, MomentFormat format, int channels, bool mipmaps, int anisotropy)
-    {
-        ensureTiles(size, 1, 1, format, channels, mipmaps, anisotropy);
-    }
-    void ensureTiles(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps, int anisotropy);
+    void ensureTiles(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps, int anisotropy, bool blurPass);
 
     int size() const { return m_size; }             // texels per side of one tile
     int width() const { return m_size * m_columns; }
@@ -35,8 +33,8 @@ public:
     int rows() const { return m_rows; }
     MomentFormat format() const { return m_format; }
     int channels() const { return m_channels; }
-    // Its memory in bytes with `channels` a texel: the moments with their mips, the blur's
-    // scratch and the pass's depth.
+    // Its memory in bytes with `channels` a texel: the moments with their mips, the pass's depth
+    // and the blur's scratch where it exists.
     qint64 bytes(int channels) const;
     // Which texels draws since their clear may have written (the far plane's moments elsewhere).
     WrittenTexels& written() { return m_written; }
@@ -55,7 +53,7 @@ public:
     GLuint texture() const { return m_texture.id(); }
     GLuint depthTexture() const { return m_depth.id(); }
     GLuint framebuffer() const { return m_framebuffer.id(); }
-    // The blur's intermediate target (first axis), and its framebuffer.
+    // The blur's intermediate target (first axis), and its framebuffer: 0 while no blur pass runs.
     GLuint scratchTexture() const { return m_scratch.id(); }
     GLuint scratchFramebuffer() const { return m_scratchFramebuffer.id(); }
     GLuint sampler() const { return m_sampler.id(); }
@@ -63,6 +61,8 @@ public:
 private:
     void allocate(int size, int columns, int rows, MomentFormat format, int channels, bool mipmaps);
     void configureSampler(bool mipmaps, float anisotropy);
+    // Makes the blur's scratch texture and framebuffer where `wanted`, frees them where not.
+    void ensureScratch(bool wanted);
 
     GlFunctions* m_gl;
     GlTexture m_texture;

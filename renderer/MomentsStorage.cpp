@@ -29,7 +29,7 @@ public:
         m_channels = plan.technique->momentChannels == 3 ? 4 : plan.technique->momentChannels;     // RGB takes RGBA
         m_pass.clearWrittenOnly(plan.tuning.clearsWrittenMoments);
         m_map.ensureTiles(plan.tileSize, plan.grid.columns, plan.grid.rows, settings.moments.format, storedChannels(plan), settings.moments.mipmaps,
-                          settings.moments.anisotropy);
+                          settings.moments.anisotropy, mapBlurWidth(settings) > 1);
         // The copy holds the moments before the blur, with the pass's depth, so the moving
         // casters are drawn over it as over the still ones, and the blur runs after both.
         if (keepsViews(plan.cache))

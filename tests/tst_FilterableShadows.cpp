@@ -366,7 +366,7 @@ private slots:
     // weights have 8 bits of fraction, llvmpipe's more); four moments without it (the ground in
     // their map, a reconstruction that rounding moves where it is ill-conditioned) differ in a
     // handful of pixels at most, as do 16-bit moments, which the pass rounds after blurring and
-    // the lookup before.
+    // the lookup before. Without a blur pass the map holds no texture for its first axis.
     void lookupBlurMatchesTheBlurPass_data()
     {
         QTest::addColumn<QString>("technique");
@@ -390,8 +390,10 @@ private slots:
         const QStringList common = QStringList{"filter.mode=" + technique, QString("moments.blur=%1").arg(blur), "map.size=256", "filter.bleeding=0"} + more;
         const VisibilityBuffer pass = r.renderVisibility(with("seed", common + QStringList{"moments.blur_at=map"}), kSize);
         QVERIFY(r.lastFrame().counts.blurTexels > 0);
+        QVERIFY(r.momentsMap()->scratchTexture() != 0);
         const VisibilityBuffer lookup = r.renderVisibility(with("seed", common + QStringList{"moments.blur_at=lookup"}), kSize);
         QCOMPARE(r.lastFrame().counts.blurTexels, std::int64_t(0));
+        QCOMPARE(r.momentsMap()->scratchTexture(), GLuint(0));      // no blur pass: no texture for its first axis
         QCOMPARE(r.lastPlan().tapsPerLookup, (blur + 1) * (blur + 1) / 4);
         const VisibilityBuffer sharp = r.renderVisibility(with("seed", common + QStringList{"moments.blur=0"}), kSize);
         int counted = 0, differing = 0, blurred = 0;

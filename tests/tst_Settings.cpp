@@ -72,6 +72,15 @@ private Q_SLOTS:
         applySetting(s, "filter.mode", "msm");
         QVERIFY(ignoredBecause(s, "moments.blur").isEmpty());
         QVERIFY(ignoredBecause(s, "bias.cull_front").contains("filter.moment_bias"));
+        QVERIFY(ignoredBecause(s, "bias.skip_floors").contains("no coverage"));     // four moments: every receiver in the map
+        QVERIFY(ignoredBecause(s, "moments.blur_at").isEmpty());
+        applySetting(s, "filter.mode", "vsm");
+        QVERIFY(ignoredBecause(s, "bias.skip_floors").isEmpty());                  // coverage: floors stay out
+        applySetting(s, "moments.mipmaps", "true");
+        QVERIFY(ignoredBecause(s, "moments.blur_at").contains("moments.mipmaps"));
+        applySetting(s, "moments.mipmaps", "false");
+        applySetting(s, "moments.blur", "0");
+        QVERIFY(ignoredBecause(s, "moments.blur_at").contains("blurs nothing"));
         applySetting(s, "light.type", "point");
         QVERIFY(ignoredBecause(s, "shadow.cascades").contains("six cube faces"));
         QVERIFY(!ignoredBecause(s, "shadow.virtual_pool").isEmpty());
