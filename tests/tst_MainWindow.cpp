@@ -11,6 +11,7 @@
 #include "HeadlessTestMain.h"
 #include "Loupe.h"
 #include "MainWindow.h"
+#include "MomentMath.h"
 #include "OrbitCamera.h"
 #include "PropertiesDock.h"
 #include "PropertyFields.h"
@@ -872,6 +873,9 @@ void tst_MainWindow::captionsSayWhatTheMapIs()
     ensureValid(settings);
     QCOMPARE(shadowMapSummary(settings), depthPane);
     QVERIFY2(settingsSummary(settings).contains(QStringLiteral(" · ") + scenePane), qPrintable(settingsSummary(settings)));
+    // A moments map draws every face: its caption does not say front faces are culled.
+    QVERIFY2(settingsSummary(settings).contains(QStringLiteral("front faces culled")) == (settings.bias.cullFront && !isMomentTechnique(settings.filter.mode)),
+             qPrintable(settingsSummary(settings)));
     m_window->setSettings(Side::A, settings);
     QVERIFY(settle(*m_window));
     bool shown = false;

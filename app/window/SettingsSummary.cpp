@@ -39,9 +39,11 @@ QString settingsSummary(const Settings& settings)
                        .arg(settings.bias.slope, 0, 'g', 3)     // a caption, not the value: the dock has it whole
                        .arg(settings.bias.min, 0, 'g', 3)
                        .arg(mapLayoutSummary(settings));
-    if (settings.bias.cullFront)
+    // A moments map draws every face with no offset (MomentsPass): neither applies to it.
+    const bool depthMap = !isMomentTechnique(settings.filter.mode);
+    if (depthMap && settings.bias.cullFront)
         text += QStringLiteral(" · front faces culled");
-    if (settings.bias.polygonFactor != 0.0 || settings.bias.polygonUnits != 0.0)
+    if (depthMap && (settings.bias.polygonFactor != 0.0 || settings.bias.polygonUnits != 0.0))
         text += QStringLiteral(" · offset %1, %2").arg(settings.bias.polygonFactor, 0, 'g', 3).arg(settings.bias.polygonUnits, 0, 'g', 4);
     return text;
 }
