@@ -25,7 +25,8 @@ FramePlan planFrame(const Settings& settings, bool softwareDriver, bool reversed
     plan.contactShadows = plan.shadows && settings.contact.enabled;
     plan.visibleDepth = usesVisibleDepth(settings);
     plan.tapsPerLookup = plan.shadows ? plan.technique->taps(settings.filter) : 0;
-    if (const int radius = plan.moments ? lookupBlurRadius(settings) : 0)
+    plan.lookupBlurRadius = plan.shadows && plan.moments ? lookupBlurRadius(settings) : 0;
+    if (const int radius = plan.lookupBlurRadius)
         plan.tapsPerLookup = (radius + 1) * (radius + 1);       // the blur's bilinear reads (moments_common.glsl)
     plan.cache = plan.shadows ? settings.shadow.cache : ShadowCachePolicy::Off;
     return plan;

@@ -29,6 +29,7 @@ struct FramePlan {
     bool contactShadows = false;    // the lit pass marches over the camera's depth
     bool visibleDepth = false;      // sdsm cascades split the depth range the fitting camera draws
     int tapsPerLookup = 0;          // the technique's taps, 0 without shadows
+    int lookupBlurRadius = 0;       // moments blurred in the lookup (moments.blur_at): its radius; 0 none
     ShadowCachePolicy cache = ShadowCachePolicy::Off;  // shadow.cache, off without shadows
     RasteriserTuning tuning;
 };

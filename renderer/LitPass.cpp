@@ -67,8 +67,8 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
     const ShadowTechnique& technique = *plan.technique;
     if (lookups) {
         defines << QStringLiteral("SHADOW_TECHNIQUE \"%1\"").arg(technique.shaderFile) << technique.defines(settings);
-        if (const int radius = plan.moments ? lookupBlurRadius(settings) : 0)
-            defines << QStringLiteral("MOMENTS_LOOKUP_BLUR %1").arg(radius);
+        if (plan.lookupBlurRadius > 0)
+            defines << QStringLiteral("MOMENTS_LOOKUP_BLUR %1").arg(plan.lookupBlurRadius);
     } else
         defines << QStringLiteral("SHADOW_TECHNIQUE \"shadow_unreached.glsl\"") << QStringLiteral("OUT_OF_REACH");
     if (plan.shadows)
