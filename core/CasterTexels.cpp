@@ -113,8 +113,43 @@ CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector
         if (rect.isEmpty())
             continue;
         result.drawn |= rect;
+        result.pieces.push_back(rect);
     }
     return result;
+}
+
+void CasterTexels::add(const CasterTexels& other)
+{
+    drawn |= other.drawn;
+    pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
+}
+
+std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most)
+{
+    const QRect bounds = texels.drawn.adjusted(-margin, -margin, margin, margin) & within;
+    // Merging is quadratic in the pieces, and many are their bounds anyway.
+    if (bounds.isEmpty() || texels.pieces.size() > 4 * most)
+        return bounds.isEmpty() ? std::vector<QRect>{} : std::vector<QRect>{bounds};
+    std::vector<QRect> pieces;
+    for (const QRect& piece : texels.pieces) {
+        QRect grown = piece.adjusted(-margin, -margin, margin, margin) & within;
+        if (grown.isEmpty())
+            continue;
+        // Whatever it overlaps joins it, and the joined piece may overlap more.
+        for (bool merged = true; merged;) {
+            merged = false;
+            for (auto it = pieces.begin(); it != pieces.end(); ++it) {
+                if (it->intersects(grown)) {
+                    grown |= *it;
+                    pieces.erase(it);
+                    merged = true;
+                    break;
+                }
+            }
+        }
+        pieces.push_back(grown);
+    }
+    return pieces.size() > most ? std::vector<QRect>{bounds} : pieces;
 }
 
 QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera, const Bounds& receivers, double margin)

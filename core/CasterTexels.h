@@ -23,9 +23,19 @@ struct CasterTexels {
     // of the view's own square [0, mapSize)²; empty: nothing. Outside it a moments map holds
     // the far plane's moments, a constant its blur leaves as it is.
     QRect drawn;
+    // Each caster's own rectangle, whose bounds `drawn` is.
+    std::vector<QRect> pieces;
+
+    void add(const CasterTexels& other);
 };
 
 CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
+
+// The casters' rectangles grown by `margin` texels and cut to `within`, those that overlap
+// merged into their bounds, so that no texel is in two: where a pass draws what matters only
+// near a caster (renderer/MomentsPass.h's floors around casters). More than `most` left: their
+// bounds, one rectangle.
+std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most);
 
 // Which texels of one view's map the camera's pixels may read: the image of the camera's
 // frustum cut to `receivers` (the box around every receiver), grown by `margin` texels for

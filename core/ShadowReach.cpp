@@ -122,7 +122,7 @@ std::optional<double> tapReachTexels(const Settings& settings)
 {
     const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
     std::optional<double> reach = technique.tapReach(settings.filter);
-    if (technique.coverage && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
+    if (technique.map == ShadowMapKind::Moments && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
         reach = double(std::max(settings.moments.blur - 1, 0) / 2);     // its blur, in the map or the lookup
     if (!reach)
         return std::nullopt;

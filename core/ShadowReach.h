@@ -21,13 +21,14 @@ namespace shadowlab {
 
 // How far from the lookup point, in texels of the map, the taps of `settings`' filter read,
 // with a margin for rounding; nullopt where the filter may read anywhere in the map (pcss's
-// blocker search, a mip or an anisotropic footprint of moments) or reads lit only
-// approximately where nothing was drawn (moments without coverage: evsm4, msm). Moments with
-// coverage read exactly lit where no caster is, within the blur's radius of their texel.
+// blocker search, a mip or an anisotropic footprint of moments). Moments read within the blur's
+// radius of their texel: beyond it from any caster they read lit (exactly with coverage; to
+// within their bias from a floor's own moments or the far plane's without), which a lookup
+// skipped reads exactly.
 std::optional<double> tapReachTexels(const Settings& settings);
 // How far from the point a pixel shades, in texels of `view`'s map, its lookup may read: the
 // taps' reach and the shifts of the normal offset and the footprint bias; nullopt where it may
-// read anywhere (as tapReachTexels: pcss's blocker search, moments without coverage; a normal
+// read anywhere (as tapReachTexels: pcss's blocker search, mipmapped moments; a normal
 // offset off a perspective view, or an offset on a warped one, whose shift has no small bound).
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view);
 // Whether every tap of `settings` compares a reference no deeper than the receiver itself, so

@@ -143,7 +143,7 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
         for (std::size_t v = 0; v < m_views.frames.size(); ++v) {
             CasterTexels texels = m_stillTexels[v];
             if (!moving.empty())
-                texels.drawn |= shadowlab::casterTexels(m_views.frames[v], settings.map.size, moving).drawn;
+                texels.add(shadowlab::casterTexels(m_views.frames[v], settings.map.size, moving));
             m_casterTexels.push_back(texels);
         }
         // The reach is the software profile's (RasteriserTuning::skipsOutOfReach): found over

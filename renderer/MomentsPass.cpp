@@ -4,6 +4,7 @@
 #include "PassState.h"
 #include "SceneLayout.h"
 #include "SettingsKeys.h"
+#include "ShadowReach.h"
 #include "ShadowTechnique.h"
 
 namespace shadowlab {
@@ -39,6 +40,11 @@ QStringList MomentsPass::variantDefines(const Settings& settings, bool perspecti
 bool MomentsPass::leavesOutFloors(const Settings& settings)
 {
     return shadowTechnique(settings.filter.mode).coverage && settings.bias.skipFloors;
+}
+
+bool MomentsPass::drawsFloorsAroundCasters(const Settings& settings)
+{
+    return !shadowTechnique(settings.filter.mode).coverage && settings.bias.skipFloors && tapReachTexels(settings).has_value();
 }
 
 MomentsPass::Program& MomentsPass::program(const LightFrame& light, const Settings& settings, bool cutout)
@@ -78,16 +84,15 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     setLightUniforms(*p, light, settings);
     if (clear.isEmpty())
         return *p;      // drawn over what is there
-    // The far plane's moments, computed by the technique's own encoding: drawn over what is
-    // cleared, or, over a whole map, cleared to the value that drawing gave last time (a
-    // rasteriser clears a whole surface fastest: docs/performance.md).
-    // Coverage makes them zeros, cleared anywhere without drawing.
+    // The far plane's moments, computed by the technique's own encoding: drawn the first time,
+    // then cleared to the value that drawing gave (a rasteriser clears a whole surface fastest:
+    // docs/performance.md). Coverage makes them zeros.
     const QString key = encoding(light, settings);
     const bool whole = clear == QRect(0, 0, map.width(), map.height());
     const bool zeros = shadowTechnique(settings.filter.mode).coverage;
     const auto known = m_farMoments.find(key);
     m_gl->glClearDepth(1.0);
-    if (zeros || (whole && known != m_farMoments.end())) {
+    if (zeros || known != m_farMoments.end()) {
         const std::array<GLfloat, 4> value = zeros ? std::array<GLfloat, 4>{} : known->second;
         if (!whole) {
             m_gl->glEnable(GL_SCISSOR_TEST);
@@ -106,11 +111,9 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
         m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
         p->program.set(p->farPlane, 0);
         m_gl->glDisable(GL_SCISSOR_TEST);
-        if (whole) {
-            std::array<GLfloat, 4> value{};
-            m_gl->glReadPixels(clear.x(), clear.y(), 1, 1, GL_RGBA, GL_FLOAT, value.data());
-            m_farMoments.emplace(key, value);
-        }
+        std::array<GLfloat, 4> value{};
+        m_gl->glReadPixels(clear.x(), clear.y(), 1, 1, GL_RGBA, GL_FLOAT, value.data());
+        m_farMoments.emplace(key, value);
     }
     map.written().cleared(clear);
     return *p;
@@ -134,7 +137,7 @@ void MomentsPass::clear(const LightFrame& light, const Settings& settings, Momen
 }
 
 int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile,
-                        const std::optional<QRect>& drawn, CasterSet casters, bool clear)
+                        const Area& within, CasterSet casters, bool clear)
 {
     // Every face: without coverage the moments must hold the nearest surface, receivers
     // included, so a lit receiver's filtered footprint is its own depth (front-face culling,
@@ -143,19 +146,19 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     const bool floorsOut = leavesOutFloors(settings);
     map.encodedBy(encoding(light, settings));
     const QRect whole = tile.isEmpty() ? QRect(0, 0, map.width(), map.height()) : tile;
-    const QRect area = drawn.value_or(whole) & whole;
-    // A map of one view is cleared whole (a GPU's fast clear), a tile of several, or a map of
-    // coverage under RasteriserTuning::clearsWrittenMoments, only where it was or will be
-    // written (without coverage the floors cover the map anyway).
+    const QRect area = within.drawn.value_or(whole) & whole;
+    // A map of one view is cleared whole (a GPU's fast clear), a tile of several, or a map drawn
+    // in part under RasteriserTuning::clearsWrittenMoments, only where it was or will be written.
     const bool oneView = whole == QRect(0, 0, map.width(), map.height());
-    const bool clearsWhole = oneView && !(m_clearsWritten && shadowTechnique(settings.filter.mode).coverage);
+    const bool clearsWhole = oneView && !(m_clearsWritten && area != whole);
     Program& plain = begin(light, settings, map, !clear ? QRect() : clearsWhole ? whole : map.written().toClear(whole, area));
     PassState state;
     state.viewport = whole;
     state.depthTest = true;
     state.depthClamp = true;    // casters before the fitted near plane still cast, as in the depth pass
     applyPassState(m_gl, state);
-    if (!oneView || area != whole) {
+    const bool scissored = !oneView || area != whole;
+    if (scissored) {
         m_gl->glEnable(GL_SCISSOR_TEST);
         m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
     }
@@ -184,6 +187,22 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
         if (cutout) {
             p.program.set(p.alphaCutoff, item.alphaCutoff);
             m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
+        }
+        if (!within.floors.empty() && shadowsNothing(item, light)) {
+            // A floor only around the casters, once in each piece.
+            m_gl->glEnable(GL_SCISSOR_TEST);
+            for (const QRect& piece : within.floors) {
+                const QRect cut = piece & area;
+                if (cut.isEmpty())
+                    continue;
+                m_gl->glScissor(cut.x(), cut.y(), cut.width(), cut.height());
+                scene.draw(item, false);
+                ++draws;
+            }
+            m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+            if (!scissored)
+                m_gl->glDisable(GL_SCISSOR_TEST);
+            continue;
         }
         scene.draw(item, false);
         ++draws;

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace shadowlab {
 
@@ -27,19 +28,27 @@ class MomentsPass {
 public:
     explicit MomentsPass(GlFunctions* gl);
 
+    // Where in a tile the pass draws (core/CasterTexels.h), in texels of the map.
+    struct Area {
+        std::optional<QRect> drawn;     // around the casters; nullopt: anywhere
+        // Where floors drawn only around the casters go (drawsFloorsAroundCasters), within `drawn`;
+        // empty: floors as every other caster.
+        std::vector<QRect> floors;
+    };
+
     // Returns the number of caster draw calls. `settings.filter.mode` must be a moment technique.
-    // Into `tile` of the map (texels; empty: the whole map), for one view of several, where the
-    // casters cover `drawn` of it (core/CasterTexels.h; nullopt: anywhere): what earlier draws
-    // wrote there and `drawn` get the far plane's moments first, and the casters are drawn
-    // within `drawn` only. `casters`: only the still or the moving ones; `clear` false draws over
-    // what the tile holds (the moving casters over a cache's copy, renderer/ShadowCache.h).
+    // Into `tile` of the map (texels; empty: the whole map), for one view of several, within
+    // `area`: what earlier draws wrote there and `area.drawn` get the far plane's moments first,
+    // and the casters are drawn within `area.drawn` only. `casters`: only the still or the moving
+    // ones; `clear` false draws over what the tile holds (the moving casters over a cache's copy,
+    // renderer/ShadowCache.h).
     int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect(),
-               const std::optional<QRect>& drawn = std::nullopt, CasterSet casters = CasterSet::All, bool clear = true);
+               const Area& area = {}, CasterSet casters = CasterSet::All, bool clear = true);
     // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
     void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
 
-    // Whether a map of one view that stores coverage is cleared only where it was or will be
-    // written, not whole (RasteriserTuning::clearsWrittenMoments).
+    // Whether a map of one view drawn only in part (coverage, or floors around the casters) is
+    // cleared only where it was or will be written, not whole (RasteriserTuning::clearsWrittenMoments).
     void clearWrittenOnly(bool on) { m_clearsWritten = on; }
 
     // Texels cleared and filled with the far plane's moments since the last call.
@@ -50,6 +59,11 @@ public:
     // depth, for its footprint to read lit (the far plane behind it reads as a gap of light
     // to the exponential warps, and halves a caster's penumbra over it).
     static bool leavesOutFloors(const Settings& settings);
+    // Whether, without coverage (evsm4, msm), those floors are drawn only around the casters,
+    // where a lookup near one reads them: the lookups' reach is finite (core/ShadowReach.h), so
+    // a receiver beyond it is lit without a lookup, and a floor casts nothing. The pass is then
+    // as large as the casters' footprint, not the map (MomentsStorage's drawnArea).
+    static bool drawsFloorsAroundCasters(const Settings& settings);
 
     // The #defines of the variant for `settings` (exposed for tests).
     static QStringList variantDefines(const Settings& settings, bool perspective);

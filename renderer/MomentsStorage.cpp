@@ -1,14 +1,18 @@
 #include "ShadowStorage.h"
 
 #include "CachedCopy.h"
+#include "CasterTexels.h"
 #include "MomentMath.h"
 #include "MomentsBlurPass.h"
 #include "MomentsMap.h"
 #include "MomentsPass.h"
 #include "ShadowCache.h"
+#include "ShadowReach.h"
 #include "ShadowTechnique.h"
 
 #include <QElapsedTimer>
+
+#include <cmath>
 
 #include <utility>
 
@@ -56,7 +60,11 @@ public:
     }
 
     bool cullsFrontFaces(const FramePlan&) const override { return false; }
-    bool leavesOutFloors(const FramePlan& plan) const override { return MomentsPass::leavesOutFloors(plan.settings); }
+    // Floors cast nothing where they are left out or drawn only around the casters.
+    bool leavesOutFloors(const FramePlan& plan) const override
+    {
+        return MomentsPass::leavesOutFloors(plan.settings) || MomentsPass::drawsFloorsAroundCasters(plan.settings);
+    }
 
     void clear(const LightFrame& light, const FramePlan& plan, const QRect& tile) override
     {
@@ -67,8 +75,9 @@ public:
     int draw(const GpuScene& scene, const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels,
              double* blurWallMs) override
     {
-        const int draws = m_pass.render(scene, light, plan.settings, m_map, tile, inTile(texels, tile));
-        prefilter(plan, tile, texels, blurWallMs);
+        const MomentsPass::Area area = drawnArea(light, plan, tile, texels);
+        const int draws = m_pass.render(scene, light, plan.settings, m_map, tile, area);
+        prefilter(plan, tile, area.drawn, blurWallMs);
         return draws;
     }
 
@@ -76,9 +85,10 @@ public:
                           double* blurWallMs, CacheStep step, const std::vector<QRect>&) override
     {
         const Settings& settings = plan.settings;
+        const MomentsPass::Area area = drawnArea(light, plan, tile, texels);
         CachedDraw drawn;
         if (step == CacheStep::Refresh) {
-            drawn.draws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile), CasterSet::Still);
+            drawn.draws = m_pass.render(scene, light, settings, m_map, tile, area, CasterSet::Still);
             m_copy.save(m_map.framebuffer(), tile);
         } else {
             // The whole tile: the blur reads the still casters' moments unblurred around the
@@ -87,18 +97,45 @@ public:
             m_map.written().drew(tile);
         }
         m_counts.copiedTexels += qint64(tile.width()) * tile.height();
-        drawn.movingDraws = m_pass.render(scene, light, settings, m_map, tile, inTile(texels, tile), CasterSet::Moving, false);
+        drawn.movingDraws = m_pass.render(scene, light, settings, m_map, tile, area, CasterSet::Moving, false);
         drawn.draws += drawn.movingDraws;
         // The whole area blurred again: the moving casters' moments spread by the blur's radius,
         // and the still casters' must be read unblurred to blur the texels where both meet.
-        prefilter(plan, tile, texels, blurWallMs);
+        prefilter(plan, tile, area.drawn, blurWallMs);
         return drawn;
     }
 
     qint64 cacheBytes() const override { return m_copy.bytes(); }
 
 private:
-    void prefilter(const FramePlan& plan, const QRect& tile, const CasterTexels* texels, double* blurWallMs)
+    // Where in `tile` the pass draws: around its casters (core/CasterTexels.h), and, where floors
+    // are drawn only around them (MomentsPass::drawsFloorsAroundCasters), floors as far again
+    // around each caster as a lookup beside it reads: a receiver within its reach of one reads
+    // up to twice that from it. The rest holds the far plane's moments, which a receiver's
+    // footprint there, floors and far plane both behind it, reads as lit.
+    MomentsPass::Area drawnArea(const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels) const
+    {
+        const std::optional<QRect> casters = inTile(texels, tile);
+        if (!casters || casters->isEmpty() || !MomentsPass::drawsFloorsAroundCasters(plan.settings))
+            return {casters, {}};
+        const std::optional<double> reach = lookupReachTexels(plan.settings, light);
+        if (!reach)
+            return {};      // the whole tile, floors everywhere
+        const QRect whole = tile.isEmpty() ? QRect(0, 0, m_map.width(), m_map.height()) : tile;
+        CasterTexels inMap = *texels;
+        for (QRect& piece : inMap.pieces)
+            piece.translate(whole.topLeft());
+        inMap.drawn = *casters;
+        // A floor draw a piece: a few, or their bounds.
+        constexpr std::size_t kMostFloorPieces = 8;
+        MomentsPass::Area area;
+        area.floors = aroundCasters(inMap, int(std::ceil(2.0 * *reach)), whole, kMostFloorPieces);
+        for (const QRect& piece : area.floors)
+            area.drawn = area.drawn.value_or(piece) | piece;
+        return area;
+    }
+
+    void prefilter(const FramePlan& plan, const QRect& tile, const std::optional<QRect>& area, double* blurWallMs)
     {
         const Settings& settings = plan.settings;
         // The view's moments blurred within its tile, and the mips of a map of one view (those
@@ -109,7 +146,7 @@ private:
             blur.start();
         }
         const int width = mapBlurWidth(settings);
-        m_blur.render(m_map, width, tile, inTile(texels, tile));
+        m_blur.render(m_map, width, tile, area);
         m_map.written().drew(m_blur.lastWritten());     // the blur spreads the casters by its radius
         countBlur(width);
         if (blurWallMs) {

@@ -29,7 +29,8 @@ struct RasteriserTuning {
     bool wideTwoChannelMoments = false;
     // A moments map of one view cleared only where its last passes wrote, not whole: llvmpipe
     // clears a surface texel by texel, where a GPU clears a whole one fastest. Pays where the
-    // casters cover less than the map: with coverage (vsm, evsm2, esm), which leaves floors out.
+    // casters cover less than the map: with coverage (vsm, evsm2, esm), which leaves floors out,
+    // and for evsm4 and msm, which draw them only around the casters.
     bool clearsWrittenMoments = false;
     // A virtual map's page requests deduplicated on the CPU from the read-back, rather than by a
     // point per requesting pixel on the GPU, which costs a software rasteriser six times as much.

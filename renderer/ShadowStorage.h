@@ -88,7 +88,9 @@ public:
     // Whether the pass drawing `plan` culls front faces (bias.cull_front): where a flat
     // one-sided caster facing the light then casts nothing (core/ShadowReach.h).
     virtual bool cullsFrontFaces(const FramePlan& plan) const = 0;
-    // Whether it leaves out floors the light is above (bias.skip_floors): the same for a floor.
+    // Whether floors the light is above cast nothing (bias.skip_floors): the same for a floor.
+    // A depth map leaves them out; a moments map leaves them out or draws them only around its
+    // casters (renderer/MomentsPass.h).
     virtual bool leavesOutFloors(const FramePlan& plan) const = 0;
     // The whole map read lit (every tile), or one view's `tile` of it.
     virtual void clear(const LightFrame& light, const FramePlan& plan, const QRect& tile = QRect()) = 0;

@@ -526,6 +526,40 @@ private slots:
         QVERIFY(seen({0.0, 0.5, 30.0}, {0.0, 0.5, 60.0}, 3.0).isEmpty());
     }
 
+    // Floors drawn only around the casters (evsm4, msm): each caster's rectangle grown, cut to the
+    // tile, those that overlap joined, so that no floor texel is drawn twice and none near a
+    // caster is missed; past a few pieces, their bounds.
+    void floorsGoAroundEachCaster()
+    {
+        CasterTexels texels;
+        for (const QRect& r : {QRect(10, 10, 20, 20), QRect(40, 12, 10, 10), QRect(200, 200, 30, 30), QRect(250, 0, 6, 6)})
+            texels.add({.drawn = r, .pieces = {r}});
+        const QRect tile(0, 0, 256, 256);
+        const std::vector<QRect> pieces = aroundCasters(texels, 8, tile, 8);
+        // The first two are 10 texels apart: grown by 8 each, they join.
+        QCOMPARE(int(pieces.size()), 3);
+        std::int64_t area = 0;
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            QVERIFY(tile.contains(pieces[i]));
+            area += std::int64_t(pieces[i].width()) * pieces[i].height();
+            for (std::size_t j = i + 1; j < pieces.size(); ++j)
+                QVERIFY(!pieces[i].intersects(pieces[j]));
+        }
+        for (const QRect& piece : texels.pieces) {
+            const QRect grown = piece.adjusted(-8, -8, 8, 8) & tile;
+            QVERIFY(std::any_of(pieces.begin(), pieces.end(), [&](const QRect& p) { return p.contains(grown); }));
+        }
+        const QRect bounds = texels.drawn.adjusted(-8, -8, 8, 8) & tile;
+        QVERIFY(area * 3 < std::int64_t(bounds.width()) * bounds.height());
+        // A grown piece that bridges two joined ones joins them all.
+        CasterTexels chain = texels;
+        chain.add({.drawn = QRect(30, 30, 170, 170), .pieces = {QRect(30, 30, 170, 170)}});
+        QCOMPARE(int(aroundCasters(chain, 8, tile, 8).size()), 2);
+        // Too many pieces: one rectangle, their bounds.
+        QCOMPARE(aroundCasters(texels, 8, tile, 2), std::vector<QRect>{bounds});
+        QVERIFY(aroundCasters(CasterTexels{}, 8, tile, 8).empty());
+    }
+
     void movedCastersTouchTheirPages()
     {
         LightSettings light;
