@@ -124,32 +124,43 @@ void CasterTexels::add(const CasterTexels& other)
     pieces.insert(pieces.end(), other.pieces.begin(), other.pieces.end());
 }
 
-std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most)
+std::vector<QRect> joinOverlapping(const std::vector<QRect>& rects, std::size_t most)
 {
-    const QRect bounds = texels.drawn.adjusted(-margin, -margin, margin, margin) & within;
-    // Merging is quadratic in the pieces, and many are their bounds anyway.
-    if (bounds.isEmpty() || texels.pieces.size() > 4 * most)
-        return bounds.isEmpty() ? std::vector<QRect>{} : std::vector<QRect>{bounds};
-    std::vector<QRect> pieces;
-    for (const QRect& piece : texels.pieces) {
-        QRect grown = piece.adjusted(-margin, -margin, margin, margin) & within;
-        if (grown.isEmpty())
+    QRect bounds;
+    for (const QRect& r : rects)
+        bounds |= r;
+    if (bounds.isEmpty())
+        return {};
+    if (rects.size() > 4 * most)
+        return {bounds};
+    std::vector<QRect> joined;
+    for (QRect r : rects) {
+        if (r.isEmpty())
             continue;
-        // Whatever it overlaps joins it, and the joined piece may overlap more.
+        // Whatever it overlaps joins it, and the joined rectangle may overlap more.
         for (bool merged = true; merged;) {
             merged = false;
-            for (auto it = pieces.begin(); it != pieces.end(); ++it) {
-                if (it->intersects(grown)) {
-                    grown |= *it;
-                    pieces.erase(it);
+            for (auto it = joined.begin(); it != joined.end(); ++it) {
+                if (it->intersects(r)) {
+                    r |= *it;
+                    joined.erase(it);
                     merged = true;
                     break;
                 }
             }
         }
-        pieces.push_back(grown);
+        joined.push_back(r);
     }
-    return pieces.size() > most ? std::vector<QRect>{bounds} : pieces;
+    return joined.size() > most ? std::vector<QRect>{bounds} : joined;
+}
+
+std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most)
+{
+    std::vector<QRect> grown;
+    grown.reserve(texels.pieces.size());
+    for (const QRect& piece : texels.pieces)
+        grown.push_back(piece.adjusted(-margin, -margin, margin, margin) & within);
+    return joinOverlapping(grown, most);
 }
 
 QRect readTexels(const LightFrame& view, int mapSize, const CameraFrame& camera, const Bounds& receivers, double margin)

@@ -31,10 +31,14 @@ struct CasterTexels {
 
 CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
 
-// The casters' rectangles grown by `margin` texels and cut to `within`, those that overlap
-// merged into their bounds, so that no texel is in two: where a pass draws what matters only
-// near a caster (renderer/MomentsPass.h's floors around casters). More than `most` left: their
-// bounds, one rectangle.
+// `rects` with those that overlap merged into their bounds, until none do, so that no texel is
+// in two; more than `most` left, or more than four times as many given (the merging is
+// quadratic): their bounds, one rectangle. Empty ones are dropped.
+std::vector<QRect> joinOverlapping(const std::vector<QRect>& rects, std::size_t most);
+
+// The casters' rectangles grown by `margin` texels, cut to `within` and joined where they
+// overlap (joinOverlapping): where a pass draws, clears and, for a moments map without
+// coverage, draws floors (renderer/MomentsPass.h).
 std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most);
 
 // Which texels of one view's map the camera's pixels may read: the image of the camera's

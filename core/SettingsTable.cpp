@@ -535,7 +535,7 @@ std::vector<Entry> makeEntries()
                                            .help = "Which rasteriser the renderer's optimisations are chosen for: software (a CPU rasteriser such as llvmpipe, "
                                                    "where clears and bandwidth cost what casters do: the shadow reach's stencil masks, depth slices, "
                                                    "two moments in RGBA, a virtual map's requests read back whole), hardware (a GPU: the plain path), or auto "
-                                                   "(from the driver's GL_RENDERER). The same pixels under each; only what a frame costs differs",
+                                                   "(from the driver's GL_RENDERER). The same pixels under each (msm's to within a quarter of a step); only what a frame costs differs",
                                            .look = {.label = QStringLiteral("Profile"), .group = kRasteriser}},
                                           kRasteriserNames,
                                           [](auto& s) -> auto& { return s.rasteriser.profile; }));

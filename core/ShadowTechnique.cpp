@@ -132,6 +132,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .describe = plainLabel("msm"),
         .sweep = {momentVariation(QStringLiteral("msm"), QStringLiteral("msm")),
             momentVariation(QStringLiteral("msm 16-bit"), QStringLiteral("msm"), {QStringLiteral("moments.format=16")})},
+        .litToItsBias = true,
     });
     t.push_back({
         .mode = FilterMode::MsmHausdorff,
@@ -149,6 +150,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .describe = plainLabel("msm-hausdorff"),
         .sweep = {momentVariation(QStringLiteral("msm-hausdorff"), QStringLiteral("msm-hausdorff")),
             momentVariation(QStringLiteral("msm-hausdorff 16-bit"), QStringLiteral("msm-hausdorff"), {QStringLiteral("moments.format=16")})},
+        .litToItsBias = true,
     });
     t.push_back({
         .mode = FilterMode::Esm,

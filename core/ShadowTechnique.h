@@ -106,6 +106,12 @@ struct ShadowTechnique {
     // Whether every tap compares against the receiver's own depth (biased), never a depth grown
     // away from the light along the receiver's plane or with the tap's distance.
     std::function<bool(const Settings&)> referencesStayNearer = [](const Settings&) { return false; };
+    // Whether a receiver whose footprint holds no caster reads lit only to within
+    // filter.moment_bias: msm's bias blends the moments toward a distribution with that share
+    // half at depth 0, in front of every receiver. The software profile's reach, which skips
+    // such a receiver's lookup (core/ShadowReach.h), then shades it exactly lit, where the
+    // lookup gives 1 - bias / 2 or so: less than a step of an 8-bit pixel.
+    bool litToItsBias = false;
 };
 
 // What a storage of the light's views (renderer/ShadowStorage.h draws them) cannot do with

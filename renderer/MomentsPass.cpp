@@ -119,6 +119,14 @@ MomentsPass::Program& MomentsPass::begin(const LightFrame& light, const Settings
     return *p;
 }
 
+MomentsPass::Program& MomentsPass::clearFirst(const LightFrame& light, const Settings& settings, MomentsMap& map, const std::vector<QRect>& rects)
+{
+    Program* p = &begin(light, settings, map, rects.empty() ? QRect() : rects.front());
+    for (std::size_t i = 1; i < rects.size(); ++i)
+        p = &begin(light, settings, map, rects[i]);
+    return *p;
+}
+
 void MomentsPass::clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile)
 {
     map.encodedBy(encoding(light, settings));
@@ -151,7 +159,11 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
     // in part under RasteriserTuning::clearsWrittenMoments, only where it was or will be written.
     const bool oneView = whole == QRect(0, 0, map.width(), map.height());
     const bool clearsWhole = oneView && !(m_clearsWritten && area != whole);
-    Program& plain = begin(light, settings, map, !clear ? QRect() : clearsWhole ? whole : map.written().toClear(whole, area));
+    const std::vector<QRect> pieces = within.pieces.empty() ? std::vector<QRect>{area} : within.pieces;
+    Program& plain = clearFirst(light, settings, map, !clear ? std::vector<QRect>{} : clearsWhole ? std::vector<QRect>{whole}
+                                                                                               : map.written().piecesToClear(whole, pieces, kMostPieces));
+    if (clear && !clearsWhole)
+        map.written().clearedPieces(whole);
     PassState state;
     state.viewport = whole;
     state.depthTest = true;
@@ -162,7 +174,8 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
         m_gl->glEnable(GL_SCISSOR_TEST);
         m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
     }
-    map.written().drew(area);
+    for (const QRect& piece : pieces)
+        map.written().drew(piece & area);
     Program* cutoutProgram = nullptr;    // set up on the first cut-out caster
     Program* bound = &plain;
     m_gl->glActiveTexture(GL_TEXTURE0);
@@ -188,10 +201,10 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
             p.program.set(p.alphaCutoff, item.alphaCutoff);
             m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
         }
-        if (!within.floors.empty() && shadowsNothing(item, light)) {
+        if (within.floorsInPieces && shadowsNothing(item, light)) {
             // A floor only around the casters, once in each piece.
             m_gl->glEnable(GL_SCISSOR_TEST);
-            for (const QRect& piece : within.floors) {
+            for (const QRect& piece : pieces) {
                 const QRect cut = piece & area;
                 if (cut.isEmpty())
                     continue;

@@ -31,19 +31,24 @@ public:
     // Where in a tile the pass draws (core/CasterTexels.h), in texels of the map.
     struct Area {
         std::optional<QRect> drawn;     // around the casters; nullopt: anywhere
-        // Where floors drawn only around the casters go (drawsFloorsAroundCasters), within `drawn`;
-        // empty: floors as every other caster.
-        std::vector<QRect> floors;
+        // Within `drawn`, apart: each caster's rectangle, grown where floors go around them
+        // (drawsFloorsAroundCasters); empty: `drawn` whole.
+        std::vector<QRect> pieces;
+        bool floorsInPieces = false;    // floors are drawn in `pieces`, once in each
     };
+
+    // The most pieces a pass clears or draws a floor into; more are joined into their bounds.
+    static constexpr std::size_t kMostPieces = 8;
 
     // Returns the number of caster draw calls. `settings.filter.mode` must be a moment technique.
     // Into `tile` of the map (texels; empty: the whole map), for one view of several, within
-    // `area`: what earlier draws wrote there and `area.drawn` get the far plane's moments first,
-    // and the casters are drawn within `area.drawn` only. `casters`: only the still or the moving
-    // ones; `clear` false draws over what the tile holds (the moving casters over a cache's copy,
+    // `area`: what earlier draws wrote there and `area` get the far plane's moments first (in
+    // pieces where it has them and the map is not cleared whole), and the casters are drawn
+    // within `area.drawn` only. `casters`: only the still or the moving ones; `clear` false
+    // draws over what the tile holds (the moving casters over a cache's copy,
     // renderer/ShadowCache.h).
-    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect(),
-               const Area& area = {}, CasterSet casters = CasterSet::All, bool clear = true);
+    int render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile, const Area& area,
+               CasterSet casters = CasterSet::All, bool clear = true);
     // Fills what draws wrote in `tile` with the far plane's moments: every lookup reads lit.
     void clear(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile = QRect());
 
@@ -85,6 +90,8 @@ private:
     static QString encoding(const LightFrame& light, const Settings& settings);
     // Clears the depth and writes the far plane's moments within `clear`.
     Program& begin(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& clear);
+    // begin() for each of `rects` (none: only the program set up); the program it set up.
+    Program& clearFirst(const LightFrame& light, const Settings& settings, MomentsMap& map, const std::vector<QRect>& rects);
 
     GlFunctions* m_gl;
     GlVertexArray m_emptyVertexArray;   // for the far-plane triangle

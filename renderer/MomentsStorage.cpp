@@ -113,25 +113,29 @@ private:
     // around each caster as a lookup beside it reads: a receiver within its reach of one reads
     // up to twice that from it. The rest holds the far plane's moments, which a receiver's
     // footprint there, floors and far plane both behind it, reads as lit.
+    // Each caster's rectangle is a piece, so casters far apart clear and draw only their own
+    // texels, and a floor is drawn once in each.
     MomentsPass::Area drawnArea(const LightFrame& light, const FramePlan& plan, const QRect& tile, const CasterTexels* texels) const
     {
         const std::optional<QRect> casters = inTile(texels, tile);
-        if (!casters || casters->isEmpty() || !MomentsPass::drawsFloorsAroundCasters(plan.settings))
+        if (!casters || casters->isEmpty())
             return {casters, {}};
-        const std::optional<double> reach = lookupReachTexels(plan.settings, light);
-        if (!reach)
-            return {};      // the whole tile, floors everywhere
+        int margin = 0;
+        const bool floors = MomentsPass::drawsFloorsAroundCasters(plan.settings);
+        if (floors) {
+            // A cached copy holds the floors for wherever the moving casters go next.
+            const std::optional<double> reach = lookupReachTexels(plan.settings, light);
+            if (!reach || keepsViews(plan.cache))
+                return {};      // the whole tile, floors everywhere
+            margin = int(std::ceil(2.0 * *reach));
+        }
         const QRect whole = tile.isEmpty() ? QRect(0, 0, m_map.width(), m_map.height()) : tile;
         CasterTexels inMap = *texels;
         for (QRect& piece : inMap.pieces)
             piece.translate(whole.topLeft());
-        inMap.drawn = *casters;
-        // A floor draw a piece: a few, or their bounds.
-        constexpr std::size_t kMostFloorPieces = 8;
-        MomentsPass::Area area;
-        area.floors = aroundCasters(inMap, int(std::ceil(2.0 * *reach)), whole, kMostFloorPieces);
-        for (const QRect& piece : area.floors)
-            area.drawn = area.drawn.value_or(piece) | piece;
+        MomentsPass::Area area{.drawn = QRect(), .pieces = aroundCasters(inMap, margin, whole, MomentsPass::kMostPieces), .floorsInPieces = floors};
+        for (const QRect& piece : area.pieces)
+            *area.drawn |= piece;
         return area;
     }
 

@@ -27,12 +27,23 @@ public:
     // After a draw that may have written anywhere in `rect` (within one tile).
     void drew(const QRect& rect);
 
+    // The same in pieces, for a pass whose casters lie apart (renderer/MomentsPass.h): what to
+    // clear before drawing into `drawn` in `tile`, the rectangles drawn since the tile's last
+    // clear and `drawn`, joined where they overlap (core/CasterTexels.h's joinOverlapping), at
+    // most `most`. Once all are cleared, clearedPieces(tile).
+    std::vector<QRect> piecesToClear(const QRect& tile, const std::vector<QRect>& drawn, std::size_t most) const;
+    void clearedPieces(const QRect& tile);
+
 private:
     int index(const QRect& rect) const;
+
+    // Past it a tile's drawn rectangles are kept as their bounds.
+    static constexpr std::size_t kMostPieces = 32;
 
     int m_size = 0;
     int m_columns = 1;
     std::vector<QRect> m_tiles;
+    std::vector<std::vector<QRect>> m_pieces;   // per tile: what was drawn, its bounds m_tiles's
 };
 
 } // namespace shadowlab

@@ -12,6 +12,7 @@
 #include "SettingsKeys.h"
 #include "ShadowCache.h"
 #include "VirtualPages.h"
+#include "WrittenTexels.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -558,6 +559,45 @@ private slots:
         // Too many pieces: one rectangle, their bounds.
         QCOMPARE(aroundCasters(texels, 8, tile, 2), std::vector<QRect>{bounds});
         QVERIFY(aroundCasters(CasterTexels{}, 8, tile, 8).empty());
+    }
+
+    // A moments map cleared in pieces: what was drawn since the last clear, and what is about to
+    // be, each cleared once and apart; a new texture, whole.
+    void writtenTexelsClearInPieces()
+    {
+        const QRect tile(256, 0, 256, 256);     // the second of two tiles
+        const QRect a(260, 10, 20, 20), b(400, 200, 30, 30), c(270, 20, 20, 20), far(300, 100, 10, 10);
+        WrittenTexels written;
+        written.reset(256, 2, 1);
+        QCOMPARE(written.piecesToClear(tile, {a}, 8), std::vector<QRect>{tile});
+        written.clearedPieces(tile);
+        QVERIFY(written.written(tile).isEmpty());
+        QVERIFY(written.piecesToClear(tile, {}, 8).empty());
+        written.drew(a);
+        written.drew(b);
+        QCOMPARE(written.written(tile), a | b);
+        // c overlaps a: joined; far lies apart from both.
+        const std::vector<QRect> pieces = written.piecesToClear(tile, {c, far}, 8);
+        QCOMPARE(int(pieces.size()), 3);
+        for (const QRect& r : {a, b, c, far})
+            QVERIFY(std::any_of(pieces.begin(), pieces.end(), [&](const QRect& p) { return p.contains(r); }));
+        std::int64_t area = 0;
+        for (const QRect& p : pieces)
+            area += std::int64_t(p.width()) * p.height();
+        const QRect bounds = a | b | c | far;
+        QVERIFY(area * 10 < std::int64_t(bounds.width()) * bounds.height());
+        // At most `most`: their bounds.
+        QCOMPARE(written.piecesToClear(tile, {c, far}, 2), std::vector<QRect>{bounds});
+        // The other tile is untouched, and a clear of all the pieces leaves this one clean.
+        QCOMPARE(written.written(QRect(0, 0, 256, 256)), QRect(0, 0, 256, 256));
+        written.clearedPieces(tile);
+        QVERIFY(written.piecesToClear(tile, {}, 8).empty());
+        // Many small draws: still every texel they wrote is cleared.
+        for (int i = 0; i < 40; ++i)
+            written.drew(QRect(256 + 6 * i, 6 * i, 2, 2));
+        const std::vector<QRect> many = written.piecesToClear(tile, {}, 8);
+        for (int i = 0; i < 40; ++i)
+            QVERIFY(std::any_of(many.begin(), many.end(), [&](const QRect& p) { return p.contains(QRect(256 + 6 * i, 6 * i, 2, 2)); }));
     }
 
     void movedCastersTouchTheirPages()

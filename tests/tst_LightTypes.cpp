@@ -255,6 +255,12 @@ private Q_SLOTS:
         QTest::newRow("4 cascades, pcf") << QStringList{"shadow.cascades=4", "filter.mode=pcf"};
         QTest::newRow("spot, msm") << QStringList{"light.type=spot", "filter.mode=msm", "moments.blur=7"};
         QTest::newRow("directional, esm") << QStringList{"filter.mode=esm"};
+        // Cleared and drawn in pieces around each caster; four moments draw their floors there.
+        QTest::newRow("directional, vsm") << QStringList{"filter.mode=vsm"};
+        QTest::newRow("directional, evsm4") << QStringList{"filter.mode=evsm4"};
+        QTest::newRow("directional, msm-hausdorff, blur pass") << QStringList{"filter.mode=msm-hausdorff", "moments.blur=9"};
+        QTest::newRow("3 cascades, evsm4") << QStringList{"shadow.cascades=3", "filter.mode=evsm4"};
+        QTest::newRow("point, msm") << QStringList{"light.type=point", "filter.mode=msm"};
     }
 
     void movingLightDrawsOnlyWhereCastersAre()
