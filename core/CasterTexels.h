@@ -21,7 +21,8 @@ namespace shadowlab {
 struct CasterTexels {
     // Every caster the pass draws (those `casters` says cast and culledFrom() keeps), in texels
     // of the view's own square [0, mapSize)²; empty: nothing. Outside it a moments map holds
-    // the far plane's moments, a constant its blur leaves as it is.
+    // the far plane's moments, a constant its blur leaves as it is (without coverage, floors
+    // too, drawn as far around each caster as a lookup beside it reads: MomentsPass).
     QRect drawn;
     // Each caster's own rectangle, whose bounds `drawn` is.
     std::vector<QRect> pieces;

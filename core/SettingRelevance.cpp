@@ -1,6 +1,7 @@
 #include "SettingRelevance.h"
 
 #include "SettingsKeys.h"
+#include "ShadowReach.h"
 #include "ShadowTechnique.h"
 #include "ShadowViews.h"
 
@@ -43,10 +44,12 @@ QString ignoredWithMoments(const Settings& s, const QString& key)
         return QStringLiteral("moments.blur=%1 blurs nothing; a width of 3 or more runs where this says.").arg(s.moments.blur);
     if (key == u"moments.blur_at" && (s.moments.mipmaps || s.moments.anisotropy > 1))
         return QStringLiteral("The blur runs as a pass over the map while moments.mipmaps is on or moments.anisotropy is above 1.");
-    if (key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage)
-        return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, floors too; "
-                              "vsm, evsm2 and esm leave floors out.")
-            .arg(techniqueKey(s));
+    if (key == u"bias.skip_floors" && !shadowTechnique(s.filter.mode).coverage && !tapReachTexels(s))
+        return QStringLiteral("%1 stores four moments and no coverage beside them, so every receiver must be in its map, and %2: floors "
+                              "go into the whole map. vsm, evsm2 and esm leave floors out; evsm4 and msm draw them around the casters.")
+            .arg(techniqueKey(s),
+                 shadowTechnique(s.filter.mode).farPlaneReadsLit ? QStringLiteral("with moments.mipmaps or moments.anisotropy above 1 a lookup may read anywhere")
+                                                                 : QStringLiteral("it reads the far plane's moments near it as shadow"));
     if (key == u"bias.cull_front" || key == u"bias.polygon_factor" || key == u"bias.polygon_units" || key == u"bias.footprint" || key == u"bias.receiver_plane")
         return QStringLiteral("%1 draws every face into a moments map with no offset and compares no depths: filter.moment_bias holds "
                               "its acne off. Depth-compare filters read it.")

@@ -279,7 +279,8 @@ void mapKeys(std::vector<Entry>& e)
     e.push_back(toggle({.key = "bias.skip_floors",
                         .help = "Leave out of the shadow pass a floor the light is above (a flat object with every other object on "
                                 "the side it faces, such as a model's ground): it can shadow nothing there, so leaving it out is "
-                                "exact and it cannot shadow itself (no acne or moire on it); off: it is drawn like any caster",
+                                "exact and it cannot shadow itself (no acne or moire on it); evsm4 and msm, which need it in their "
+                                "moments map, draw it only around the casters; off: it is drawn like any caster",
                         .look = {.label = QStringLiteral("Leave floors out of the shadow pass"), .group = kBias}},
                        [](auto& s) -> auto& { return s.bias.skipFloors; }));
 }
@@ -535,7 +536,7 @@ std::vector<Entry> makeEntries()
                                            .help = "Which rasteriser the renderer's optimisations are chosen for: software (a CPU rasteriser such as llvmpipe, "
                                                    "where clears and bandwidth cost what casters do: the shadow reach's stencil masks, depth slices, "
                                                    "two moments in RGBA, a virtual map's requests read back whole), hardware (a GPU: the plain path), or auto "
-                                                   "(from the driver's GL_RENDERER). The same pixels under each (msm's to within a quarter of a step); only what a frame costs differs",
+                                                   "(from the driver's GL_RENDERER). The same pixels under each (msm's to within a step); only what a frame costs differs",
                                            .look = {.label = QStringLiteral("Profile"), .group = kRasteriser}},
                                           kRasteriserNames,
                                           [](auto& s) -> auto& { return s.rasteriser.profile; }));

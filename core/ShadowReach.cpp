@@ -122,7 +122,7 @@ std::optional<double> tapReachTexels(const Settings& settings)
 {
     const ShadowTechnique& technique = shadowTechnique(settings.filter.mode);
     std::optional<double> reach = technique.tapReach(settings.filter);
-    if (technique.map == ShadowMapKind::Moments && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
+    if (technique.map == ShadowMapKind::Moments && technique.farPlaneReadsLit && !settings.moments.mipmaps && settings.moments.anisotropy <= 1)
         reach = double(std::max(settings.moments.blur - 1, 0) / 2);     // its blur, in the map or the lookup
     if (!reach)
         return std::nullopt;
@@ -535,9 +535,18 @@ void buildMask(ShadowReach& reach, const std::vector<ReachObject>& receivers, co
 
 } // namespace
 
+bool skippedLookupsReadTheSame(const Settings& settings)
+{
+    if (!shadowTechnique(settings.filter.mode).litToItsBias)
+        return true;
+    return settings.filter.momentBias <= kMostBiasShade * std::max(1.0 - settings.filter.bleeding, 0.0);
+}
+
 ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
                         const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
 {
+    if (!skippedLookupsReadTheSame(settings))
+        return lookupsEverywhere(objects);
     TapReach taps;
     taps.texels = tapReachTexels(settings);
     taps.grow = taps.texels ? *taps.texels / double(std::max(mapSize, 1)) : 1.0;

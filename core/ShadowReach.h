@@ -21,7 +21,8 @@ namespace shadowlab {
 
 // How far from the lookup point, in texels of the map, the taps of `settings`' filter read,
 // with a margin for rounding; nullopt where the filter may read anywhere in the map (pcss's
-// blocker search, a mip or an anisotropic footprint of moments). Moments read within the blur's
+// blocker search, a mip or an anisotropic footprint of moments, msm-hausdorff's far plane:
+// ShadowTechnique::farPlaneReadsLit). Moments read within the blur's
 // radius of their texel: beyond it from any caster they read lit (exactly with coverage; to
 // within their bias from a floor's own moments or the far plane's without), which a lookup
 // skipped reads exactly.
@@ -31,6 +32,13 @@ std::optional<double> tapReachTexels(const Settings& settings);
 // read anywhere (as tapReachTexels: pcss's blocker search, mipmapped moments; a normal
 // offset off a perspective view, or an offset on a warped one, whose shift has no small bound).
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view);
+// Whether a receiver no caster reaches, whose lookup the reach skips (shading it lit), reads the
+// same looked up. msm reads it lit only to within its moment bias (ShadowTechnique::litToItsBias),
+// stretched by the bleeding reduction: its lookups are skipped only while that bias is at most
+// kMostBiasShade, where the two differ by less than a step of an 8-bit pixel (the bias's own
+// half and the self-shading a sloped receiver's spread of depths leaves under it).
+constexpr double kMostBiasShade = 1.0 / 1024.0;
+bool skippedLookupsReadTheSame(const Settings& settings);
 // Whether every tap of `settings` compares a reference no deeper than the receiver itself, so
 // that a receiver nearer the light than every caster is lit: false where the receiver's plane
 // or a grown bias moves a tap's reference (wide filters, pcss), for moments, and where a

@@ -151,6 +151,7 @@ void addMomentAndExponentialTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {momentVariation(QStringLiteral("msm-hausdorff"), QStringLiteral("msm-hausdorff")),
             momentVariation(QStringLiteral("msm-hausdorff 16-bit"), QStringLiteral("msm-hausdorff"), {QStringLiteral("moments.format=16")})},
         .litToItsBias = true,
+        .farPlaneReadsLit = false,
     });
     t.push_back({
         .mode = FilterMode::Esm,

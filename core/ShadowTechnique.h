@@ -93,8 +93,8 @@ struct ShadowTechnique {
     bool penumbraOnly = false;
     // How far its taps read around the receiver's own texel, in texels (the shadow reach,
     // core/ShadowReach.h), or nullopt where a lookup may read anywhere in the map: a blocker
-    // search spans up to half of it, and filtered moments read lit only to within their bias
-    // and bleeding reduction while a coarse mip or an anisotropic footprint averages texels far
+    // search spans up to half of it. A moment technique's is its blur's radius, which
+    // tapReachTexels gives it unless a coarse mip or an anisotropic footprint averages texels far
     // from the pixel.
     std::function<std::optional<double>(const FilterSettings&)> tapReach = [](const FilterSettings&) -> std::optional<double> {
         return std::nullopt;
@@ -108,10 +108,15 @@ struct ShadowTechnique {
     std::function<bool(const Settings&)> referencesStayNearer = [](const Settings&) { return false; };
     // Whether a receiver whose footprint holds no caster reads lit only to within
     // filter.moment_bias: msm's bias blends the moments toward a distribution with that share
-    // half at depth 0, in front of every receiver. The software profile's reach, which skips
-    // such a receiver's lookup (core/ShadowReach.h), then shades it exactly lit, where the
-    // lookup gives 1 - bias / 2 or so: less than a step of an 8-bit pixel.
+    // half at depth 0, in front of every receiver, and the bleeding reduction stretches it. The
+    // software profile's reach skips such a receiver's lookup, shading it exactly lit, only
+    // while the two differ by less than a step (core/ShadowReach.h's skippedLookupsReadTheSame).
     bool litToItsBias = false;
+    // Whether a receiver whose footprint holds only the far plane's moments, behind it, reads
+    // lit: msm-hausdorff's reconstruction, bounded to the light's volume, is ill-conditioned at
+    // its far end and may shade a receiver near it (by up to 0.37 in cascades). Without it a
+    // moments map keeps its floors everywhere and every receiver looks up (no shadow reach).
+    bool farPlaneReadsLit = true;
 };
 
 // What a storage of the light's views (renderer/ShadowStorage.h draws them) cannot do with

@@ -174,6 +174,9 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
         m_gl->glEnable(GL_SCISSOR_TEST);
         m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
     }
+    // A caster draws only inside its own piece (its box's image with a texel of margin,
+    // core/CasterTexels.h), so what the pieces clear and record is all it writes; the scissor is
+    // their bounds.
     for (const QRect& piece : pieces)
         map.written().drew(piece & area);
     Program* cutoutProgram = nullptr;    // set up on the first cut-out caster

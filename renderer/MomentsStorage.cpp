@@ -12,6 +12,7 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cmath>
 
 #include <utility>
@@ -53,9 +54,12 @@ public:
         key.momentChannels = storedChannels(plan);
         key.exponentPositive = warp.positive;
         key.exponentNegative = warp.negative;
-        key.blur = mapBlurWidth(settings);     // a blur in the lookup leaves the map as it is
+        key.blur = mapBlurWidth(settings);     // a blur in the lookup leaves the map as it is ...
         key.mipmaps = settings.moments.mipmaps;
         key.skipFloors = leavesOutFloors(plan);
+        // ... but for the floors drawn around the casters, as far as it and the normal offset reach.
+        if (MomentsPass::drawsFloorsAroundCasters(settings))
+            key.floorReach = *tapReachTexels(settings) + settings.bias.normal + (settings.bias.footprint ? 0.5 : 0.0);
         return key;
     }
 
@@ -127,7 +131,7 @@ private:
             const std::optional<double> reach = lookupReachTexels(plan.settings, light);
             if (!reach || keepsViews(plan.cache))
                 return {};      // the whole tile, floors everywhere
-            margin = int(std::ceil(2.0 * *reach));
+            margin = int(std::min(std::ceil(2.0 * *reach), double(std::max(m_map.width(), m_map.height()))));
         }
         const QRect whole = tile.isEmpty() ? QRect(0, 0, m_map.width(), m_map.height()) : tile;
         CasterTexels inMap = *texels;

@@ -34,7 +34,8 @@ struct ShadowStorageKey {
     int cache = 0;
     // The depth pass's raster state against acne (depth storage only).
     bool cullFront = false;
-    bool skipFloors = false;        // bias.skip_floors: floors the light is above left out
+    bool skipFloors = false;        // bias.skip_floors: floors the light is above left out (or, in a
+                                    // moments map without coverage, drawn only around the casters)
     double polygonFactor = 0.0;
     double polygonUnits = 0.0;
     int slices = 1;                 // FramePlan::slices: the lit pass reads the map through its slice
@@ -47,6 +48,9 @@ struct ShadowStorageKey {
     double exponentNegative = 0.0;
     int blur = 0;
     bool mipmaps = false;
+    // How far around the casters a moments map without coverage draws its floors: the lookup's
+    // reach (MomentsPass::drawsFloorsAroundCasters), its blur and normal offset; 0 elsewhere.
+    double floorReach = 0.0;
 
     bool operator==(const ShadowStorageKey&) const = default;
 };

@@ -7,9 +7,9 @@
 namespace shadowlab {
 
 // Which texels of a map of tiles may hold anything but what a clear writes: per tile, the
-// bounding rectangle of the draws since its last clear. A pass then clears what it wrote
-// before and what it is about to write (core/CasterTexels.h), not the whole tile; a tile
-// nothing was drawn into since its clear needs none. On llvmpipe a clear costs as much as
+// rectangles drawn since its last clear and their bounds. A pass then clears what it wrote
+// before and what it is about to write (core/CasterTexels.h), not the whole tile: the bounds,
+// or a moments map the pieces; a tile nothing was drawn into since its clear needs none. On llvmpipe a clear costs as much as
 // drawing the seed's casters (docs/performance.md); a GPU clears faster, but writes and reads
 // fewer texels either way.
 class WrittenTexels {

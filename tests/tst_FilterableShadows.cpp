@@ -421,7 +421,8 @@ private slots:
     // vsm, evsm2 and esm store the casters' coverage, so the ground under the seed's casters
     // stays out of their map: far fewer samples drawn, and the same shadows (against the
     // reference, and against the map with the ground in). evsm4 and msm, without a channel for
-    // coverage, draw it only around the casters, and everywhere where a mip reads far from them.
+    // coverage, draw it only around the casters, and everywhere where a mip reads far from them;
+    // msm-hausdorff, which reads the far plane near it as shadow, everywhere.
     void coverageLeavesFloorsOut_data()
     {
         QTest::addColumn<QString>("technique");
@@ -435,11 +436,13 @@ private slots:
         const QStringList common{"filter.mode=" + technique};
         const Settings out = with("seed", common), in = with("seed", common + QStringList{"bias.skip_floors=false"});
         const bool coverage = shadowTechnique(out.filter.mode).coverage;
-        countFrames(*m_headless, out, kSize);     // the far plane's moments drawn once, then cleared to
+        countFrames(*m_headless, out, kSize);     // the far plane's moments drawn once, then cleared to their value
         const FrameCounts outCounts = countFrames(*m_headless, out, kSize), inCounts = countFrames(*m_headless, in, kSize);
         const QString samples = QString("%1 samples with floors out, %2 in").arg(outCounts.shadow.samples).arg(inCounts.shadow.samples);
         if (coverage) {
             QVERIFY2(outCounts.shadow.samples * 2 < inCounts.shadow.samples, qPrintable(samples));
+        } else if (!shadowTechnique(out.filter.mode).farPlaneReadsLit) {
+            QCOMPARE(outCounts.shadow.samples, inCounts.shadow.samples);     // msm-hausdorff: floors everywhere
         } else {
             QVERIFY2(outCounts.shadow.samples * 3 < inCounts.shadow.samples * 2, qPrintable(samples));
             const QStringList mips{"moments.mipmaps=true"};
@@ -503,15 +506,25 @@ private slots:
         m_headless->renderFrame(s, kSize);
         QCOMPARE(r.shadowPassCount(), passes);  // unchanged light and casters: no pass
         // Lookup-time settings need no new map.
-        for (const char* a : {"filter.bleeding=0.5", "filter.moment_bias=0.001", "moments.view=3", "moments.blur=5"}) {
+        for (const char* a : {"filter.bleeding=0.5", "filter.moment_bias=0.001", "moments.view=3"}) {
             applyAssignment(s, a);
             m_headless->renderFrame(s, kSize);
             QVERIFY2(r.shadowPassCount() == passes, a);
         }
-        // What the map stores does, and so does anisotropy, which moves the blur into its own
-        // pass over the map.
-        int expected = passes;
-        for (const char* a : {"moments.anisotropy=8", "moments.blur=7", "moments.format=16", "moments.mipmaps=true", "filter.exponent_negative=3", "filter.mode=msm"}) {
+        // A blur in the lookup leaves a map of coverage as it is.
+        Settings coverage = with("seed", {"filter.mode=vsm"});
+        m_headless->renderFrame(coverage, kSize);
+        const int vsmPasses = r.shadowPassCount();
+        applyAssignment(coverage, "moments.blur=5");
+        m_headless->renderFrame(coverage, kSize);
+        QCOMPARE(r.shadowPassCount(), vsmPasses);
+        m_headless->renderFrame(s, kSize);
+        QCOMPARE(r.shadowPassCount(), vsmPasses + 1);
+        // What the map stores does: how far around the casters its floors go, which follows the
+        // lookup's blur and normal offset, and anisotropy, which moves the blur into its own pass
+        // over the map.
+        int expected = r.shadowPassCount();
+        for (const char* a : {"moments.blur=5", "bias.normal=1", "moments.anisotropy=8", "moments.blur=7", "moments.format=16", "moments.mipmaps=true", "filter.exponent_negative=3", "filter.mode=msm"}) {
             applyAssignment(s, a);
             m_headless->renderFrame(s, kSize);
             QVERIFY2(r.shadowPassCount() == ++expected, a);

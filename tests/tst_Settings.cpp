@@ -72,8 +72,14 @@ private Q_SLOTS:
         applySetting(s, "filter.mode", "msm");
         QVERIFY(ignoredBecause(s, "moments.blur").isEmpty());
         QVERIFY(ignoredBecause(s, "bias.cull_front").contains("filter.moment_bias"));
-        QVERIFY(ignoredBecause(s, "bias.skip_floors").contains("no coverage"));     // four moments: every receiver in the map
+        QVERIFY(ignoredBecause(s, "bias.skip_floors").isEmpty());                  // four moments: floors only around the casters
         QVERIFY(ignoredBecause(s, "moments.blur_at").isEmpty());
+        applySetting(s, "moments.anisotropy", "4");
+        QVERIFY(ignoredBecause(s, "bias.skip_floors").contains("no coverage"));     // ... or, read anywhere, in the whole map
+        applySetting(s, "moments.anisotropy", "1");
+        applySetting(s, "filter.mode", "msm-hausdorff");
+        QVERIFY(ignoredBecause(s, "bias.skip_floors").contains("far plane"));
+        applySetting(s, "filter.mode", "msm");
         applySetting(s, "filter.mode", "vsm");
         QVERIFY(ignoredBecause(s, "bias.skip_floors").isEmpty());                  // coverage: floors stay out
         applySetting(s, "moments.mipmaps", "true");
