@@ -144,6 +144,25 @@ void MomentsPass::clear(const LightFrame& light, const Settings& settings, Momen
     applyPassState(m_gl, PassState{});
 }
 
+int MomentsPass::drawInPieces(const GpuScene& scene, const DrawItem& item, const std::vector<QRect>& pieces, const QRect& area, bool scissored)
+{
+    // A floor only around the casters, once in each piece; then the pass's scissor again.
+    int draws = 0;
+    m_gl->glEnable(GL_SCISSOR_TEST);
+    for (const QRect& piece : pieces) {
+        const QRect cut = piece & area;
+        if (cut.isEmpty())
+            continue;
+        m_gl->glScissor(cut.x(), cut.y(), cut.width(), cut.height());
+        scene.draw(item, false);
+        ++draws;
+    }
+    m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+    if (!scissored)
+        m_gl->glDisable(GL_SCISSOR_TEST);
+    return draws;
+}
+
 int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& tile,
                         const Area& within, CasterSet casters, bool clear)
 {
@@ -205,19 +224,7 @@ int MomentsPass::render(const GpuScene& scene, const LightFrame& light, const Se
             m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));
         }
         if (within.floorsInPieces && shadowsNothing(item, light)) {
-            // A floor only around the casters, once in each piece.
-            m_gl->glEnable(GL_SCISSOR_TEST);
-            for (const QRect& piece : pieces) {
-                const QRect cut = piece & area;
-                if (cut.isEmpty())
-                    continue;
-                m_gl->glScissor(cut.x(), cut.y(), cut.width(), cut.height());
-                scene.draw(item, false);
-                ++draws;
-            }
-            m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
-            if (!scissored)
-                m_gl->glDisable(GL_SCISSOR_TEST);
+            draws += drawInPieces(scene, item, pieces, area, scissored);
             continue;
         }
         scene.draw(item, false);

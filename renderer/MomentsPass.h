@@ -90,6 +90,9 @@ private:
     static QString encoding(const LightFrame& light, const Settings& settings);
     // Clears the depth and writes the far plane's moments within `clear`.
     Program& begin(const LightFrame& light, const Settings& settings, MomentsMap& map, const QRect& clear);
+    // Draws `item` once in each of `pieces` (cut to `area`), scissored to it; then restores the
+    // pass's scissor (`area`, or none where not `scissored`). Returns the draws.
+    int drawInPieces(const GpuScene& scene, const DrawItem& item, const std::vector<QRect>& pieces, const QRect& area, bool scissored);
     // begin() for each of `rects` (none: only the program set up); the program it set up.
     Program& clearFirst(const LightFrame& light, const Settings& settings, MomentsMap& map, const std::vector<QRect>& rects);
 
