@@ -1,11 +1,13 @@
 #include "CasterTexels.h"
 
 #include "ConvexClipping.h"
+#include "JoinOverlapping.h"
 
 #include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -126,32 +128,9 @@ void CasterTexels::add(const CasterTexels& other)
 
 std::vector<QRect> joinOverlapping(const std::vector<QRect>& rects, std::size_t most)
 {
-    QRect bounds;
-    for (const QRect& r : rects)
-        bounds |= r;
-    if (bounds.isEmpty())
-        return {};
-    if (rects.size() > 4 * most)
-        return {bounds};
-    std::vector<QRect> joined;
-    for (QRect r : rects) {
-        if (r.isEmpty())
-            continue;
-        // Whatever it overlaps joins it, and the joined rectangle may overlap more.
-        for (bool merged = true; merged;) {
-            merged = false;
-            for (auto it = joined.begin(); it != joined.end(); ++it) {
-                if (it->intersects(r)) {
-                    r |= *it;
-                    joined.erase(it);
-                    merged = true;
-                    break;
-                }
-            }
-        }
-        joined.push_back(r);
-    }
-    return joined.size() > most ? std::vector<QRect>{bounds} : joined;
+    std::vector<QRect> drawn;
+    std::copy_if(rects.begin(), rects.end(), std::back_inserter(drawn), [](const QRect& r) { return !r.isEmpty(); });
+    return joinOverlapping(std::move(drawn), most, [](const QRect& a, const QRect& b) { return a.intersects(b); }, [](QRect& a, const QRect& b) { a |= b; });
 }
 
 std::vector<QRect> aroundCasters(const CasterTexels& texels, int margin, const QRect& within, std::size_t most)

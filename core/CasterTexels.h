@@ -33,8 +33,7 @@ struct CasterTexels {
 CasterTexels casterTexels(const LightFrame& view, int mapSize, const std::vector<ReachObject>& casters);
 
 // `rects` with those that overlap merged into their bounds, until none do, so that no texel is
-// in two; more than `most` left, or more than four times as many given (the merging is
-// quadratic): their bounds, one rectangle. Empty ones are dropped.
+// in two; past `most`, their bounds (core/JoinOverlapping.h). Empty ones are dropped.
 std::vector<QRect> joinOverlapping(const std::vector<QRect>& rects, std::size_t most);
 
 // The casters' rectangles grown by `margin` texels, cut to `within` and joined where they

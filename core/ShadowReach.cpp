@@ -1,5 +1,6 @@
 #include "ShadowReach.h"
 
+#include "JoinOverlapping.h"
 #include "ShadowTechnique.h"
 
 #include <glm/common.hpp>
@@ -131,6 +132,11 @@ std::optional<double> tapReachTexels(const Settings& settings)
     return 1.0 + *reach + 2.0;
 }
 
+double lookupShiftTexels(const Settings& settings)
+{
+    return std::max(settings.bias.normal, 0.0) + (settings.bias.footprint ? 0.5 : 0.0);
+}
+
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view)
 {
     const std::optional<double> taps = tapReachTexels(settings);
@@ -145,8 +151,7 @@ std::optional<double> lookupReachTexels(const Settings& settings, const LightFra
     // the axes' ratio. The footprint bias moves a lookup by up to half a texel.
     const double wide = std::max(view.volume.width(), view.volume.height());
     const double narrow = std::max(std::min(view.volume.width(), view.volume.height()), wide * 1e-9);
-    const double shift = std::max(settings.bias.normal, 0.0) + (settings.bias.footprint ? 0.5 : 0.0);
-    return *taps + shift * wide / narrow;
+    return *taps + lookupShiftTexels(settings) * wide / narrow;
 }
 
 bool referencesStayNearer(const Settings& settings)
@@ -229,27 +234,8 @@ constexpr std::size_t kMaxReachBoxes = 16;
 
 std::vector<UvRect> mergedRects(std::vector<UvRect> rects)
 {
-    // Overlapping rectangles become one, until none overlap (a few dozen at most get here).
-    for (bool merged = rects.size() <= 4 * kMaxReachBoxes; merged;) {
-        merged = false;
-        for (std::size_t i = 0; i < rects.size() && !merged; ++i) {
-            for (std::size_t j = i + 1; j < rects.size(); ++j) {
-                if (rects[i].overlaps(rects[j])) {
-                    rects[i].extend(rects[j]);
-                    rects.erase(rects.begin() + std::ptrdiff_t(j));
-                    merged = true;
-                    break;
-                }
-            }
-        }
-    }
-    if (rects.size() > kMaxReachBoxes) {
-        UvRect all = rects.front();
-        for (const UvRect& r : rects)
-            all.extend(r);
-        rects.assign(1, all);
-    }
-    return rects;
+    return joinOverlapping(std::move(rects), kMaxReachBoxes, [](const UvRect& a, const UvRect& b) { return a.overlaps(b); },
+                           [](UvRect& a, const UvRect& b) { a.extend(b); });
 }
 
 // The edges of the convex hull of `points` as half-planes a u + b v + c >= 0, each moved out by

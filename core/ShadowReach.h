@@ -32,6 +32,9 @@ std::optional<double> tapReachTexels(const Settings& settings);
 // read anywhere (as tapReachTexels: pcss's blocker search, mipmapped moments; a normal
 // offset off a perspective view, or an offset on a warped one, whose shift has no small bound).
 std::optional<double> lookupReachTexels(const Settings& settings, const LightFrame& view);
+// How far the normal offset and the footprint bias move a lookup, in texels of the view's wider
+// axis (lookupReachTexels scales it to the narrower one).
+double lookupShiftTexels(const Settings& settings);
 // Whether a receiver no caster reaches, whose lookup the reach skips (shading it lit), reads the
 // same looked up. msm reads it lit only to within its moment bias (ShadowTechnique::litToItsBias),
 // stretched by the bleeding reduction: its lookups are skipped only while that bias is at most

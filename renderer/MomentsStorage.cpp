@@ -59,7 +59,7 @@ public:
         key.skipFloors = leavesOutFloors(plan);
         // ... but for the floors drawn around the casters, as far as it and the normal offset reach.
         if (MomentsPass::drawsFloorsAroundCasters(settings))
-            key.floorReach = *tapReachTexels(settings) + settings.bias.normal + (settings.bias.footprint ? 0.5 : 0.0);
+            key.floorReach = *tapReachTexels(settings) + lookupShiftTexels(settings);
         return key;
     }
 
@@ -133,13 +133,14 @@ private:
                 return {};      // the whole tile, floors everywhere
             margin = int(std::min(std::ceil(2.0 * *reach), double(std::max(m_map.width(), m_map.height()))));
         }
+        // The pieces are the view's own texels: found within the tile moved there, then moved into it.
         const QRect whole = tile.isEmpty() ? QRect(0, 0, m_map.width(), m_map.height()) : tile;
-        CasterTexels inMap = *texels;
-        for (QRect& piece : inMap.pieces)
+        MomentsPass::Area area{.drawn = QRect(), .pieces = aroundCasters(*texels, margin, whole.translated(-whole.topLeft()), MomentsPass::kMostPieces),
+                               .floorsInPieces = floors};
+        for (QRect& piece : area.pieces) {
             piece.translate(whole.topLeft());
-        MomentsPass::Area area{.drawn = QRect(), .pieces = aroundCasters(inMap, margin, whole, MomentsPass::kMostPieces), .floorsInPieces = floors};
-        for (const QRect& piece : area.pieces)
             *area.drawn |= piece;
+        }
         return area;
     }
 
