@@ -36,11 +36,15 @@ uniform sampler2D uShadowMoments;   // filtered: bilinear, trilinear with mips, 
 #include LitFrameBlock               // uBleeding, uMomentBias
 
 // The receiver's depth as the moments pass stores it: linear in [0, 1] between the light
-// volume's near and far planes (for a perspective light, distance along its axis).
+// volume's near and far planes (for a perspective light, distance along its axis: the biased
+// reference's own, gReferenceDistance, not one inverted from its depth, which loses the bits an
+// exponential warp needs when the near plane is close).
 float momentDepth(float reference)
 {
-#if defined(LIGHT_PERSPECTIVE) || defined(REVERSED_Z)
     float n = gShadowDepthRange.x, f = gShadowDepthRange.y;
+#ifdef LIGHT_PERSPECTIVE
+    return clamp((gReferenceDistance - n) / (f - n), 0.0, 1.0);
+#elif defined(REVERSED_Z)
     return clamp((shadowDistance(reference) - n) / (f - n), 0.0, 1.0);
 #else
     return clamp(reference, 0.0, 1.0);  // an ortho light's depth is already linear

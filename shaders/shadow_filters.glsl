@@ -17,6 +17,7 @@ vec4 gShadowTile = vec4(0.0, 0.0, 1.0, 1.0);    // its tile, half a texel in: mi
 
 // The receiver, for the wide filters; set by the lit pass before it calls filterShadow.
 float gShadowW = 1.0;           // the receiver's clip w (its distance along a perspective light's axis)
+float gReferenceDistance = 1.0; // the biased reference's distance along a perspective light's axis (biasedReference)
 float gGrowth = 0.0;            // change of depth per world unit of a tap's distance, at the receiver's slope
 vec2 gReceiverSlope = vec2(0.0); // depth per uv unit of the receiver's plane (RECEIVER_PLANE)
 

@@ -313,17 +313,38 @@ float worldBias(float bias, ViewPoint p, float tanTheta)
 #endif
 }
 
+// A perspective view's distance along its axis of the map depth `shift` depth units from the
+// receiver's. Taken from 1 / w, which is affine in the map's depth, and the receiver's exact w,
+// never by inverting the shifted depth: near 1 a float's depth holds too few bits for that when
+// the near plane is close (a point light inside a model's bounds fits its near plane at 1e-4 of
+// the far one, and a distance inverted from depth is then off by 1e-4 of itself, which an
+// exponential warp's moments read as shadow).
+float distanceOfShift(ViewPoint p, float shift)
+{
+#ifdef REVERSED_Z
+    shift = -shift;
+#endif
+    float n = gShadowDepthRange.x, f = gShadowDepthRange.y;
+    return 1.0 / (1.0 / p.position.w - shift * (f - n) / (n * f));
+}
+
 // The depth the filter compares against: the receiver's, moved toward the light by the bias in
-// bias.space's units and by the footprint's clearance along the ray.
+// bias.space's units and by the footprint's clearance along the ray. A perspective view's
+// distance of it goes to gReferenceDistance for the techniques that store distance (moments).
 float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLight, float tanTheta)
 {
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
     float footprint = texelsToWorld(footprintRayTexels(tanTheta), p.texel, p.position.w);
 #ifdef BIAS_DEPTH
+    gReferenceDistance = distanceOfShift(p, nearerLight(0.0, bias) + footprint * p.depthPerWorld);
     return nearerLight(p.coord.z, bias) + footprint * p.depthPerWorld;
 #else
-    return depthTowardLight(view, p, toLight, worldBias(bias, p, tanTheta) + footprint);
+    float units = worldBias(bias, p, tanTheta) + footprint;
+#ifndef AFFINE_VIEW
+    gReferenceDistance = p.position.w + (view.matrix * vec4(toLight * units, 0.0)).w;
+#endif
+    return depthTowardLight(view, p, toLight, units);
 #endif
 }
 
