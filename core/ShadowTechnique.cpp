@@ -331,6 +331,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("pcss 16"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("pcss 32"), {QStringLiteral("filter.mode=pcss"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
+        .searchesBlockers = true,
         .taps = [](const FilterSettings& f) { return kPcssBlockerTaps + f.taps; },
     });
     t.push_back({
@@ -349,6 +350,7 @@ void addDiskTechniques(std::vector<ShadowTechnique>& t)
         .sweep = {{QStringLiteral("dpcf 16"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=16")}},
             {QStringLiteral("dpcf 32"), {QStringLiteral("filter.mode=dpcf"), QStringLiteral("filter.taps=32")}}},
         .penumbraOnly = true,
+        .searchesBlockers = true,
         .taps = [](const FilterSettings& f) { return f.taps; },
     });
 }

@@ -91,6 +91,11 @@ struct ShadowTechnique {
     // Reads the min/max depth mip of the map to skip its taps where the whole footprint is lit
     // or shadowed (filter.early_out): the renderer builds the mip with each shadow pass then.
     bool penumbraOnly = false;
+    // Searches the map for blockers over the region a disk light's blockers may lie in (pcss,
+    // dpcf): it reads the same min/max depth mip to narrow that region to the nearest depth the
+    // map holds there, so the renderer builds the mip with each shadow pass whatever
+    // filter.early_out says (shaders/blocker_search.glsl).
+    bool searchesBlockers = false;
     // How far its taps read around the receiver's own texel, in texels (the shadow reach,
     // core/ShadowReach.h), or nullopt where a lookup may read anywhere in the map: a blocker
     // search spans up to half of it. A moment technique's is its blur's radius, which

@@ -1,5 +1,7 @@
 #include "DepthRangePass.h"
 
+#include "CasterTexels.h"
+
 #include "PassState.h"
 #include "RenderError.h"
 
@@ -83,11 +85,42 @@ void DepthRangePass::allocate(QSize mapSize)
     m_mapSize = mapSize;
 }
 
-void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
+namespace {
+
+// The level-0 texels whose blocks of map texels hold any of `texels`.
+std::vector<QRect> levelZeroOver(const std::vector<QRect>& texels, QSize levelZero)
+{
+    const int block = DepthRangePass::kLevelZeroBlock;
+    std::vector<QRect> over;
+    for (const QRect& r : texels) {
+        if (!r.isEmpty())
+            over.push_back(QRect(QPoint(r.left() / block, r.top() / block), QPoint(r.right() / block, r.bottom() / block)) & QRect(QPoint(0, 0), levelZero));
+    }
+    return over;
+}
+
+} // namespace
+
+void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::vector<QRect>* written)
 {
     const QSize mapSize(map.width(), map.height());
-    if (!m_atlas || mapSize != m_mapSize)
+    if (!m_atlas || mapSize != m_mapSize) {
         allocate(mapSize);
+        m_lastWritten.reset();
+    }
+    // Level 0 over what is written now and what was at the last build, where both are known
+    // and the map is the same texture; the whole level otherwise.
+    std::optional<std::vector<QRect>> now;
+    if (written != nullptr && m_contents == Contents::All)
+        now = levelZeroOver(*written, levelSize(0));
+    std::vector<QRect> levelZero{QRect(QPoint(0, 0), levelSize(0))};
+    if (now && m_lastWritten && m_source == map.texture()) {
+        std::vector<QRect> both = *now;
+        both.insert(both.end(), m_lastWritten->begin(), m_lastWritten->end());
+        levelZero = joinOverlapping(both, kMostAreas);
+    }
+    m_lastWritten = std::move(now);
+    m_source = map.texture();
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
@@ -131,7 +164,20 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth)
             m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, level - 2);
             m_gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, level - 2);
         }
-        m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (level > 0) {
+            m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+            continue;
+        }
+        m_levelZeroDrawn = 0;
+        m_gl->glEnable(GL_SCISSOR_TEST);
+        for (const QRect& area : levelZero) {
+            if (area.isEmpty())
+                continue;
+            m_gl->glScissor(area.x(), area.y(), area.width(), area.height());
+            m_gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+            m_levelZeroDrawn += qint64(area.width()) * area.height();
+        }
+        m_gl->glDisable(GL_SCISSOR_TEST);
     }
 
     // Levels 1 and up into their places in the atlas.

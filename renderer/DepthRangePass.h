@@ -43,7 +43,11 @@ public:
 
     // Builds every level from `map`'s depth texture (reallocating when the map size changed).
     // `reversedDepth`: the map stores 1 - depth (empty texels hold 0); only Written reads it.
-    void build(const ShadowMap& map, bool reversedDepth = false);
+    // `written`, where the caller knows it (RasteriserTuning::rangesWrittenTexels): the texels
+    // that may hold anything but the cleared value (the far plane in any slice). Level 0 is then
+    // drawn only over those and over what the last build saw written; elsewhere the map held
+    // the cleared value both times. Without it, the whole map.
+    void build(const ShadowMap& map, bool reversedDepth = false, const std::vector<QRect>* written = nullptr);
     // The 1 x 1 level read back, as stored (raw depth): {min, max}, or nullopt when no texel
     // was written. Stalls until the build is done; for a view, once per shadow pass.
     std::optional<std::pair<float, float>> readTotal();
@@ -56,9 +60,14 @@ public:
     QSize levelSize(int level) const { return m_sizes[std::size_t(level)]; }
 
     static constexpr int kLevelZeroBlock = 4;   // map texels per side of a level-0 texel
+    // Level-0 texels the last build drew: all of them, or those over the written texels.
+    qint64 levelZeroTexelsDrawn() const { return m_levelZeroDrawn; }
 
 private:
     void allocate(QSize mapSize);
+
+    // Past it level 0's areas are drawn as their bounds.
+    static constexpr std::size_t kMostAreas = 16;
 
     // depthrange.frag, from the map (level 0) or from the level below, and its uniforms.
     struct Program {
@@ -77,6 +86,10 @@ private:
     GlTexture m_chain;  // the mip chain the passes build, level by level
     GlTexture m_atlas;
     QSize m_mapSize;
+    GLuint m_source = 0;                // the map's texture the last build read
+    // Level-0 texels over what the last build's map had written; nullopt: the whole level.
+    std::optional<std::vector<QRect>> m_lastWritten;
+    qint64 m_levelZeroDrawn = 0;
     std::vector<QPoint> m_origins;
     std::vector<QSize> m_sizes;
 };

@@ -21,7 +21,8 @@ FramePlan planFrame(const Settings& settings, bool softwareDriver, bool reversed
     plan.reversedDepthWanted = plan.shadows && settings.map.format == DepthFormat::Depth32F && !plan.moments;
     plan.reversedDepth = plan.reversedDepthWanted && reversedDepthSupported;
     plan.slices = plan.tuning.depthSlices && slicesDepth(settings) ? settings.map.slices : 1;
-    plan.depthRange = plan.shadows && settings.filter.earlyOut && plan.technique->penumbraOnly;
+    plan.earlyOut = plan.shadows && settings.filter.earlyOut && plan.technique->penumbraOnly;
+    plan.depthRange = plan.earlyOut || (plan.shadows && plan.technique->searchesBlockers);
     plan.contactShadows = plan.shadows && settings.contact.enabled;
     plan.visibleDepth = usesVisibleDepth(settings);
     plan.tapsPerLookup = plan.shadows ? plan.technique->taps(settings.filter) : 0;

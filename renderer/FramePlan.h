@@ -25,7 +25,8 @@ struct FramePlan {
     bool reversedDepth = false;     // a depth32f map with reversed depth (not a moments map: its own format keeps precision)
     bool reversedDepthWanted = false;   // ... which the settings ask for, whether or not the driver has it
     int slices = 1;                 // draws of a plain depth24 map per clear (map.slices, where the tuning slices)
-    bool depthRange = false;        // penumbra-only filtering reads the map's min/max depth mip
+    bool earlyOut = false;          // penumbra-only filtering (filter.early_out) skips a footprint's taps where it can
+    bool depthRange = false;        // the lit pass reads the map's min/max depth mip: early out, or a blocker search
     bool contactShadows = false;    // the lit pass marches over the camera's depth
     bool visibleDepth = false;      // sdsm cascades split the depth range the fitting camera draws
     int tapsPerLookup = 0;          // the technique's taps, 0 without shadows

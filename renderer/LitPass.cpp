@@ -114,6 +114,8 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
             defines << QStringLiteral("FOOTPRINT_TAPS");
     }
     if (lookups && plan.depthRange)
+        defines << QStringLiteral("DEPTH_RANGE");
+    if (lookups && plan.earlyOut)
         defines << QStringLiteral("EARLY_OUT");
     // Both sides of the reach march: a receiver no caster reaches in the map has none in view either.
     if (plan.contactShadows)

@@ -24,7 +24,7 @@ RasteriserTuning RasteriserTuning::of(RasteriserProfile profile, bool softwareDr
 {
     const bool software = profile == RasteriserProfile::Software || (profile == RasteriserProfile::Auto && softwareDriver);
     return {.software = software, .skipsOutOfReach = software, .depthSlices = software, .wideTwoChannelMoments = software,
-            .clearsWrittenMoments = software, .cpuVirtualRequests = software};
+            .clearsWrittenMoments = software, .cpuVirtualRequests = software, .rangesWrittenTexels = software};
 }
 
 QString profileName(const RasteriserTuning& tuning)

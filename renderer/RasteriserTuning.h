@@ -35,6 +35,12 @@ struct RasteriserTuning {
     // A virtual map's page requests deduplicated on the CPU from the read-back, rather than by a
     // point per requesting pixel on the GPU, which costs a software rasteriser six times as much.
     bool cpuVirtualRequests = false;
+    // The min/max depth mip (DepthRangePass, for pcss's and dpcf's blocker search and
+    // filter.early_out) rebuilt at its finest level only over the texels the map's passes wrote
+    // since the last build and before it, not over the whole map: llvmpipe reads every texel
+    // of a 2048² map for it at several times a shadow pass's cost (a point light's six faces:
+    // 34 ms), where a GPU reduces a map in microseconds.
+    bool rangesWrittenTexels = false;
 
     // `profile` resolved against the driver: auto is software where `rendererString` names a
     // software rasteriser.

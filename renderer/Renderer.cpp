@@ -257,7 +257,18 @@ void Renderer::buildDepthRange(const FramePlan& plan, TimingMode timing, FrameSt
         m_depthRange = std::make_unique<DepthRangePass>(m_gl);
     QElapsedTimer wall;
     wall.start();
-    m_depthRange->build(m_shadowMap);
+    // Under the software profile only where the map's passes wrote since its tiles' clears (a
+    // cleared texel reads as the far plane in every slice, as the texels earlier slices left
+    // do); a virtual map's pool, written page by page, whole.
+    if (plan.tuning.rangesWrittenTexels && !plan.virtualMap) {
+        std::vector<QRect> written;
+        for (int row = 0; row < m_shadowMap.rows(); ++row) {
+            for (int column = 0; column < m_shadowMap.columns(); ++column)
+                written.push_back(m_shadowMap.written().written(QRect(column * m_shadowMap.size(), row * m_shadowMap.size(), m_shadowMap.size(), m_shadowMap.size())));
+        }
+        m_depthRange->build(m_shadowMap, false, &written);
+    } else
+        m_depthRange->build(m_shadowMap);
     m_depthRangeGeneration = m_mapGeneration;
     if (timing == TimingMode::Finish && stats.shadowPassRendered) {
         m_gl->glFinish();

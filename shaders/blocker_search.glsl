@@ -37,9 +37,32 @@ vec2 diskFootprint(float receiver, float plane)
 #endif
 }
 
-// Where every blocker of a receiver at `receiver` lies: the disk's footprint at the near plane,
-// at least a texel, at most half the map.
-vec2 blockerSearchRegion(float receiver)
+// Where every blocker of the receiver at `uv`, `receiver` from the light, lies: the disk's
+// footprint at the nearest depth a blocker may have, at least a texel, at most half the map.
+// That depth is first the near plane's. Then, twice, the nearest the map holds under the region
+// (the min/max depth mip, DEPTH_RANGE): no blocker in it is nearer, and one outside it shadows
+// nothing here, so the region for that depth still holds every blocker. The near plane alone
+// spans half the map when it lies close to the light, as a fit puts it for a point light inside
+// a model's bounds, and 16 taps over half the map found blockers far from the receiver's own
+// (a rock under a point light: pcss 4.8 % of the pixels misclassified, dpcf 15 %).
+vec2 blockerSearchRegion(vec2 uv, float receiver)
 {
-    return min(max(diskFootprint(receiver, gShadowDepthRange.x), uShadowTexel), vec2(0.5));
+    vec2 region = min(max(diskFootprint(receiver, gShadowDepthRange.x), uShadowTexel), vec2(0.5));
+#ifdef DEPTH_RANGE
+    for (int i = 0; i < 2; ++i) {
+        bool insideMap, bounded;
+        vec2 range = footprintRange(uv, region, insideMap, bounded);
+        if (!bounded)
+            break;
+#ifdef REVERSED_Z
+        float nearest = range.y;    // nearer the light is greater
+#else
+        float nearest = range.x;
+#endif
+        // A hair nearer, for the depth's rounding near 1.
+        float plane = max(depthDistance(nearest) * 0.999, gShadowDepthRange.x);
+        region = min(max(diskFootprint(receiver, plane), uShadowTexel), region);
+    }
+#endif
+    return region;
 }

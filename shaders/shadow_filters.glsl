@@ -34,12 +34,10 @@ float shadowTap(vec2 uv, float reference)
     return texture(uShadowMap, vec3(uv, reference));
 }
 
-// World distance from the light (along its axis) of a depth of the map.
-float shadowDistance(float depth)
+// World distance from the light (along its axis) of a depth of the map as the depth pass wrote
+// it, before any slicing (map.slices): what the min/max depth mip holds.
+float depthDistance(float depth)
 {
-#ifdef DEPTH_SLICES
-    depth = storedToDepth(depth);
-#endif
 #ifdef REVERSED_Z
     depth = 1.0 - depth;
 #endif
@@ -49,6 +47,15 @@ float shadowDistance(float depth)
 #else
     return n + depth * (f - n);
 #endif
+}
+
+// World distance from the light (along its axis) of a depth as the map stores it.
+float shadowDistance(float depth)
+{
+#ifdef DEPTH_SLICES
+    depth = storedToDepth(depth);
+#endif
+    return depthDistance(depth);
 }
 
 // World length of a tap offset (uv) at the receiver.
@@ -129,7 +136,7 @@ const vec2 kPoissonDisk[64] = vec2[64](
     vec2(-0.7228, 0.3481), vec2(0.3208, 0.7563), vec2(0.6339, 0.2270), vec2(0.0641, 0.8574),
     vec2(-0.8808, -0.4735), vec2(0.4879, -0.8452), vec2(-0.1827, -0.7825), vec2(0.2483, -0.6364));
 
-#ifdef EARLY_OUT
+#ifdef DEPTH_RANGE
 // An atlas of every level (renderer/DepthRangePass.h), read at its level 0: level k holds the
 // min (r) and max (g) depth of 2^(k+2) x 2^(k+2) map texels.
 uniform sampler2D uDepthRange;
@@ -141,30 +148,45 @@ vec2 rangeTexel(int level, ivec2 p)
     return texelFetch(uDepthRange, at.xy + min(p, at.zw - 1), 0).rg;
 }
 
-// Penumbra-only filtering: 1 when every nearest-texel tap within `radius` (uv, per axis) of
-// `uv` compares lit against any reference in `references` (lowest, highest), 0 when every one
-// compares shadowed, -1 when the footprint may hold a penumbra (or leaves the map). Exact: the
-// taps that would be skipped are the very comparisons the mip bounds.
-float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
+// The lowest (x) and highest (y) depth of the map texels within `radius` (uv, per axis) of `uv`,
+// as the mip's 2 x 2 texels at the level that spans them bound it; the part of the footprint
+// outside the map is left out. `bounded` is false where no level spans the footprint.
+vec2 footprintRange(vec2 uv, vec2 radius, out bool insideMap, out bool bounded)
 {
     vec2 size = floor(1.0 / uShadowTexel + 0.5);    // whole texels: 1 / (1 / 3072) may come out a hair under
     ivec2 lo = ivec2(floor((uv - radius) * size)) - 1;  // a texel of margin for rounding
     ivec2 hi = ivec2(floor((uv + radius) * size)) + 1;
-    if (any(lessThan(lo, ivec2(0))) || any(greaterThanEqual(hi, ivec2(size))))
-        return -1.0;
+    insideMap = all(greaterThanEqual(lo, ivec2(0))) && all(lessThan(hi, ivec2(size)));
+    lo = max(lo, ivec2(0));
+    hi = min(hi, ivec2(size) - 1);
     int span = max(hi.x - lo.x, hi.y - lo.y);
     int level = 0;
     while ((4 << level) <= span)
         ++level;                // texels of 2^(level + 2) map texels: the footprint spans at most 2 x 2
-    if (level >= uDepthRangeLevels)
-        return -1.0;
+    bounded = level < uDepthRangeLevels;
+    level = min(level, uDepthRangeLevels - 1);
     ivec2 base = lo >> (level + 2);
     vec2 a = rangeTexel(level, base);
     vec2 b = rangeTexel(level, base + ivec2(1, 0));
     vec2 c = rangeTexel(level, base + ivec2(0, 1));
     vec2 d = rangeTexel(level, base + ivec2(1, 1));
-    float nearest = min(min(a.r, b.r), min(c.r, d.r));
-    float farthest = max(max(a.g, b.g), max(c.g, d.g));
+    return vec2(min(min(a.r, b.r), min(c.r, d.r)), max(max(a.g, b.g), max(c.g, d.g)));
+}
+#endif
+
+#ifdef EARLY_OUT
+// Penumbra-only filtering: 1 when every nearest-texel tap within `radius` (uv, per axis) of
+// `uv` compares lit against any reference in `references` (lowest, highest), 0 when every one
+// compares shadowed, -1 when the footprint may hold a penumbra (or leaves the map: a tap there
+// reads the border, which the mip does not hold). Exact: the taps that would be skipped are the
+// very comparisons the mip bounds.
+float footprintVerdict(vec2 uv, vec2 radius, vec2 references)
+{
+    bool insideMap, bounded;
+    vec2 range = footprintRange(uv, radius, insideMap, bounded);
+    if (!insideMap || !bounded)
+        return -1.0;
+    float nearest = range.x, farthest = range.y;
     // Clamped as the hardware comparison clamps them, and widened a little: the hardware may
     // round the reference to the map's precision before comparing.
 #ifdef DEPTH_SLICES

@@ -349,7 +349,7 @@ private slots:
         const RasteriserTuning& t = plan.tuning;
         QCOMPARE(t.software, tuned);
         // All or nothing: each optimisation is the profile's.
-        for (const bool on : {t.skipsOutOfReach, t.depthSlices, t.wideTwoChannelMoments, t.clearsWrittenMoments, t.cpuVirtualRequests})
+        for (const bool on : {t.skipsOutOfReach, t.depthSlices, t.wideTwoChannelMoments, t.clearsWrittenMoments, t.cpuVirtualRequests, t.rangesWrittenTexels})
             QCOMPARE(on, tuned);
         QCOMPARE(plan.slices, slices);
         QCOMPARE(plan.grid.columns, columns);

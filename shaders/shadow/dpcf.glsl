@@ -12,7 +12,7 @@
 float filterShadow(vec2 uv, float reference)
 {
     float receiver = shadowDistance(reference);
-    vec2 search = blockerSearchRegion(receiver);
+    vec2 search = blockerSearchRegion(uv, receiver);
 #ifdef EARLY_OUT
     // Every tap lies in the search region: all lit there is no blocker, all shadowed is 0.
     float verdict = footprintVerdict(uv, search, tapReferenceRange(search, reference));

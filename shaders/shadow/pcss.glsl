@@ -10,7 +10,7 @@ float filterShadow(vec2 uv, float reference)
     float receiver = shadowDistance(reference);
     // Every blocker lies between the near plane and the receiver, so the penumbra filter below
     // stays inside this search region.
-    vec2 search = blockerSearchRegion(receiver);
+    vec2 search = blockerSearchRegion(uv, receiver);
 #ifdef EARLY_OUT
     // Every tap of both loops lies in the search region: where it is all lit there is no blocker
     // (1), where it is all shadowed every filter tap is too (0).
