@@ -128,9 +128,10 @@ struct FilterSettings {
     int kernel = 3;                         // odd; used by FilterMode::Pcf (PcfOptimized: 3 to 7)
     int taps = 16;                          // Poisson taps of FilterMode::Poisson, Pcss and Dpcf
     double radius = 2.5;                    // texels; used by FilterMode::Poisson
-    // pcf, poisson and pcss skip their taps where a min/max depth mip of the map says the whole
-    // footprint is lit or shadowed; the image is the same. Off by default: on llvmpipe the mip
-    // costs more with every shadow pass than the skipped taps save (`shadowlab report`).
+    // pcf, pcf-optimized, poisson, pcss and dpcf skip their taps where a min/max depth mip of
+    // the map says the whole footprint is lit or shadowed; the image is the same. Off by
+    // default: on llvmpipe the mip costs more with every shadow pass than the skipped taps save
+    // (`shadowlab report`); pcss and dpcf build it anyway, for their blocker search.
     bool earlyOut = false;
     // The moment techniques (vsm, evsm2, evsm4, msm, esm), read at lookup: changing them needs
     // no new moments pass.

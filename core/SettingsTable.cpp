@@ -292,7 +292,7 @@ void filterKeys(std::vector<Entry>& e)
     for (const TechniqueParameter& parameter : techniqueParameters())
         e.push_back(parameterKey(parameter));
     e.push_back(toggle({.key = "filter.early_out",
-                        .help = "Penumbra-only filtering: pcf, poisson and pcss skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass",
+                        .help = "Penumbra-only filtering: pcf, pcf-optimized, poisson, pcss and dpcf skip their taps where a min/max depth mip of the map shows the whole footprint lit or shadowed; the same image, less time outside penumbrae, a mip built with each shadow pass (pcss and dpcf build it anyway, for their blocker search)",
                         .look = {.label = QStringLiteral("Filter only penumbrae"), .group = kFiltering}},
                        [](auto& s) -> auto& { return s.filter.earlyOut; }));
     e.push_back(choice<MomentFormat>({.key = "moments.format",

@@ -1,7 +1,6 @@
 #include "DepthRangePass.h"
 
 #include "CasterTexels.h"
-
 #include "PassState.h"
 #include "RenderError.h"
 
@@ -94,7 +93,8 @@ std::vector<QRect> levelZeroOver(const std::vector<QRect>& texels, QSize levelZe
     std::vector<QRect> over;
     for (const QRect& r : texels) {
         if (!r.isEmpty())
-            over.push_back(QRect(QPoint(r.left() / block, r.top() / block), QPoint(r.right() / block, r.bottom() / block)) & QRect(QPoint(0, 0), levelZero));
+            over.push_back(QRect(QPoint(r.left() / block, r.top() / block), QPoint(r.right() / block, r.bottom() / block))
+                           & QRect(QPoint(0, 0), levelZero));
     }
     return over;
 }
@@ -114,13 +114,14 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::
     if (written != nullptr && m_contents == Contents::All)
         now = levelZeroOver(*written, levelSize(0));
     std::vector<QRect> levelZero{QRect(QPoint(0, 0), levelSize(0))};
-    if (now && m_lastWritten && m_source == map.texture()) {
+    if (now && m_lastWritten && m_source == map.texture() && m_sourceReversed == map.reversedDepth()) {
         std::vector<QRect> both = *now;
         both.insert(both.end(), m_lastWritten->begin(), m_lastWritten->end());
         levelZero = joinOverlapping(both, kMostAreas);
     }
     m_lastWritten = std::move(now);
     m_source = map.texture();
+    m_sourceReversed = map.reversedDepth();
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());

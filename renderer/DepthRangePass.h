@@ -16,7 +16,8 @@
 
 namespace shadowlab {
 
-// The min/max depth mip of a shadow map, for penumbra-only filtering (filter.early_out): level k
+// The min/max depth mip of a shadow map, for penumbra-only filtering (filter.early_out) and
+// pcss's and dpcf's blocker search (the nearest depth under a search region): level k
 // holds, per texel, the lowest and highest depth of the 2^(k+2) x 2^(k+2) map texels under it,
 // down to 1 x 1 (no level of 2 x 2: the narrowest footprint a filter asks about spans 4 texels). A wide filter reads at most four texels to learn that its whole footprint is lit
 // or shadowed and skips its taps. Rebuilt only when the map changes (after a shadow pass), a
@@ -86,7 +87,8 @@ private:
     GlTexture m_chain;  // the mip chain the passes build, level by level
     GlTexture m_atlas;
     QSize m_mapSize;
-    GLuint m_source = 0;                // the map's texture the last build read
+    GLuint m_source = 0;                // the map's texture the last build read, and its cleared value
+    bool m_sourceReversed = false;
     // Level-0 texels over what the last build's map had written; nullopt: the whole level.
     std::optional<std::vector<QRect>> m_lastWritten;
     qint64 m_levelZeroDrawn = 0;

@@ -36,8 +36,8 @@ struct RasteriserTuning {
     // point per requesting pixel on the GPU, which costs a software rasteriser six times as much.
     bool cpuVirtualRequests = false;
     // The min/max depth mip (DepthRangePass, for pcss's and dpcf's blocker search and
-    // filter.early_out) rebuilt at its finest level only over the texels the map's passes wrote
-    // since the last build and before it, not over the whole map: llvmpipe reads every texel
+    // filter.early_out) rebuilt at its finest level only over the texels the map holds casters
+    // in now or held them in at the last build, not over the whole map: llvmpipe reads every texel
     // of a 2048² map for it at several times a shadow pass's cost (a point light's six faces:
     // 34 ms), where a GPU reduces a map in microseconds.
     bool rangesWrittenTexels = false;

@@ -250,7 +250,7 @@ void Renderer::refit(const FrameUpdate::Frame& frame, const FramePlan& plan, con
 void Renderer::buildDepthRange(const FramePlan& plan, TimingMode timing, FrameStats& stats)
 {
     // The min/max depth mip follows the map: built after a shadow pass, or when penumbra-only
-    // filtering is turned on over a map it was not built from.
+    // filtering or a blocker search is turned on over a map it was not built from.
     if (!plan.depthRange || m_depthRangeGeneration == m_mapGeneration)
         return;
     if (!m_depthRange)
@@ -262,9 +262,10 @@ void Renderer::buildDepthRange(const FramePlan& plan, TimingMode timing, FrameSt
     // do); a virtual map's pool, written page by page, whole.
     if (plan.tuning.rangesWrittenTexels && !plan.virtualMap) {
         std::vector<QRect> written;
+        const int size = m_shadowMap.size();
         for (int row = 0; row < m_shadowMap.rows(); ++row) {
             for (int column = 0; column < m_shadowMap.columns(); ++column)
-                written.push_back(m_shadowMap.written().written(QRect(column * m_shadowMap.size(), row * m_shadowMap.size(), m_shadowMap.size(), m_shadowMap.size())));
+                written.push_back(m_shadowMap.written().written(QRect(column * size, row * size, size, size)));
         }
         m_depthRange->build(m_shadowMap, false, &written);
     } else

@@ -48,19 +48,24 @@ vec2 diskFootprint(float receiver, float plane)
 vec2 blockerSearchRegion(vec2 uv, float receiver)
 {
     vec2 region = min(max(diskFootprint(receiver, gShadowDepthRange.x), uShadowTexel), vec2(0.5));
-#ifdef DEPTH_RANGE
+    // Not under a warp (light.warp): its depth converts to distance at the receiver's own scale,
+    // which does not bound another texel's.
+#if defined(DEPTH_RANGE) && !defined(LIGHT_WARP)
     for (int i = 0; i < 2; ++i) {
+        // Only the part inside the view's tile: taps are clamped into it, so what lies beyond
+        // holds none of them (and a point light's 3 x 2 faces would take the whole map's level).
+        vec2 lo = max(uv - region, gShadowTile.xy), hi = min(uv + region, gShadowTile.zw);
         bool insideMap, bounded;
-        vec2 range = footprintRange(uv, region, insideMap, bounded);
+        vec2 range = footprintRange(0.5 * (lo + hi), 0.5 * max(hi - lo, vec2(0.0)), insideMap, bounded);
         if (!bounded)
             break;
+        // A hair nearer the light, for the depth's rounding near 1.
 #ifdef REVERSED_Z
-        float nearest = range.y;    // nearer the light is greater
+        float nearest = range.y + 1e-5;     // nearer the light is greater
 #else
-        float nearest = range.x;
+        float nearest = range.x - 1e-5;
 #endif
-        // A hair nearer, for the depth's rounding near 1.
-        float plane = max(depthDistance(nearest) * 0.999, gShadowDepthRange.x);
+        float plane = max(depthDistance(nearest), gShadowDepthRange.x);
         region = min(max(diskFootprint(receiver, plane), uShadowTexel), region);
     }
 #endif

@@ -337,7 +337,9 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLi
     float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
     float footprint = texelsToWorld(footprintRayTexels(tanTheta), p.texel, p.position.w);
 #ifdef BIAS_DEPTH
+#ifdef LIGHT_PERSPECTIVE
     gReferenceDistance = distanceOfShift(p, nearerLight(0.0, bias) + footprint * p.depthPerWorld);
+#endif
     return nearerLight(p.coord.z, bias) + footprint * p.depthPerWorld;
 #else
     float units = worldBias(bias, p, tanTheta) + footprint;
