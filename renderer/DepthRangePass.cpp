@@ -101,13 +101,8 @@ std::vector<QRect> levelZeroOver(const std::vector<QRect>& texels, QSize levelZe
 
 } // namespace
 
-void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::vector<QRect>* written)
+std::vector<QRect> DepthRangePass::levelZeroAreas(const ShadowMap& map, const std::vector<QRect>* written)
 {
-    const QSize mapSize(map.width(), map.height());
-    if (!m_atlas || mapSize != m_mapSize) {
-        allocate(mapSize);
-        m_lastWritten.reset();
-    }
     // Level 0 over what is written now and what was at the last build, where both are known
     // and the map is the same texture; the whole level otherwise.
     std::optional<std::vector<QRect>> now;
@@ -122,6 +117,17 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::
     m_lastWritten = std::move(now);
     m_source = map.texture();
     m_sourceReversed = map.reversedDepth();
+    return levelZero;
+}
+
+void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::vector<QRect>* written)
+{
+    const QSize mapSize(map.width(), map.height());
+    if (!m_atlas || mapSize != m_mapSize) {
+        allocate(mapSize);
+        m_lastWritten.reset();
+    }
+    const std::vector<QRect> levelZero = levelZeroAreas(map, written);
     GLint previous = 0;
     m_gl->glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
     m_gl->glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer.id());
@@ -181,7 +187,15 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::
         m_gl->glDisable(GL_SCISSOR_TEST);
     }
 
-    // Levels 1 and up into their places in the atlas.
+    copyIntoAtlas();
+    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
+    m_gl->glBindSampler(kSourceUnit, 0);
+    m_gl->glBindVertexArray(0);
+    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+}
+
+void DepthRangePass::copyIntoAtlas()
+{
     if (levels() > 1) {
         m_gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_atlasFramebuffer.id());
         labelGlObject(GlLabelKind::Framebuffer, m_atlasFramebuffer.id(), QStringLiteral("depth range atlas"));
@@ -196,10 +210,6 @@ void DepthRangePass::build(const ShadowMap& map, bool reversedDepth, const std::
         }
         m_gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     }
-    m_gl->glBindTexture(GL_TEXTURE_2D, 0);
-    m_gl->glBindSampler(kSourceUnit, 0);
-    m_gl->glBindVertexArray(0);
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
 }
 
 std::optional<std::pair<float, float>> DepthRangePass::readTotal()

@@ -66,6 +66,10 @@ public:
 
 private:
     void allocate(QSize mapSize);
+    // Where level 0 is drawn this build (build's `written`), and what is kept for the next.
+    std::vector<QRect> levelZeroAreas(const ShadowMap& map, const std::vector<QRect>* written);
+    // Levels 1 and up, drawn into the chain, copied to their places in the atlas.
+    void copyIntoAtlas();
 
     // Past it level 0's areas are drawn as their bounds.
     static constexpr std::size_t kMostAreas = 16;
