@@ -260,15 +260,9 @@ void Renderer::buildDepthRange(const FramePlan& plan, TimingMode timing, FrameSt
     // Under the software profile only where the map's passes wrote since its tiles' clears (a
     // cleared texel reads as the far plane in every slice, as the texels earlier slices left
     // do); a virtual map's pool, written page by page, whole.
-    if (plan.tuning.rangesWrittenTexels && !plan.virtualMap) {
-        std::vector<QRect> written;
-        const int size = m_shadowMap.size();
-        for (int row = 0; row < m_shadowMap.rows(); ++row) {
-            for (int column = 0; column < m_shadowMap.columns(); ++column)
-                written.push_back(m_shadowMap.written().written(QRect(column * size, row * size, size, size)));
-        }
-        m_depthRange->build(m_shadowMap, false, &written);
-    } else
+    if (plan.tuning.rangesWrittenTexels && !plan.virtualMap)
+        m_depthRange->build(m_shadowMap, false, &m_shadowMap.written().writtenTiles());
+    else
         m_depthRange->build(m_shadowMap);
     m_depthRangeGeneration = m_mapGeneration;
     if (timing == TimingMode::Finish && stats.shadowPassRendered) {

@@ -21,6 +21,8 @@ public:
     QRect toClear(const QRect& tile, const QRect& drawn) const;
     // What is written within `tile`; empty: it reads cleared everywhere.
     QRect written(const QRect& tile) const;
+    // The same for every tile, row by row.
+    const std::vector<QRect>& writtenTiles() const { return m_tiles; }
     // After a clear of `rect` (one tile or part of it, or the whole map): tiles whose written
     // texels it covers read cleared.
     void cleared(const QRect& rect);

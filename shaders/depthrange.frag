@@ -1,7 +1,6 @@
 // One level of the shadow map's min/max depth mip (penumbra-only filtering, pcss's and dpcf's
-// blocker search): each texel holds
-// the lowest and highest depth of the 2 x 2 texels under it one level finer (level 0: of the
-// 4 x 4 map texels under it).
+// blocker search): each texel holds the lowest and highest depth of the 2 x 2 texels under it
+// one level finer (level 0: of the 4 x 4 map texels under it).
 #ifdef FROM_DEPTH
 #extension GL_ARB_texture_gather : enable
 #endif

@@ -275,13 +275,15 @@ struct ViewPoint {
 };
 
 // The map depth of the receiver moved `units` world units toward the light: on the ray to the
-// light, so it stays on the same texel, and the same offset whatever the depth range.
+// light, so it stays on the same texel, and the same offset whatever the depth range. A
+// perspective view's distance of that point along its axis, its w, goes to gReferenceDistance.
 float depthTowardLight(ShadowViewLookup view, ViewPoint p, vec3 toLight, float units)
 {
 #ifdef AFFINE_VIEW
     return p.coord.z + units * p.depthPerWorld;
 #else
     vec4 moved = p.position + view.matrix * vec4(toLight * units, 0.0);
+    gReferenceDistance = moved.w;
     return moved.z / moved.w;
 #endif
 }
@@ -342,11 +344,7 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLi
 #endif
     return nearerLight(p.coord.z, bias) + footprint * p.depthPerWorld;
 #else
-    float units = worldBias(bias, p, tanTheta) + footprint;
-#ifndef AFFINE_VIEW
-    gReferenceDistance = p.position.w + (view.matrix * vec4(toLight * units, 0.0)).w;
-#endif
-    return depthTowardLight(view, p, toLight, units);
+    return depthTowardLight(view, p, toLight, worldBias(bias, p, tanTheta) + footprint);
 #endif
 }
 
