@@ -38,6 +38,8 @@ def cases(mesh, quick):
          ["moving-light"]),
         ("seed, msm, moving light", ["bench", "--scene", "seed", "--phase", "moving-light", "--set", "filter.mode=msm"] + hd + frames,
          ["moving-light"]),
+        ("seed, pcss, moving light", ["bench", "--scene", "seed", "--phase", "moving-light", "--set", "filter.mode=pcss"] + hd + frames,
+         ["moving-light"]),
         ("city, still", ["bench", "--scene", "city", "--phase", "steady"] + hd + frames, ["steady"]),
         ("city, moving camera", ["bench", "--scene", "city", "--phase", "moving-camera"] + hd + frames, ["moving-camera"]),
         ("city, 50 vehicles moving", ["bench", "--scene", "city+50", "--phase", "moving-casters"] + hd + frames, ["moving-casters"]),
