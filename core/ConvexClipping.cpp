@@ -10,8 +10,11 @@ namespace shadowlab::convex {
 
 std::vector<Polygon> hexahedronFaces(const std::array<glm::dvec3, 8>& c)
 {
-    return {{c[0], c[2], c[6], c[4]}, {c[1], c[5], c[7], c[3]}, {c[0], c[4], c[5], c[1]},
-            {c[2], c[3], c[7], c[6]}, {c[0], c[1], c[3], c[2]}, {c[4], c[6], c[7], c[5]}};
+    std::vector<Polygon> faces;
+    faces.reserve(kHexahedronFaces.size());
+    for (const std::array<int, 4>& face : kHexahedronFaces)
+        faces.push_back({c[std::size_t(face[0])], c[std::size_t(face[1])], c[std::size_t(face[2])], c[std::size_t(face[3])]});
+    return faces;
 }
 
 Hull boxHull(const Bounds& b)

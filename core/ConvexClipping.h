@@ -31,7 +31,8 @@ struct Hull {
 };
 
 // The six faces of a box or frustum; corner i has x from bit 0, y from bit 1, z from bit 2 (as
-// Bounds::corners() and frustumCorners()).
+// Bounds::corners() and frustumCorners()). kHexahedronFaces: each face's corners by index.
+constexpr std::array<std::array<int, 4>, 6> kHexahedronFaces{{{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}}};
 std::vector<Polygon> hexahedronFaces(const std::array<glm::dvec3, 8>& c);
 Hull boxHull(const Bounds& b);
 // The six planes -w <= x, y, z <= w of a view-projection (Gribb-Hartmann), in the order left,

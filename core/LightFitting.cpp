@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace shadowlab {
@@ -77,15 +78,15 @@ public:
         m_min = glm::dvec2(region.min);
         const glm::dvec2 span = glm::max(glm::dvec2(region.max) - m_min, glm::dvec2(1e-300));
         m_scale = double(m_cells) / span;
-        m_lists.resize(std::size_t(m_cells * m_cells));
-        for (std::size_t i = 0; i < boxes.size(); ++i) {
-            if (boxes[i].isEmpty())
-                continue;
-            const auto [lo, hi] = cellRange(boxes[i]);
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    m_lists[std::size_t(y * m_cells + x)].push_back(i);
-        }
+        // Each cell's boxes, in one list: counted, then placed (cell c holds m_boxes[m_start[c],
+        // m_start[c + 1])).
+        m_start.assign(std::size_t(m_cells * m_cells) + 1, 0);
+        forEachCell(boxes, [this](std::size_t cell, std::size_t) { ++m_start[cell + 1]; });
+        for (std::size_t c = 1; c < m_start.size(); ++c)
+            m_start[c] += m_start[c - 1];
+        m_boxes.resize(m_start.back());
+        std::vector<std::size_t> next(m_start.begin(), m_start.end() - 1);
+        forEachCell(boxes, [this, &next](std::size_t cell, std::size_t i) { m_boxes[next[cell]++] = i; });
     }
 
     // The boxes whose cells overlap `box`, each once.
@@ -96,7 +97,9 @@ public:
         const auto [lo, hi] = cellRange(box);
         for (int y = lo.y; y <= hi.y; ++y) {
             for (int x = lo.x; x <= hi.x; ++x) {
-                for (std::size_t i : m_lists[std::size_t(y * m_cells + x)]) {
+                const std::size_t cell = std::size_t(y * m_cells + x);
+                for (std::size_t k = m_start[cell]; k < m_start[cell + 1]; ++k) {
+                    const std::size_t i = m_boxes[k];
                     if (m_stamp[i] != m_query) {
                         m_stamp[i] = m_query;
                         out.push_back(i);
@@ -107,6 +110,20 @@ public:
     }
 
 private:
+    // f(cell, box) for every cell each non-empty box overlaps.
+    template<typename F>
+    void forEachCell(const std::vector<Bounds>& boxes, F f) const
+    {
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            if (boxes[i].isEmpty())
+                continue;
+            const auto [lo, hi] = cellRange(boxes[i]);
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x)
+                    f(std::size_t(y * m_cells + x), i);
+        }
+    }
+
     std::pair<glm::ivec2, glm::ivec2> cellRange(const Bounds& b) const
     {
         const auto cell = [this](double v, int axis) {
@@ -119,7 +136,8 @@ private:
     int m_cells = 1;
     glm::dvec2 m_min{0.0};
     glm::dvec2 m_scale{1.0};
-    std::vector<std::vector<std::size_t>> m_lists;
+    std::vector<std::size_t> m_start;   // per cell, where its boxes start in m_boxes; one more at the end
+    std::vector<std::size_t> m_boxes;
     mutable std::vector<unsigned> m_stamp;
     mutable unsigned m_query = 0;
 };
@@ -128,41 +146,6 @@ double ladderUp(double x) { return std::exp2(std::ceil(std::log2(x) * kStepsPerO
 double ladderDown(double x) { return std::exp2(std::floor(std::log2(x) * kStepsPerOctave) / kStepsPerOctave); }
 
 } // namespace
-
-namespace {
-
-// Whether every corner of `box` lies inside the frustum of `viewProjection` with room to spare:
-// clipping the box to it keeps every face as it is and leaves none of the frustum's.
-bool wellInside(const std::array<glm::dvec3, 8>& corners, const glm::dmat4& viewProjection)
-{
-    for (const glm::dvec3& c : corners) {
-        const glm::dvec4 p = viewProjection * glm::dvec4(c, 1.0);
-        const double inside = p.w * (1.0 - 1e-9);
-        if (!(p.w > 0.0) || !(std::abs(p.x) < inside && std::abs(p.y) < inside && std::abs(p.z) < inside))
-            return false;
-    }
-    return true;
-}
-
-} // namespace
-
-std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm::dmat4>& viewProjections)
-{
-    if (box.isEmpty())
-        return {};
-    Hull hull = boxHull(box);
-    // Most boxes of a large scene lie wholly inside the camera (or wholly outside, which callers
-    // test first): the clip is then the box itself, without building a hull of each frustum.
-    const std::array<glm::dvec3, 8> corners = box.corners();
-    for (const glm::dmat4& m : viewProjections) {
-        if (!wellInside(corners, m))
-            hull = intersect(hull, frustumHull(m));
-    }
-    std::vector<glm::dvec3> points;
-    for (const Polygon& face : hull.faces)
-        points.insert(points.end(), face.begin(), face.end());
-    return points;
-}
 
 namespace {
 
@@ -176,6 +159,27 @@ struct LightSpace {
         const glm::dvec3 v(view * glm::dvec4(p, 1.0));
         const double depth = -v.z;
         return perspective ? glm::dvec3(v.x / depth, v.y / depth, depth) : glm::dvec3(v.x, v.y, depth);
+    }
+    // The bounds of a whole box in light space: an ortho light's, affine, from the box's extent
+    // (a dot product per side, not eight corners through the view); a perspective light's
+    // through its corners.
+    Bounds boundsOf(const Bounds& box) const
+    {
+        Bounds b;
+        if (box.isEmpty())
+            return b;
+        if (perspective) {
+            for (const glm::dvec3& c : box.corners())
+                b.extend((*this)(c));
+            return b;
+        }
+        const BoxExtent extent(box);
+        for (int axis = 0; axis < 3; ++axis) {
+            const glm::dvec4 f = matrixRow(view, axis) * (axis == 2 ? -1.0 : 1.0);     // depth is -z
+            b.min[axis] = extent.least(f);
+            b.max[axis] = extent.greatest(f);
+        }
+        return b;
     }
 };
 
@@ -193,11 +197,23 @@ SeenParts seenParts(const std::vector<FitObject>& objects, const std::vector<glm
     SeenParts seen;
     seen.parts.resize(objects.size());
     double nearest = 1e300, farthest = 0.0;
+    FrustaClip clip(limits);
     for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (!objects[i].receives || objects[i].bounds.isEmpty()
-            || std::any_of(limits.begin(), limits.end(), [&](const glm::dmat4& m) { return isOutsideFrustum(m, objects[i].bounds, false); }))
+        if (!objects[i].receives)
             continue;
-        for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, limits)) {
+        const std::vector<glm::dvec3>& points = clip(objects[i].bounds);  // nothing where it lies outside a limit
+        if (clip.whole() && !lightPoints) {
+            // Most of a large scene: the whole box, without its corners one by one.
+            seen.parts[i] = toLight.boundsOf(objects[i].bounds);
+            if (camera) {
+                const BoxExtent extent(objects[i].bounds);
+                nearest = std::min(nearest, extent.least(matrixRow(*camera, 3)));        // clip w
+                farthest = std::max(farthest, extent.greatest(matrixRow(*camera, 3)));
+            }
+            seen.region.extend(seen.parts[i]);
+            continue;
+        }
+        for (const glm::dvec3& p : points) {
             const glm::dvec3 l = toLight(p);
             seen.parts[i].extend(l);
             if (lightPoints)
@@ -235,10 +251,8 @@ CasterFootprint casterFootprint(const std::vector<FitObject>& objects, const std
     double casterStart = perspective ? region.max.z * 1e-6 : region.min.z;
     if (!perspective) {
         for (const FitObject& object : objects) {
-            if (object.casts && !object.bounds.isEmpty()) {
-                for (const glm::dvec3& c : object.bounds.corners())
-                    casterStart = std::min(casterStart, toLight(c).z - 1.0);
-            }
+            if (object.casts && !object.bounds.isEmpty())
+                casterStart = std::min(casterStart, toLight.boundsOf(object.bounds).min.z - 1.0);
         }
     }
     const double regionFar = region.max.z + std::abs(region.max.z) * 1e-6 + 1e-12;
@@ -247,10 +261,16 @@ CasterFootprint casterFootprint(const std::vector<FitObject>& objects, const std
                        casterStart, regionFar) * view
         : glm::ortho(region.min.x, region.max.x, region.min.y, region.max.y, casterStart, regionFar) * view;
     std::vector<Bounds> casterParts(objects.size());
+    FrustaClip clip({prism});
     for (std::size_t j = 0; j < objects.size(); ++j) {
-        if (objects[j].casts && !objects[j].bounds.isEmpty() && isFinite(prism) && !isOutsideFrustum(prism, objects[j].bounds, false)) {
-            for (const glm::dvec3& p : clipBoxToFrusta(objects[j].bounds, {prism}))
-                casterParts[j].extend(toLight(p));
+        if (objects[j].casts && isFinite(prism)) {
+            const std::vector<glm::dvec3>& points = clip(objects[j].bounds);
+            if (clip.whole())
+                casterParts[j] = toLight.boundsOf(objects[j].bounds);
+            else {
+                for (const glm::dvec3& p : points)
+                    casterParts[j].extend(toLight(p));
+            }
         }
     }
 
@@ -327,9 +347,16 @@ Bounds windowDepths(const std::vector<FitObject>& objects, const std::vector<Bou
     std::vector<glm::dmat4> columnLimits = limits;
     columnLimits.push_back(column);
     Bounds depths;
+    FrustaClip clip(std::move(columnLimits));
     for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (!seen[i].isEmpty() && isFinite(column)) {
-            for (const glm::dvec3& p : clipBoxToFrusta(objects[i].bounds, columnLimits))
+        if (seen[i].isEmpty() || !isFinite(column))
+            continue;
+        // Well inside the column, a receiver's part is the one seen (seenParts clipped it to the
+        // same limits): the same points, so the same bounds.
+        if (frustumSide(objects[i].bounds, column) == FrustumSide::WellInside)
+            depths.extend(seen[i]);
+        else {
+            for (const glm::dvec3& p : clip(objects[i].bounds))
                 depths.extend(toLight(p));
         }
     }

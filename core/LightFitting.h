@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Bounds.h"
+#include "FrustaClip.h"
 #include "LightMath.h"
 #include "Settings.h"
 
@@ -91,10 +92,6 @@ std::vector<SettingsIssue> fitWarnings(const FittedLight& fit);
 FittedLight fitLight(const LightSettings& light, const std::vector<FitObject>& objects, const std::optional<glm::dmat4>& camera,
                      int mapSize, const std::vector<glm::dmat4>& within = {},
                      const glm::dvec3& mapUp = glm::dvec3(0.0));
-
-// The vertices of the convex region `box` ∩ each frustum (conventional clip space of each
-// view-projection): empty when they do not overlap. Exposed for tests of the fit.
-std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm::dmat4>& viewProjections);
 
 // The camera's visible region as the light's map sees it: `box` (the scene) clipped to the
 // camera's frustum (`cameraViewProjection`), projected by `shadowMatrix` (world -> map [0, 1]^2)

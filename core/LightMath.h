@@ -57,6 +57,7 @@ struct LightFrame {
     // A spot light's cone: the cosine of its half-angle (light.fov); receivers outside it are
     // unlit. Below -1 for lights without a cone.
     double spotCosine = -2.0;
+    bool operator==(const LightFrame&) const = default;
 };
 
 struct CameraFrame {

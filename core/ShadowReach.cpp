@@ -528,31 +528,50 @@ bool skippedLookupsReadTheSame(const Settings& settings)
     return settings.filter.momentBias <= kMostBiasShade * std::max(1.0 - settings.filter.bleeding, 0.0);
 }
 
-ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
-                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
+ReachBoxesKey reachBoxesKey(const Settings& settings)
+{
+    return {skippedLookupsReadTheSame(settings), tapReachTexels(settings), referencesStayNearer(settings), settings.bias.normal};
+}
+
+std::optional<ReachBoxes> reachBoxes(const Settings& settings, const std::vector<LightFrame>& views, int mapSize, const std::vector<ReachObject>& casters)
 {
     if (!skippedLookupsReadTheSame(settings))
-        return lookupsEverywhere(objects);
+        return std::nullopt;
     TapReach taps;
     taps.texels = tapReachTexels(settings);
     taps.grow = taps.texels ? *taps.texels / double(std::max(mapSize, 1)) : 1.0;
     taps.nearerIsLit = referencesStayNearer(settings);
-    ShadowReach reach;
-    std::vector<std::vector<ReachBox>> perView;
+    ReachBoxes perView;
     for (const LightFrame& view : views) {
         std::optional<std::vector<ReachBox>> boxes = viewBoxes(settings, view, mapSize, casters, taps);
         if (!boxes)
-            return lookupsEverywhere(objects);
-        reach.boxes.insert(reach.boxes.end(), boxes->begin(), boxes->end());
+            return std::nullopt;
         perView.push_back(std::move(*boxes));
     }
+    return perView;
+}
+
+ShadowReach shadowReach(const std::vector<LightFrame>& views, const std::optional<ReachBoxes>& boxes, const std::vector<ReachObject>& objects,
+                        const CameraFrame& camera)
+{
+    if (!boxes)
+        return lookupsEverywhere(objects);
+    ShadowReach reach;
+    for (const std::vector<ReachBox>& view : *boxes)
+        reach.boxes.insert(reach.boxes.end(), view.begin(), view.end());
     reach.objects.assign(objects.size(), Reach::Outside);
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (objects[i].receives)
-            reach.objects[i] = receiverReach(objects[i], views, perView);
+            reach.objects[i] = receiverReach(objects[i], views, *boxes);
     }
     buildMask(reach, objects, camera);
     return reach;
+}
+
+ShadowReach shadowReach(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
+                        const std::vector<ReachObject>& casters, const std::vector<ReachObject>& objects, const CameraFrame& camera)
+{
+    return shadowReach(views, reachBoxes(settings, views, mapSize, casters), objects, camera);
 }
 
 } // namespace shadowlab

@@ -115,6 +115,24 @@ struct ReachObject {
 // shadow pass draws none of it.
 bool culledFrom(const ReachObject& object, const LightFrame& view);
 
+// The reach in two halves, for a caller that keeps the first while only the camera moves:
+// each view's boxes of the casters (nullopt: lookups go everywhere), which follow the views, the
+// map's size, the casters and the settings' reachBoxesKey; then where the receivers lie against
+// them and the mask, which follow the camera.
+using ReachBoxes = std::vector<std::vector<ReachBox>>;
+struct ReachBoxesKey {
+    bool skipsLookups = false;          // skippedLookupsReadTheSame
+    std::optional<double> tapTexels;    // tapReachTexels
+    bool nearerIsLit = false;           // referencesStayNearer
+    double normalOffset = 0.0;          // bias.normal
+    bool operator==(const ReachBoxesKey&) const = default;
+};
+ReachBoxesKey reachBoxesKey(const Settings& settings);
+std::optional<ReachBoxes> reachBoxes(const Settings& settings, const std::vector<LightFrame>& views, int mapSize,
+                                     const std::vector<ReachObject>& casters);
+ShadowReach shadowReach(const std::vector<LightFrame>& views, const std::optional<ReachBoxes>& boxes, const std::vector<ReachObject>& objects,
+                        const CameraFrame& camera);
+
 // The reach of a light with the views `views` (one frame per view; their shadowMatrix), over
 // maps of `mapSize` texels a side, of the objects in `casters` (those that cast), and where
 // each of `receivers` (those that receive) lies against it, seen by `camera`. The two lists

@@ -163,6 +163,7 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
     const glm::dmat4 column = glm::ortho(low.x, high.x, low.y, high.y, -1e300, 1e300) * view;
     Bounds depths;
     bool casterOver = false;
+    FrustaClip clip({column, slice});
     for (const FitObject& object : objects) {
         if (object.bounds.isEmpty())
             continue;
@@ -174,7 +175,7 @@ FittedLight fitCascadeSphere(const LightSettings& light, const std::vector<FitOb
         casterOver = casterOver || object.casts;
         if (!object.receives)
             continue;
-        for (const glm::dvec3& p : clipBoxToFrusta(object.bounds, {column, slice}))
+        for (const glm::dvec3& p : clip(object.bounds))
             depths.extend(toLight(p));
     }
     result.texelBefore = result.texelAfter = texel;

@@ -51,8 +51,7 @@ std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& lay
     return casters;
 }
 
-ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
-                       const CameraFrame& camera)
+std::vector<ReachObject> sceneReceivers(const SceneLayout& layout)
 {
     std::vector<ReachObject> receivers;
     for (const DrawItem& item : layout.drawItems()) {
@@ -60,7 +59,13 @@ ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& 
         const std::optional<std::array<glm::dvec3, 8>> box = item.batch ? std::nullopt : std::optional(layout.objectBox(item.objects.front()));
         receivers.push_back({.bounds = item.bounds, .box = box, .casts = item.castsShadow, .receives = item.receivesShadow, .plane = plane, .frontFacesCulled = false});
     }
-    return shadowReach(settings, views, settings.map.size, casters, receivers, camera);
+    return receivers;
+}
+
+ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
+                       const CameraFrame& camera)
+{
+    return shadowReach(settings, views, settings.map.size, casters, sceneReceivers(layout), camera);
 }
 
 FrameUpdate::Frame FrameUpdate::begin(Inputs inputs, const Bounds& sceneBounds) const
@@ -131,26 +136,55 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
     m_reach = ShadowReach{};
     m_casterTexels.clear();
     if (settings.shadow.enabled) {
-        // The still casters' texels stand while only moving ones move: a frame of moving casters
-        // costs what they do, whatever the size of the still scene.
-        if (!frame.reposeOnly || m_stillTexels.size() != m_views.frames.size()) {
-            const std::vector<ReachObject> still = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Still);
+        // The casters follow the scene, the storage's culling and, for the moving ones, where
+        // they are: a camera walk keeps them all, a frame of moving casters finds only theirs.
+        const CastersKey stillKey{frame.inputs.sceneGeneration, -1, sources.cullsFrontFaces, sources.floorsLeftOut};
+        CastersKey movingKey = stillKey;
+        movingKey.poseGeneration = frame.inputs.poseGeneration;
+        const bool stillChanged = stillKey != m_stillKey;
+        if (stillChanged)
+            m_still = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Still);
+        if (stillChanged || movingKey != m_movingKey) {
+            m_moving = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Moving);
+            // All of them in the scene's order, as sceneCasters lists them.
+            m_casters.clear();
+            std::size_t still = 0, moving = 0;
+            for (std::size_t i = 0; i < scene.objects.size(); ++i)
+                m_casters.push_back(layout.moves(i) ? m_moving.at(moving++) : m_still.at(still++));
+        }
+        m_stillKey = stillKey;
+        m_movingKey = movingKey;
+        // The still casters' texels stand while only moving ones move (a frame of moving casters
+        // costs what they do, whatever the size of the still scene), and while a camera's move
+        // leaves the views as they were (a stabilised fit moves them by whole steps).
+        if (stillChanged || settings.map.size != m_stillTexelsMapSize || m_views.frames != m_stillTexelsViews) {
             m_stillTexels.clear();
             for (const LightFrame& view : m_views.frames)
-                m_stillTexels.push_back(shadowlab::casterTexels(view, settings.map.size, still));
+                m_stillTexels.push_back(shadowlab::casterTexels(view, settings.map.size, m_still));
+            m_stillTexelsMapSize = settings.map.size;
+            m_stillTexelsViews = m_views.frames;
         }
-        const std::vector<ReachObject> moving = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Moving);
         for (std::size_t v = 0; v < m_views.frames.size(); ++v) {
             CasterTexels texels = m_stillTexels[v];
-            if (!moving.empty())
-                texels.add(shadowlab::casterTexels(m_views.frames[v], settings.map.size, moving));
+            if (!m_moving.empty())
+                texels.add(shadowlab::casterTexels(m_views.frames[v], settings.map.size, m_moving));
             m_casterTexels.push_back(texels);
         }
         // The reach is the software profile's (RasteriserTuning::skipsOutOfReach): found over
         // every caster and receiver only where it is used.
-        if (sources.reach)
-            m_reach = sceneReach(settings, m_views.frames, sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut), layout,
-                                 frame.camera);
+        if (sources.reach) {
+            // Its casters' boxes follow the views and the casters, not the camera: a camera walk
+            // under a stabilised fit finds only where the receivers lie against them.
+            const ReachBoxesKey boxesKey = reachBoxesKey(settings);
+            if (m_reachBoxesMoving != movingKey || m_reachBoxesMapSize != settings.map.size || m_reachBoxesViews != m_views.frames || m_reachBoxesKey != boxesKey) {
+                m_reachBoxes = reachBoxes(settings, m_views.frames, settings.map.size, m_casters);
+                m_reachBoxesMoving = movingKey;
+                m_reachBoxesMapSize = settings.map.size;
+                m_reachBoxesViews = m_views.frames;
+                m_reachBoxesKey = boxesKey;
+            }
+            m_reach = shadowReach(m_views.frames, m_reachBoxes, sceneReceivers(layout), frame.camera);
+        }
     }
     m_reach.generation = generation;
 }

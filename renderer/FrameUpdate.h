@@ -82,7 +82,28 @@ private:
     FittedLight m_fit;
     ShadowReach m_reach;
     std::vector<CasterTexels> m_casterTexels;
-    std::vector<CasterTexels> m_stillTexels;    // per view, of the casters that do not move
+    // The scene's casters (the still ones, the moving ones, all), kept while what they are
+    // found from stands: the still ones' key has no pose (-1).
+    struct CastersKey {
+        int sceneGeneration = -1;
+        int poseGeneration = -1;
+        bool cullsFrontFaces = false;
+        bool floorsLeftOut = false;
+        bool operator==(const CastersKey&) const = default;
+    };
+    std::optional<CastersKey> m_stillKey, m_movingKey;
+    std::vector<ReachObject> m_still, m_moving, m_casters;
+    // Per view, the texels of the casters that do not move, and the views and map size they
+    // were found for.
+    std::vector<LightFrame> m_stillTexelsViews;
+    int m_stillTexelsMapSize = 0;
+    // The reach's boxes of the casters, and what they were found for.
+    std::optional<ReachBoxes> m_reachBoxes;
+    std::optional<CastersKey> m_reachBoxesMoving;
+    int m_reachBoxesMapSize = 0;
+    std::vector<LightFrame> m_reachBoxesViews;
+    std::optional<ReachBoxesKey> m_reachBoxesKey;
+    std::vector<CasterTexels> m_stillTexels;
     int m_fitCount = 0;
 };
 
@@ -92,6 +113,8 @@ private:
 ReachObject sceneCaster(const Scene& scene, const SceneLayout& layout, std::size_t i, bool cullsFrontFaces, bool floorsLeftOut);
 std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& layout, bool cullsFrontFaces, bool floorsLeftOut,
                                       CasterSet set = CasterSet::All);
+// The receivers as drawn, for the reach.
+std::vector<ReachObject> sceneReceivers(const SceneLayout& layout);
 // Where the lookups of `views` can find `casters`, with the receivers as drawn.
 ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
                        const CameraFrame& camera);

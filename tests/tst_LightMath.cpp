@@ -1,5 +1,6 @@
 // Light and camera math without GL: finite, orthonormal, and mapping the right things to the
 // right places for every light direction, including straight above and below.
+#include "ConvexClipping.h"
 #include "LightFitting.h"
 #include "LightMath.h"
 #include "SceneLibrary.h"
@@ -13,6 +14,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <cstdint>
 
 using namespace shadowlab;
 
@@ -786,7 +788,7 @@ private Q_SLOTS:
         const Bounds inside{{-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}};
         const Bounds whole = boundsOf(clipBoxToFrusta(inside, {camera, slab}));
         QVERIFY(glm::all(glm::equal(whole.min, inside.min)) && glm::all(glm::equal(whole.max, inside.max)));
-        QCOMPARE(int(clipBoxToFrusta(inside, {camera}).size()), 24);        // its six faces, uncut
+        QCOMPARE(int(clipBoxToFrusta(inside, {camera}).size()), 8);         // its eight corners, uncut
         // Past the near plane (z = 9.5 along the view, 0.5 from the camera at z = 10).
         const Bounds across{{-0.2, -0.2, 8.0}, {0.2, 0.2, 12.0}};
         const Bounds cut = boundsOf(clipBoxToFrusta(across, {camera, slab}));
@@ -800,6 +802,66 @@ private Q_SLOTS:
         const Bounds both = boundsOf(clipBoxToFrusta(deep, {camera, slab})), swapped = boundsOf(clipBoxToFrusta(deep, {slab, camera}));
         QVERIFY(both.min.y > -20.0 && both.min.y < -5.0);
         QVERIFY(glm::length(both.min - swapped.min) < 1e-9 && glm::length(both.max - swapped.max) < 1e-9);
+    }
+
+    // The fit's clipper of many boxes (FrustaClip, which keeps each frustum's hull and its
+    // buffers from box to box) finds exactly the points of intersecting the hulls one frustum
+    // after another, in their order, for boxes inside, across, outside and flat, and for one,
+    // two and three frusta; a box outside one of them is nothing.
+    void frustaClipIsTheHullsIntersected()
+    {
+        const glm::dmat4 camera = glm::perspective(glm::radians(60.0), 1.5, 0.5, 40.0)
+            * glm::lookAt(glm::dvec3(0.0, 2.0, 10.0), glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+        const glm::dmat4 slab = glm::ortho(-6.0, 6.0, -5.0, 7.0, -20.0, 20.0) * glm::lookAt(glm::dvec3(0.0), glm::dvec3(0.3, -1.0, 0.2), glm::dvec3(0.0, 0.0, 1.0));
+        const glm::dmat4 cone = glm::perspective(glm::radians(50.0), 1.0, 1.0, 30.0) * glm::lookAt(glm::dvec3(4.0, 8.0, 4.0), glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+        const std::vector<std::vector<glm::dmat4>> sets{{camera}, {camera, slab}, {slab, camera, cone}};
+        const auto byHulls = [](const Bounds& box, const std::vector<glm::dmat4>& frusta) {
+            convex::Hull hull = convex::boxHull(box);
+            for (const glm::dmat4& m : frusta)
+                hull = convex::intersect(hull, convex::frustumHull(m));
+            std::vector<glm::dvec3> points;
+            for (const convex::Polygon& face : hull.faces)
+                points.insert(points.end(), face.begin(), face.end());
+            return points;
+        };
+        std::uint32_t state = 12345u;
+        const auto next = [&state] {
+            state = state * 1664525u + 1013904223u;
+            return double(state >> 8) / double(1u << 24);
+        };
+        for (const std::vector<glm::dmat4>& frusta : sets) {
+            FrustaClip clip(frusta);
+            int inside = 0, across = 0, outside = 0;
+            for (int k = 0; k < 400; ++k) {
+                const double spread = k % 2 == 0 ? 4.0 : 16.0;     // half near the middle, half anywhere
+                const glm::dvec3 centre((next() - 0.5) * spread, (next() - 0.4) * spread * 0.5, (next() - 0.5) * spread);
+                glm::dvec3 half(next(), next(), next());
+                half *= k % 3 == 0 ? 3.0 : 0.8;
+                if (k % 7 == 0)
+                    half.y = 0.0;       // a flat one, as a floor
+                const Bounds box{centre - half, centre + half};
+                const std::vector<glm::dvec3> got = clip(box);
+                const bool out = std::any_of(frusta.begin(), frusta.end(), [&](const glm::dmat4& m) { return isOutsideFrustum(m, box, false); });
+                if (out) {
+                    QVERIFY(got.empty());
+                    ++outside;
+                    continue;
+                }
+                const std::vector<glm::dvec3> expected = byHulls(box, frusta);
+                if (got.size() == 8 && expected.size() == 24) {
+                    // Well inside every frustum: its corners, where the hulls give each corner three times.
+                    for (const glm::dvec3& p : expected)
+                        QVERIFY(std::find(got.begin(), got.end(), p) != got.end());
+                    ++inside;
+                    continue;
+                }
+                QCOMPARE(got.size(), expected.size());
+                for (std::size_t i = 0; i < got.size(); ++i)
+                    QVERIFY2(got[i] == expected[i], qPrintable(QStringLiteral("box %1, point %2").arg(k).arg(i)));
+                ++across;
+            }
+            QVERIFY2(inside > 10 && across > 10 && outside > 10, qPrintable(QStringLiteral("%1 inside, %2 across, %3 outside").arg(inside).arg(across).arg(outside)));
+        }
     }
 
     // Nothing casts: no box, and every receiver is out of reach.
