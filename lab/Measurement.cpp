@@ -130,6 +130,7 @@ void recordFrame(FrameSamples& s, const FrameStats& f)
     s.lit.push_back(f.litPassMs);
     s.litWall.push_back(f.litPassWallMs);
     s.wall.push_back(f.frameWallMs);
+    s.outsideWall.push_back(f.frameWallMs - (f.shadowPassRendered ? f.shadowPassWallMs : 0.0) - f.litPassWallMs);
 }
 
 } // namespace

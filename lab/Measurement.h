@@ -24,6 +24,9 @@ AccuracyResult measureAccuracy(AccuracyMeter& meter, Renderer& renderer, const S
 struct FrameSamples {
     std::vector<double> shadow, lit, shadowWall, litWall, wall;
     std::vector<double> blurWall;   // of shadowWall, the moments blur and mips (moment techniques only)
+    // Per frame, its wall time less its shadow and lit passes': the CPU's own work (the fit, the
+    // reach, uploads) and any other pass the settings add (sdsm's depth, contact shadows' depth).
+    std::vector<double> outsideWall;
     int shadowPassesRun = 0;
     int shadowMapClears = 0;    // of those, the passes that cleared the map (map.slices)
     int shadowDraws = 0;

@@ -828,7 +828,12 @@ private Q_SLOTS:
         // GPU rows only where the timer measures something; a software renderer runs no query.
         const bool gpuTimed = o.value("gpu_timer_meaningful").toBool();
         for (const QJsonObject& phase : byName) {
-            QVERIFY(phase.value("frame_wall").toObject().value("median_ms").toDouble() > 0.0);
+            const QJsonObject frame = phase.value("frame_wall").toObject();
+            QVERIFY(frame.value("median_ms").toDouble() > 0.0);
+            // What the frame spends outside its passes (the fit, the reach), every frame: within the frame.
+            const QJsonObject outside = phase.value("outside_passes_wall").toObject();
+            QCOMPARE(outside.value("count").toInt(), frame.value("count").toInt());
+            QVERIFY(outside.value("median_ms").toDouble() >= 0.0 && outside.value("median_ms").toDouble() < frame.value("median_ms").toDouble());
             QCOMPARE(phase.value("lit_pass_gpu").isObject(), gpuTimed);
             QCOMPARE(phase.value("lit_pass_gpu").isNull(), !gpuTimed);
         }
