@@ -21,6 +21,7 @@ import time
 KEPT_FROM = "## Why the software profile's optimisations exist"
 
 SLOWER = 1.05
+NOISE_MS = 0.05
 
 
 def cases(mesh, quick):
@@ -197,7 +198,10 @@ def main():
             if not ratios:
                 continue
             ratio = statistics.median(ratios)
-            slower = ratio > SLOWER
+            # A figure of a few hundredths of a millisecond (the frame outside its passes when
+            # nothing is refitted) moves by more than 5 % with the clock alone: flagged only where
+            # it also moved by more than NOISE_MS.
+            slower = ratio > SLOWER and statistics.median(head) - statistics.median(base) > NOISE_MS
             flagged += slower
             rows.append((name, figure, statistics.median(base), statistics.median(head), ratio,
                          percentile(ratios, 0.1), percentile(ratios, 0.9), slower))
