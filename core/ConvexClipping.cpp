@@ -17,13 +17,17 @@ std::vector<Polygon> hexahedronFaces(const std::array<glm::dvec3, 8>& c)
     return faces;
 }
 
-Hull boxHull(const Bounds& b)
+std::array<Plane, 6> boxPlanes(const Bounds& b)
 {
     // Planes written out, not derived from the faces: a flat box (a ground plane) has faces of
     // zero area but perfectly good planes.
-    return {hexahedronFaces(b.corners()),
-            {{{1, 0, 0}, -b.min.x}, {{-1, 0, 0}, b.max.x}, {{0, 1, 0}, -b.min.y}, {{0, -1, 0}, b.max.y},
-             {{0, 0, 1}, -b.min.z}, {{0, 0, -1}, b.max.z}}};
+    return {{{{1, 0, 0}, -b.min.x}, {{-1, 0, 0}, b.max.x}, {{0, 1, 0}, -b.min.y}, {{0, -1, 0}, b.max.y}, {{0, 0, 1}, -b.min.z}, {{0, 0, -1}, b.max.z}}};
+}
+
+Hull boxHull(const Bounds& b)
+{
+    const std::array<Plane, 6> planes = boxPlanes(b);
+    return {hexahedronFaces(b.corners()), {planes.begin(), planes.end()}};
 }
 
 std::array<Plane, 6> frustumPlanes(const glm::dmat4& m)
@@ -46,19 +50,25 @@ Hull frustumHull(const glm::dmat4& m)
     return {hexahedronFaces(frustumCorners(m)), {planes.begin(), planes.end()}};
 }
 
-Polygon clip(const Polygon& polygon, const Plane& plane)
+void clipInto(const Polygon& polygon, const Plane& plane, Polygon& out)
 {
-    Polygon result;
+    out.clear();
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const glm::dvec3& a = polygon[i];
         const glm::dvec3& b = polygon[(i + 1) % polygon.size()];
         const double da = plane.distance(a);
         const double db = plane.distance(b);
         if (da >= 0.0)
-            result.push_back(a);
+            out.push_back(a);
         if ((da >= 0.0) != (db >= 0.0))
-            result.push_back(a + (b - a) * (da / (da - db)));
+            out.push_back(a + (b - a) * (da / (da - db)));
     }
+}
+
+Polygon clip(const Polygon& polygon, const Plane& plane)
+{
+    Polygon result;
+    clipInto(polygon, plane, result);
     return result;
 }
 

@@ -35,13 +35,17 @@ struct Hull {
 constexpr std::array<std::array<int, 4>, 6> kHexahedronFaces{{{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}}};
 std::vector<Polygon> hexahedronFaces(const std::array<glm::dvec3, 8>& c);
 Hull boxHull(const Bounds& b);
+// boxHull's planes: the box's six faces', inside where it is.
+std::array<Plane, 6> boxPlanes(const Bounds& b);
 // The six planes -w <= x, y, z <= w of a view-projection (Gribb-Hartmann), in the order left,
 // right, bottom, top, near, far; always six, so an index names a plane.
 std::array<Plane, 6> frustumPlanes(const glm::dmat4& m);
 Hull frustumHull(const glm::dmat4& m);
 
-// The part of `polygon` inside `plane` (Sutherland-Hodgman).
+// The part of `polygon` inside `plane` (Sutherland-Hodgman); clipInto writes it to `out`, whose
+// memory a caller clipping many polygons keeps.
 Polygon clip(const Polygon& polygon, const Plane& plane);
+void clipInto(const Polygon& polygon, const Plane& plane, Polygon& out);
 // The part of each face inside every plane; faces clipped away are dropped.
 std::vector<Polygon> clipFaces(std::vector<Polygon> faces, const std::vector<Plane>& planes);
 Hull intersect(const Hull& a, const Hull& b);

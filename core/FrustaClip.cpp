@@ -29,6 +29,17 @@ FrustumSide frustumSide(const Bounds& box, const glm::dmat4& viewProjection)
     return wellInside ? FrustumSide::WellInside : FrustumSide::Across;
 }
 
+std::pair<double, double> coordinateRange(const glm::dmat4& m, int i, const Bounds& box)
+{
+    const auto at = [&](bool greatest) {
+        glm::dvec3 c;
+        for (int axis = 0; axis < 3; ++axis)
+            c[axis] = (m[axis][i] >= 0.0) == greatest ? box.max[axis] : box.min[axis];
+        return (m[0][i] * c.x + m[1][i] * c.y) + (m[2][i] * c.z + m[3][i] * 1.0);
+    };
+    return {at(false), at(true)};
+}
+
 FrustaClip::FrustaClip(const std::vector<glm::dmat4>& viewProjections)
 {
     m_frusta.reserve(viewProjections.size());
@@ -65,46 +76,33 @@ const std::vector<glm::dvec3>& FrustaClip::operator()(const Bounds& box)
         m_points.assign(corners.begin(), corners.end());
         return m_points;
     }
-    // boxHull's planes, in its order.
-    const std::array<Plane, 6> boxPlanes = {{{{1, 0, 0}, -box.min.x}, {{-1, 0, 0}, box.max.x}, {{0, 1, 0}, -box.min.y},
-                                             {{0, -1, 0}, box.max.y}, {{0, 0, 1}, -box.min.z}, {{0, 0, -1}, box.max.z}}};
+    const std::array<Plane, 6> planes = boxPlanes(box);     // boxHull's, in its order
     for (const std::array<int, 4>& face : kHexahedronFaces) {
         m_face.clear();
         for (int corner : face)
             m_face.push_back(corners[std::size_t(corner)]);
-        appendClipped(0, boxPlanes);
+        appendClipped(0, planes);
     }
     for (std::size_t k = 0; k < m_cutting.size(); ++k) {
         for (const Polygon& face : m_cutting[k]->faces) {
             m_face.assign(face.begin(), face.end());
-            appendClipped(k + 1, boxPlanes);
+            appendClipped(k + 1, planes);
         }
     }
     return m_points;
 }
 
-void FrustaClip::appendClipped(std::size_t own, const std::array<Plane, 6>& boxPlanes)
+void FrustaClip::appendClipped(std::size_t own, const std::array<Plane, 6>& boxSides)
 {
     const auto clipBy = [this](const Plane& plane) {
-        // convex::clip, into a kept buffer.
-        m_clipped.clear();
-        for (std::size_t i = 0; i < m_face.size(); ++i) {
-            const glm::dvec3& a = m_face[i];
-            const glm::dvec3& b = m_face[(i + 1) % m_face.size()];
-            const double da = plane.distance(a);
-            const double db = plane.distance(b);
-            if (da >= 0.0)
-                m_clipped.push_back(a);
-            if ((da >= 0.0) != (db >= 0.0))
-                m_clipped.push_back(a + (b - a) * (da / (da - db)));
-        }
+        clipInto(m_face, plane, m_clipped);
         std::swap(m_face, m_clipped);
         return !m_face.empty();
     };
     for (std::size_t source = 0; source <= m_cutting.size(); ++source) {
         if (source == own)
             continue;
-        for (const Plane& plane : source == 0 ? boxPlanes : m_cutting[source - 1]->planes) {
+        for (const Plane& plane : source == 0 ? boxSides : m_cutting[source - 1]->planes) {
             if (!clipBy(plane))
                 return;
         }

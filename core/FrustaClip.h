@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
@@ -29,6 +30,10 @@ struct BoxExtent {
 };
 // Row i of a matrix, as the affine function that gives coordinate i.
 inline glm::dvec4 matrixRow(const glm::dmat4& m, int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); }
+// The least and greatest over `box` of coordinate i of m * (p, 1), each taken at the corner the
+// row's signs pick and summed in the order glm's product sums: rounding is monotone, so they are
+// exactly the least and greatest of the eight corners' own products, for two of them.
+std::pair<double, double> coordinateRange(const glm::dmat4& m, int i, const Bounds& box);
 
 // Where `box` lies against the frustum of `viewProjection`: wholly outside one of its planes
 // (as isOutsideFrustum, the near plane included); inside with room to spare, so that clipping
@@ -45,8 +50,9 @@ std::vector<glm::dvec3> clipBoxToFrusta(const Bounds& box, const std::vector<glm
 // clipBoxToFrusta for many boxes against the same frusta, as the fit clips every object of a
 // scene each time the camera moves: each frustum's faces and planes are found once, on the
 // first box that crosses it, and faces are clipped in buffers kept from box to box, so after the
-// first few boxes a clip allocates nothing. The same points as intersecting the hulls
-// (convex::intersect), in the same order.
+// first few boxes a clip allocates nothing. A box that crosses a frustum gives the same points
+// as intersecting the hulls (convex::intersect), in the same order; one well inside every
+// frustum its eight corners.
 class FrustaClip {
 public:
     explicit FrustaClip(const std::vector<glm::dmat4>& viewProjections);
@@ -63,7 +69,7 @@ private:
     };
     // Appends the face in m_face clipped by the planes of every source but `own` (0 the box, k
     // the k-th of `cutting`), in their order, as intersecting their hulls one by one does.
-    void appendClipped(std::size_t own, const std::array<convex::Plane, 6>& boxPlanes);
+    void appendClipped(std::size_t own, const std::array<convex::Plane, 6>& boxSides);
 
     std::vector<Frustum> m_frusta;
     std::vector<const Frustum*> m_cutting;      // the frusta the current box crosses

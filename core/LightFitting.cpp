@@ -160,9 +160,9 @@ struct LightSpace {
         const double depth = -v.z;
         return perspective ? glm::dvec3(v.x / depth, v.y / depth, depth) : glm::dvec3(v.x, v.y, depth);
     }
-    // The bounds of a whole box in light space: an ortho light's, affine, from the box's extent
-    // (a dot product per side, not eight corners through the view); a perspective light's
-    // through its corners.
+    // The bounds of a whole box in light space, the same as its corners': an ortho light's, affine,
+    // from the two corners each axis's row picks (coordinateRange), not all eight through the
+    // view; a perspective light's through its corners.
     Bounds boundsOf(const Bounds& box) const
     {
         Bounds b;
@@ -173,11 +173,10 @@ struct LightSpace {
                 b.extend((*this)(c));
             return b;
         }
-        const BoxExtent extent(box);
         for (int axis = 0; axis < 3; ++axis) {
-            const glm::dvec4 f = matrixRow(view, axis) * (axis == 2 ? -1.0 : 1.0);     // depth is -z
-            b.min[axis] = extent.least(f);
-            b.max[axis] = extent.greatest(f);
+            const auto [least, greatest] = coordinateRange(view, axis, box);
+            b.min[axis] = axis == 2 ? -greatest : least;    // depth is -z
+            b.max[axis] = axis == 2 ? -least : greatest;
         }
         return b;
     }
@@ -206,9 +205,9 @@ SeenParts seenParts(const std::vector<FitObject>& objects, const std::vector<glm
             // Most of a large scene: the whole box, without its corners one by one.
             seen.parts[i] = toLight.boundsOf(objects[i].bounds);
             if (camera) {
-                const BoxExtent extent(objects[i].bounds);
-                nearest = std::min(nearest, extent.least(matrixRow(*camera, 3)));        // clip w
-                farthest = std::max(farthest, extent.greatest(matrixRow(*camera, 3)));
+                const auto [low, high] = coordinateRange(*camera, 3, objects[i].bounds);    // clip w
+                nearest = std::min(nearest, low);
+                farthest = std::max(farthest, high);
             }
             seen.region.extend(seen.parts[i]);
             continue;
@@ -347,7 +346,7 @@ Bounds windowDepths(const std::vector<FitObject>& objects, const std::vector<Bou
     std::vector<glm::dmat4> columnLimits = limits;
     columnLimits.push_back(column);
     Bounds depths;
-    FrustaClip clip(std::move(columnLimits));
+    FrustaClip clip(columnLimits);
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (seen[i].isEmpty() || !isFinite(column))
             continue;

@@ -62,12 +62,6 @@ std::vector<ReachObject> sceneReceivers(const SceneLayout& layout)
     return receivers;
 }
 
-ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
-                       const CameraFrame& camera)
-{
-    return shadowReach(settings, views, settings.map.size, casters, sceneReceivers(layout), camera);
-}
-
 FrameUpdate::Frame FrameUpdate::begin(Inputs inputs, const Bounds& sceneBounds) const
 {
     Frame frame;

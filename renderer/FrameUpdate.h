@@ -95,6 +95,7 @@ private:
     std::vector<ReachObject> m_still, m_moving, m_casters;
     // Per view, the texels of the casters that do not move, and the views and map size they
     // were found for.
+    std::vector<CasterTexels> m_stillTexels;
     std::vector<LightFrame> m_stillTexelsViews;
     int m_stillTexelsMapSize = 0;
     // The reach's boxes of the casters, and what they were found for.
@@ -103,7 +104,6 @@ private:
     int m_reachBoxesMapSize = 0;
     std::vector<LightFrame> m_reachBoxesViews;
     std::optional<ReachBoxesKey> m_reachBoxesKey;
-    std::vector<CasterTexels> m_stillTexels;
     int m_fitCount = 0;
 };
 
@@ -115,8 +115,5 @@ std::vector<ReachObject> sceneCasters(const Scene& scene, const SceneLayout& lay
                                       CasterSet set = CasterSet::All);
 // The receivers as drawn, for the reach.
 std::vector<ReachObject> sceneReceivers(const SceneLayout& layout);
-// Where the lookups of `views` can find `casters`, with the receivers as drawn.
-ShadowReach sceneReach(const Settings& settings, const std::vector<LightFrame>& views, const std::vector<ReachObject>& casters, const SceneLayout& layout,
-                       const CameraFrame& camera);
 
 } // namespace shadowlab

@@ -264,6 +264,57 @@ private slots:
         QCOMPARE(u.update.reach().generation, generation + 1);
     }
 
+    // What the update keeps between fits (the casters, the still casters' texels, the reach's
+    // boxes of the casters) follows every input it was found from: after each change in a walk
+    // of settings, culling and camera, the reach and the texels are a fresh update's.
+    void keptPartsFollowTheirInputs()
+    {
+        Settings s = presetSettings(QStringLiteral("seed"));
+        ensureValid(s);
+        struct Step {
+            QStringList assignments;
+            bool cullsFrontFaces = false;
+            bool floorsLeftOut = false;
+        };
+        const std::vector<Step> walk{
+            {{QStringLiteral("bias.cull_front=false"), QStringLiteral("bias.skip_floors=false")}, false, false},
+            {{QStringLiteral("camera.position=5.4,4.6,8.2")}, false, false},           // the views may stay
+            {{QStringLiteral("filter.mode=pcf"), QStringLiteral("filter.kernel=7")}, false, false},   // the taps reach farther
+            {{QStringLiteral("bias.normal=2")}, false, false},
+            {{QStringLiteral("map.size=512")}, false, false},
+            {{QStringLiteral("bias.cull_front=true")}, true, false},      // the storage's culling follows the settings
+            {{QStringLiteral("bias.skip_floors=true")}, true, true},
+            {{QStringLiteral("shadow.enabled=false")}, true, true},
+            {{QStringLiteral("shadow.enabled=true"), QStringLiteral("light.type=point")}, true, true},
+            {{QStringLiteral("light.type=directional"), QStringLiteral("shadow.cascades=3"), QStringLiteral("bias.cull_front=false"),
+              QStringLiteral("bias.skip_floors=false")},
+             false, false},
+        };
+        Update walked(buildScene(QStringLiteral("seed")));
+        for (std::size_t k = 0; k < walk.size(); ++k) {
+            for (const QString& a : walk[k].assignments)
+                applyAssignment(s, a);
+            ensureValid(s);
+            FrameUpdate::FitSources sources;
+            sources.cullsFrontFaces = walk[k].cullsFrontFaces;
+            sources.floorsLeftOut = walk[k].floorsLeftOut;
+            walked.frame(s, QSize(320, 180), 1, {}, sources);
+            Update fresh(buildScene(QStringLiteral("seed")));
+            fresh.frame(s, QSize(320, 180), 1, {}, sources);
+            const QString step = QStringLiteral("step %1").arg(k);
+            const ShadowReach &a = walked.update.reach(), &b = fresh.update.reach();
+            QVERIFY2(a.objects == b.objects && a.boxes.size() == b.boxes.size() && a.screenRects == b.screenRects, qPrintable(step));
+            for (std::size_t i = 0; i < a.boxes.size(); ++i)
+                QVERIFY2(a.boxes[i].uvMin == b.boxes[i].uvMin && a.boxes[i].uvMax == b.boxes[i].uvMax && a.boxes[i].depthMin == b.boxes[i].depthMin
+                             && a.boxes[i].uvEdges == b.boxes[i].uvEdges,
+                         qPrintable(step));
+            const std::vector<CasterTexels> &ta = walked.update.casterTexels(), &tb = fresh.update.casterTexels();
+            QVERIFY2(ta.size() == tb.size(), qPrintable(step));
+            for (std::size_t v = 0; v < ta.size(); ++v)
+                QVERIFY2(ta[v].drawn == tb[v].drawn && ta[v].pieces == tb[v].pieces, qPrintable(step));
+        }
+    }
+
     // A virtual map is one view, its coarsest level, whatever the fit would have made.
     void virtualMapIsOneView()
     {

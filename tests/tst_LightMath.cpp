@@ -862,6 +862,23 @@ private Q_SLOTS:
             }
             QVERIFY2(inside > 10 && across > 10 && outside > 10, qPrintable(QStringLiteral("%1 inside, %2 across, %3 outside").arg(inside).arg(across).arg(outside)));
         }
+        // A whole box's range of each coordinate through a matrix is exactly its corners' least
+        // and greatest, as the fit's bounds were from the corners one by one.
+        for (const std::vector<glm::dmat4>& frusta : sets) {
+            for (int k = 0; k < 200; ++k) {
+                const glm::dvec3 centre((next() - 0.5) * 40.0, (next() - 0.5) * 40.0, (next() - 0.5) * 40.0);
+                const Bounds box{centre - glm::dvec3(next(), next() * 5.0, 0.0), centre + glm::dvec3(next() * 3.0, next(), next())};
+                for (int i = 0; i < 4; ++i) {
+                    double least = 1e300, greatest = -1e300;
+                    for (const glm::dvec3& c : box.corners()) {
+                        least = std::min(least, (frusta.back() * glm::dvec4(c, 1.0))[i]);
+                        greatest = std::max(greatest, (frusta.back() * glm::dvec4(c, 1.0))[i]);
+                    }
+                    const auto [low, high] = coordinateRange(frusta.back(), i, box);
+                    QVERIFY2(low == least && high == greatest, qPrintable(QStringLiteral("coordinate %1: %2, %3 against %4, %5").arg(i).arg(low, 0, 'g', 17).arg(high, 0, 'g', 17).arg(least, 0, 'g', 17).arg(greatest, 0, 'g', 17)));
+                }
+            }
+        }
     }
 
     // Nothing casts: no box, and every receiver is out of reach.
