@@ -33,10 +33,9 @@ Hull boxHull(const Bounds& b)
 std::array<Plane, 6> frustumPlanes(const glm::dmat4& m)
 {
     std::array<Plane, 6> planes;
-    const auto row = [&m](int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); };
     for (int axis = 0; axis < 3; ++axis) {
         for (int side = 0; side < 2; ++side) {
-            const glm::dvec4 p = row(3) + (side == 0 ? 1.0 : -1.0) * row(axis);
+            const glm::dvec4 p = matrixRow(m, 3) + (side == 0 ? 1.0 : -1.0) * matrixRow(m, axis);
             const double length = glm::length(glm::dvec3(p));
             planes[std::size_t(2 * axis + side)] = length > 0.0 ? Plane{glm::dvec3(p) / length, p.w / length} : Plane{glm::dvec3(p), p.w};
         }

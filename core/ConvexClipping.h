@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
 #include <vector>
@@ -37,6 +38,8 @@ std::vector<Polygon> hexahedronFaces(const std::array<glm::dvec3, 8>& c);
 Hull boxHull(const Bounds& b);
 // boxHull's planes: the box's six faces', inside where it is.
 std::array<Plane, 6> boxPlanes(const Bounds& b);
+// Row i of a matrix, as the affine function that gives coordinate i of its product.
+inline glm::dvec4 matrixRow(const glm::dmat4& m, int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); }
 // The six planes -w <= x, y, z <= w of a view-projection (Gribb-Hartmann), in the order left,
 // right, bottom, top, near, far; always six, so an index names a plane.
 std::array<Plane, 6> frustumPlanes(const glm::dmat4& m);

@@ -53,8 +53,8 @@ const std::vector<glm::dvec3>& FrustaClip::operator()(const Bounds& box)
     m_whole = false;
     if (box.isEmpty())
         return m_points;
-    // Most boxes of a large scene lie wholly inside the frusta (or wholly outside, which callers
-    // test first): the clip is then the box itself.
+    // Most boxes of a large scene lie wholly inside the frusta, or wholly outside one: the clip
+    // is then the box itself, or nothing.
     const std::array<glm::dvec3, 8> corners = box.corners();
     m_cutting.clear();
     for (Frustum& frustum : m_frusta) {

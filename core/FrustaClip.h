@@ -28,8 +28,6 @@ struct BoxExtent {
     double middle(const glm::dvec4& f) const { return glm::dot(glm::dvec3(f), centre) + f.w; }
     double spread(const glm::dvec4& f) const { return glm::dot(glm::abs(glm::dvec3(f)), half); }
 };
-// Row i of a matrix, as the affine function that gives coordinate i.
-inline glm::dvec4 matrixRow(const glm::dmat4& m, int i) { return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]); }
 // The least and greatest over `box` of coordinate i of m * (p, 1), each taken at the corner the
 // row's signs pick and summed in the order glm's product sums: rounding is monotone, so they are
 // exactly the least and greatest of the eight corners' own products, for two of them.

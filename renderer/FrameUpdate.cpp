@@ -130,34 +130,8 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
     m_reach = ShadowReach{};
     m_casterTexels.clear();
     if (settings.shadow.enabled) {
-        // The casters follow the scene, the storage's culling and, for the moving ones, where
-        // they are: a camera walk keeps them all, a frame of moving casters finds only theirs.
-        const CastersKey stillKey{frame.inputs.sceneGeneration, -1, sources.cullsFrontFaces, sources.floorsLeftOut};
-        CastersKey movingKey = stillKey;
-        movingKey.poseGeneration = frame.inputs.poseGeneration;
-        const bool stillChanged = stillKey != m_stillKey;
-        if (stillChanged)
-            m_still = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Still);
-        if (stillChanged || movingKey != m_movingKey) {
-            m_moving = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Moving);
-            // All of them in the scene's order, as sceneCasters lists them.
-            m_casters.clear();
-            std::size_t still = 0, moving = 0;
-            for (std::size_t i = 0; i < scene.objects.size(); ++i)
-                m_casters.push_back(layout.moves(i) ? m_moving.at(moving++) : m_still.at(still++));
-        }
-        m_stillKey = stillKey;
-        m_movingKey = movingKey;
-        // The still casters' texels stand while only moving ones move (a frame of moving casters
-        // costs what they do, whatever the size of the still scene), and while a camera's move
-        // leaves the views as they were (a stabilised fit moves them by whole steps).
-        if (stillChanged || settings.map.size != m_stillTexelsMapSize || m_views.frames != m_stillTexelsViews) {
-            m_stillTexels.clear();
-            for (const LightFrame& view : m_views.frames)
-                m_stillTexels.push_back(shadowlab::casterTexels(view, settings.map.size, m_still));
-            m_stillTexelsMapSize = settings.map.size;
-            m_stillTexelsViews = m_views.frames;
-        }
+        keepCasters(frame, scene, layout, sources);
+        keepStillTexels(settings.map.size);
         for (std::size_t v = 0; v < m_views.frames.size(); ++v) {
             CasterTexels texels = m_stillTexels[v];
             if (!m_moving.empty())
@@ -167,20 +141,57 @@ void FrameUpdate::findReach(const Frame& frame, const Scene& scene, const SceneL
         // The reach is the software profile's (RasteriserTuning::skipsOutOfReach): found over
         // every caster and receiver only where it is used.
         if (sources.reach) {
-            // Its casters' boxes follow the views and the casters, not the camera: a camera walk
-            // under a stabilised fit finds only where the receivers lie against them.
-            const ReachBoxesKey boxesKey = reachBoxesKey(settings);
-            if (m_reachBoxesMoving != movingKey || m_reachBoxesMapSize != settings.map.size || m_reachBoxesViews != m_views.frames || m_reachBoxesKey != boxesKey) {
-                m_reachBoxes = reachBoxes(settings, m_views.frames, settings.map.size, m_casters);
-                m_reachBoxesMoving = movingKey;
-                m_reachBoxesMapSize = settings.map.size;
-                m_reachBoxesViews = m_views.frames;
-                m_reachBoxesKey = boxesKey;
-            }
+            keepReachBoxes(settings, scene, layout);
             m_reach = shadowReach(m_views.frames, m_reachBoxes, sceneReceivers(layout), frame.camera);
         }
     }
     m_reach.generation = generation;
+}
+
+void FrameUpdate::keepCasters(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources)
+{
+    // The casters follow the scene, the storage's culling and, for the moving ones, where they
+    // are: a camera walk keeps them all, a frame of moving casters finds only theirs.
+    const CastersKey still{frame.inputs.sceneGeneration, -1, sources.cullsFrontFaces, sources.floorsLeftOut};
+    CastersKey moving = still;
+    moving.poseGeneration = frame.inputs.poseGeneration;
+    if (still != m_stillKey)
+        m_still = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Still);
+    if (moving != m_movingKey)
+        m_moving = sceneCasters(scene, layout, sources.cullsFrontFaces, sources.floorsLeftOut, CasterSet::Moving);
+    m_stillKey = still;
+    m_movingKey = moving;
+}
+
+void FrameUpdate::keepStillTexels(int mapSize)
+{
+    // They stand while only moving casters move (a frame of moving casters costs what they do,
+    // whatever the size of the still scene), and while a camera's move leaves the views as they
+    // were (a stabilised fit moves them by whole steps).
+    StillTexelsKey key{*m_stillKey, mapSize, m_views.frames};
+    if (key == m_stillTexelsKey)
+        return;
+    m_stillTexels.clear();
+    for (const LightFrame& view : m_views.frames)
+        m_stillTexels.push_back(shadowlab::casterTexels(view, mapSize, m_still));
+    m_stillTexelsKey = std::move(key);
+}
+
+void FrameUpdate::keepReachBoxes(const Settings& settings, const Scene& scene, const SceneLayout& layout)
+{
+    // The boxes follow the views and the casters, not the camera: a camera walk under a
+    // stabilised fit finds only where the receivers lie against them.
+    ReachBoxesFor key{*m_movingKey, settings.map.size, m_views.frames, reachBoxesKey(settings)};
+    if (key == m_reachBoxesFor)
+        return;
+    // Every caster in the scene's order, as sceneCasters lists them.
+    std::vector<ReachObject> casters;
+    casters.reserve(scene.objects.size());
+    std::size_t still = 0, moving = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        casters.push_back(layout.moves(i) ? m_moving.at(moving++) : m_still.at(still++));
+    m_reachBoxes = reachBoxes(settings, m_views.frames, settings.map.size, casters);
+    m_reachBoxesFor = std::move(key);
 }
 
 void FrameUpdate::describe(const FramePlan& plan, FrameStats& stats) const

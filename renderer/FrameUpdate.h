@@ -76,14 +76,18 @@ public:
 
 private:
     void findReach(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources);
+    // The parts of findReach kept between fits, each found again when what it follows changed.
+    void keepCasters(const Frame& frame, const Scene& scene, const SceneLayout& layout, const FitSources& sources);
+    void keepStillTexels(int mapSize);
+    void keepReachBoxes(const Settings& settings, const Scene& scene, const SceneLayout& layout);
 
     std::optional<Inputs> m_inputs;
     ShadowViewFrames m_views;
     FittedLight m_fit;
     ShadowReach m_reach;
     std::vector<CasterTexels> m_casterTexels;
-    // The scene's casters (the still ones, the moving ones, all), kept while what they are
-    // found from stands: the still ones' key has no pose (-1).
+    // The scene's casters, the still ones and the moving ones, kept while what they are found
+    // from stands: the still ones' key has no pose (-1).
     struct CastersKey {
         int sceneGeneration = -1;
         int poseGeneration = -1;
@@ -92,18 +96,26 @@ private:
         bool operator==(const CastersKey&) const = default;
     };
     std::optional<CastersKey> m_stillKey, m_movingKey;
-    std::vector<ReachObject> m_still, m_moving, m_casters;
-    // Per view, the texels of the casters that do not move, and the views and map size they
-    // were found for.
+    std::vector<ReachObject> m_still, m_moving;
+    // Per view, the texels of the casters that do not move, and what they were found for.
+    struct StillTexelsKey {
+        CastersKey casters;
+        int mapSize = 0;
+        std::vector<LightFrame> views;
+        bool operator==(const StillTexelsKey&) const = default;
+    };
     std::vector<CasterTexels> m_stillTexels;
-    std::vector<LightFrame> m_stillTexelsViews;
-    int m_stillTexelsMapSize = 0;
-    // The reach's boxes of the casters, and what they were found for.
+    std::optional<StillTexelsKey> m_stillTexelsKey;
+    // The reach's boxes of every caster, and what they were found for.
+    struct ReachBoxesFor {
+        CastersKey casters;
+        int mapSize = 0;
+        std::vector<LightFrame> views;
+        ReachBoxesKey settings;
+        bool operator==(const ReachBoxesFor&) const = default;
+    };
     std::optional<ReachBoxes> m_reachBoxes;
-    std::optional<CastersKey> m_reachBoxesMoving;
-    int m_reachBoxesMapSize = 0;
-    std::vector<LightFrame> m_reachBoxesViews;
-    std::optional<ReachBoxesKey> m_reachBoxesKey;
+    std::optional<ReachBoxesFor> m_reachBoxesFor;
     int m_fitCount = 0;
 };
 
