@@ -217,6 +217,32 @@ bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, do
 
 namespace shadowlab {
 
+bool RayTracer::castsAt(const glm::dvec3& eye, const glm::dvec3& p) const
+{
+    const glm::dvec3 toPoint = p - eye;
+    const double distance = glm::length(toPoint);
+    if (!(distance > 0.0) || !std::isfinite(distance))
+        return false;
+    const glm::dvec3 o = eye - m_origin, d = toPoint / distance;
+    const double tolerance = 1e-3 * distance;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray.org_x = float(o.x);
+    query.ray.org_y = float(o.y);
+    query.ray.org_z = float(o.z);
+    query.ray.dir_x = float(d.x);
+    query.ray.dir_y = float(d.y);
+    query.ray.dir_z = float(d.z);
+    query.ray.tnear = 0.0f;
+    query.ray.tfar = float(distance + tolerance);
+    query.ray.mask = 0xFFFFFFFFu;
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_scene, &context, &query);
+    return query.hit.geomID != RTC_INVALID_GEOMETRY_ID && std::abs(double(query.ray.tfar) - distance) <= tolerance;
+}
+
 int RayTracer::occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const
 {
     constexpr int kLanes = 16;

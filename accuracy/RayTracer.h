@@ -34,6 +34,11 @@ public:
     // most of their way through the scene.
     int occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const;
 
+    // Whether the camera at `eye` sees a caster's surface at `p`: the first thing its ray meets
+    // lies within a thousandth of the distance to p (a surface that casts no shadow is not
+    // traced, so the ray meets something farther, or nothing).
+    bool castsAt(const glm::dvec3& eye, const glm::dvec3& p) const;
+
     // The moving casters placed as `scene`'s models say (the scene this tracer was made from,
     // posed at another time: Scene::poseAt). Not thread-safe against queries.
     void pose(const Scene& scene);

@@ -9,9 +9,11 @@
 #include <QThread>
 #include <QtConcurrent/QtConcurrentMap>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace shadowlab {
 
@@ -70,9 +72,33 @@ bool outsideSpotCone(const LightFrame& light, const glm::dvec3& p)
     return false;
 }
 
+// A ray into the side of a surface that its geometric normal turns from crosses the surface
+// itself: a caster's facet that faces away from a point of the light is in its own shadow
+// there, whatever its shading normals say (near the terminator of a smooth-shaded mesh, a facet
+// can face away while its normals face the light), and whatever the ray start's offset, which
+// on a large model carried the ray past the facet's edge and lit it. Whether the pixel lies on
+// a caster is asked of the tracer once, where a ray needs it.
+// A facet along the ray does not count (a wall under a light straight above): within
+// kOwnFacetCosine, which is above the rounding of the normal taken from a pixel's screen steps.
+constexpr double kOwnFacetCosine = 1e-3;
+struct OwnFacet {
+    const RayTracer& tracer;
+    glm::dvec3 eye, p, normal;
+    mutable std::optional<bool> caster;
+
+    bool blocks(const glm::dvec3& direction) const
+    {
+        if (glm::dot(direction, normal) >= -kOwnFacetCosine * glm::length(direction))
+            return false;
+        if (!caster)
+            caster = tracer.castsAt(eye, p);
+        return *caster;
+    }
+};
+
 // The share of n * n stratified points of the disk light that pixel `i`, at `from`, sees;
 // `directions` is room for the rays.
-float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, std::vector<glm::dvec3>& directions)
+float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, const OwnFacet& facet, std::vector<glm::dvec3>& directions)
 {
     const int n = t.n;
     const LightFrame& light = t.light;
@@ -85,7 +111,10 @@ float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, std::vecto
         // A directional light: of the angular size the disk has seen from the target.
         directions[std::size_t(s)] = light.perspective ? light.position + offset - from : -light.direction * light.targetDistance + offset;
     }
-    const int unoccluded = n * n - t.tracer.occludedCount(from, directions.data(), n * n, light.perspective ? 1.0 : 1e30);
+    // The points the facet hides are not traced.
+    const auto traced = std::partition(directions.begin(), directions.begin() + n * n, [&](const glm::dvec3& d) { return !facet.blocks(d); });
+    const int count = int(traced - directions.begin());
+    const int unoccluded = count - t.tracer.occludedCount(from, directions.data(), count, light.perspective ? 1.0 : 1e30);
     return float(unoccluded) / float(n * n);
 }
 
@@ -118,14 +147,17 @@ std::int64_t traceRow(const Tracing& t, int y)
         const glm::dvec3 from = shadowRayStart(t.tracer, p, normal);
         if (outsideSpotCone(light, p))
             continue;
-        if (light.perspective)
+        const OwnFacet facet{t.tracer, t.buffer.cameraPosition, p, normal, std::nullopt};
+        if (facet.blocks(light.perspective ? light.position - p : -light.direction))
+            t.hard[std::size_t(i)] = 0.0f;
+        else if (light.perspective)
             t.hard[std::size_t(i)] = t.tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
         else
             t.hard[std::size_t(i)] = t.tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
         ++rays;
         if (!t.options.area)
             continue;
-        t.area[std::size_t(i)] = areaVisibility(t, i, from, directions);
+        t.area[std::size_t(i)] = areaVisibility(t, i, from, facet, directions);
         rays += n * n;
     }
     return rays;

@@ -5,6 +5,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace shadowlab {
@@ -47,6 +48,7 @@ GpuScene::GpuScene(GlFunctions* gl, Scene scene)
     }
     uploadBatches();
     m_hasCutouts = m_scene.hasCutouts();
+    m_hasSmoothCasters = std::any_of(drawItems().begin(), drawItems().end(), [](const DrawItem& item) { return item.castsShadow && item.smoothShaded; });
     gl->glBindVertexArray(0);
 
     const auto upload = [gl](const QImage& image, const QString& label) {

@@ -32,6 +32,9 @@ public:
     const std::vector<DrawItem>& drawItems() const { return m_layout.drawItems(); }
     // scene().hasCutouts(), found once at upload (the lit pass asks every frame).
     bool hasCutouts() const { return m_hasCutouts; }
+    // Whether a caster is smooth-shaded (DrawItem::smoothShaded): the lit pass's lookups then
+    // shadow a caster's facets that face away from the light (OWN_FACETS).
+    bool hasSmoothCasters() const { return m_hasSmoothCasters; }
     // Binds the item's vertex array and draws it; with `colour`, an object's base colour is set
     // as the constant of attribute 3 (the passes that read positions only leave it alone).
     void draw(const DrawItem& item, bool colour = true) const;
@@ -56,6 +59,7 @@ private:
     std::vector<GpuMesh> m_meshes;
     std::vector<GpuMesh> m_batches;         // the vertex arrays of the batched items, in order
     bool m_hasCutouts = false;
+    bool m_hasSmoothCasters = false;
     std::array<GlTexture, 3> m_textures;   // Checker, Wood, Flat (white)
     std::vector<GlTexture> m_images;
 };

@@ -31,6 +31,7 @@ LitPass::Program::Program(GlFunctions* gl, const QStringList& defines)
       shadowModel(program.uniform("uShadowModel")),
       receives(program.uniform("uReceives")),
       selfShadowing(program.uniform("uSelfShadowing")),
+      ownFacets(program.uniform("uOwnFacets")),
       alphaCutoff(program.uniform("uAlphaCutoff")),
       shadowWorld(program.uniform("uShadowWorld")),
       normalOffset(program.uniform("uNormalOffset")),
@@ -113,6 +114,10 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
         if (!settings.bias.cullFront)
             defines << QStringLiteral("FOOTPRINT_TAPS");
     }
+    // A smooth-shaded caster's facets that face away from the light are in its own shadow,
+    // whatever its normals say (shadow_lookup.glsl's ownFacetVisibility).
+    if (lookups && variant.ownFacets)
+        defines << QStringLiteral("OWN_FACETS");
     if (lookups && plan.depthRange)
         defines << QStringLiteral("DEPTH_RANGE");
     if (lookups && plan.earlyOut)
@@ -148,6 +153,7 @@ LitPass::Program& LitPass::programFor(const FramePlan& plan, const Variant& vari
 LitPass::Programs LitPass::programsFor(const GpuScene& scene, const FramePlan& plan, Variant variant)
 {
     variant.cutout = false;
+    variant.ownFacets = scene.hasSmoothCasters();
     Programs p{&programFor(plan, variant)};
     if (scene.hasCutouts()) {
         variant.cutout = true;
@@ -324,6 +330,7 @@ void LitPass::drawObjects(const Programs& programs, const GpuScene& scene, const
         p.program.set(p.receives, int(item.receivesShadow));
         // A floor left out of the map cannot shadow itself: its lookups need no footprint bias.
         p.program.set(p.selfShadowing, int(!(m_floorsLeftOutFor && shadowsNothing(item, *m_floorsLeftOutFor))));
+        p.program.set(p.ownFacets, int(item.castsShadow && item.smoothShaded));
         if (cutout)
             p.program.set(p.alphaCutoff, item.alphaCutoff);
         m_gl->glBindTexture(GL_TEXTURE_2D, scene.texture(item));

@@ -30,6 +30,7 @@ struct LitVariant {
     bool outOfReach = false;    // for receivers no caster reaches: no lookup
     bool cutout = false;        // for cut-out objects (DrawItem::alphaCutoff), only in a scene with them
     bool warped = false;        // a view of the light is warped (light.warp): lookups per pixel
+    bool ownFacets = false;     // a caster is smooth-shaded (GpuScene::hasSmoothCasters): OWN_FACETS
 };
 
 // Lit pass: shades every object with Blinn-Phong or Phong and the selected shadow filter.
@@ -97,7 +98,7 @@ private:
         explicit Program(GlFunctions* gl, const QStringList& defines);
         ShaderProgram program;
         // Per draw.
-        GLint model, normalMatrix, modelViewProjection, shadowModel, receives, selfShadowing, alphaCutoff;
+        GLint model, normalMatrix, modelViewProjection, shadowModel, receives, selfShadowing, ownFacets, alphaCutoff;
         // Per variant: what depends on whether it compares in a slice's stored depth, and what
         // other programs read too (the slice, the moments' warp).
         GLint shadowWorld, normalOffset, biasSlope, biasMin, shadowSlice, exponentPositive, exponentNegative;

@@ -21,7 +21,7 @@ constexpr int kBatchCells = 8;
 // Objects with larger meshes draw alone: merging copies every vertex.
 constexpr std::size_t kMaxBatchedVertices = 4096;
 
-DrawItem aloneItem(const Scene& scene, std::size_t i, const Bounds& bounds)
+DrawItem aloneItem(const Scene& scene, std::size_t i, const Bounds& bounds, bool smooth)
 {
     const SceneObject& object = scene.objects[i];
     DrawItem item;
@@ -34,6 +34,7 @@ DrawItem aloneItem(const Scene& scene, std::size_t i, const Bounds& bounds)
     item.receivesShadow = object.receivesShadow;
     item.alphaCutoff = textureAlphaCutoff(object);
     item.mesh = object.mesh;
+    item.smoothShaded = smooth;
     return item;
 }
 
@@ -58,8 +59,10 @@ SceneLayout::SceneLayout(const Scene& scene)
         m_sampled.push_back(object.motion ? std::optional(object.motion->sweptBounds(local, false)) : std::nullopt);
         m_bounds.extend(m_swept.back() ? *m_swept.back() : m_objectBounds.back());
     }
-    for (const Mesh& mesh : scene.meshes)
+    for (const Mesh& mesh : scene.meshes) {
         m_meshPlanes.push_back(flatPlane(mesh));
+        m_meshSmooth.push_back(smoothShaded(mesh));
+    }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_objectFloors.push_back(floorPlane(i));
     layOutItems(scene);
@@ -131,7 +134,7 @@ void SceneLayout::layOutItems(const Scene& scene)
         // A moving object draws alone too: its draw item follows it.
         if (objects.size() < kBatchFrom || mesh.vertices.size() > kMaxBatchedVertices || m_meshPlanes.at(std::size_t(object.mesh)) || moves(i)) {
             m_itemOf[i] = m_items.size();
-            m_items.push_back(aloneItem(scene, i, m_objectBounds[i]));
+            m_items.push_back(aloneItem(scene, i, m_objectBounds[i], m_meshSmooth.at(std::size_t(object.mesh))));
             m_items.back().floor = m_objectFloors[i];
             m_items.back().moves = moves(i);
             continue;
@@ -146,15 +149,18 @@ void SceneLayout::layOutItems(const Scene& scene)
     for (const auto& [key, members] : groups) {
         if (members.size() == 1) {
             m_itemOf[members.front()] = m_items.size();
-            m_items.push_back(aloneItem(scene, members.front(), m_objectBounds[members.front()]));
+            const std::size_t i = members.front();
+            m_items.push_back(aloneItem(scene, i, m_objectBounds[i], m_meshSmooth.at(std::size_t(objects[i].mesh))));
             continue;
         }
         for (std::size_t i : members)
             m_itemOf[i] = m_items.size();
         DrawItem item;
         item.objects = members;
-        for (std::size_t i : members)
+        for (std::size_t i : members) {
             item.bounds.extend(m_objectBounds[i]);
+            item.smoothShaded = item.smoothShaded || m_meshSmooth.at(std::size_t(objects[i].mesh));
+        }
         item.model = glm::translate(glm::dmat4(1.0), item.bounds.center());
         item.castsShadow = std::get<3>(key);
         item.receivesShadow = std::get<4>(key);

@@ -38,6 +38,9 @@ struct DrawItem {
     // shadow passes leave it out: exact, and the floor cannot shadow itself (no acne, no moiré
     // of a wide filter's taps on it), whatever the bias.
     std::optional<WorldPlane> floor;
+    // Its mesh, or one of a batch's, is smooth-shaded (smoothShaded(Mesh)): its facets can face
+    // away from the light where its normals face it, and a caster's are then in its own shadow.
+    bool smoothShaded = false;
 };
 
 // Which casters a shadow pass draws: all, or for a cache (renderer/ShadowCache.h) the still
@@ -109,6 +112,7 @@ private:
     std::vector<glm::dmat4> m_objectModels;
     std::vector<int> m_objectMeshes;
     std::vector<std::optional<MeshPlane>> m_meshPlanes;
+    std::vector<bool> m_meshSmooth;             // smoothShaded(), per mesh
     std::vector<std::optional<WorldPlane>> m_objectFloors;     // each object's plane, where it is a floor
     std::vector<std::optional<Bounds>> m_swept;                // where each moving object goes
     std::vector<std::size_t> m_moving;                         // the objects that do

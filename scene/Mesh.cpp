@@ -8,6 +8,31 @@
 
 namespace shadowlab {
 
+bool smoothShaded(const Mesh& mesh)
+{
+    // cos(0.81 degrees); either side, as a mesh's normals may face against its winding.
+    constexpr double kFlat = 0.9999;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const Vertex* v[3];
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (mesh.indices[t + k] >= mesh.vertices.size())
+                return false;
+            v[k] = &mesh.vertices[mesh.indices[t + k]];
+        }
+        const glm::dvec3 a(v[0]->position);
+        const glm::dvec3 facet = glm::cross(glm::dvec3(v[1]->position) - a, glm::dvec3(v[2]->position) - a);
+        const double area = glm::length(facet);
+        if (!(area > 0.0))
+            continue;
+        for (const Vertex* vertex : v) {
+            const double length = glm::length(glm::dvec3(vertex->normal));
+            if (length > 0.0 && std::abs(glm::dot(glm::dvec3(vertex->normal), facet)) < kFlat * length * area)
+                return true;
+        }
+    }
+    return false;
+}
+
 std::optional<MeshPlane> flatPlane(const Mesh& mesh)
 {
     // The normal of the largest triangle: the one rounding disturbs least.

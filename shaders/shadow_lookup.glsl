@@ -9,6 +9,9 @@ uniform float uBiasMin;             // the same units
 #ifdef FOOTPRINT_BIAS
 uniform bool uSelfShadowing;        // false: a floor left out of the map (bias.skip_floors), which needs no bias
 #endif
+#ifdef OWN_FACETS
+uniform bool uOwnFacets;            // a smooth-shaded caster: its facets facing away from the light are in its shadow
+#endif
 // The views (renderer/UniformBlocks.h declares them), and the frame's bias, cascades and light.
 #include ShadowViewBlock
 #include LitFrameBlock
@@ -435,7 +438,7 @@ float virtualVisibility(vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 #endif
 
 // The light rig's choice of view, then that view's visibility.
-float shadowVisibility(vec3 normal, vec3 toLight)
+float rigVisibility(vec3 normal, vec3 toLight)
 {
     // Screen-space steps, taken here where every pixel of a quad still runs: of the position
     // with several views, of the very coordinate looked up with one.
@@ -467,6 +470,35 @@ float shadowVisibility(vec3 normal, vec3 toLight)
     gViewIndex = 0;
     return viewVisibility(shadowView(0), normal, toLight, dx, dy);
 #endif
+}
+
+// 0 where the pixel's own facet faces away from the light, else 1. A smooth-shaded mesh is
+// faceted: near its terminator a facet can face away from the light while the normals it is
+// shaded with still face it. The light cannot reach such a facet: the facet's own neighbours
+// stand between, a fraction of a facet away, which no map resolves and which every bias
+// clears, so a filter reads it lit or partly lit (the moment filters most: light leaks along a
+// low-poly model's terminator). The facet is the plane of the pixel's own triangle, from the
+// screen-space steps of its position (each taken on its own triangle), turned to the side its
+// normals shade; a triangle seen edge-on, whose steps span no plane, counts as facing, and so
+// does a facet along the light's rays to within the rounding of those steps (the reference's
+// kOwnFacetCosine, accuracy/ShadowReference.cpp).
+float ownFacetVisibility(vec3 normal, vec3 toLight)
+{
+#ifdef OWN_FACETS
+    vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
+    float towardLight = dot(facet, normal) < 0.0 ? -dot(facet, toLight) : dot(facet, toLight);
+    return uOwnFacets && towardLight < -1e-3 * length(facet) ? 0.0 : 1.0;
+#else
+    return 1.0;
+#endif
+}
+
+// The shadow term of the pixel: its own facet's, then the light rig's lookup.
+float shadowVisibility(vec3 normal, vec3 toLight)
+{
+    // Both take screen-space steps, so both run on every pixel of a quad.
+    float own = ownFacetVisibility(normal, toLight);
+    return own * rigVisibility(normal, toLight);
 }
 
 // The overlay colour of a view: cascades red, green, blue, yellow; faces add magenta and cyan.

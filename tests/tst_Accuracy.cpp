@@ -7,8 +7,15 @@
 #include "Measurement.h"
 #include "SceneLibrary.h"
 #include "SettingsError.h"
+#include "RayTracer.h"
+#include "SceneSupply.h"
 #include "SettingsKeys.h"
+#include "ShadowReference.h"
+#include "TestFiles.h"
 
+#include <glm/geometric.hpp>
+
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace shadowlab;
@@ -310,6 +317,71 @@ private Q_SLOTS:
         QVERIFY(fittedAcne.hard.falseShadow < 0.5 * acne.hard.falseShadow);
         QVERIFY(panning.hard.falseLight > 2.0 * defaults.hard.falseLight);
         QVERIFY(panning.hard.falseLight > panning.hard.falseShadow);
+    }
+
+    // A coarse smooth-shaded ball across the light: near its terminator some facets face away
+    // from the light while the normals they are shaded with face it. Their own neighbours stand
+    // between them and the light. The reference says so at any scale: its rays start off the
+    // surface by a share of their distance from the camera, which from afar carried them past a
+    // small facet's edge and lit it. Every technique reads them in shadow too (OWN_FACETS):
+    // the moment filters leaked light along the terminator, and the depth compares read it
+    // half-lit where the map could not resolve the neighbours.
+    void ownFacetsAreShadowedAtAnyScale_data()
+    {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("a unit") << 1.0;
+        QTest::newRow("300 units") << 300.0;
+        QTest::newRow("a centimetre") << 0.01;
+    }
+    void ownFacetsAreShadowedAtAnyScale()
+    {
+        QFETCH(double, scale);
+        const auto at = [scale](double x, double y, double z) {
+            return QStringLiteral("[%1, %2, %3]").arg(x * scale, 0, 'g', 17).arg(y * scale, 0, 'g', 17).arg(z * scale, 0, 'g', 17);
+        };
+        // Seen from 25 radii away, as a large model is: the old start cleared the facets there.
+        const QString scene = QStringLiteral(R"({ "shapes": [
+            { "shape": "ground", "height": 0, "size": %1 },
+            { "name": "ball", "shape": "sphere", "segments": 24, "rings": 12, "position": %2, "scale": %3 } ],
+          "light.position": %4, "light.target": %2, "camera.position": %5, "camera.target": %2, "camera.fov": 7 })")
+                                  .arg(4.0 * scale, 0, 'g', 17)
+                                  .arg(at(0, 1.2, 0))
+                                  .arg(scale, 0, 'g', 17)
+                                  .arg(at(-6, 4, 1), at(8, 9, 22));
+        QTemporaryDir dir;
+        const QString path = writeFile(dir, QStringLiteral("ball.json"), scene.toUtf8());
+        HeadlessRenderer headless;
+        Renderer& renderer = headless.renderer();
+        const QSize size(320, 180);
+        std::vector<int> ownFacets;     // light-facing pixels whose facet faces away from the light
+        ReferenceVisibility reference;
+        for (const char* mode : {"hard", "hw-bilinear", "pcf64", "pcss", "vsm", "evsm4", "esm", "msm"}) {
+            const Settings s = presetWith(path, {QStringLiteral("filter.mode=%1").arg(mode)});
+            supplyScene(renderer, s);
+            const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
+            const LightFrame& light = renderer.lightFrame();
+            if (ownFacets.empty()) {
+                const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
+                reference = traceReference(tracer, buffer, light, ReferenceOptions{false, 0.0, 1});
+                int facing = 0;
+                for (int i = 0; i < buffer.pixelCount(); ++i) {
+                    if (buffer.mask(i) != VisibilityBuffer::FacingLight)
+                        continue;
+                    ++facing;
+                    const glm::dvec3 toLight = light.perspective ? glm::normalize(light.position - buffer.worldPosition(i)) : -light.direction;
+                    if (glm::dot(buffer.normal(i), toLight) < -1e-3)
+                        ownFacets.push_back(i);
+                }
+                qInfo("%d light-facing pixels, %d of them on facets facing away", facing, int(ownFacets.size()));
+                QVERIFY(ownFacets.size() >= 40);
+                for (int i : ownFacets)
+                    QCOMPARE(reference.hard[std::size_t(i)], 0.0f);
+            }
+            double most = 0.0;
+            for (int i : ownFacets)
+                most = std::max(most, double(buffer.visibility(i)));
+            QVERIFY2(most < 0.01, qPrintable(QStringLiteral("%1 reads %2 on a facet facing away from the light").arg(mode).arg(most)));
+        }
     }
 
     void areaReferenceIsSoftAndReused()

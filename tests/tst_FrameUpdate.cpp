@@ -91,7 +91,7 @@ private slots:
         const Scene built = buildScene(scene);
         const SceneLayout layout(built);
         std::vector<int> drawn(built.objects.size(), 0);
-        int batches = 0;
+        int batches = 0, smoothItems = 0;
         for (const DrawItem& item : layout.drawItems()) {
             QVERIFY(!item.objects.empty());
             for (std::size_t i : item.objects) {
@@ -99,12 +99,21 @@ private slots:
                 QVERIFY2(contains(item.bounds, layout.objectBounds(i), 1e-9), qPrintable(built.objects[i].name));
                 QCOMPARE(item.castsShadow, built.objects[i].castsShadow);
                 QCOMPARE(item.receivesShadow, built.objects[i].receivesShadow);
+                // A smooth-shaded member makes its item's facets shadow themselves (OWN_FACETS).
+                if (smoothShaded(built.meshes.at(std::size_t(built.objects[i].mesh))))
+                    QVERIFY2(item.smoothShaded, qPrintable(built.objects[i].name));
             }
+            smoothItems += item.smoothShaded;
             if (item.batch)
                 QCOMPARE(item.mesh, batches++);
             QVERIFY(contains(layout.bounds(), item.bounds, 1e-9));
         }
         QCOMPARE(batches, layout.batchCount());
+        // The city's boxes are flat-shaded: its lit pass compiles no facet test; the torus is not.
+        if (scene.startsWith(QStringLiteral("city")))
+            QCOMPARE(smoothItems, 0);
+        if (scene == u"torus")
+            QVERIFY(smoothItems > 0);
         for (std::size_t i = 0; i < drawn.size(); ++i)
             QVERIFY2(drawn[i] == 1, qPrintable(QStringLiteral("%1 is drawn %2 times").arg(built.objects[i].name).arg(drawn[i])));
         // Draw calls do not grow with the objects: a city's are a fraction of its buildings.

@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 using namespace shadowlab;
 
 Q_DECLARE_METATYPE(shadowlab::Mesh)
@@ -64,6 +66,30 @@ private Q_SLOTS:
             const glm::vec3 average = a.normal + b.normal + c.normal;
             QVERIFY2(glm::dot(face, average) > 0.0f, qPrintable(QString("triangle %1 winds against its normals").arg(i / 3)));
             QCOMPARE_LT(std::abs(glm::length(a.normal) - 1.0f), 1e-4f);
+        }
+    }
+
+    // Smooth-shaded meshes are told from flat-shaded ones by their normals, whichever way the
+    // normals face against the winding.
+    void smoothShadingIsFoundFromTheNormals()
+    {
+        QVERIFY(smoothShaded(meshes::sphere(24, 12)));
+        QVERIFY(smoothShaded(meshes::torus(1.0f, 0.3f, 32, 16)));
+        QVERIFY(!smoothShaded(meshes::cube()));
+        QVERIFY(!smoothShaded(meshes::plane(2.0f, 1.0f)));
+        QVERIFY(!smoothShaded(meshes::pyramid()));
+        Mesh inward = meshes::cube();
+        for (Vertex& v : inward.vertices)
+            v.normal = -v.normal;
+        QVERIFY(!smoothShaded(inward));
+        // One vertex of a cube bent by two degrees is enough; half a degree is rounding.
+        for (const auto& [degrees, smooth] : {std::pair{2.0, true}, std::pair{0.5, false}}) {
+            Mesh bent = meshes::cube();
+            const double a = glm::radians(degrees);
+            const glm::vec3 n = bent.vertices[0].normal;
+            const glm::vec3 side = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+            bent.vertices[0].normal = glm::normalize(float(std::cos(a)) * n + float(std::sin(a)) * glm::normalize(glm::cross(n, side)));
+            QCOMPARE(smoothShaded(bent), smooth);
         }
     }
 
