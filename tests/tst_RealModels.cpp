@@ -7,10 +7,10 @@
 //   - no visible moiré or acne: DSSIM of the frame at most 0.01 against the frame shaded with
 //     the hard reference (a moiré of partial shadow stays under a misclassified count; only the
 //     picture shows it), for every hard-edged depth-compare filter;
-//   - misclassified pixels at most 0.10 % on the median model, for every technique and camera
-//     (the goal, which the rock's crest and the spider's legs still miss: 0.13-0.46 %,
-//     docs/techniques.md#bias), and on three models in four for the hard-edged depth-compare
-//     filters;
+//   - misclassified pixels at most 0.10 % (the goal) on three models in four, for every
+//     technique and camera, and for the hard-edged depth-compare filters on every model but the
+//     worst one (the flat-shaded STL spider, whose legs' creases shadow each other closer than
+//     a texel: 0.13-0.46 %, docs/techniques.md#bias);
 //   - on every model, at most 0.5 % for those filters, and 2 % for pcss and dpcf (against the
 //     area reference, whose soft edges the hard one calls wrong) and the moment filters from
 //     the model's camera. These hold what is reached and catch any step back; every figure is
@@ -202,8 +202,8 @@ private Q_SLOTS:
         QVERIFY2(failures.isEmpty(), qPrintable(QString("%1 of %2 over the bounds:\n  ").arg(failures.size()).arg(measured) + failures.join("\n  ")));
     }
 
-    // The goal on the typical model: the median of each technique's misclassified share over
-    // every model (and the upper quartile for the hard-edged filters) within 0.10 %.
+    // The goal on the typical model: the upper quartile of each technique's misclassified share
+    // over every model within 0.10 %, and for the hard-edged filters every model's but the worst.
     void theTypicalModelMeetsTheGoal()
     {
         QVERIFY2(m_modelsMeasured == m_models.size(), "the goal is over every model: run everyTechniqueIsCleanOnEveryModel whole first");
@@ -212,12 +212,17 @@ private Q_SLOTS:
             std::sort(shares.begin(), shares.end());
             const double median = shares[shares.size() / 2];
             const double upperQuartile = shares[(3 * shares.size()) / 4];
+            const double secondWorst = shares[shares.size() - 2];
             const bool hardEdged = std::any_of(shadowTechniques().begin(), shadowTechniques().end(),
                                                [&](const ShadowTechnique& t) { return t.key == row.first && !stillOpen(t); });
-            qInfo("%s, %s: median %.3f %%, upper quartile %.3f %% misclassified over %d models", qPrintable(row.first), qPrintable(row.second), 100 * median,
-                  100 * upperQuartile, int(shares.size()));
-            if (median > kGoalMisclassified || (hardEdged && upperQuartile > kGoalMisclassified))
-                failures << QString("%1, %2: median %3 %, upper quartile %4 %").arg(row.first, row.second).arg(100 * median, 0, 'f', 3).arg(100 * upperQuartile, 0, 'f', 3);
+            qInfo("%s, %s: median %.3f %%, upper quartile %.3f %%, all but the worst model %.3f %% misclassified over %d models", qPrintable(row.first),
+                  qPrintable(row.second), 100 * median, 100 * upperQuartile, 100 * secondWorst, int(shares.size()));
+            if (upperQuartile > kGoalMisclassified || (hardEdged && secondWorst > kGoalMisclassified))
+                failures << QString("%1, %2: median %3 %, upper quartile %4 %, all but the worst model %5 %")
+                                .arg(row.first, row.second)
+                                .arg(100 * median, 0, 'f', 3)
+                                .arg(100 * upperQuartile, 0, 'f', 3)
+                                .arg(100 * secondWorst, 0, 'f', 3);
         }
         QVERIFY(!m_misclassified.empty());
         QVERIFY2(failures.isEmpty(), qPrintable("over the goal of 0.10 %:\n  " + failures.join("\n  ")));
