@@ -486,7 +486,7 @@ float ownFacetVisibility(vec3 normal, vec3 toLight)
 {
 #ifdef OWN_FACETS
     vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
-    float towardLight = dot(facet, normal) < 0.0 ? -dot(facet, toLight) : dot(facet, toLight);
+    float towardLight = dot(facet, toLight) * sign(dot(facet, normal));
     return uOwnFacets && towardLight < -1e-3 * length(facet) ? 0.0 : 1.0;
 #else
     return 1.0;
