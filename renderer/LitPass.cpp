@@ -115,8 +115,9 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
             defines << QStringLiteral("FOOTPRINT_TAPS");
     }
     // A smooth-shaded caster's facets that face away from the light are in its own shadow,
-    // whatever its normals say (shadow_lookup.glsl's ownFacetVisibility).
-    if (lookups && variant.ownFacets)
+    // whatever its normals say (shadow_lookup.glsl's ownFacetVisibility): with a lookup or
+    // without, as facing away is, so the reach's two variants shade alike.
+    if (plan.shadows && variant.ownFacets)
         defines << QStringLiteral("OWN_FACETS");
     if (lookups && plan.depthRange)
         defines << QStringLiteral("DEPTH_RANGE");

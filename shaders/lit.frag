@@ -103,7 +103,8 @@ void main()
     // Out of every caster's reach a lookup reads lit, or unlit where the receiver faces away
     // from the light, and there the direct term is 0 already: the frame is the same without it,
     // and this variant then reads no shadow coordinate (what is measured still takes the lookup).
-    float visibility = 1.0;
+    // A smooth-shaded caster's facet that faces away is unlit either way (OWN_FACETS).
+    float visibility = uReceives ? ownFacetVisibility(normal, toLight) : 1.0;
 #elif defined(SHADOWS)
     float visibility = uReceives ? shadowVisibility(normal, toLight) : 1.0;
 #else

@@ -664,6 +664,11 @@ private Q_SLOTS:
         QTest::newRow("city, normal offset") << "city" << QStringList{"bias.normal=3", "filter.mode=pcf"} << true;
         QTest::newRow("cubes, camera aside") << "cubes" << QStringList{"camera.position=9,2,-6"} << true;
         QTest::newRow("torus, pcss") << "torus" << QStringList{"filter.mode=pcss"} << true;
+        // A smooth-shaded caster's facets that face away from the light are unlit in both
+        // variants (OWN_FACETS), also where no view holds them: beyond the shadow distance.
+        QTest::newRow("torus, vsm") << "torus" << QStringList{"filter.mode=vsm"} << true;
+        QTest::newRow("torus, beyond the shadow distance") << "torus" << QStringList{"shadow.cascades=2", "shadow.distance=1"} << true;
+        QTest::newRow("torus, grazing spot light") << "torus" << QStringList{"light.type=spot", "light.position=-6,0.6,1"} << true;
         // Four moments draw floors only around the casters, and look up only within their reach.
         for (const QString& t : {QStringLiteral("evsm4"), QStringLiteral("msm"), QStringLiteral("msm-hausdorff")}) {
             const QStringList mode{"filter.mode=" + t};
