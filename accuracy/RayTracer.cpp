@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -152,14 +153,15 @@ void RayTracer::attachMoving(RTCGeometry geometry, std::size_t object, const glm
     RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(instance, own);
     rtcReleaseScene(own);   // the instance holds it
-    m_instances.push_back({object, instance});
+    m_instances.push_back({object, instance, RTC_INVALID_GEOMETRY_ID, glm::dmat3(1.0)});
     place(m_instances.back(), model);
-    rtcAttachGeometry(m_scene, instance);
+    m_instances.back().id = rtcAttachGeometry(m_scene, instance);
     rtcReleaseGeometry(instance);   // the scene holds it
 }
 
-void RayTracer::place(const Instance& instance, const glm::dmat4& model) const
+void RayTracer::place(Instance& instance, const glm::dmat4& model) const
 {
+    instance.normalToWorld = glm::transpose(glm::inverse(glm::dmat3(model)));
     const glm::mat4 transform(glm::translate(glm::dmat4(1.0), -m_origin) * model);
     rtcSetGeometryTransform(instance.geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
     rtcCommitGeometry(instance.geometry);
@@ -169,7 +171,7 @@ void RayTracer::pose(const Scene& scene)
 {
     if (m_instances.empty())
         return;
-    for (const Instance& instance : m_instances)
+    for (Instance& instance : m_instances)
         place(instance, scene.objects.at(instance.object).model);
     rtcCommitScene(m_scene);
     if (const RTCError error = rtcGetDeviceError(m_device); error != RTC_ERROR_NONE)
@@ -217,12 +219,12 @@ bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, do
 
 namespace shadowlab {
 
-bool RayTracer::castsAt(const glm::dvec3& eye, const glm::dvec3& p) const
+std::optional<glm::dvec3> RayTracer::casterFacetAt(const glm::dvec3& eye, const glm::dvec3& p) const
 {
     const glm::dvec3 toPoint = p - eye;
     const double distance = glm::length(toPoint);
     if (!(distance > 0.0) || !std::isfinite(distance))
-        return false;
+        return std::nullopt;
     const glm::dvec3 o = eye - m_origin, d = toPoint / distance;
     const double tolerance = 1e-3 * distance;
     RTCIntersectContext context;
@@ -240,7 +242,20 @@ bool RayTracer::castsAt(const glm::dvec3& eye, const glm::dvec3& p) const
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_scene, &context, &query);
-    return query.hit.geomID != RTC_INVALID_GEOMETRY_ID && std::abs(double(query.ray.tfar) - distance) <= tolerance;
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID || std::abs(double(query.ray.tfar) - distance) > tolerance)
+        return std::nullopt;
+    // Embree's normal is the triangle's in the space its vertices are in: a moving caster's own.
+    glm::dvec3 normal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z);
+    if (query.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        const auto instance = std::find_if(m_instances.begin(), m_instances.end(), [&](const Instance& i) { return i.id == query.hit.instID[0]; });
+        if (instance == m_instances.end())
+            return std::nullopt;
+        normal = instance->normalToWorld * normal;
+    }
+    const double length = glm::length(normal);
+    if (!(length > 0.0) || !std::isfinite(length))
+        return std::nullopt;
+    return normal / length;
 }
 
 int RayTracer::occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -34,10 +35,11 @@ public:
     // most of their way through the scene.
     int occludedCount(const glm::dvec3& from, const glm::dvec3* directions, int count, double tFar) const;
 
-    // Whether the camera at `eye` sees a caster's surface at `p`: the first thing its ray meets
-    // lies within a thousandth of the distance to p (a surface that casts no shadow is not
-    // traced, so the ray meets something farther, or nothing).
-    bool castsAt(const glm::dvec3& eye, const glm::dvec3& p) const;
+    // The unit normal (either side) of the caster's triangle that the camera at `eye` sees at
+    // `p`, in world space: where the first thing its ray meets lies within a thousandth of the
+    // distance to p. Nullopt elsewhere: a surface that casts no shadow is not traced, so the ray
+    // meets something farther, or nothing.
+    std::optional<glm::dvec3> casterFacetAt(const glm::dvec3& eye, const glm::dvec3& p) const;
 
     // The moving casters placed as `scene`'s models say (the scene this tracer was made from,
     // posed at another time: Scene::poseAt). Not thread-safe against queries.
@@ -76,11 +78,13 @@ private:
     struct Instance {
         std::size_t object = 0;     // index into the scene's objects
         RTCGeometry geometry = nullptr;     // owned by the scene it is attached to
+        unsigned id = RTC_INVALID_GEOMETRY_ID;  // its ID in the tracer's scene
+        glm::dmat3 normalToWorld{1.0};      // where pose() put it
     };
     // `geometry` (a moving caster's mesh in its own space) in a scene of its own, instanced
     // into the tracer's at `model`.
     void attachMoving(RTCGeometry geometry, std::size_t object, const glm::dmat4& model);
-    void place(const Instance& instance, const glm::dmat4& model) const;
+    void place(Instance& instance, const glm::dmat4& model) const;
 
     glm::dvec3 m_origin;
     double m_reach = 0.0;

@@ -1,6 +1,7 @@
 #include "ShadowReference.h"
 
 #include "SceneLibrary.h"
+#include "ShaderConstants.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
@@ -76,29 +77,40 @@ bool outsideSpotCone(const LightFrame& light, const glm::dvec3& p)
 // itself: a caster's facet that faces away from a point of the light is in its own shadow
 // there, whatever its shading normals say (near the terminator of a smooth-shaded mesh, a facet
 // can face away while its normals face the light), and whatever the ray start's offset, which
-// on a large model carried the ray past the facet's edge and lit it. Whether the pixel lies on
-// a caster is asked of the tracer once, where a ray needs it.
+// on a large model carried the ray past the facet's edge and lit it. The facet is the caster's
+// triangle the camera sees at the pixel (RayTracer::casterFacetAt), asked once where a ray may
+// need it, and turned to the side the pixel's normal faces: that normal, taken from the
+// pixel's screen steps, rounds by a few hundredths where the camera sees the facet edge-on.
 // A facet along the ray does not count (a wall under a light straight above): within
-// kOwnFacetCosine, which is above the rounding of the normal taken from a pixel's screen steps.
-constexpr double kOwnFacetCosine = 1e-3;
+// kOwnFacetCosine, as the lit pass's OWN_FACETS. A caster the camera finds at the pixel whose
+// facet leans from the pixel's normal by more than 60 degrees is another surface than the one
+// measured (one that casts nothing, resting on a caster).
+constexpr double kScreenNormalRounding = 0.05;
+constexpr double kSameSurfaceCosine = 0.5;
 struct OwnFacet {
     const RayTracer& tracer;
     glm::dvec3 eye, p, normal;
-    mutable std::optional<bool> caster;
+    mutable std::optional<glm::dvec3> facet;    // 0 where the pixel is on no caster
 
+    // Whether the facet hides the light's point `direction` away from the pixel (from p).
     bool blocks(const glm::dvec3& direction) const
     {
-        if (glm::dot(direction, normal) >= -kOwnFacetCosine * glm::length(direction))
+        const double length = glm::length(direction);
+        if (!(glm::dot(direction, normal) <= kScreenNormalRounding * length))
             return false;
-        if (!caster)
-            caster = tracer.castsAt(eye, p);
-        return *caster;
+        if (!facet) {
+            const std::optional<glm::dvec3> found = tracer.casterFacetAt(eye, p);
+            const double side = found ? glm::dot(*found, normal) : 0.0;
+            facet = std::abs(side) < kSameSurfaceCosine ? glm::dvec3(0.0) : side < 0.0 ? -*found : *found;
+        }
+        return glm::dot(direction, *facet) < -double(kOwnFacetCosine) * length;
     }
 };
 
 // The share of n * n stratified points of the disk light that pixel `i`, at `from`, sees;
 // `directions` is room for the rays.
-float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, const OwnFacet& facet, std::vector<glm::dvec3>& directions)
+float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, const OwnFacet& facet, std::vector<glm::dvec3>& directions,
+                     std::int64_t& rays)
 {
     const int n = t.n;
     const LightFrame& light = t.light;
@@ -111,10 +123,14 @@ float areaVisibility(const Tracing& t, int i, const glm::dvec3& from, const OwnF
         // A directional light: of the angular size the disk has seen from the target.
         directions[std::size_t(s)] = light.perspective ? light.position + offset - from : -light.direction * light.targetDistance + offset;
     }
-    // The points the facet hides are not traced.
-    const auto traced = std::partition(directions.begin(), directions.begin() + n * n, [&](const glm::dvec3& d) { return !facet.blocks(d); });
+    // The points the facet hides are not traced: seen from the pixel itself, not from the ray's
+    // start off the surface.
+    const glm::dvec3 fromPixel = from - facet.p;
+    const auto traced = std::partition(directions.begin(), directions.begin() + n * n,
+                                       [&](const glm::dvec3& d) { return !facet.blocks(d + fromPixel); });
     const int count = int(traced - directions.begin());
     const int unoccluded = count - t.tracer.occludedCount(from, directions.data(), count, light.perspective ? 1.0 : 1e30);
+    rays += count;
     return float(unoccluded) / float(n * n);
 }
 
@@ -148,17 +164,17 @@ std::int64_t traceRow(const Tracing& t, int y)
         if (outsideSpotCone(light, p))
             continue;
         const OwnFacet facet{t.tracer, t.buffer.cameraPosition, p, normal, std::nullopt};
-        if (facet.blocks(light.perspective ? light.position - p : -light.direction))
+        if (facet.blocks(light.perspective ? light.position - p : -light.direction)) {
             t.hard[std::size_t(i)] = 0.0f;
-        else if (light.perspective)
-            t.hard[std::size_t(i)] = t.tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
-        else
-            t.hard[std::size_t(i)] = t.tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
-        ++rays;
-        if (!t.options.area)
-            continue;
-        t.area[std::size_t(i)] = areaVisibility(t, i, from, facet, directions);
-        rays += n * n;
+        } else {
+            if (light.perspective)
+                t.hard[std::size_t(i)] = t.tracer.occluded(from, light.position - from, 1.0) ? 0.0f : 1.0f;
+            else
+                t.hard[std::size_t(i)] = t.tracer.occluded(from, -light.direction, 1e30) ? 0.0f : 1.0f;
+            ++rays;
+        }
+        if (t.options.area)
+            t.area[std::size_t(i)] = areaVisibility(t, i, from, facet, directions, rays);
     }
     return rays;
 }

@@ -16,7 +16,7 @@ namespace shadowlab {
 
 // Ray-traced light visibility at exactly the world positions the rasteriser produced.
 struct ReferenceVisibility {
-    std::vector<float> hard;        // one shadow ray per pixel toward the light (point or direction)
+    std::vector<float> hard;        // one shadow ray per pixel toward the light (point or direction), none behind its own facet
     std::vector<float> area;        // fraction of unoccluded stratified samples of a disk light; empty if not asked
     int samplesPerPixel = 0;        // of the area reference
     double areaNoiseFloor = 0.0;    // mean standard error of the area estimate over measured pixels
@@ -62,7 +62,10 @@ struct ReferenceOptions {
 glm::dvec3 shadowRayStart(const RayTracer& tracer, const glm::dvec3& p, const glm::dvec3& normal);
 
 // Visibility of the light for every pixel of `buffer` that faces it (others stay 0). Rays
-// start a small distance off the surface along the geometric normal. Directional (ortho)
+// start a small distance off the surface along the geometric normal; one toward a point of the
+// light behind the pixel's own facet, on a caster, is blocked without being traced (near the
+// terminator of a smooth-shaded mesh a facet faces away while its normals face the light,
+// ShadowReference.cpp's OwnFacet). Directional (ortho)
 // lights trace parallel rays, and for the area reference a disk of the light's angular size
 // seen from its target; perspective lights trace to the light's position and to a disk there,
 // facing along the light direction; a spot light's receivers outside its cone (light.fov,

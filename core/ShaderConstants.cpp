@@ -26,6 +26,7 @@ const ShaderConstant kConstants[] = {
     SHADOWLAB_SHADER_CONSTANT(kMaxBlurWeights),
     SHADOWLAB_SHADER_CONSTANT(kMaxDepthRangeLevels),
     SHADOWLAB_SHADER_CONSTANT(kNoCasterDepth),
+    SHADOWLAB_SHADER_CONSTANT(kOwnFacetCosine),
     ShaderConstant{"kViewTints", std::span<const Rgb>(kViewTints)},
     SHADOWLAB_SHADER_CONSTANT(kDensityBlue),
     SHADOWLAB_SHADER_CONSTANT(kDensityGreen),

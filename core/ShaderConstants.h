@@ -30,6 +30,11 @@ inline constexpr int kMaxBlurWeights = 16;
 inline constexpr int kMaxDepthRangeLevels = 16;
 // What the camera's depth of the casters (for contact shadows) holds where no caster is.
 inline constexpr float kNoCasterDepth = 1e30f;
+// A caster's facet faces away from the light, and shadows itself, where the cosine between its
+// normal and the light is below minus this (the lit pass's OWN_FACETS, and the reference's own
+// facets in accuracy/ShadowReference.cpp): a facet along the light's rays does not count (a wall
+// under a light straight above), whatever the rounding of a normal taken from a pixel's steps.
+inline constexpr float kOwnFacetCosine = 1e-3f;
 
 // The overlay colour of each view of the light (shadow.show_cascades): cascades red, green,
 // blue, yellow; cube faces add magenta and cyan; a virtual map's levels go round them.

@@ -1,5 +1,7 @@
 #include "Mesh.h"
 
+#include "ShaderConstants.h"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -10,15 +12,19 @@ namespace shadowlab {
 
 bool smoothShaded(const Mesh& mesh)
 {
-    // cos(0.81 degrees); either side, as a mesh's normals may face against its winding.
-    constexpr double kFlat = 0.9999;
+    // A lean of asin(kOwnFacetCosine), 0.057 degrees, already turns a facet away from a light its
+    // normals face: nine tenths of it counts, well above a float normal's rounding. Either side,
+    // as a mesh's normals may face against its winding.
+    const double kFlat = std::cos(0.9 * std::asin(double(kOwnFacetCosine)));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const Vertex* v[3];
         for (std::size_t k = 0; k < 3; ++k) {
             if (mesh.indices[t + k] >= mesh.vertices.size())
-                return false;
+                v[k] = nullptr;
             v[k] = &mesh.vertices[mesh.indices[t + k]];
         }
+        if (!v[0] || !v[1] || !v[2])
+            continue;
         const glm::dvec3 a(v[0]->position);
         const glm::dvec3 facet = glm::cross(glm::dvec3(v[1]->position) - a, glm::dvec3(v[2]->position) - a);
         const double area = glm::length(facet);

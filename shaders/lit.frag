@@ -1,6 +1,8 @@
 // Lit pass: Blinn-Phong or Phong with a diffuse texture; the light term is scaled by the
 // shadow visibility of the one lookup (shadow_lookup.glsl) and the technique's filter, and with
 // CONTACT_SHADOWS the smaller of that and a march over the camera's depth. Ambient stays in shadow.
+// With OWN_FACETS a smooth-shaded caster's facet that faces away from the light is in its own
+// shadow, looked up or not (ownFacetVisibility).
 // With MEASURE the same shadow term also goes to float targets for the accuracy
 // measurement, so what is measured is exactly what is shaded, and with it the light terms
 // that the shadow term scales, so the frame can be shaded again with the reference's.

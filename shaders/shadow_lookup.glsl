@@ -216,7 +216,7 @@ bool beyondFarPlane(float depth)
 #endif
 }
 
-// A screen-space step of the pixel (shadowVisibility's dx or dy) in this view's map coordinates:
+// A screen-space step of the pixel (rigVisibility's dx or dy) in this view's map coordinates:
 // through the view's matrix with several views, as derivatives of the coordinate itself are
 // undefined where neighbours pick other views; one view's steps are taken in the map already.
 vec3 mapStep(ShadowViewLookup view, vec3 d)
@@ -351,7 +351,7 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLi
 #endif
 }
 
-// A view's visibility of the pixel; dx, dy are its screen-space steps (shadowVisibility): in
+// A view's visibility of the pixel; dx, dy are its screen-space steps (rigVisibility): in
 // camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
@@ -480,14 +480,13 @@ float rigVisibility(vec3 normal, vec3 toLight)
 // low-poly model's terminator). The facet is the plane of the pixel's own triangle, from the
 // screen-space steps of its position (each taken on its own triangle), turned to the side its
 // normals shade; a triangle seen edge-on, whose steps span no plane, counts as facing, and so
-// does a facet along the light's rays to within the rounding of those steps (the reference's
-// kOwnFacetCosine, accuracy/ShadowReference.cpp).
+// does a facet along the light's rays to within kOwnFacetCosine (as the reference's).
 float ownFacetVisibility(vec3 normal, vec3 toLight)
 {
 #ifdef OWN_FACETS
     vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
     float towardLight = dot(facet, toLight) * sign(dot(facet, normal));
-    return uOwnFacets && towardLight < -1e-3 * length(facet) ? 0.0 : 1.0;
+    return uOwnFacets && towardLight < -kOwnFacetCosine * length(facet) ? 0.0 : 1.0;
 #else
     return 1.0;
 #endif

@@ -5,10 +5,10 @@
 #include "Application.h"
 #include "HeadlessRenderer.h"
 #include "Measurement.h"
-#include "SceneLibrary.h"
-#include "SettingsError.h"
 #include "RayTracer.h"
+#include "SceneLibrary.h"
 #include "SceneSupply.h"
+#include "SettingsError.h"
 #include "SettingsKeys.h"
 #include "ShadowReference.h"
 #include "TestFiles.h"
@@ -319,68 +319,89 @@ private Q_SLOTS:
         QVERIFY(panning.hard.falseLight > panning.hard.falseShadow);
     }
 
-    // A coarse smooth-shaded ball across the light: near its terminator some facets face away
-    // from the light while the normals they are shaded with face it. Their own neighbours stand
-    // between them and the light. The reference says so at any scale: its rays start off the
-    // surface by a share of their distance from the camera, which from afar carried them past a
-    // small facet's edge and lit it. Every technique reads them in shadow too (OWN_FACETS):
-    // the moment filters leaked light along the terminator, and the depth compares read it
-    // half-lit where the map could not resolve the neighbours.
+    // Coarse smooth-shaded balls across the light: near their terminators some facets face away
+    // from the light while the normals they are shaded with face it. A caster's own neighbours
+    // stand between such a facet and the light. The reference says so at any scale: its rays
+    // start off the surface by a share of their distance from the camera, which from afar
+    // carried them past a small facet's edge and lit it. Every technique reads them in shadow
+    // too (OWN_FACETS): the moment filters leaked light along the terminator, and the depth
+    // compares read it lit where the map could not resolve the neighbours. A ball that casts no
+    // shadow has no neighbours in the way: lit in both.
     void ownFacetsAreShadowedAtAnyScale_data()
     {
         QTest::addColumn<double>("scale");
-        QTest::newRow("a unit") << 1.0;
-        QTest::newRow("300 units") << 300.0;
-        QTest::newRow("a centimetre") << 0.01;
+        QTest::addColumn<QString>("light");
+        for (const char* light : {"directional", "spot", "point"}) {
+            QTest::addRow("a unit, %s", light) << 1.0 << QString(light);
+            QTest::addRow("300 units, %s", light) << 300.0 << QString(light);
+            QTest::addRow("a centimetre, %s", light) << 0.01 << QString(light);
+        }
     }
     void ownFacetsAreShadowedAtAnyScale()
     {
         QFETCH(double, scale);
+        QFETCH(QString, light);
         const auto at = [scale](double x, double y, double z) {
             return QStringLiteral("[%1, %2, %3]").arg(x * scale, 0, 'g', 17).arg(y * scale, 0, 'g', 17).arg(z * scale, 0, 'g', 17);
         };
         // Seen from 25 radii away, as a large model is: the old start cleared the facets there.
         const QString scene = QStringLiteral(R"({ "shapes": [
             { "shape": "ground", "height": 0, "size": %1 },
-            { "name": "ball", "shape": "sphere", "segments": 24, "rings": 12, "position": %2, "scale": %3 } ],
-          "light.position": %4, "light.target": %2, "camera.position": %5, "camera.target": %2, "camera.fov": 7 })")
-                                  .arg(4.0 * scale, 0, 'g', 17)
+            { "name": "ball", "shape": "sphere", "segments": 24, "rings": 12, "position": %2, "scale": %3 },
+            { "name": "ghost", "shape": "sphere", "segments": 24, "rings": 12, "position": %4, "scale": %3, "casts": false } ],
+          "light.position": %5, "light.target": %2, "camera.position": %6, "camera.target": %7, "camera.fov": 9 })")
+                                  .arg(6.0 * scale, 0, 'g', 17)
                                   .arg(at(0, 1.2, 0))
                                   .arg(scale, 0, 'g', 17)
-                                  .arg(at(-6, 4, 1), at(8, 9, 22));
+                                  .arg(at(-2.6, 1.2, 0), at(-6, 4, 1), at(8, 9, 22), at(-1.3, 1.2, 0));
         QTemporaryDir dir;
-        const QString path = writeFile(dir, QStringLiteral("ball.json"), scene.toUtf8());
+        const QString path = writeFile(dir, QStringLiteral("balls.json"), scene.toUtf8());
         HeadlessRenderer headless;
         Renderer& renderer = headless.renderer();
         const QSize size(320, 180);
-        std::vector<int> ownFacets;     // light-facing pixels whose facet faces away from the light
-        ReferenceVisibility reference;
+        // Light-facing pixels whose facet faces away from the light by more than twice the
+        // margin (kOwnFacetCosine), on the ball that casts and on the one that does not.
+        std::vector<int> own, ghost;
         for (const char* mode : {"hard", "hw-bilinear", "pcf64", "pcss", "vsm", "evsm4", "esm", "msm"}) {
-            const Settings s = presetWith(path, {QStringLiteral("filter.mode=%1").arg(mode)});
+            const Settings s = presetWith(path, {QStringLiteral("filter.mode=%1").arg(mode), "light.type=" + light});
             supplyScene(renderer, s);
             const VisibilityBuffer buffer = renderer.renderVisibility(s, size);
-            const LightFrame& light = renderer.lightFrame();
-            if (ownFacets.empty()) {
+            const LightFrame& frame = renderer.lightFrame();
+            if (own.empty()) {
                 const RayTracer tracer(*renderer.scene(), buffer.cameraPosition);
-                reference = traceReference(tracer, buffer, light, ReferenceOptions{false, 0.0, 1});
-                int facing = 0;
+                const ReferenceVisibility reference = traceReference(tracer, buffer, frame, ReferenceOptions{true, 0.25 * scale, 4});
                 for (int i = 0; i < buffer.pixelCount(); ++i) {
                     if (buffer.mask(i) != VisibilityBuffer::FacingLight)
                         continue;
-                    ++facing;
-                    const glm::dvec3 toLight = light.perspective ? glm::normalize(light.position - buffer.worldPosition(i)) : -light.direction;
-                    if (glm::dot(buffer.normal(i), toLight) < -1e-3)
-                        ownFacets.push_back(i);
-                }
-                qInfo("%d light-facing pixels, %d of them on facets facing away", facing, int(ownFacets.size()));
-                QVERIFY(ownFacets.size() >= 40);
-                for (int i : ownFacets)
+                    const glm::dvec3 p = buffer.worldPosition(i);
+                    const glm::dvec3 toLight = frame.perspective ? glm::normalize(frame.position - p) : -frame.direction;
+                    const double cosine = glm::dot(buffer.normal(i), toLight);
+                    if (cosine >= -2e-3)
+                        continue;
+                    // The ghost is the ball on the left of the frame's middle, as seen.
+                    const bool onGhost = glm::length(p - glm::dvec3(-2.6, 1.2, 0) * scale) < 1.5 * scale;
+                    (onGhost ? ghost : own).push_back(i);
+                    if (onGhost) {
+                        QCOMPARE(reference.hard[std::size_t(i)], 1.0f);
+                        continue;
+                    }
                     QCOMPARE(reference.hard[std::size_t(i)], 0.0f);
+                    // Behind the facet the whole disk light is hidden too.
+                    const double distance = frame.perspective ? glm::length(frame.position - p) : frame.targetDistance;
+                    if (cosine < -1.2 * 0.25 * scale / distance)
+                        QCOMPARE(reference.area[std::size_t(i)], 0.0f);
+                }
+                qInfo("%d and %d light-facing pixels on facets facing away, on the ball that casts and on the one that does not", int(own.size()),
+                      int(ghost.size()));
+                QVERIFY(own.size() >= 30 && ghost.size() >= 30);
             }
-            double most = 0.0;
-            for (int i : ownFacets)
+            double most = 0.0, least = 1.0;
+            for (int i : own)
                 most = std::max(most, double(buffer.visibility(i)));
+            for (int i : ghost)
+                least = std::min(least, double(buffer.visibility(i)));
             QVERIFY2(most < 0.01, qPrintable(QStringLiteral("%1 reads %2 on a facet facing away from the light").arg(mode).arg(most)));
+            QVERIFY2(least > 0.99, qPrintable(QStringLiteral("%1 reads %2 on a facet of a ball that casts nothing").arg(mode).arg(least)));
         }
     }
 

@@ -82,8 +82,8 @@ private Q_SLOTS:
         for (Vertex& v : inward.vertices)
             v.normal = -v.normal;
         QVERIFY(!smoothShaded(inward));
-        // One vertex of a cube bent by two degrees is enough; half a degree is rounding.
-        for (const auto& [degrees, smooth] : {std::pair{2.0, true}, std::pair{0.5, false}}) {
+        // One vertex of a cube bent by a tenth of a degree is enough; a hundredth is rounding.
+        for (const auto& [degrees, smooth] : {std::pair{0.1, true}, std::pair{0.01, false}}) {
             Mesh bent = meshes::cube();
             const double a = glm::radians(degrees);
             const glm::vec3 n = bent.vertices[0].normal;

@@ -34,6 +34,7 @@ const std::vector<std::pair<QByteArray, QByteArray>> kDefines = {
     {"kMaxBlurWeights", "#define kMaxBlurWeights 16"},
     {"kMaxDepthRangeLevels", "#define kMaxDepthRangeLevels 16"},
     {"kNoCasterDepth", "#define kNoCasterDepth 1e+30"},
+    {"kOwnFacetCosine", "#define kOwnFacetCosine 0.001"},
     {"kViewTints", "#define kViewTints vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0), "
                    "vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0))"},
     {"kDensityBlue", "#define kDensityBlue vec3(0.15, 0.35, 0.95)"},
