@@ -193,13 +193,9 @@ float farLimit(double tFar)
     return tFar < double(std::numeric_limits<float>::max()) ? float(tFar) : std::numeric_limits<float>::infinity();
 }
 
-} // namespace
-
-bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, double tFar) const
+// The segment o + t * direction, t in (0, tFar), around the tracer's origin.
+RTCRay segment(const glm::dvec3& o, const glm::dvec3& direction, double tFar)
 {
-    const glm::dvec3 o = from - m_origin;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay ray{};
     ray.org_x = float(o.x);
     ray.org_y = float(o.y);
@@ -210,6 +206,16 @@ bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, do
     ray.tnear = 0.0f;
     ray.tfar = farLimit(tFar);
     ray.mask = 0xFFFFFFFFu;
+    return ray;
+}
+
+} // namespace
+
+bool RayTracer::occluded(const glm::dvec3& from, const glm::dvec3& direction, double tFar) const
+{
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray = segment(from - m_origin, direction, tFar);
     rtcOccluded1(m_scene, &context, &ray);
     // Embree marks an occluded ray by setting tfar to -inf.
     return ray.tfar < 0.0f;
@@ -225,20 +231,11 @@ std::optional<glm::dvec3> RayTracer::casterFacetAt(const glm::dvec3& eye, const 
     const double distance = glm::length(toPoint);
     if (!(distance > 0.0) || !std::isfinite(distance))
         return std::nullopt;
-    const glm::dvec3 o = eye - m_origin, d = toPoint / distance;
     const double tolerance = 1e-3 * distance;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query{};
-    query.ray.org_x = float(o.x);
-    query.ray.org_y = float(o.y);
-    query.ray.org_z = float(o.z);
-    query.ray.dir_x = float(d.x);
-    query.ray.dir_y = float(d.y);
-    query.ray.dir_z = float(d.z);
-    query.ray.tnear = 0.0f;
-    query.ray.tfar = float(distance + tolerance);
-    query.ray.mask = 0xFFFFFFFFu;
+    query.ray = segment(eye - m_origin, toPoint / distance, distance + tolerance);
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_scene, &context, &query);

@@ -18,11 +18,8 @@ bool smoothShaded(const Mesh& mesh)
     const double kFlat = std::cos(0.9 * std::asin(double(kOwnFacetCosine)));
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const Vertex* v[3];
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (mesh.indices[t + k] >= mesh.vertices.size())
-                v[k] = nullptr;
-            v[k] = &mesh.vertices[mesh.indices[t + k]];
-        }
+        for (std::size_t k = 0; k < 3; ++k)
+            v[k] = mesh.indices[t + k] < mesh.vertices.size() ? &mesh.vertices[mesh.indices[t + k]] : nullptr;
         if (!v[0] || !v[1] || !v[2])
             continue;
         const glm::dvec3 a(v[0]->position);
