@@ -28,6 +28,9 @@ uniform bool uOwnFacets;            // a smooth-shaded caster: its facets facing
 #endif
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
+// N.L of the pixel's own facet where it is steeper to the light than its normals say (a
+// smooth-shaded caster, OWN_FACETS): the map holds the facet, so the bias clears its slope.
+float gFacetCosine = 1.0;
 
 #ifdef VIRTUAL_MAP
 #include "virtual_pages.glsl"
@@ -336,10 +339,10 @@ float distanceOfShift(ViewPoint p, float shift)
 // The depth the filter compares against: the receiver's, moved toward the light by the bias in
 // bias.space's units and by the footprint's clearance along the ray. A perspective view's
 // distance of it goes to gReferenceDistance for the techniques that store distance (moments).
-float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLight, float tanTheta)
+float biasedReference(ShadowViewLookup view, ViewPoint p, float cosTheta, vec3 toLight, float tanTheta)
 {
     // (1 - N.L) <= 1: bounded at grazing angles, where slope * tan(theta) would explode.
-    float bias = max(uBiasSlope * (1.0 - dot(normal, toLight)), uBiasMin);
+    float bias = max(uBiasSlope * (1.0 - cosTheta), uBiasMin);
     float footprint = texelsToWorld(footprintRayTexels(tanTheta), p.texel, p.position.w);
 #ifdef BIAS_DEPTH
 #ifdef LIGHT_PERSPECTIVE
@@ -355,8 +358,9 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, vec3 normal, vec3 toLi
 // camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
 {
-    // The receiver's angle to the light, once: rounding can put N.L above 1, so no NaN.
-    float cosTheta = clamp(dot(normal, toLight), 0.0, 1.0);
+    // The receiver's angle to the light, once, the steeper of its normal's and its facet's:
+    // rounding can put N.L above 1, so no NaN.
+    float cosTheta = clamp(min(dot(normal, toLight), gFacetCosine), 0.0, 1.0);
     float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
     ViewPoint p;
     p.position = viewPosition(view, normal, toLight, cosTheta, sinTheta);
@@ -385,7 +389,7 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     float tanTheta = min(sinTheta / max(cosTheta, 1e-6), 3.0);
     gGrowth = p.depthPerWorld * tanTheta;
     gShadowW = p.position.w;
-    return filterShadow(p.coord.xy, biasedReference(view, p, normal, toLight, tanTheta));
+    return filterShadow(p.coord.xy, biasedReference(view, p, cosTheta, toLight, tanTheta));
 }
 
 #ifdef VIRTUAL_MAP
@@ -486,7 +490,10 @@ float ownFacetVisibility(vec3 normal, vec3 toLight)
 #ifdef OWN_FACETS
     vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
     float towardLight = dot(facet, toLight) * sign(dot(facet, normal));
-    return uOwnFacets && towardLight < -kOwnFacetCosine * length(facet) ? 0.0 : 1.0;
+    float size = length(facet);
+    if (uOwnFacets && size > 0.0)
+        gFacetCosine = towardLight / size;
+    return uOwnFacets && towardLight < -kOwnFacetCosine * size ? 0.0 : 1.0;
 #else
     return 1.0;
 #endif
