@@ -354,6 +354,25 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, float cosTheta, vec3 t
 #endif
 }
 
+// How much nearer the light, along the ray, a receiver's plane lies per world unit of a tap's
+// distance across the map, at most: tan(theta) where the map's depth runs along the ray (an
+// ortho view, warped or not). A perspective light's depth runs along its view's axis, so off
+// the axis by phi a plane facing the light squarely still rises toward the light across the
+// map: by up to sin(alpha) / cos(theta) for alpha the normal's angle to the axis, at most
+// tan(theta) cos(phi) + sin(phi) (0.82 at a cube face's corner). A growth of tan(theta) there
+// left a wide filter's far taps under a lit receiver's own depth.
+float growthSlope(ShadowViewLookup view, vec3 toLight, float tanTheta)
+{
+#ifdef LIGHT_PERSPECTIVE
+    // The row of the view's matrix that gives w: its axis.
+    vec3 axis = vec3(view.matrix[0][3], view.matrix[1][3], view.matrix[2][3]);
+    float cosPhi = clamp(-dot(toLight, axis) * inversesqrt(max(dot(axis, axis), 1e-30)), 0.0, 1.0);
+    return tanTheta * cosPhi + sqrt(1.0 - cosPhi * cosPhi);
+#else
+    return tanTheta;
+#endif
+}
+
 // A view's visibility of the pixel; dx, dy are its screen-space steps (rigVisibility): in
 // camera-relative world with several views, in the map coordinate looked up with one.
 float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, vec3 dy)
@@ -387,7 +406,7 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     // growth of up to 10 (the cap before) lit grazing receivers in a crest's own shadow; on real
     // models 3 misclassifies least (docs/techniques.md#bias).
     float tanTheta = min(sinTheta / max(cosTheta, 1e-6), 3.0);
-    gGrowth = p.depthPerWorld * tanTheta;
+    gGrowth = p.depthPerWorld * growthSlope(view, toLight, tanTheta);
     gShadowW = p.position.w;
     return filterShadow(p.coord.xy, biasedReference(view, p, cosTheta, toLight, tanTheta));
 }

@@ -714,8 +714,15 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(note->text().startsWith("Tuned as the model opened") && !dock->isBusy(), 240000);
             qInfo().noquote() << note->text();
         };
-        // A scene file whose own keys leave acne (no bias, front faces and the ground in the map):
-        // the tuner finds a clearly better bias and sets it, one undo step.
+        // A scene file whose own keys leave acne (no bias, front faces in the map), opened on a
+        // side without the footprint's clearance and with floors in the map (a side keeps its
+        // technique's settings when a scene opens, movedToScene): the tuner finds a clearly
+        // better bias and sets it, one undo step.
+        const Settings side = window.settings(Side::A);
+        Settings bare = side;
+        bare.bias.footprint = false;
+        bare.bias.skipFloors = false;
+        window.setSettings(Side::A, bare);
         QTemporaryDir dir;
         const QString acne = writeFile(dir, "acne.json", QStringLiteral(R"({"models": [{"file": "%1"}], "bias.cull_front": false,
             "bias.footprint": false, "bias.skip_floors": false, "bias.slope": 0, "bias.min": 0})").arg(model("Collada/duck.dae")).toUtf8());
@@ -729,6 +736,10 @@ private Q_SLOTS:
         const BiasSettings undone = window.settings(Side::A).bias;
         QVERIFY(undone.slope == asOpened.slope && undone.min == asOpened.min && undone.space == asOpened.space);
         // A model whose defaults already sit on the knee keeps them, and the dock says so.
+        Settings restored = window.settings(Side::A);
+        restored.bias.footprint = side.bias.footprint;
+        restored.bias.skipFloors = side.bias.skipFloors;
+        window.setSettings(Side::A, restored);
         const QString duck = model("Collada/duck.dae");
         openAndTune(duck);
         QCOMPARE(window.settings(Side::A).bias, presetSettings(duck).bias);
