@@ -28,8 +28,9 @@ uniform bool uOwnFacets;            // a smooth-shaded caster: its facets facing
 #endif
 
 int gViewIndex = -1;                // the view the pixel read (the nearer one of a blend), -1 none
-// N.L of the pixel's own facet where it is steeper to the light than its normals say (a
-// smooth-shaded caster, OWN_FACETS): the map holds the facet, so the bias clears its slope.
+// N.L of the pixel's own facet (a smooth-shaded caster, OWN_FACETS; 1 where unknown), set by
+// ownFacetVisibility before the lookup: the map holds the facet, so viewVisibility's bias
+// clears the steeper of its slope and the normals'.
 float gFacetCosine = 1.0;
 
 #ifdef VIRTUAL_MAP
@@ -354,22 +355,29 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, float cosTheta, vec3 t
 #endif
 }
 
-// How much nearer the light, along the ray, a receiver's plane lies per world unit of a tap's
-// distance across the map, at most: tan(theta) where the map's depth runs along the ray (an
-// ortho view, warped or not). A perspective light's depth runs along its view's axis, so off
-// the axis by phi a plane facing the light squarely still rises toward the light across the
-// map: by up to sin(alpha) / cos(theta) for alpha the normal's angle to the axis, at most
-// tan(theta) cos(phi) + sin(phi) (0.82 at a cube face's corner). A growth of tan(theta) there
-// left a wide filter's far taps under a lit receiver's own depth.
-float growthSlope(ShadowViewLookup view, vec3 toLight, float tanTheta)
+// How much nearer the light, along the ray, a receiver's plane at theta to the ray lies per
+// world unit of a tap's distance across the map, at most, capped at 3 (72 degrees: beyond it
+// the lookup's normal offset holds the centre, and a larger growth lit grazing receivers in a
+// crest's own shadow; on real models 3 misclassifies least, docs/techniques.md#bias).
+// tan(theta) where the map's depth runs along the ray (an ortho view). A perspective light's
+// depth runs along its view's axis, so off the axis by phi a plane facing the light squarely
+// still rises toward it across the map: by sin(alpha) / cos(theta) for alpha the normal's angle
+// to the axis, at most sin(min(theta + phi, 90 degrees)) / cos(theta) (sin(phi) alone, 0.82, at
+// a cube face's corner). A warped map's depth (light.warp=lispsm) runs along its warp's axis,
+// across the light, and is not bounded here.
+float growthSlope(ShadowViewLookup view, vec3 toLight, float cosTheta, float sinTheta)
 {
+    float c = max(cosTheta, 1e-6);
 #ifdef LIGHT_PERSPECTIVE
     // The row of the view's matrix that gives w: its axis.
     vec3 axis = vec3(view.matrix[0][3], view.matrix[1][3], view.matrix[2][3]);
     float cosPhi = clamp(-dot(toLight, axis) * inversesqrt(max(dot(axis, axis), 1e-30)), 0.0, 1.0);
-    return tanTheta * cosPhi + sqrt(1.0 - cosPhi * cosPhi);
+    float sinPhi = sqrt(1.0 - cosPhi * cosPhi);
+    // sin(theta + phi), or 1 past a right angle (where cos(theta + phi) < 0).
+    float sinMost = cosTheta * cosPhi < sinTheta * sinPhi ? 1.0 : sinTheta * cosPhi + cosTheta * sinPhi;
+    return min(sinMost / c, 3.0);
 #else
-    return tanTheta;
+    return min(sinTheta / c, 3.0);
 #endif
 }
 
@@ -401,12 +409,10 @@ float viewVisibility(ShadowViewLookup view, vec3 normal, vec3 toLight, vec3 dx, 
     p.depthPerWorld = depthPerWorldAt(view, p.position, toLight);
     gShadowDepthRange = viewDepthRange(view, p.depthPerWorld);
     // For the wide filters: a tap d world units away on this receiver's plane lies up to
-    // d tan(theta) nearer the light; gGrowth is that in depth per world unit. tan is capped at 3
-    // (72 degrees): beyond it the lookup's normal offset (viewPosition) holds the centre, and a
-    // growth of up to 10 (the cap before) lit grazing receivers in a crest's own shadow; on real
-    // models 3 misclassifies least (docs/techniques.md#bias).
+    // d growthSlope nearer the light (d tan(theta) for an ortho view); gGrowth is that in depth
+    // per world unit.
     float tanTheta = min(sinTheta / max(cosTheta, 1e-6), 3.0);
-    gGrowth = p.depthPerWorld * growthSlope(view, toLight, tanTheta);
+    gGrowth = p.depthPerWorld * growthSlope(view, toLight, cosTheta, sinTheta);
     gShadowW = p.position.w;
     return filterShadow(p.coord.xy, biasedReference(view, p, cosTheta, toLight, tanTheta));
 }
@@ -503,14 +509,16 @@ float rigVisibility(vec3 normal, vec3 toLight)
 // low-poly model's terminator). The facet is the plane of the pixel's own triangle, from the
 // screen-space steps of its position (each taken on its own triangle), turned to the side its
 // normals shade; a triangle seen edge-on, whose steps span no plane, counts as facing, and so
-// does a facet along the light's rays to within kOwnFacetCosine (as the reference's).
+// does a facet along the light's rays to within kOwnFacetCosine (as the reference's). It also
+// leaves the facet's N.L in gFacetCosine for the lookup's bias, so it runs before rigVisibility.
 float ownFacetVisibility(vec3 normal, vec3 toLight)
 {
 #ifdef OWN_FACETS
     vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
-    float towardLight = dot(facet, toLight) * sign(dot(facet, normal));
+    float side = sign(dot(facet, normal));
+    float towardLight = dot(facet, toLight) * side;
     float size = length(facet);
-    if (uOwnFacets && size > 0.0)
+    if (uOwnFacets && size > 0.0 && side != 0.0)
         gFacetCosine = towardLight / size;
     return uOwnFacets && towardLight < -kOwnFacetCosine * size ? 0.0 : 1.0;
 #else
@@ -518,7 +526,8 @@ float ownFacetVisibility(vec3 normal, vec3 toLight)
 #endif
 }
 
-// The shadow term of the pixel: its own facet's, then the light rig's lookup.
+// The shadow term of the pixel: its own facet's, then the light rig's lookup (in that order: the
+// lookup's bias reads the facet's slope).
 float shadowVisibility(vec3 normal, vec3 toLight)
 {
     // Both take screen-space steps, so both run on every pixel of a quad.
