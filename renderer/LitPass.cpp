@@ -113,6 +113,11 @@ QStringList LitPass::variantDefines(const FramePlan& plan, const Variant& varian
         // which thin parts and terminators still need (docs/techniques.md#bias measures both).
         if (!settings.bias.cullFront)
             defines << QStringLiteral("FOOTPRINT_TAPS");
+        // A blocker search (pcss, dpcf) reads the whole region a disk light's blockers may lie
+        // in, many texels wide: its growth is capped at 10, not 3 (shadow_lookup.glsl's
+        // growthSlope), or a grazing receiver's own surface reads as blockers across it.
+        if (technique.searchesBlockers)
+            defines << QStringLiteral("BLOCKER_SEARCH");
     }
     // A smooth-shaded caster's facets that face away from the light are in its own shadow,
     // whatever its normals say (shadow_lookup.glsl's ownFacetVisibility): with a lookup or
