@@ -356,18 +356,19 @@ float biasedReference(ShadowViewLookup view, ViewPoint p, float cosTheta, vec3 t
 }
 
 // How much nearer the light, along the ray, a receiver's plane at theta to the ray lies per
-// world unit of a tap's distance across the map, at most, capped at 3 (72 degrees: beyond it
-// the lookup's normal offset holds the centre, and a larger growth lit grazing receivers in a
-// crest's own shadow; on real models 3 misclassifies least, docs/techniques.md#bias). A blocker
-// search (pcss, dpcf) caps it at 10 (84 degrees): its taps reach across the whole region a disk
-// light's blockers may lie in, where a grazing receiver's own surface rose above a growth of 3
-// and read as blockers (dpcf on anim_test: 0.29 % misclassified against the area light, 0.02 %).
-// tan(theta) where the map's depth runs along the ray (an ortho view). A perspective light's
-// depth runs along its view's axis, so off the axis by phi a plane facing the light squarely
-// still rises toward it across the map: by sin(alpha) / cos(theta) for alpha the normal's angle
-// to the axis, at most sin(min(theta + phi, 90 degrees)) / cos(theta) (sin(phi) alone, 0.82, at
-// a cube face's corner). A warped map's depth (light.warp=lispsm) runs along its warp's axis,
-// across the light, and is not bounded here.
+// world unit of a tap's distance across the map, at most. tan(theta) where the map's depth runs
+// along the ray (an ortho view). A perspective light's depth runs along its view's axis, so off
+// the axis by phi a plane facing the light squarely still rises toward it across the map: by
+// sin(alpha) / cos(theta) for alpha the normal's angle to the axis, at most
+// sin(min(theta + phi, 90 degrees)) / cos(theta) (sin(phi) alone, 0.82, at a cube face's
+// corner). A warped map's depth (light.warp=lispsm) runs along its warp's axis, across the
+// light, and is not bounded here.
+// Capped at 3 (72 degrees): beyond it the lookup's normal offset holds the centre, and a larger
+// growth lit grazing receivers in a crest's own shadow; on real models 3 misclassifies least
+// (docs/techniques.md#bias). A blocker search (pcss, dpcf) caps it at 10 (84 degrees): its taps
+// reach across the whole region a disk light's blockers may lie in, where a grazing receiver's
+// own surface rose above a growth of 3 and read as blockers (dpcf on anim_test: 0.29 %
+// misclassified against the area light, 0.02 % at 10).
 #ifdef BLOCKER_SEARCH
 const float kGrowthCap = 10.0;
 #else
