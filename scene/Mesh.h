@@ -35,9 +35,9 @@ std::optional<MeshPlane> flatPlane(const Mesh& mesh);
 
 // Whether the mesh's normals bend across its triangles (a smooth-shaded mesh): some vertex's
 // normal leans from its triangle's normal (either side) by more than 0.05 degrees, nine tenths
-// of the lean that kOwnFacetCosine turns a facet away by. Such a mesh is faceted under its shading: near
-// the terminator a facet can face away from the light while its normals still face it (the lit
-// pass's OWN_FACETS).
+// of the lean that kOwnFacetCosine turns a facet away by. Such a mesh is faceted under its
+// shading: near the terminator a facet can face away from the light while its normals still
+// face it (the lit pass's OWN_FACETS).
 bool smoothShaded(const Mesh& mesh);
 
 namespace meshes {
